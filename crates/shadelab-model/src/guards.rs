@@ -1,0 +1,68 @@
+//! Named numerical guards of the lighting model.
+//!
+//! Every constant here has a twin of the same name in `shaders/common.wgsl`; the test
+//! `wgsl_guards_equal_rust_guards` (in `shadelab-render`) parses the WGSL with naga and holds the
+//! two equal. The guards clamp *inputs* (cosines, roughness, refractive index, distances): WGSL
+//! lets an implementation assume there is no NaN or infinity, so filtering bad values afterwards
+//! does not work.
+
+/// Squared length under which a vector counts as zero and is replaced by a fallback instead of
+/// being normalized. For a vector of this length the inverse length is 1e10, far below f32's
+/// maximum (3.4e38), and its squared components stay above f32's smallest normal (1.2e-38).
+pub const NORMALIZE_MIN_LEN2: f64 = 1e-20;
+
+/// Smallest cos of the viewer angle used in the Cook–Torrance denominator `N·V`. It bounds the
+/// factor `1/(N·V)` by 1e4 (the view is grazing beyond 89.994°) so that a silhouette pixel stays
+/// finite in f32; above it the exact value is used.
+pub const N_DOT_V_MIN: f64 = 1e-4;
+
+/// Smallest `N·H` fed to the Beckmann distribution (for `N·H > 0`). At it, `(N·H)⁴ = 1e-16` and
+/// the exponent `(1 − 1/(N·H)²)/m²` is at most about −1e14: `exp` underflows to exactly 0 before
+/// the prefactor (at most 2.5e21) can overflow f32.
+pub const N_DOT_H_MIN: f64 = 1e-4;
+
+/// Smallest Beckmann roughness `m` the model evaluates; `m = 0` (a perfect mirror, a Dirac lobe)
+/// is clamped to it. It caps the distribution's peak `1/(4m²)` at 2.5e5, and the lobe's
+/// half-width (about 0.06°) is already below one pixel of a 1280-wide, 45° view.
+pub const M_MIN: f64 = 1e-3;
+
+/// Largest finite Phong exponent `h`. `(V·R)^h` is evaluated as `exp2(h·log2(V·R))`, which for
+/// `V·R` in (0, 1] and `h ≤ 1e9` is at least `exp2(-1.5e11)` = 0: finite, no overflow.
+pub const H_MAX: f64 = 1e9;
+
+/// The "mirror" Phong setting (`h = ∞`): light is reflected only where `V·R` is at least this,
+/// i.e. within 0.08° of the mirror direction. A true Dirac lobe would never cover a pixel centre;
+/// 1 − 1e-6 is 16 f32 ulps below 1, so the test is still meaningful in f32.
+pub const MIRROR_V_DOT_R_MIN: f64 = 1.0 - 1e-6;
+
+/// Largest `√μ` used to derive the refractive index `v = (1 + √μ)/(1 − √μ)`. `μ = 1` would make
+/// `v` infinite; at this cap `v ≈ 2e4` and `F(c = 1) = 0.9998`, within 2e-4 of the perfect
+/// reflector it stands for.
+pub const FRESNEL_SQRT_MU_MAX: f64 = 0.9999;
+
+/// Smallest `g + c` in the exact Fresnel term. Only `v = 1` (μ = 0, no interface) with `c = 0`
+/// reaches 0/0 there; with this floor F is 0, the value it has for every other `c` at `v = 1`.
+pub const FRESNEL_G_PLUS_C_MIN: f64 = 1e-6;
+
+/// Distance under which a point light counts as touching the surface: the direction to it is
+/// undefined, so `L = N` (the light is straight above the surface point) is used instead.
+pub const LIGHT_DIST_MIN: f64 = 1e-4;
+
+/// Smallest `d0` of the chapter's `1/(d + d0)` falloff: it bounds the falloff factor by 1e3 when
+/// a light touches a surface (d = 0). Parameter validation keeps `d0` at or above it.
+pub const D0_MIN: f64 = 1e-3;
+
+/// All guards by name, in the order they are declared (used by the WGSL ↔ Rust equality test and
+/// by the README table).
+pub const ALL: &[(&str, f64)] = &[
+    ("NORMALIZE_MIN_LEN2", NORMALIZE_MIN_LEN2),
+    ("N_DOT_V_MIN", N_DOT_V_MIN),
+    ("N_DOT_H_MIN", N_DOT_H_MIN),
+    ("M_MIN", M_MIN),
+    ("H_MAX", H_MAX),
+    ("MIRROR_V_DOT_R_MIN", MIRROR_V_DOT_R_MIN),
+    ("FRESNEL_SQRT_MU_MAX", FRESNEL_SQRT_MU_MAX),
+    ("FRESNEL_G_PLUS_C_MIN", FRESNEL_G_PLUS_C_MIN),
+    ("LIGHT_DIST_MIN", LIGHT_DIST_MIN),
+    ("D0_MIN", D0_MIN),
+];

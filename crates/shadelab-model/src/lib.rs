@@ -1,0 +1,11 @@
+//! The shadelab model: scenes, materials, lights, validated parameters, tessellation, and the
+//! lighting model in f64 (the reference). No GPU, no window: everything else depends on it.
+
+pub mod brdf;
+pub mod guards;
+pub mod mesh;
+pub mod params;
+pub mod scene;
+
+pub use params::{FalloffForm, LightKind, PhongExponent, ShadingMode, SpecularModel};
+pub use scene::{Camera, Light, Material, Object, Overrides, Scene, Shape, Transform};

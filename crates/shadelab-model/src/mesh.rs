@@ -1,0 +1,366 @@
+//! Tessellation of the analytic shapes and vertex normals by the chapter's rule (spec §8).
+//!
+//! A vertex normal is the plain average of the unit normals of the faces around the vertex *that
+//! approximate the same surface*: faces whose normals differ by more than the crease angle are on
+//! different surfaces (the cylinder's caps, the cube's and the pyramid's faces stay sharp, the
+//! sphere is smooth). Zero-area faces have no normal of their own; they never make a NaN.
+
+use crate::brdf::safe_normalize;
+use crate::guards::NORMALIZE_MIN_LEN2;
+use crate::scene::Shape;
+use glam::DVec3;
+use std::collections::HashMap;
+
+/// Faces whose normals differ by more than this belong to different surfaces (not averaged).
+/// 60° keeps the cube's 90° and the pyramid's 78° edges sharp and smooths a sphere or cylinder of
+/// 8 or more segments (45° between neighbours).
+pub const CREASE_ANGLE_DEG: f64 = 60.0;
+
+/// A vertex of the smooth (indexed) mesh: Gouraud and Phong shading.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
+pub struct SmoothVertex {
+    pub position: [f32; 3],
+    pub normal: [f32; 3],
+}
+
+/// A corner of the flat (unindexed) mesh: each face carries its own normal and the centroid where
+/// flat shading evaluates the lighting once for the whole face.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
+pub struct FlatVertex {
+    pub position: [f32; 3],
+    pub normal: [f32; 3],
+    pub centroid: [f32; 3],
+}
+
+/// A tessellated shape ready for the GPU, in object space.
+#[derive(Clone, Debug, Default)]
+pub struct MeshData {
+    pub smooth_vertices: Vec<SmoothVertex>,
+    pub indices: Vec<u32>,
+    pub flat_vertices: Vec<FlatVertex>,
+}
+
+impl MeshData {
+    pub fn triangle_count(&self) -> usize {
+        self.indices.len() / 3
+    }
+}
+
+/// Bad geometry in input data.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum MeshError {
+    #[error("triangle {triangle}, corner {corner}: position {position:?} is not finite")]
+    NonFinitePosition { triangle: usize, corner: usize, position: [f64; 3] },
+}
+
+/// The unit normal of a triangle, or `None` for a zero-area one (guard `NORMALIZE_MIN_LEN2`).
+pub fn face_normal(t: &[DVec3; 3]) -> Option<DVec3> {
+    let c = (t[1] - t[0]).cross(t[2] - t[0]);
+    let len2 = c.length_squared();
+    (len2 > NORMALIZE_MIN_LEN2 && len2.is_finite()).then(|| c / len2.sqrt())
+}
+
+fn key(p: DVec3) -> [u32; 3] {
+    // Positions that round to the same f32 are the same vertex on the GPU.
+    p.as_vec3().to_array().map(|c| if c == 0.0 { 0 } else { c.to_bits() })
+}
+
+/// Build the smooth and flat meshes of a triangle soup with the crease-angle rule.
+pub fn build_mesh(triangles: &[[DVec3; 3]], crease_angle_deg: f64) -> Result<MeshData, MeshError> {
+    for (ti, t) in triangles.iter().enumerate() {
+        for (ci, p) in t.iter().enumerate() {
+            if !p.is_finite() {
+                return Err(MeshError::NonFinitePosition { triangle: ti, corner: ci, position: p.to_array() });
+            }
+        }
+    }
+    let cos_crease = crease_angle_deg.to_radians().cos();
+    let normals: Vec<Option<DVec3>> = triangles.iter().map(face_normal).collect();
+    let mut around: HashMap<[u32; 3], Vec<usize>> = HashMap::new();
+    for (ti, t) in triangles.iter().enumerate() {
+        for p in t {
+            let list = around.entry(key(*p)).or_default();
+            if list.last() != Some(&ti) && !list.contains(&ti) {
+                list.push(ti);
+            }
+        }
+    }
+    let mut mesh = MeshData::default();
+    let mut welded: HashMap<([u32; 3], [u32; 3]), u32> = HashMap::new();
+    for (ti, t) in triangles.iter().enumerate() {
+        let own = normals[ti];
+        let centroid = (t[0] + t[1] + t[2]) / 3.0;
+        for p in t {
+            let mut sum = DVec3::ZERO;
+            for &g in &around[&key(*p)] {
+                if let Some(ng) = normals[g] {
+                    // A zero-area face has no surface of its own: it takes every neighbour.
+                    if own.is_none_or(|nf| nf.dot(ng) >= cos_crease) {
+                        sum += ng;
+                    }
+                }
+            }
+            let fallback = own.unwrap_or(DVec3::Y);
+            let n = safe_normalize(sum, fallback).as_vec3().to_array();
+            let pos = p.as_vec3().to_array();
+            let idx = *welded.entry((key(*p), n.map(f32::to_bits))).or_insert_with(|| {
+                mesh.smooth_vertices.push(SmoothVertex { position: pos, normal: n });
+                (mesh.smooth_vertices.len() - 1) as u32
+            });
+            mesh.indices.push(idx);
+            mesh.flat_vertices.push(FlatVertex {
+                position: pos,
+                normal: fallback.as_vec3().to_array(),
+                centroid: centroid.as_vec3().to_array(),
+            });
+        }
+    }
+    Ok(mesh)
+}
+
+/// Tessellate a shape (see [`Shape`] for its object-space extent) and build its meshes.
+pub fn tessellate(shape: Shape, tessellation: u32) -> MeshData {
+    build_mesh(&triangles(shape, tessellation), CREASE_ANGLE_DEG).expect("procedural shapes are finite")
+}
+
+/// Segments around a sphere or cylinder for a tessellation parameter (at least 3).
+pub fn segments(tessellation: u32) -> u32 {
+    tessellation.max(3)
+}
+
+/// Rings of a sphere with `segments` segments.
+pub fn sphere_rings(segments: u32) -> u32 {
+    (segments / 2).max(2)
+}
+
+/// Triangles a shape has at a tessellation, without building it.
+pub fn triangle_count(shape: Shape, tessellation: u32) -> usize {
+    let n = tessellation.max(1) as usize;
+    let s = segments(tessellation) as usize;
+    match shape {
+        Shape::Sphere => s * 2 * (sphere_rings(s as u32) as usize - 1),
+        Shape::Cylinder => 4 * s,
+        Shape::Cube => 12 * n * n,
+        Shape::Plane => 2 * n * n,
+        Shape::Pyramid => 6 * n * n,
+    }
+}
+
+/// The triangles of a shape, oriented so that each face's normal points out of the shape.
+pub fn triangles(shape: Shape, tessellation: u32) -> Vec<[DVec3; 3]> {
+    let n = tessellation.max(1);
+    let (tris, inside) = match shape {
+        Shape::Sphere => (sphere(segments(n)), DVec3::ZERO),
+        Shape::Cylinder => (cylinder(segments(n)), DVec3::ZERO),
+        Shape::Cube => (cube(n), DVec3::ZERO),
+        Shape::Plane => (plane(n), DVec3::NEG_Y),
+        Shape::Pyramid => (pyramid(n), DVec3::new(0.0, -0.5, 0.0)),
+    };
+    // Every shape is convex (the plane is one face of one), so a face is oriented outwards when
+    // its normal points away from a point inside.
+    tris.into_iter()
+        .map(|t| match face_normal(&t) {
+            Some(nrm) if nrm.dot((t[0] + t[1] + t[2]) / 3.0 - inside) < 0.0 => [t[0], t[2], t[1]],
+            _ => t,
+        })
+        .collect()
+}
+
+fn quad(out: &mut Vec<[DVec3; 3]>, a: DVec3, b: DVec3, c: DVec3, d: DVec3) {
+    // a b
+    // c d
+    out.push([a, c, d]);
+    out.push([a, d, b]);
+}
+
+fn sphere(seg: u32) -> Vec<[DVec3; 3]> {
+    let rings = sphere_rings(seg);
+    let v = |i: u32, j: u32| -> DVec3 {
+        if i == 0 {
+            return DVec3::Y;
+        }
+        if i == rings {
+            return DVec3::NEG_Y;
+        }
+        let theta = std::f64::consts::PI * i as f64 / rings as f64;
+        let phi = std::f64::consts::TAU * (j % seg) as f64 / seg as f64;
+        DVec3::new(theta.sin() * phi.cos(), theta.cos(), theta.sin() * phi.sin())
+    };
+    let mut out = Vec::new();
+    for i in 0..rings {
+        for j in 0..seg {
+            let (a, b, c, d) = (v(i, j), v(i, j + 1), v(i + 1, j), v(i + 1, j + 1));
+            if i == 0 {
+                out.push([a, c, d]);
+            } else if i == rings - 1 {
+                out.push([a, c, b]);
+            } else {
+                quad(&mut out, a, b, c, d);
+            }
+        }
+    }
+    out
+}
+
+fn cylinder(seg: u32) -> Vec<[DVec3; 3]> {
+    let rim = |j: u32, y: f64| {
+        let phi = std::f64::consts::TAU * (j % seg) as f64 / seg as f64;
+        DVec3::new(phi.cos(), y, phi.sin())
+    };
+    let mut out = Vec::new();
+    for j in 0..seg {
+        quad(&mut out, rim(j, 1.0), rim(j + 1, 1.0), rim(j, -1.0), rim(j + 1, -1.0));
+        out.push([DVec3::Y, rim(j, 1.0), rim(j + 1, 1.0)]);
+        out.push([DVec3::NEG_Y, rim(j, -1.0), rim(j + 1, -1.0)]);
+    }
+    out
+}
+
+fn grid(out: &mut Vec<[DVec3; 3]>, n: u32, point: impl Fn(f64, f64) -> DVec3) {
+    let t = |i: u32| -1.0 + 2.0 * i as f64 / n as f64;
+    for i in 0..n {
+        for j in 0..n {
+            quad(out, point(t(i), t(j)), point(t(i + 1), t(j)), point(t(i), t(j + 1)), point(t(i + 1), t(j + 1)));
+        }
+    }
+}
+
+fn cube(n: u32) -> Vec<[DVec3; 3]> {
+    let mut out = Vec::new();
+    for axis in 0..3 {
+        for s in [-1.0, 1.0] {
+            grid(&mut out, n, |u, v| {
+                let mut p = [0.0; 3];
+                p[axis] = s;
+                p[(axis + 1) % 3] = u;
+                p[(axis + 2) % 3] = v;
+                DVec3::from_array(p)
+            });
+        }
+    }
+    out
+}
+
+fn plane(n: u32) -> Vec<[DVec3; 3]> {
+    let mut out = Vec::new();
+    grid(&mut out, n, |u, v| DVec3::new(u, 0.0, v));
+    out
+}
+
+fn pyramid(n: u32) -> Vec<[DVec3; 3]> {
+    let mut out = Vec::new();
+    grid(&mut out, n, |u, v| DVec3::new(u, -1.0, v));
+    let apex = DVec3::Y;
+    let base = [
+        DVec3::new(-1.0, -1.0, -1.0),
+        DVec3::new(1.0, -1.0, -1.0),
+        DVec3::new(1.0, -1.0, 1.0),
+        DVec3::new(-1.0, -1.0, 1.0),
+    ];
+    let nf = n as f64;
+    for k in 0..4 {
+        let (b0, b1) = (base[k], base[(k + 1) % 4]);
+        let p = |i: u32, j: u32| b0 + (b1 - b0) * (i as f64 / nf) + (apex - b0) * (j as f64 / nf);
+        for j in 0..n {
+            for i in 0..n - j {
+                out.push([p(i, j), p(i + 1, j), p(i, j + 1)]);
+                if i + 1 < n - j {
+                    out.push([p(i + 1, j), p(i + 1, j + 1), p(i, j + 1)]);
+                }
+            }
+        }
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn unit_normals(m: &MeshData) -> bool {
+        m.smooth_vertices.iter().all(|v| {
+            let n = glam::Vec3::from(v.normal);
+            n.is_finite() && (n.length() - 1.0).abs() < 1e-5
+        })
+    }
+
+    #[test]
+    fn counts_match_and_normals_are_unit() {
+        for shape in Shape::ALL {
+            for t in [1, 3, 8, 17] {
+                let m = tessellate(shape, t);
+                assert_eq!(m.triangle_count(), triangle_count(shape, t), "{shape:?} {t}");
+                assert_eq!(m.flat_vertices.len(), 3 * m.triangle_count());
+                assert!(unit_normals(&m), "{shape:?} {t}");
+            }
+        }
+    }
+
+    #[test]
+    fn faces_point_outwards() {
+        for shape in [Shape::Sphere, Shape::Cylinder, Shape::Cube, Shape::Pyramid] {
+            for t in triangles(shape, 8) {
+                let n = face_normal(&t).unwrap();
+                let c = (t[0] + t[1] + t[2]) / 3.0;
+                let inside = if shape == Shape::Pyramid { DVec3::new(0.0, -0.5, 0.0) } else { DVec3::ZERO };
+                assert!(n.dot(c - inside) > 0.0, "{shape:?}");
+            }
+        }
+    }
+
+    #[test]
+    fn sphere_is_smooth_and_close_to_exact_normals() {
+        let m = tessellate(Shape::Sphere, 32);
+        // Smooth: one vertex per position (no creases), and the averaged normal is near the radius.
+        for v in &m.smooth_vertices {
+            let p = glam::Vec3::from(v.position);
+            assert!(p.normalize().dot(glam::Vec3::from(v.normal)) > 0.999, "{v:?}");
+        }
+        let positions: std::collections::HashSet<_> =
+            m.smooth_vertices.iter().map(|v| v.position.map(f32::to_bits)).collect();
+        assert_eq!(positions.len(), m.smooth_vertices.len());
+    }
+
+    #[test]
+    fn crease_keeps_cylinder_caps_and_cube_faces_sharp() {
+        let m = tessellate(Shape::Cylinder, 16);
+        for v in &m.smooth_vertices {
+            let n = glam::Vec3::from(v.normal);
+            // Either a cap normal (±y) or a side normal (horizontal): never a blend of the two.
+            assert!(n.y.abs() > 0.9999 || n.y.abs() < 1e-6, "{v:?}");
+        }
+        let c = tessellate(Shape::Cube, 2);
+        for v in &c.smooth_vertices {
+            let n = glam::Vec3::from(v.normal);
+            assert!((n.abs().max_element() - 1.0).abs() < 1e-6, "{v:?}");
+        }
+        let p = tessellate(Shape::Pyramid, 1);
+        assert_eq!(p.smooth_vertices.len(), 4 + 4 * 3, "pyramid faces stay separate");
+    }
+
+    #[test]
+    fn degenerate_and_duplicate_vertex_triangles_get_finite_normals() {
+        let a = DVec3::new(0.0, 0.0, 0.0);
+        let b = DVec3::new(1.0, 0.0, 0.0);
+        let c = DVec3::new(0.0, 0.0, -1.0);
+        let tris = [[a, b, c], [a, a, b], [a, b, b * 2.0], [c, c, c]];
+        let m = build_mesh(&tris, CREASE_ANGLE_DEG).unwrap();
+        assert!(unit_normals(&m));
+        for v in &m.flat_vertices {
+            assert!(glam::Vec3::from(v.normal).is_finite() && glam::Vec3::from(v.centroid).is_finite());
+        }
+        // The degenerate triangles touching the good one take its normal (+y here).
+        assert!(m.smooth_vertices.iter().all(|v| v.normal[1] > 0.999));
+    }
+
+    #[test]
+    fn non_finite_positions_are_an_error() {
+        let t = [[DVec3::ZERO, DVec3::X, DVec3::new(f64::NAN, 0.0, 1.0)]];
+        let e = build_mesh(&t, CREASE_ANGLE_DEG).unwrap_err();
+        assert!(e.to_string().contains("triangle 0, corner 2"), "{e}");
+        let t = [[DVec3::ZERO, DVec3::splat(f64::INFINITY), DVec3::Z]];
+        assert!(build_mesh(&t, CREASE_ANGLE_DEG).is_err());
+    }
+}

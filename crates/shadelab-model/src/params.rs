@@ -1,0 +1,328 @@
+//! Parameter kinds, their allowed ranges and validation.
+//!
+//! Every range a user can set lives here once: the CLI validates with it, the viewer builds its
+//! sliders from it, and error messages quote it. A user's mistake gets one line naming the flag,
+//! the allowed range and the value given.
+
+use std::fmt;
+use std::str::FromStr;
+
+/// How lighting is distributed over a face (spec §8).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum ShadingMode {
+    /// One normal and one colour per face, lit at the face's centroid.
+    Flat,
+    /// Lighting at the vertices, colour interpolated.
+    Gouraud,
+    /// Normals interpolated and renormalized, lighting per pixel.
+    Phong,
+}
+
+/// Which specular term the illumination model uses (spec §3, §5).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum SpecularModel {
+    /// `(V·R)^h`.
+    Phong,
+    /// Beckmann D, min() G and exact Fresnel F.
+    CookTorrance,
+}
+
+/// Light source kind (spec §6).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum LightKind {
+    /// Parallel light from a source at infinity.
+    Directional,
+    /// A point source with distance falloff.
+    Point,
+}
+
+/// Which distance falloff a point light uses.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum FalloffForm {
+    /// `I0/(1 + α d²)` (spec §6).
+    Quadratic,
+    /// The chapter's `I0/(d + d0)` (spec §2).
+    Linear,
+}
+
+/// The Phong exponent `h`: a finite sharpness in `[1, H_MAX]`, or the perfect mirror (`h = ∞`).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum PhongExponent {
+    Finite(f64),
+    Mirror,
+}
+
+impl PhongExponent {
+    /// The exponent as the shader sees it: the finite value, or `H_MAX` for the mirror (which
+    /// the shader handles by its mirror flag, not by the exponent).
+    pub fn value(self) -> f64 {
+        match self {
+            PhongExponent::Finite(h) => h,
+            PhongExponent::Mirror => crate::guards::H_MAX,
+        }
+    }
+    pub fn is_mirror(self) -> bool {
+        matches!(self, PhongExponent::Mirror)
+    }
+}
+
+impl fmt::Display for PhongExponent {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            PhongExponent::Finite(h) => write!(f, "{h}"),
+            PhongExponent::Mirror => write!(f, "mirror"),
+        }
+    }
+}
+
+/// A user's mistake in a parameter: one line, naming what, the allowed values and what was given.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum ParamError {
+    #[error("{flag}: {value} is out of range: {meaning} must be in [{min}, {max}]")]
+    OutOfRange { flag: String, value: String, meaning: &'static str, min: f64, max: f64 },
+    #[error("{flag}: '{value}' is not a number (allowed: {allowed})")]
+    NotANumber { flag: String, value: String, allowed: String },
+    #[error("{flag}: unknown value '{value}' (allowed: {allowed})")]
+    Unknown { flag: String, value: String, allowed: String },
+}
+
+/// A numeric parameter's allowed range, its symbol and meaning (used for validation, sliders
+/// and tooltips).
+#[derive(Clone, Copy, Debug)]
+pub struct ParamRange {
+    pub flag: &'static str,
+    pub symbol: &'static str,
+    pub meaning: &'static str,
+    pub min: f64,
+    pub max: f64,
+}
+
+impl ParamRange {
+    /// Check a value (NaN and infinities are out of range).
+    pub fn check(&self, value: f64) -> Result<f64, ParamError> {
+        if value.is_finite() && value >= self.min && value <= self.max {
+            Ok(value)
+        } else {
+            Err(self.out_of_range(value.to_string()))
+        }
+    }
+
+    /// Parse and check a number given as text.
+    pub fn parse(&self, text: &str) -> Result<f64, ParamError> {
+        let v: f64 = text.trim().parse().map_err(|_| ParamError::NotANumber {
+            flag: self.flag.to_string(),
+            value: text.to_string(),
+            allowed: format!("a number in [{}, {}]", self.min, self.max),
+        })?;
+        self.check(v)
+    }
+
+    /// Parse and check an integer.
+    pub fn parse_u32(&self, text: &str) -> Result<u32, ParamError> {
+        let v: i64 = text.trim().parse().map_err(|_| ParamError::NotANumber {
+            flag: self.flag.to_string(),
+            value: text.to_string(),
+            allowed: format!("an integer in [{}, {}]", self.min, self.max),
+        })?;
+        if (v as f64) < self.min || (v as f64) > self.max {
+            return Err(self.out_of_range(v.to_string()));
+        }
+        Ok(v as u32)
+    }
+
+    fn out_of_range(&self, value: String) -> ParamError {
+        ParamError::OutOfRange {
+            flag: self.flag.to_string(),
+            value,
+            meaning: self.meaning,
+            min: self.min,
+            max: self.max,
+        }
+    }
+}
+
+/// Beckmann roughness `m` (spec §5). 0 is allowed (clamped to `M_MIN` inside the model); above 1
+/// the lobe is so wide the highlight has gone, and the white-furnace check covers [0.05, 1].
+pub const M: ParamRange =
+    ParamRange { flag: "--m", symbol: "m", meaning: "roughness m (Beckmann facet slope)", min: 0.0, max: 1.0 };
+/// Phong exponent `h` (spec §3); "mirror" is accepted besides the numbers.
+pub const H: ParamRange = ParamRange {
+    flag: "--h",
+    symbol: "h",
+    meaning: "Phong exponent h (sharpness; 'mirror' for h = ∞)",
+    min: 1.0,
+    max: crate::guards::H_MAX,
+};
+/// Reflectance at normal incidence `μ`, per colour channel (spec §5).
+pub const MU: ParamRange = ParamRange {
+    flag: "--mu",
+    symbol: "μ",
+    meaning: "normal-incidence reflectance μ (per channel)",
+    min: 0.0,
+    max: 1.0,
+};
+/// Falloff factor `α` of `I0/(1 + α d²)` (spec §6).
+pub const FALLOFF: ParamRange =
+    ParamRange { flag: "--falloff", symbol: "α", meaning: "falloff factor α", min: 0.0, max: 1e6 };
+/// Minimum distance `d0` of the chapter's `1/(d + d0)` (spec §2); at least `D0_MIN`.
+pub const D0: ParamRange = ParamRange {
+    flag: "--d0",
+    symbol: "d0",
+    meaning: "minimum distance d0 of 1/(d + d0)",
+    min: crate::guards::D0_MIN,
+    max: 1e3,
+};
+/// Image width in pixels.
+pub const WIDTH: ParamRange =
+    ParamRange { flag: "--width", symbol: "w", meaning: "image width in pixels", min: 1.0, max: 8192.0 };
+/// Image height in pixels.
+pub const HEIGHT: ParamRange =
+    ParamRange { flag: "--height", symbol: "h", meaning: "image height in pixels", min: 1.0, max: 8192.0 };
+/// A shape's tessellation (segments around, or subdivisions per edge).
+pub const TESSELLATION: ParamRange = ParamRange {
+    flag: "--tessellation",
+    symbol: "n",
+    meaning: "tessellation (segments or subdivisions)",
+    min: 1.0,
+    max: 4096.0,
+};
+/// Colour channels, shares r_s, r_d, r_a and intensities in [0, 1].
+pub const UNIT: ParamRange = ParamRange { flag: "value", symbol: "", meaning: "a share or colour", min: 0.0, max: 1.0 };
+/// Light intensity `I_L` (an HDR multiplier of the light's colour).
+pub const INTENSITY: ParamRange =
+    ParamRange { flag: "intensity", symbol: "I_L", meaning: "light intensity I_L", min: 0.0, max: 1e3 };
+
+/// Parse the Phong exponent: a number in `H`'s range, or `mirror`.
+pub fn parse_h(text: &str) -> Result<PhongExponent, ParamError> {
+    if text.trim().eq_ignore_ascii_case("mirror") {
+        return Ok(PhongExponent::Mirror);
+    }
+    H.parse(text).map(PhongExponent::Finite).map_err(|e| match e {
+        ParamError::NotANumber { flag, value, .. } => ParamError::NotANumber {
+            flag,
+            value,
+            allowed: format!("a number in [1, {}] or 'mirror'", crate::guards::H_MAX),
+        },
+        e => e,
+    })
+}
+
+/// Parse `μ` as `R,G,B` or one value for all three channels.
+pub fn parse_mu(text: &str) -> Result<[f64; 3], ParamError> {
+    let parts: Vec<&str> = text.split(',').collect();
+    match parts.as_slice() {
+        [one] => {
+            let v = MU.parse(one)?;
+            Ok([v; 3])
+        }
+        [r, g, b] => Ok([MU.parse(r)?, MU.parse(g)?, MU.parse(b)?]),
+        _ => Err(ParamError::NotANumber {
+            flag: MU.flag.into(),
+            value: text.into(),
+            allowed: "R,G,B or one value, each in [0, 1]".into(),
+        }),
+    }
+}
+
+/// Enum parameters given by name on the command line.
+pub trait NamedValue: Sized + Copy + 'static {
+    /// The flag this value is given with.
+    const FLAG: &'static str;
+    /// Every value with its name.
+    const ALL: &'static [(&'static str, Self)];
+
+    fn name(self) -> &'static str
+    where
+        Self: PartialEq,
+    {
+        Self::ALL.iter().find(|(_, v)| *v == self).map(|(n, _)| *n).unwrap_or("?")
+    }
+
+    fn parse_named(text: &str) -> Result<Self, ParamError> {
+        let t = text.trim().to_ascii_lowercase();
+        Self::ALL.iter().find(|(n, _)| *n == t).map(|(_, v)| *v).ok_or_else(|| ParamError::Unknown {
+            flag: Self::FLAG.into(),
+            value: text.into(),
+            allowed: Self::ALL.iter().map(|(n, _)| *n).collect::<Vec<_>>().join(", "),
+        })
+    }
+}
+
+impl NamedValue for ShadingMode {
+    const FLAG: &'static str = "--shading";
+    const ALL: &'static [(&'static str, Self)] =
+        &[("flat", ShadingMode::Flat), ("gouraud", ShadingMode::Gouraud), ("phong", ShadingMode::Phong)];
+}
+impl NamedValue for SpecularModel {
+    const FLAG: &'static str = "--specular";
+    const ALL: &'static [(&'static str, Self)] =
+        &[("phong", SpecularModel::Phong), ("cook-torrance", SpecularModel::CookTorrance)];
+}
+impl NamedValue for LightKind {
+    const FLAG: &'static str = "--light";
+    const ALL: &'static [(&'static str, Self)] =
+        &[("directional", LightKind::Directional), ("point", LightKind::Point)];
+}
+impl NamedValue for FalloffForm {
+    const FLAG: &'static str = "--falloff-form";
+    const ALL: &'static [(&'static str, Self)] =
+        &[("quadratic", FalloffForm::Quadratic), ("linear", FalloffForm::Linear)];
+}
+
+macro_rules! from_str_named {
+    ($($t:ty),*) => {$(
+        impl FromStr for $t {
+            type Err = ParamError;
+            fn from_str(s: &str) -> Result<Self, ParamError> { Self::parse_named(s) }
+        }
+        impl fmt::Display for $t {
+            fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result { f.write_str(self.name()) }
+        }
+    )*};
+}
+from_str_named!(ShadingMode, SpecularModel, LightKind, FalloffForm);
+
+impl ShadingMode {
+    pub const ALL_MODES: [ShadingMode; 3] = [ShadingMode::Flat, ShadingMode::Gouraud, ShadingMode::Phong];
+}
+impl SpecularModel {
+    pub const ALL_MODELS: [SpecularModel; 2] = [SpecularModel::Phong, SpecularModel::CookTorrance];
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn ranges_reject_out_of_range_and_non_finite() {
+        assert!(M.check(-0.1).is_err());
+        assert!(M.check(f64::NAN).is_err());
+        assert!(M.check(0.0).is_ok());
+        assert!(MU.parse("1.5").is_err());
+        assert!(WIDTH.parse_u32("0").is_err());
+        assert!(WIDTH.parse_u32("8193").is_err());
+        assert_eq!(WIDTH.parse_u32("8192"), Ok(8192));
+        assert!(parse_h("0.5").is_err());
+        assert_eq!(parse_h("mirror"), Ok(PhongExponent::Mirror));
+        assert_eq!(parse_mu("0.5"), Ok([0.5; 3]));
+        assert_eq!(parse_mu("1,0.5,0"), Ok([1.0, 0.5, 0.0]));
+        assert!(parse_mu("1,0.5").is_err());
+    }
+
+    #[test]
+    fn errors_are_one_line_naming_flag_and_range() {
+        let e = M.check(-1.0).unwrap_err().to_string();
+        assert!(!e.contains('\n'));
+        assert!(e.contains("--m") && e.contains("[0, 1]"), "{e}");
+        let e = ShadingMode::parse_named("toon").unwrap_err().to_string();
+        assert!(e.contains("--shading") && e.contains("flat, gouraud, phong"), "{e}");
+    }
+
+    #[test]
+    fn named_values_round_trip() {
+        for (n, v) in SpecularModel::ALL {
+            assert_eq!(SpecularModel::parse_named(n), Ok(*v));
+            assert_eq!(v.name(), *n);
+        }
+    }
+}

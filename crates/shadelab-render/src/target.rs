@@ -1,0 +1,171 @@
+//! Render targets and readback: an offscreen colour + depth target of any size, and a linear
+//! float image read back from it (rows padded to 256 bytes on the GPU side).
+
+use crate::renderer::DEPTH_FORMAT;
+
+/// A colour texture with its depth buffer: what the renderer draws into. The viewer and
+/// `shadelab render` both draw into one of these.
+pub struct Target {
+    pub color: wgpu::Texture,
+    pub color_view: wgpu::TextureView,
+    pub depth_view: wgpu::TextureView,
+    pub width: u32,
+    pub height: u32,
+    pub format: wgpu::TextureFormat,
+}
+
+/// The format headless renders use: 32-bit float, so that out-of-range and non-finite values
+/// survive to the EXR output.
+pub const HDR_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba32Float;
+
+impl Target {
+    pub fn new(device: &wgpu::Device, width: u32, height: u32, format: wgpu::TextureFormat) -> Target {
+        let size = wgpu::Extent3d { width, height, depth_or_array_layers: 1 };
+        let color = device.create_texture(&wgpu::TextureDescriptor {
+            label: Some("shadelab color"),
+            size,
+            mip_level_count: 1,
+            sample_count: 1,
+            dimension: wgpu::TextureDimension::D2,
+            format,
+            usage: wgpu::TextureUsages::RENDER_ATTACHMENT
+                | wgpu::TextureUsages::COPY_SRC
+                | wgpu::TextureUsages::TEXTURE_BINDING,
+            view_formats: &[],
+        });
+        let depth = device.create_texture(&wgpu::TextureDescriptor {
+            label: Some("shadelab depth"),
+            size,
+            mip_level_count: 1,
+            sample_count: 1,
+            dimension: wgpu::TextureDimension::D2,
+            format: DEPTH_FORMAT,
+            usage: wgpu::TextureUsages::RENDER_ATTACHMENT,
+            view_formats: &[],
+        });
+        Target {
+            color_view: color.create_view(&Default::default()),
+            depth_view: depth.create_view(&Default::default()),
+            color,
+            width,
+            height,
+            format,
+        }
+    }
+}
+
+/// A linear RGBA float image, rows top to bottom.
+#[derive(Clone, Debug, PartialEq)]
+pub struct LinearImage {
+    pub width: u32,
+    pub height: u32,
+    pub pixels: Vec<[f32; 4]>,
+}
+
+/// Linear → sRGB transfer function (IEC 61966-2-1), input clamped to [0, 1].
+pub fn linear_to_srgb(x: f32) -> f32 {
+    let x = if x.is_nan() { 0.0 } else { x.clamp(0.0, 1.0) };
+    if x <= 0.003_130_8 { 12.92 * x } else { 1.055 * x.powf(1.0 / 2.4) - 0.055 }
+}
+
+impl LinearImage {
+    pub fn get(&self, x: u32, y: u32) -> [f32; 4] {
+        self.pixels[(y * self.width + x) as usize]
+    }
+
+    /// 8-bit sRGB RGB bytes (clamped; NaN as 0), as the PNG output and FLIP comparisons use.
+    pub fn to_srgb8(&self) -> Vec<u8> {
+        self.pixels
+            .iter()
+            .flat_map(|p| [p[0], p[1], p[2]].map(|c| (linear_to_srgb(c) * 255.0 + 0.5) as u8))
+            .collect()
+    }
+
+    /// Number of pixels with a NaN or infinite channel.
+    pub fn nonfinite_count(&self) -> usize {
+        self.pixels.iter().filter(|p| p.iter().any(|c| !c.is_finite())).count()
+    }
+}
+
+/// Bytes a buffer row needs for `width` texels of `bytes_per_texel`, padded to the copy
+/// alignment (256).
+pub fn padded_bytes_per_row(width: u32, bytes_per_texel: u32) -> u32 {
+    let unpadded = width * bytes_per_texel;
+    unpadded.div_ceil(wgpu::COPY_BYTES_PER_ROW_ALIGNMENT) * wgpu::COPY_BYTES_PER_ROW_ALIGNMENT
+}
+
+/// Most bytes one readback band may take: large images are read in bands of rows so the staging
+/// buffer stays small (an 8192² float image is 1 GiB).
+const READBACK_BAND_BYTES: u64 = 64 << 20;
+
+/// Read an `Rgba32Float` target back to the CPU.
+pub fn read_back(device: &wgpu::Device, queue: &wgpu::Queue, target: &Target) -> LinearImage {
+    assert_eq!(target.format, HDR_FORMAT, "read_back reads Rgba32Float targets");
+    let (w, h) = (target.width, target.height);
+    let bpr = padded_bytes_per_row(w, 16);
+    let band_rows = ((READBACK_BAND_BYTES / bpr as u64).max(1) as u32).min(h);
+    let staging = device.create_buffer(&wgpu::BufferDescriptor {
+        label: Some("shadelab readback"),
+        size: bpr as u64 * band_rows as u64,
+        usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
+        mapped_at_creation: false,
+    });
+    let mut pixels = Vec::with_capacity((w * h) as usize);
+    let mut y0 = 0;
+    while y0 < h {
+        let rows = band_rows.min(h - y0);
+        let mut enc = device.create_command_encoder(&Default::default());
+        enc.copy_texture_to_buffer(
+            wgpu::TexelCopyTextureInfo {
+                texture: &target.color,
+                mip_level: 0,
+                origin: wgpu::Origin3d { x: 0, y: y0, z: 0 },
+                aspect: wgpu::TextureAspect::All,
+            },
+            wgpu::TexelCopyBufferInfo {
+                buffer: &staging,
+                layout: wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: Some(bpr), rows_per_image: Some(rows) },
+            },
+            wgpu::Extent3d { width: w, height: rows, depth_or_array_layers: 1 },
+        );
+        queue.submit([enc.finish()]);
+        let slice = staging.slice(..bpr as u64 * rows as u64);
+        slice.map_async(wgpu::MapMode::Read, |r| r.expect("map readback buffer"));
+        device.poll(wgpu::PollType::wait_indefinitely()).expect("device poll");
+        {
+            let data = slice.get_mapped_range().expect("mapped range");
+            for row in 0..rows as usize {
+                let start = row * bpr as usize;
+                let bytes = &data[start..start + w as usize * 16];
+                pixels.extend(bytes.chunks_exact(16).map(|t| {
+                    let f: [f32; 4] = bytemuck::pod_read_unaligned(t);
+                    f
+                }));
+            }
+        }
+        staging.unmap();
+        y0 += rows;
+    }
+    LinearImage { width: w, height: h, pixels }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn rows_are_padded_to_256_bytes() {
+        assert_eq!(padded_bytes_per_row(1, 16), 256);
+        assert_eq!(padded_bytes_per_row(16, 16), 256);
+        assert_eq!(padded_bytes_per_row(17, 16), 512);
+        assert_eq!(padded_bytes_per_row(8192, 16), 8192 * 16);
+    }
+
+    #[test]
+    fn srgb_transfer_ends_and_nan() {
+        assert_eq!(linear_to_srgb(0.0), 0.0);
+        assert!((linear_to_srgb(1.0) - 1.0).abs() < 1e-6);
+        assert_eq!(linear_to_srgb(f32::NAN), 0.0);
+        assert!((linear_to_srgb(0.214) - 0.5).abs() < 2e-3);
+    }
+}

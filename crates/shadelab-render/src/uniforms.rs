@@ -1,0 +1,108 @@
+//! CPU twins of the WGSL uniform structs (`#[repr(C)]` + bytemuck). The test
+//! `uniform_layouts_match_wgsl` holds every size and field offset equal to naga's layout.
+
+use bytemuck::{Pod, Zeroable};
+use shadelab_model::scene::MAX_LIGHTS;
+use shadelab_model::{FalloffForm, LightKind, Material, Object, Scene};
+
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Pod, Zeroable)]
+pub struct LightUniform {
+    pub position: [f32; 4],
+    pub direction: [f32; 4],
+    pub radiance: [f32; 4],
+    pub kind: u32,
+    pub falloff_form: u32,
+    pub falloff_alpha: f32,
+    pub d0: f32,
+}
+
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Pod, Zeroable)]
+pub struct GlobalsUniform {
+    pub view_proj: [[f32; 4]; 4],
+    pub camera_pos: [f32; 4],
+    pub ambient: [f32; 4],
+    pub light_count: u32,
+    pub flags: u32,
+    pub _pad0: u32,
+    pub _pad1: u32,
+    pub lights: [LightUniform; MAX_LIGHTS],
+}
+
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Pod, Zeroable)]
+pub struct ObjectUniform {
+    pub model: [[f32; 4]; 4],
+    pub normal_matrix: [[f32; 4]; 4],
+    pub color: [f32; 4],
+    pub mu: [f32; 4],
+    pub r_s: f32,
+    pub r_d: f32,
+    pub r_a: f32,
+    pub m: f32,
+    pub h: f32,
+    pub mirror: u32,
+    pub _pad0: u32,
+    pub _pad1: u32,
+}
+
+/// `flags` bit: paint non-finite pixels magenta.
+pub const FLAG_DEBUG_NONFINITE: u32 = 1;
+
+fn rgb(c: [f64; 3], w: f32) -> [f32; 4] {
+    [c[0] as f32, c[1] as f32, c[2] as f32, w]
+}
+
+impl GlobalsUniform {
+    pub fn new(scene: &Scene, width: u32, height: u32, flags: u32) -> Self {
+        let mut lights = [LightUniform::zeroed(); MAX_LIGHTS];
+        for (slot, l) in lights.iter_mut().zip(&scene.lights) {
+            *slot = LightUniform {
+                position: l.position.as_vec3().extend(1.0).to_array(),
+                direction: l.direction.as_vec3().extend(0.0).to_array(),
+                radiance: rgb(l.color.map(|c| c * l.intensity), 1.0),
+                kind: match l.kind {
+                    LightKind::Directional => 0,
+                    LightKind::Point => 1,
+                },
+                falloff_form: match l.falloff_form {
+                    FalloffForm::Quadratic => 0,
+                    FalloffForm::Linear => 1,
+                },
+                falloff_alpha: l.falloff_alpha as f32,
+                d0: l.d0 as f32,
+            };
+        }
+        GlobalsUniform {
+            view_proj: scene.camera.view_proj(width, height).to_cols_array_2d(),
+            camera_pos: scene.camera.eye.as_vec3().extend(1.0).to_array(),
+            ambient: rgb(scene.ambient, 1.0),
+            light_count: scene.lights.len().min(MAX_LIGHTS) as u32,
+            flags,
+            _pad0: 0,
+            _pad1: 0,
+            lights,
+        }
+    }
+}
+
+impl ObjectUniform {
+    pub fn new(object: &Object, material: &Material) -> Self {
+        let nm = glam::DMat4::from_mat3(object.transform.normal_matrix());
+        ObjectUniform {
+            model: object.transform.matrix().as_mat4().to_cols_array_2d(),
+            normal_matrix: nm.as_mat4().to_cols_array_2d(),
+            color: rgb(material.color, 1.0),
+            mu: rgb(material.mu, 0.0),
+            r_s: material.r_s as f32,
+            r_d: material.r_d as f32,
+            r_a: material.r_a as f32,
+            m: material.m as f32,
+            h: material.h.value() as f32,
+            mirror: material.h.is_mirror() as u32,
+            _pad0: 0,
+            _pad1: 0,
+        }
+    }
+}

@@ -1,0 +1,69 @@
+//! `shadelab bench …`: measurements, reported with the device and the command; never asserted.
+
+use crate::{Failure, cli};
+use anyhow::Context;
+use shadelab_model::{ShadingMode, SpecularModel};
+use shadelab_render::timing::{FrameTimer, median, quantile_sorted};
+use shadelab_render::{AdapterChoice, Gpu, RenderSettings, Renderer, Target};
+
+pub fn run_render(args: &cli::BenchRenderArgs) -> Result<(), Failure> {
+    let (width, height) = cli::size(&args.width, &args.height)?;
+    let frames = cli::FRAMES.parse_u32(&args.frames)? as usize;
+    let warmup = cli::FRAMES.parse_u32(&args.warmup).unwrap_or(0) as usize;
+    let scene = cli::scene(&args.scene)?;
+    let gpu = Gpu::headless(AdapterChoice::from_env()).context("opening a GPU adapter")?;
+    let mut r = Renderer::new(&gpu.device, &gpu.queue);
+    let gs = r.upload(&scene);
+    let target = Target::new(&gpu.device, width, height, shadelab_render::target::HDR_FORMAT);
+    let timer = FrameTimer::new(&gpu.device, &gpu.queue);
+    let combos: Vec<RenderSettings> = ShadingMode::ALL_MODES
+        .into_iter()
+        .flat_map(|shading| {
+            SpecularModel::ALL_MODELS.into_iter().map(move |specular| RenderSettings {
+                shading,
+                specular,
+                debug_nonfinite: false,
+            })
+        })
+        .collect();
+    // Build every pipeline and warm up before measuring anything.
+    for s in &combos {
+        r.write_uniforms(&gs, &scene, &target, s);
+        for _ in 0..warmup.max(1) {
+            timer.frame(&mut r, &gs, &target, s);
+        }
+    }
+    // Interleave the combinations frame by frame, so machine noise spreads evenly over them.
+    let mut samples = vec![Vec::with_capacity(frames); combos.len()];
+    for _ in 0..frames {
+        for (i, s) in combos.iter().enumerate() {
+            r.write_uniforms(&gs, &scene, &target, s);
+            samples[i].push(timer.frame(&mut r, &gs, &target, s));
+        }
+    }
+    println!(
+        "# shadelab bench render — scene '{}', {}×{}, {} triangles, {} lights",
+        scene.name,
+        width,
+        height,
+        scene.triangle_count(),
+        scene.lights.len()
+    );
+    println!("# device: {}; time: {}; {} frames per row after {} warm-up", gpu.describe(), timer.source().label(), frames, warmup);
+    println!("| shading | specular | median ms | p10 ms | p90 ms | ratio to fastest |");
+    println!("|---|---|---:|---:|---:|---:|");
+    let medians: Vec<f64> = samples.iter_mut().map(|s| median(s)).collect();
+    let fastest = medians.iter().copied().fold(f64::INFINITY, f64::min);
+    for (i, s) in combos.iter().enumerate() {
+        println!(
+            "| {} | {} | {:.3} | {:.3} | {:.3} | {:.2} |",
+            s.shading,
+            s.specular,
+            medians[i],
+            quantile_sorted(&samples[i], 0.1),
+            quantile_sorted(&samples[i], 0.9),
+            medians[i] / fastest
+        );
+    }
+    Ok(())
+}

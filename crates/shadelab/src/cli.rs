@@ -1,0 +1,150 @@
+//! Command-line arguments. Values arrive as text and are validated by the model's ranges, so a
+//! mistake gets one line naming the flag and its allowed range (exit code 2).
+
+use clap::{Args, Parser, Subcommand};
+use shadelab_model::params::{self, NamedValue, ParamError};
+use shadelab_model::{FalloffForm, LightKind, Overrides, Scene, ShadingMode, SpecularModel};
+use shadelab_render::RenderSettings;
+use std::path::PathBuf;
+
+#[derive(Parser, Debug)]
+#[command(name = "shadelab", version, about = "Flat, Gouraud and Phong shading with Phong or Cook–Torrance specular: a viewer, headless renders and benchmarks.")]
+pub struct Cli {
+    #[command(subcommand)]
+    pub command: Option<Command>,
+    /// Viewer: save the window's content (panel included) to this PNG, then exit (with
+    /// --exit-after-frames).
+    #[arg(long, value_name = "PATH")]
+    pub screenshot: Option<PathBuf>,
+    /// Viewer: render this many frames, then exit 0.
+    #[arg(long, value_name = "N")]
+    pub exit_after_frames: Option<String>,
+}
+
+#[derive(Subcommand, Debug)]
+pub enum Command {
+    /// Render a scene headless to a PNG (sRGB) or an EXR (linear float).
+    Render(RenderArgs),
+    /// Measure: render time per shading mode × specular model.
+    #[command(subcommand)]
+    Bench(BenchCommand),
+}
+
+#[derive(Subcommand, Debug)]
+pub enum BenchCommand {
+    /// Frame time of a scene for each shading × specular combination, interleaved in one run.
+    Render(BenchRenderArgs),
+}
+
+/// The scene and the parameters that override it (shared by `render` and `bench`).
+#[derive(Args, Debug, Clone)]
+pub struct SceneArgs {
+    /// A built-in scene: default, sphere, cylinder, pyramid, cube.
+    #[arg(long, default_value = "default", value_name = "NAME|PATH")]
+    pub scene: String,
+    /// Roughness m of every material, in [0, 1].
+    #[arg(long)]
+    pub m: Option<String>,
+    /// Phong exponent h of every material, in [1, 1e9], or 'mirror'.
+    #[arg(long)]
+    pub h: Option<String>,
+    /// Normal-incidence reflectance μ of every material: R,G,B or one value, each in [0, 1].
+    #[arg(long, value_name = "R,G,B")]
+    pub mu: Option<String>,
+    /// Falloff factor α of every point light, I0/(1 + α d²), in [0, 1e6].
+    #[arg(long, value_name = "ALPHA")]
+    pub falloff: Option<String>,
+    /// Falloff form of every point light: quadratic (1/(1 + α d²)) or linear (the chapter's 1/(d + d0)).
+    #[arg(long, value_name = "FORM")]
+    pub falloff_form: Option<String>,
+    /// d0 of the linear falloff 1/(d + d0), in [0.001, 1000].
+    #[arg(long)]
+    pub d0: Option<String>,
+    /// Make every light directional or point.
+    #[arg(long, value_name = "directional|point")]
+    pub light: Option<String>,
+}
+
+#[derive(Args, Debug)]
+pub struct RenderArgs {
+    /// flat | gouraud | phong
+    #[arg(long, default_value = "phong")]
+    pub shading: String,
+    /// phong | cook-torrance
+    #[arg(long, default_value = "cook-torrance")]
+    pub specular: String,
+    #[command(flatten)]
+    pub scene: SceneArgs,
+    /// Width in pixels, 1 to 8192.
+    #[arg(long, default_value = "1280")]
+    pub width: String,
+    /// Height in pixels, 1 to 8192.
+    #[arg(long, default_value = "720")]
+    pub height: String,
+    /// Output file: .png (8-bit sRGB) or .exr (linear 32-bit float).
+    #[arg(long, default_value = "shadelab.png", value_name = "PATH")]
+    pub output: PathBuf,
+    /// Paint pixels whose colour is NaN or infinite magenta.
+    #[arg(long)]
+    pub debug_nonfinite: bool,
+}
+
+#[derive(Args, Debug)]
+pub struct BenchRenderArgs {
+    #[command(flatten)]
+    pub scene: SceneArgs,
+    /// Width in pixels, 1 to 8192.
+    #[arg(long, default_value = "1280")]
+    pub width: String,
+    /// Height in pixels, 1 to 8192.
+    #[arg(long, default_value = "720")]
+    pub height: String,
+    /// Measured frames per combination (after warm-up).
+    #[arg(long, default_value = "30")]
+    pub frames: String,
+    /// Warm-up frames per combination (not measured).
+    #[arg(long, default_value = "3")]
+    pub warmup: String,
+}
+
+/// Frames for benchmarks and the viewer's --exit-after-frames.
+pub const FRAMES: params::ParamRange =
+    params::ParamRange { flag: "--frames", symbol: "N", meaning: "number of frames", min: 1.0, max: 1e6 };
+
+/// Build the scene the arguments ask for.
+pub fn scene(args: &SceneArgs) -> Result<Scene, ParamError> {
+    let mut scene = Scene::builtin(&args.scene).ok_or_else(|| ParamError::Unknown {
+        flag: "--scene".into(),
+        value: args.scene.clone(),
+        allowed: format!(
+            "{}; scene files are not supported yet",
+            shadelab_model::scene::BUILTIN_SCENES.join(", ")
+        ),
+    })?;
+    scene.apply(&overrides(args)?);
+    Ok(scene)
+}
+
+pub fn overrides(a: &SceneArgs) -> Result<Overrides, ParamError> {
+    Ok(Overrides {
+        m: a.m.as_deref().map(|t| params::M.parse(t)).transpose()?,
+        h: a.h.as_deref().map(params::parse_h).transpose()?,
+        mu: a.mu.as_deref().map(params::parse_mu).transpose()?,
+        falloff_alpha: a.falloff.as_deref().map(|t| params::FALLOFF.parse(t)).transpose()?,
+        falloff_form: a.falloff_form.as_deref().map(FalloffForm::parse_named).transpose()?,
+        d0: a.d0.as_deref().map(|t| params::D0.parse(t)).transpose()?,
+        light: a.light.as_deref().map(LightKind::parse_named).transpose()?,
+    })
+}
+
+pub fn settings(shading: &str, specular: &str, debug_nonfinite: bool) -> Result<RenderSettings, ParamError> {
+    Ok(RenderSettings {
+        shading: ShadingMode::parse_named(shading)?,
+        specular: SpecularModel::parse_named(specular)?,
+        debug_nonfinite,
+    })
+}
+
+pub fn size(width: &str, height: &str) -> Result<(u32, u32), ParamError> {
+    Ok((params::WIDTH.parse_u32(width)?, params::HEIGHT.parse_u32(height)?))
+}

@@ -1,0 +1,65 @@
+//! `shadelab`: the viewer (no subcommand), `render` and `bench`.
+
+mod bench;
+mod cli;
+mod render;
+mod viewer;
+
+use clap::Parser;
+use std::process::ExitCode;
+
+/// Exit code for a user's mistake (bad flag, out-of-range value, bad file).
+const EXIT_USAGE: u8 = 2;
+
+/// What went wrong: the user's input (exit 2) or the run itself (exit 1).
+#[derive(Debug)]
+pub enum Failure {
+    Usage(String),
+    Run(anyhow::Error),
+}
+
+impl From<shadelab_model::params::ParamError> for Failure {
+    fn from(e: shadelab_model::params::ParamError) -> Self {
+        Failure::Usage(e.to_string())
+    }
+}
+
+impl From<anyhow::Error> for Failure {
+    fn from(e: anyhow::Error) -> Self {
+        Failure::Run(e)
+    }
+}
+
+fn main() -> ExitCode {
+    env_logger::Builder::from_env(env_logger::Env::default().default_filter_or("warn")).init();
+    let cli = match cli::Cli::try_parse() {
+        Ok(c) => c,
+        Err(e) => {
+            use clap::error::ErrorKind::*;
+            if matches!(e.kind(), DisplayHelp | DisplayVersion | DisplayHelpOnMissingArgumentOrSubcommand) {
+                let _ = e.print();
+                return ExitCode::SUCCESS;
+            }
+            // One line: clap's first line names the flag and what is wrong.
+            let text = e.render().to_string();
+            eprintln!("{}", text.lines().next().unwrap_or("error: bad arguments"));
+            return ExitCode::from(EXIT_USAGE);
+        }
+    };
+    let result = match cli.command {
+        Some(cli::Command::Render(args)) => render::run(&args),
+        Some(cli::Command::Bench(cli::BenchCommand::Render(args))) => bench::run_render(&args),
+        None => viewer::run(cli.screenshot, cli.exit_after_frames.as_deref()),
+    };
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(Failure::Usage(msg)) => {
+            eprintln!("error: {msg}");
+            ExitCode::from(EXIT_USAGE)
+        }
+        Err(Failure::Run(e)) => {
+            eprintln!("error: {e:#}");
+            ExitCode::FAILURE
+        }
+    }
+}

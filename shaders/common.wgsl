@@ -1,0 +1,41 @@
+// Shared constants and helpers of the shadelab lighting model.
+//
+// The guards below are twins of crates/shadelab-model/src/guards.rs, where each value's reason
+// is given; the test `wgsl_guards_equal_rust_guards` holds the two equal. They clamp inputs:
+// WGSL may assume no NaN or infinity, so filtering bad values afterwards would not work.
+
+const NORMALIZE_MIN_LEN2: f32 = 1e-20;
+const N_DOT_V_MIN: f32 = 1e-4;
+const N_DOT_H_MIN: f32 = 1e-4;
+const M_MIN: f32 = 1e-3;
+const H_MAX: f32 = 1e9;
+const MIRROR_V_DOT_R_MIN: f32 = 0.999999;
+const FRESNEL_SQRT_MU_MAX: f32 = 0.9999;
+const FRESNEL_G_PLUS_C_MIN: f32 = 1e-6;
+const LIGHT_DIST_MIN: f32 = 1e-4;
+const D0_MIN: f32 = 1e-3;
+
+// Light slots in the scene uniform (scene::MAX_LIGHTS).
+const MAX_LIGHTS: u32 = 8u;
+
+const LIGHT_DIRECTIONAL: u32 = 0u;
+const LIGHT_POINT: u32 = 1u;
+const FALLOFF_QUADRATIC: u32 = 0u;
+const FALLOFF_LINEAR: u32 = 1u;
+const SPECULAR_PHONG: u32 = 0u;
+const SPECULAR_COOK_TORRANCE: u32 = 1u;
+
+// Normalize `v`, or return `fallback` when `v` is (nearly) zero (guard NORMALIZE_MIN_LEN2).
+fn safe_normalize(v: vec3<f32>, fallback: vec3<f32>) -> vec3<f32> {
+    let len2 = dot(v, v);
+    return select(fallback, v * inverseSqrt(max(len2, NORMALIZE_MIN_LEN2)), len2 > NORMALIZE_MIN_LEN2);
+}
+
+// True for NaN or ±infinity, tested on the bits so that no fast-math assumption removes it.
+fn is_nonfinite(x: f32) -> bool {
+    return (bitcast<u32>(x) & 0x7f800000u) == 0x7f800000u;
+}
+
+fn any_nonfinite(c: vec3<f32>) -> bool {
+    return is_nonfinite(c.x) || is_nonfinite(c.y) || is_nonfinite(c.z);
+}

@@ -1,0 +1,51 @@
+// Light sources and distance falloff (spec §2, §6).
+
+struct Light {
+    // xyz: position of a point light.
+    position: vec4<f32>,
+    // xyz: direction a directional light travels (L = −direction).
+    direction: vec4<f32>,
+    // rgb: colour × intensity I_L.
+    radiance: vec4<f32>,
+    kind: u32,
+    falloff_form: u32,
+    falloff_alpha: f32,
+    d0: f32,
+}
+
+// Spec §6: I(d) = I0/(1 + α d²); in (0, 1] for α ≥ 0.
+fn falloff_quadratic(d: f32, alpha: f32) -> f32 {
+    return 1.0 / (1.0 + max(alpha, 0.0) * d * d);
+}
+
+// Spec §2: the chapter's 1/(d + d0), d0 kept at or above D0_MIN.
+fn falloff_linear(d: f32, d0: f32) -> f32 {
+    return 1.0 / (max(d, 0.0) + max(d0, D0_MIN));
+}
+
+struct LightSample {
+    // Unit vector from the surface towards the light.
+    l: vec3<f32>,
+    // Incident intensity I_L after falloff, per channel.
+    radiance: vec3<f32>,
+}
+
+// Direction and intensity of one light at surface point `p` with normal `n`. A point light closer
+// than LIGHT_DIST_MIN touches the surface: its direction is undefined, so L = N.
+fn light_sample(light: Light, p: vec3<f32>, n: vec3<f32>) -> LightSample {
+    var s: LightSample;
+    if (light.kind == LIGHT_POINT) {
+        let to_light = light.position.xyz - p;
+        let d = length(to_light);
+        s.l = select(n, to_light / max(d, LIGHT_DIST_MIN), d > LIGHT_DIST_MIN);
+        var f = falloff_quadratic(d, light.falloff_alpha);
+        if (light.falloff_form == FALLOFF_LINEAR) {
+            f = falloff_linear(d, light.d0);
+        }
+        s.radiance = light.radiance.rgb * f;
+    } else {
+        s.l = safe_normalize(-light.direction.xyz, n);
+        s.radiance = light.radiance.rgb;
+    }
+    return s;
+}

@@ -1,0 +1,156 @@
+// The three shading modes (spec §8) over the Phong illumination model (spec §3):
+// I = I_a + Σ_lights I_L · (r_d·C·(N·L) + r_s·S), S = Phong or Cook–Torrance specular.
+// Flat: lit once per face at its centroid. Gouraud: lit at the vertices, colour interpolated.
+// Phong: normals interpolated, renormalized, lit per pixel.
+
+// Which specular term S is (SPECULAR_PHONG or SPECULAR_COOK_TORRANCE), set per pipeline.
+override SPECULAR_MODEL: u32 = SPECULAR_PHONG;
+
+struct Globals {
+    view_proj: mat4x4<f32>,
+    // xyz: eye position.
+    camera_pos: vec4<f32>,
+    // rgb: ambient intensity I_amb.
+    ambient: vec4<f32>,
+    light_count: u32,
+    // bit 0: paint non-finite pixels magenta.
+    flags: u32,
+    _pad0: u32,
+    _pad1: u32,
+    lights: array<Light, MAX_LIGHTS>,
+}
+
+struct Object {
+    model: mat4x4<f32>,
+    // Upper 3×3: carries object-space normals to world space ((R S)^-T).
+    normal_matrix: mat4x4<f32>,
+    // rgb: surface colour C.
+    color: vec4<f32>,
+    // rgb: normal-incidence reflectance μ.
+    mu: vec4<f32>,
+    r_s: f32,
+    r_d: f32,
+    r_a: f32,
+    m: f32,
+    h: f32,
+    // 1: the Phong "mirror" setting (h = ∞).
+    mirror: u32,
+    _pad0: u32,
+    _pad1: u32,
+}
+
+const FLAG_DEBUG_NONFINITE: u32 = 1u;
+const NONFINITE_COLOR: vec3<f32> = vec3(1.0, 0.0, 1.0);
+
+@group(0) @binding(0) var<uniform> globals: Globals;
+@group(1) @binding(0) var<uniform> object: Object;
+
+// The Phong illumination model at world point `p` with (not necessarily unit) normal `n_in`.
+fn shade(p: vec3<f32>, n_in: vec3<f32>) -> vec3<f32> {
+    let v = safe_normalize(globals.camera_pos.xyz - p, vec3(0.0, 1.0, 0.0));
+    // A zero normal (e.g. interpolated between opposite vertex normals) faces the viewer.
+    let n = safe_normalize(n_in, v);
+    let c = object.color.rgb;
+    let v_index = fresnel_v_from_mu(object.mu.rgb);
+    let n_dot_v = dot(n, v);
+    var total = globals.ambient.rgb * object.r_a * c;
+    for (var i = 0u; i < min(globals.light_count, MAX_LIGHTS); i++) {
+        let s = light_sample(globals.lights[i], p, n);
+        let n_dot_l = dot(n, s.l);
+        if (n_dot_l <= 0.0) {
+            continue; // own shadow: ambient only
+        }
+        var spec: vec3<f32>;
+        if (SPECULAR_MODEL == SPECULAR_COOK_TORRANCE) {
+            spec = specular_cook_torrance(n, v, s.l, object.m, v_index);
+        } else {
+            let r = 2.0 * n_dot_l * n - s.l;
+            spec = vec3(select(0.0, specular_phong(dot(v, r), object.h, object.mirror != 0u), n_dot_v > 0.0));
+        }
+        total += s.radiance * (object.r_d * c * diffuse_lambert(n_dot_l) + object.r_s * spec);
+    }
+    return total;
+}
+
+fn finish(color: vec3<f32>) -> vec4<f32> {
+    if ((globals.flags & FLAG_DEBUG_NONFINITE) != 0u && any_nonfinite(color)) {
+        return vec4(NONFINITE_COLOR, 1.0);
+    }
+    return vec4(color, 1.0);
+}
+
+fn to_world(p: vec3<f32>) -> vec3<f32> {
+    return (object.model * vec4(p, 1.0)).xyz;
+}
+
+fn normal_to_world(n: vec3<f32>) -> vec3<f32> {
+    return mat3x3(object.normal_matrix[0].xyz, object.normal_matrix[1].xyz, object.normal_matrix[2].xyz) * n;
+}
+
+struct SmoothIn {
+    @location(0) position: vec3<f32>,
+    @location(1) normal: vec3<f32>,
+}
+
+struct FlatIn {
+    @location(0) position: vec3<f32>,
+    @location(1) normal: vec3<f32>,
+    @location(2) centroid: vec3<f32>,
+}
+
+struct ColorOut {
+    @builtin(position) clip: vec4<f32>,
+    @location(0) color: vec3<f32>,
+}
+
+struct FlatOut {
+    @builtin(position) clip: vec4<f32>,
+    @location(0) @interpolate(flat) color: vec3<f32>,
+}
+
+struct PhongOut {
+    @builtin(position) clip: vec4<f32>,
+    @location(0) world_pos: vec3<f32>,
+    @location(1) world_normal: vec3<f32>,
+}
+
+@vertex
+fn vs_flat(in: FlatIn) -> FlatOut {
+    var out: FlatOut;
+    out.clip = globals.view_proj * vec4(to_world(in.position), 1.0);
+    out.color = shade(to_world(in.centroid), normal_to_world(in.normal));
+    return out;
+}
+
+@fragment
+fn fs_flat(in: FlatOut) -> @location(0) vec4<f32> {
+    return finish(in.color);
+}
+
+@vertex
+fn vs_gouraud(in: SmoothIn) -> ColorOut {
+    var out: ColorOut;
+    let p = to_world(in.position);
+    out.clip = globals.view_proj * vec4(p, 1.0);
+    out.color = shade(p, normal_to_world(in.normal));
+    return out;
+}
+
+@fragment
+fn fs_gouraud(in: ColorOut) -> @location(0) vec4<f32> {
+    return finish(in.color);
+}
+
+@vertex
+fn vs_phong(in: SmoothIn) -> PhongOut {
+    var out: PhongOut;
+    out.world_pos = to_world(in.position);
+    out.clip = globals.view_proj * vec4(out.world_pos, 1.0);
+    out.world_normal = normal_to_world(in.normal);
+    return out;
+}
+
+@fragment
+fn fs_phong(in: PhongOut) -> @location(0) vec4<f32> {
+    return finish(shade(in.world_pos, in.world_normal));
+}

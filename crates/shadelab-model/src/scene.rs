@@ -104,7 +104,13 @@ pub enum Shape {
 }
 
 impl Shape {
-    pub const ALL: [Shape; 5] = [Shape::Sphere, Shape::Cylinder, Shape::Cube, Shape::Plane, Shape::Pyramid];
+    pub const ALL: [Shape; 5] = [
+        Shape::Sphere,
+        Shape::Cylinder,
+        Shape::Cube,
+        Shape::Plane,
+        Shape::Pyramid,
+    ];
     pub fn name(self) -> &'static str {
         match self {
             Shape::Sphere => "sphere",
@@ -127,7 +133,11 @@ pub struct Transform {
 
 impl Transform {
     pub fn new(translation: DVec3, scale: DVec3) -> Self {
-        Transform { translation, rotation_y: 0.0, scale }
+        Transform {
+            translation,
+            rotation_y: 0.0,
+            scale,
+        }
     }
     pub fn matrix(&self) -> DMat4 {
         DMat4::from_translation(self.translation)
@@ -264,7 +274,10 @@ impl Scene {
 
     /// Total triangle count once tessellated.
     pub fn triangle_count(&self) -> usize {
-        self.objects.iter().map(|o| crate::mesh::triangle_count(o.shape, o.tessellation)).sum()
+        self.objects
+            .iter()
+            .map(|o| crate::mesh::triangle_count(o.shape, o.tessellation))
+            .sum()
     }
 }
 
@@ -417,8 +430,16 @@ pub fn single_shape_scene(name: &str, shape: Shape, tessellation: u32) -> Scene 
     };
     let (translation, scale, rotation_y) = match shape {
         Shape::Cylinder => (DVec3::new(0.0, 0.9, 0.0), DVec3::new(0.7, 0.9, 0.7), 0.0),
-        Shape::Pyramid => (DVec3::new(0.0, 0.9, 0.0), DVec3::splat(0.9), 30f64.to_radians()),
-        Shape::Cube => (DVec3::new(0.0, 0.7, 0.0), DVec3::splat(0.7), 30f64.to_radians()),
+        Shape::Pyramid => (
+            DVec3::new(0.0, 0.9, 0.0),
+            DVec3::splat(0.9),
+            30f64.to_radians(),
+        ),
+        Shape::Cube => (
+            DVec3::new(0.0, 0.7, 0.0),
+            DVec3::splat(0.7),
+            30f64.to_radians(),
+        ),
         _ => (DVec3::new(0.0, 1.0, 0.0), DVec3::splat(1.0), 0.0),
     };
     Scene {
@@ -429,7 +450,11 @@ pub fn single_shape_scene(name: &str, shape: Shape, tessellation: u32) -> Scene 
                 name: name.into(),
                 shape,
                 tessellation,
-                transform: Transform { translation, rotation_y, scale },
+                transform: Transform {
+                    translation,
+                    rotation_y,
+                    scale,
+                },
                 material: 1,
             },
         ],
@@ -486,6 +511,10 @@ mod tests {
             ..Default::default()
         });
         assert!(s.materials.iter().all(|m| m.m == 0.0));
-        assert!(s.lights.iter().all(|l| l.kind == LightKind::Point && l.falloff_alpha == 2.0));
+        assert!(
+            s.lights
+                .iter()
+                .all(|l| l.kind == LightKind::Point && l.falloff_alpha == 2.0)
+        );
     }
 }

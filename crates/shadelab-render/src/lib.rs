@@ -15,7 +15,13 @@ pub use target::{LinearImage, Target};
 
 /// Render a scene offscreen to a linear float image: the path `shadelab render` and the image
 /// tests share.
-pub fn render_image(gpu: &Gpu, scene: &shadelab_model::Scene, width: u32, height: u32, settings: &RenderSettings) -> LinearImage {
+pub fn render_image(
+    gpu: &Gpu,
+    scene: &shadelab_model::Scene,
+    width: u32,
+    height: u32,
+    settings: &RenderSettings,
+) -> LinearImage {
     let mut r = Renderer::new(&gpu.device, &gpu.queue);
     let gs = r.upload(scene);
     let target = Target::new(&gpu.device, width, height, target::HDR_FORMAT);

@@ -14,16 +14,23 @@ pub fn run_render(args: &cli::BenchRenderArgs) -> Result<(), Failure> {
     let gpu = Gpu::headless(AdapterChoice::from_env()).context("opening a GPU adapter")?;
     let mut r = Renderer::new(&gpu.device, &gpu.queue);
     let gs = r.upload(&scene);
-    let target = Target::new(&gpu.device, width, height, shadelab_render::target::HDR_FORMAT);
+    let target = Target::new(
+        &gpu.device,
+        width,
+        height,
+        shadelab_render::target::HDR_FORMAT,
+    );
     let timer = FrameTimer::new(&gpu.device, &gpu.queue);
     let combos: Vec<RenderSettings> = ShadingMode::ALL_MODES
         .into_iter()
         .flat_map(|shading| {
-            SpecularModel::ALL_MODELS.into_iter().map(move |specular| RenderSettings {
-                shading,
-                specular,
-                debug_nonfinite: false,
-            })
+            SpecularModel::ALL_MODELS
+                .into_iter()
+                .map(move |specular| RenderSettings {
+                    shading,
+                    specular,
+                    debug_nonfinite: false,
+                })
         })
         .collect();
     // Build every pipeline and warm up before measuring anything.
@@ -49,7 +56,13 @@ pub fn run_render(args: &cli::BenchRenderArgs) -> Result<(), Failure> {
         scene.triangle_count(),
         scene.lights.len()
     );
-    println!("# device: {}; time: {}; {} frames per row after {} warm-up", gpu.describe(), timer.source().label(), frames, warmup);
+    println!(
+        "# device: {}; time: {}; {} frames per row after {} warm-up",
+        gpu.describe(),
+        timer.source().label(),
+        frames,
+        warmup
+    );
     println!("| shading | specular | median ms | p10 ms | p90 ms | ratio to fastest |");
     println!("|---|---|---:|---:|---:|---:|");
     let medians: Vec<f64> = samples.iter_mut().map(|s| median(s)).collect();

@@ -8,7 +8,11 @@ use shadelab_render::RenderSettings;
 use std::path::PathBuf;
 
 #[derive(Parser, Debug)]
-#[command(name = "shadelab", version, about = "Flat, Gouraud and Phong shading with Phong or Cook–Torrance specular: a viewer, headless renders and benchmarks.")]
+#[command(
+    name = "shadelab",
+    version,
+    about = "Flat, Gouraud and Phong shading with Phong or Cook–Torrance specular: a viewer, headless renders and benchmarks."
+)]
 pub struct Cli {
     #[command(subcommand)]
     pub command: Option<Command>,
@@ -38,6 +42,7 @@ pub enum BenchCommand {
 
 /// The scene and the parameters that override it (shared by `render` and `bench`).
 #[derive(Args, Debug, Clone)]
+#[command(allow_negative_numbers = true)]
 pub struct SceneArgs {
     /// A built-in scene: default, sphere, cylinder, pyramid, cube.
     #[arg(long, default_value = "default", value_name = "NAME|PATH")]
@@ -66,6 +71,7 @@ pub struct SceneArgs {
 }
 
 #[derive(Args, Debug)]
+#[command(allow_negative_numbers = true)]
 pub struct RenderArgs {
     /// flat | gouraud | phong
     #[arg(long, default_value = "phong")]
@@ -90,6 +96,7 @@ pub struct RenderArgs {
 }
 
 #[derive(Args, Debug)]
+#[command(allow_negative_numbers = true)]
 pub struct BenchRenderArgs {
     #[command(flatten)]
     pub scene: SceneArgs,
@@ -108,8 +115,13 @@ pub struct BenchRenderArgs {
 }
 
 /// Frames for benchmarks and the viewer's --exit-after-frames.
-pub const FRAMES: params::ParamRange =
-    params::ParamRange { flag: "--frames", symbol: "N", meaning: "number of frames", min: 1.0, max: 1e6 };
+pub const FRAMES: params::ParamRange = params::ParamRange {
+    flag: "--frames",
+    symbol: "N",
+    meaning: "number of frames",
+    min: 1.0,
+    max: 1e6,
+};
 
 /// Build the scene the arguments ask for.
 pub fn scene(args: &SceneArgs) -> Result<Scene, ParamError> {
@@ -130,14 +142,26 @@ pub fn overrides(a: &SceneArgs) -> Result<Overrides, ParamError> {
         m: a.m.as_deref().map(|t| params::M.parse(t)).transpose()?,
         h: a.h.as_deref().map(params::parse_h).transpose()?,
         mu: a.mu.as_deref().map(params::parse_mu).transpose()?,
-        falloff_alpha: a.falloff.as_deref().map(|t| params::FALLOFF.parse(t)).transpose()?,
-        falloff_form: a.falloff_form.as_deref().map(FalloffForm::parse_named).transpose()?,
+        falloff_alpha: a
+            .falloff
+            .as_deref()
+            .map(|t| params::FALLOFF.parse(t))
+            .transpose()?,
+        falloff_form: a
+            .falloff_form
+            .as_deref()
+            .map(FalloffForm::parse_named)
+            .transpose()?,
         d0: a.d0.as_deref().map(|t| params::D0.parse(t)).transpose()?,
         light: a.light.as_deref().map(LightKind::parse_named).transpose()?,
     })
 }
 
-pub fn settings(shading: &str, specular: &str, debug_nonfinite: bool) -> Result<RenderSettings, ParamError> {
+pub fn settings(
+    shading: &str,
+    specular: &str,
+    debug_nonfinite: bool,
+) -> Result<RenderSettings, ParamError> {
     Ok(RenderSettings {
         shading: ShadingMode::parse_named(shading)?,
         specular: SpecularModel::parse_named(specular)?,
@@ -146,5 +170,8 @@ pub fn settings(shading: &str, specular: &str, debug_nonfinite: bool) -> Result<
 }
 
 pub fn size(width: &str, height: &str) -> Result<(u32, u32), ParamError> {
-    Ok((params::WIDTH.parse_u32(width)?, params::HEIGHT.parse_u32(height)?))
+    Ok((
+        params::WIDTH.parse_u32(width)?,
+        params::HEIGHT.parse_u32(height)?,
+    ))
 }

@@ -1,0 +1,218 @@
+//! Image tests on lavapipe: goldens of the default scene, and properties of the shading modes
+//! measured on pixels.
+
+use glam::DVec3;
+use shadelab_model::scene::{Scene, single_shape_scene};
+use shadelab_model::{PhongExponent, ShadingMode, Shape, SpecularModel};
+use shadelab_render::{RenderSettings, Target, render_image, target};
+use shadelab_tests::*;
+
+const GOLDEN_W: u32 = 480;
+const GOLDEN_H: u32 = 270;
+
+/// Golden thresholds, measured on lavapipe (Mesa 22.3, LLVM 15, Debian 12) at 480×270:
+/// - two renders of the same permutation: FLIP mean 0, p99 0 (lavapipe is deterministic);
+/// - the smallest change we want caught, one sphere's m 0.08 → 0.1 (h 300 → 198): mean
+///   0.00015–0.0013 and p99 0.04–0.49 across the permutations that show that highlight
+///   (Gouraud with Phong specular loses it at 16 segments, so nothing changes there);
+/// - the eye moved by 2 mm: mean ≈ 0.003, p99 ≈ 0.35.
+///
+/// The thresholds sit below the smallest of those, so they catch a one-parameter change, and
+/// p99 ignores a handful of edge pixels moved by a different LLVM's rounding.
+const GOLDEN: FlipThresholds = FlipThresholds {
+    mean: 0.0001,
+    percentile: (0.99, 0.02),
+};
+
+fn settings(shading: ShadingMode, specular: SpecularModel) -> RenderSettings {
+    RenderSettings {
+        shading,
+        specular,
+        debug_nonfinite: false,
+    }
+}
+
+#[test]
+fn default_scene_goldens_for_all_six_combinations() {
+    let scene = Scene::builtin("default").unwrap();
+    for shading in ShadingMode::ALL_MODES {
+        for specular in SpecularModel::ALL_MODELS {
+            let img = render_image(
+                gpu(),
+                &scene,
+                GOLDEN_W,
+                GOLDEN_H,
+                &settings(shading, specular),
+            );
+            assert_eq!(img.nonfinite_count(), 0);
+            let stats = check_golden(&format!("default-{shading}-{specular}"), &img, GOLDEN);
+            eprintln!(
+                "default-{shading}-{specular}: FLIP mean {:.5}, p99 {:.5}",
+                stats.mean, stats.percentile
+            );
+        }
+    }
+}
+
+#[test]
+fn the_six_combinations_differ_from_each_other() {
+    let scene = Scene::builtin("default").unwrap();
+    let mut images = Vec::new();
+    for shading in ShadingMode::ALL_MODES {
+        for specular in SpecularModel::ALL_MODELS {
+            images.push((
+                (shading, specular),
+                render_image(gpu(), &scene, 240, 135, &settings(shading, specular)),
+            ));
+        }
+    }
+    for (i, (ka, a)) in images.iter().enumerate() {
+        for (kb, b) in &images[i + 1..] {
+            let (s, _) = flip_compare(&a.to_srgb8(), &b.to_srgb8(), 240, 135, 0.99);
+            assert!(
+                s.mean > 0.005,
+                "{ka:?} and {kb:?} look alike: FLIP mean {}",
+                s.mean
+            );
+        }
+    }
+}
+
+/// The one-sphere scene with a coarse sphere and a sharp material.
+fn coarse_sphere(tessellation: u32, h: f64, m: f64) -> Scene {
+    let mut s = single_shape_scene("sphere", Shape::Sphere, tessellation);
+    s.materials[1].h = PhongExponent::Finite(h);
+    s.materials[1].m = m;
+    s
+}
+
+/// Pixels inside the sphere's disc where the linear luminance is discontinuous: the second
+/// difference across the pixel (horizontally or vertically) exceeds `threshold`. A smooth
+/// gradient, however steep, has a small second difference; a step between facets has a large one.
+fn discontinuities(
+    img: &shadelab_render::LinearImage,
+    disc: &[(u32, u32)],
+    threshold: f32,
+) -> usize {
+    let inside: std::collections::HashSet<_> = disc.iter().copied().collect();
+    let l = |x: u32, y: u32| luminance(img.get(x, y));
+    disc.iter()
+        .filter(|&&(x, y)| x > 0 && y > 0)
+        .filter(|&&(x, y)| {
+            let horizontal = inside.contains(&(x - 1, y)) && inside.contains(&(x + 1, y));
+            let vertical = inside.contains(&(x, y - 1)) && inside.contains(&(x, y + 1));
+            let d2x = (l(x - 1, y) - 2.0 * l(x, y) + l(x + 1, y)).abs();
+            let d2y = (l(x, y - 1) - 2.0 * l(x, y) + l(x, y + 1)).abs();
+            (horizontal && d2x > threshold) || (vertical && d2y > threshold)
+        })
+        .count()
+}
+
+#[test]
+fn flat_shows_facet_edges_and_gouraud_smooths_them() {
+    let (w, h) = (320, 240);
+    let scene = coarse_sphere(12, 20.0, 0.3);
+    let disc = sphere_disc(&scene.camera, DVec3::new(0.0, 1.0, 0.0), 1.0, w, h, 0.85);
+    // Second difference of linear luminance. Measured here on lavapipe: the peak of the h = 20
+    // highlight under Phong shading curves by up to 0.01–0.02 per pixel² (145 pixels above 0.01,
+    // none above 0.02); facet steps of flat shading put 965 pixels above 0.02, Gouraud none.
+    let threshold = 0.02;
+    let mut counts = Vec::new();
+    for shading in ShadingMode::ALL_MODES {
+        let img = render_image(
+            gpu(),
+            &scene,
+            w,
+            h,
+            &settings(shading, SpecularModel::Phong),
+        );
+        counts.push(discontinuities(&img, &disc, threshold));
+    }
+    eprintln!(
+        "discontinuous pixels of {} in the disc: flat {}, gouraud {}, phong {}",
+        disc.len(),
+        counts[0],
+        counts[1],
+        counts[2]
+    );
+    assert!(
+        counts[0] > 200,
+        "flat shading should show facet edges: {counts:?}"
+    );
+    assert!(
+        counts[1] * 10 < counts[0],
+        "Gouraud should smooth facet edges: {counts:?}"
+    );
+    assert!(
+        counts[2] * 10 < counts[0],
+        "Phong shading should be smooth: {counts:?}"
+    );
+}
+
+#[test]
+fn phong_shading_keeps_the_highlight_that_gouraud_loses() {
+    let (w, h) = (320, 240);
+    for specular in SpecularModel::ALL_MODELS {
+        // A sharp lobe (h = 400, m = 0.07) is narrower than one 8-segment facet (45°).
+        let scene = coarse_sphere(8, 400.0, 0.07);
+        let disc = sphere_disc(&scene.camera, DVec3::new(0.0, 1.0, 0.0), 1.0, w, h, 0.95);
+        let peak = |shading| {
+            let img = render_image(gpu(), &scene, w, h, &settings(shading, specular));
+            disc.iter()
+                .map(|&(x, y)| luminance(img.get(x, y)))
+                .fold(0.0f32, f32::max)
+        };
+        let (gouraud, phong) = (peak(ShadingMode::Gouraud), peak(ShadingMode::Phong));
+        // Without a highlight the brightest diffuse pixel of this blue material is below 0.4.
+        eprintln!("{specular}: peak luminance gouraud {gouraud:.3}, phong {phong:.3}");
+        assert!(
+            phong > 0.8,
+            "{specular}: Phong shading lost the highlight ({phong})"
+        );
+        assert!(
+            phong > gouraud + 0.4,
+            "{specular}: Gouraud kept the highlight ({gouraud} vs {phong})"
+        );
+    }
+}
+
+#[test]
+fn readback_handles_any_width_with_256_byte_rows() {
+    let g = gpu();
+    for (w, h) in [(1, 1), (3, 5), (17, 2), (65, 3), (300, 7)] {
+        let t = Target::new(&g.device, w, h, target::HDR_FORMAT);
+        // Each texel holds its own coordinates, so a misread row shows.
+        let texels: Vec<[f32; 4]> = (0..h)
+            .flat_map(|y| (0..w).map(move |x| [x as f32, y as f32, 0.5, 1.0]))
+            .collect();
+        g.queue.write_texture(
+            t.color.as_image_copy(),
+            bytemuck::cast_slice(&texels),
+            wgpu::TexelCopyBufferLayout {
+                offset: 0,
+                bytes_per_row: Some(w * 16),
+                rows_per_image: Some(h),
+            },
+            wgpu::Extent3d {
+                width: w,
+                height: h,
+                depth_or_array_layers: 1,
+            },
+        );
+        let img = target::read_back(&g.device, &g.queue, &t);
+        assert_eq!(img.pixels, texels, "{w}×{h}");
+    }
+}
+
+#[test]
+fn extreme_sizes_render() {
+    let scene = Scene::builtin("default").unwrap();
+    for (w, h) in [(1, 1), (8192, 2), (2, 8192), (333, 77)] {
+        let img = render_image(gpu(), &scene, w, h, &RenderSettings::default());
+        assert_eq!(
+            (img.width, img.height, img.pixels.len()),
+            (w, h, (w * h) as usize)
+        );
+        assert_eq!(img.nonfinite_count(), 0);
+    }
+}

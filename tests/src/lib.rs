@@ -18,10 +18,7 @@ pub fn gpu() -> &'static Gpu {
 
 /// The project's root (the workspace).
 pub fn workspace_root() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-        .parent()
-        .unwrap()
-        .to_path_buf()
+    Path::new(env!("CARGO_MANIFEST_DIR")).parent().unwrap().to_path_buf()
 }
 
 /// Where failing tests write their actual and difference images.
@@ -47,49 +44,31 @@ pub struct FlipStats {
 
 /// Compare two sRGB8 images of the same size with nv-flip; also returns the error map as RGB8
 /// (magma colour scale).
-pub fn flip_compare(
-    reference: &[u8],
-    test: &[u8],
-    width: u32,
-    height: u32,
-    percentile: f32,
-) -> (FlipStats, Vec<u8>) {
+pub fn flip_compare(reference: &[u8], test: &[u8], width: u32, height: u32, percentile: f32) -> (FlipStats, Vec<u8>) {
     let r = nv_flip::FlipImageRgb8::with_data(width, height, reference);
     let t = nv_flip::FlipImageRgb8::with_data(width, height, test);
     let err = nv_flip::flip(r, t, nv_flip::DEFAULT_PIXELS_PER_DEGREE);
     let mut pool = nv_flip::FlipPool::from_image(&err);
-    let stats = FlipStats {
-        mean: pool.mean(),
-        percentile: pool.get_percentile(percentile, true),
-    };
+    let stats = FlipStats { mean: pool.mean(), percentile: pool.get_percentile(percentile, true) };
     (stats, err.apply_color_lut(&nv_flip::magma_lut()).to_vec())
 }
 
 fn save_rgb8(path: &Path, data: &[u8], w: u32, h: u32) {
     std::fs::create_dir_all(path.parent().unwrap()).unwrap();
-    image::RgbImage::from_raw(w, h, data.to_vec())
-        .unwrap()
-        .save(path)
-        .unwrap();
+    image::RgbImage::from_raw(w, h, data.to_vec()).unwrap().save(path).unwrap();
 }
 
 /// Compare a rendered image with `tests/goldens/<name>.png`. A missing golden fails (it is never
 /// created silently); `UPDATE_GOLDENS=1` writes the golden instead. On failure, writes
 /// `target/test-failures/<name>-actual.png` and `<name>-difference.png`.
 pub fn check_golden(name: &str, image: &LinearImage, t: FlipThresholds) -> FlipStats {
-    let path = workspace_root()
-        .join("tests")
-        .join("goldens")
-        .join(format!("{name}.png"));
+    let path = workspace_root().join("tests").join("goldens").join(format!("{name}.png"));
     let actual = image.to_srgb8();
     let (w, h) = (image.width, image.height);
     if std::env::var("UPDATE_GOLDENS").as_deref() == Ok("1") {
         save_rgb8(&path, &actual, w, h);
         eprintln!("updated golden {}", path.display());
-        return FlipStats {
-            mean: 0.0,
-            percentile: 0.0,
-        };
+        return FlipStats { mean: 0.0, percentile: 0.0 };
     }
     let fail_dir = failure_dir();
     let golden = match image::open(&path) {
@@ -103,20 +82,11 @@ pub fn check_golden(name: &str, image: &LinearImage, t: FlipThresholds) -> FlipS
             );
         }
     };
-    assert_eq!(
-        (golden.width(), golden.height()),
-        (w, h),
-        "golden {name} has another size"
-    );
+    assert_eq!((golden.width(), golden.height()), (w, h), "golden {name} has another size");
     let (stats, diff) = flip_compare(golden.as_raw(), &actual, w, h, t.percentile.0);
     if stats.mean > t.mean || stats.percentile > t.percentile.1 {
         save_rgb8(&fail_dir.join(format!("{name}-actual.png")), &actual, w, h);
-        save_rgb8(
-            &fail_dir.join(format!("{name}-difference.png")),
-            &diff,
-            w,
-            h,
-        );
+        save_rgb8(&fail_dir.join(format!("{name}-difference.png")), &diff, w, h);
         panic!(
             "{name}: FLIP mean {:.5} (max {}), p{} {:.5} (max {}); actual and difference images in {}",
             stats.mean,
@@ -136,18 +106,10 @@ pub fn luminance(p: [f32; 4]) -> f32 {
 }
 
 /// Pixel coordinates (x right, y down) of a world point seen by the scene's camera.
-pub fn project(
-    camera: &shadelab_model::Camera,
-    p: glam::DVec3,
-    width: u32,
-    height: u32,
-) -> (f64, f64) {
+pub fn project(camera: &shadelab_model::Camera, p: glam::DVec3, width: u32, height: u32) -> (f64, f64) {
     let clip = camera.projection(width as f64 / height as f64) * camera.view() * p.extend(1.0);
     let (x, y) = (clip.x / clip.w, clip.y / clip.w);
-    (
-        (x + 1.0) * 0.5 * width as f64,
-        (1.0 - y) * 0.5 * height as f64,
-    )
+    ((x + 1.0) * 0.5 * width as f64, (1.0 - y) * 0.5 * height as f64)
 }
 
 /// Pixels of the disc of a sphere's silhouette, shrunk to `shrink` of its projected radius

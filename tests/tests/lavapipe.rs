@@ -19,17 +19,10 @@ const GOLDEN_H: u32 = 270;
 ///
 /// The thresholds sit below the smallest of those, so they catch a one-parameter change, and
 /// p99 ignores a handful of edge pixels moved by a different LLVM's rounding.
-const GOLDEN: FlipThresholds = FlipThresholds {
-    mean: 0.0001,
-    percentile: (0.99, 0.02),
-};
+const GOLDEN: FlipThresholds = FlipThresholds { mean: 0.0001, percentile: (0.99, 0.02) };
 
 fn settings(shading: ShadingMode, specular: SpecularModel) -> RenderSettings {
-    RenderSettings {
-        shading,
-        specular,
-        debug_nonfinite: false,
-    }
+    RenderSettings { shading, specular, debug_nonfinite: false }
 }
 
 #[test]
@@ -37,19 +30,10 @@ fn default_scene_goldens_for_all_six_combinations() {
     let scene = Scene::builtin("default").unwrap();
     for shading in ShadingMode::ALL_MODES {
         for specular in SpecularModel::ALL_MODELS {
-            let img = render_image(
-                gpu(),
-                &scene,
-                GOLDEN_W,
-                GOLDEN_H,
-                &settings(shading, specular),
-            );
+            let img = render_image(gpu(), &scene, GOLDEN_W, GOLDEN_H, &settings(shading, specular));
             assert_eq!(img.nonfinite_count(), 0);
             let stats = check_golden(&format!("default-{shading}-{specular}"), &img, GOLDEN);
-            eprintln!(
-                "default-{shading}-{specular}: FLIP mean {:.5}, p99 {:.5}",
-                stats.mean, stats.percentile
-            );
+            eprintln!("default-{shading}-{specular}: FLIP mean {:.5}, p99 {:.5}", stats.mean, stats.percentile);
         }
     }
 }
@@ -60,20 +44,13 @@ fn the_six_combinations_differ_from_each_other() {
     let mut images = Vec::new();
     for shading in ShadingMode::ALL_MODES {
         for specular in SpecularModel::ALL_MODELS {
-            images.push((
-                (shading, specular),
-                render_image(gpu(), &scene, 240, 135, &settings(shading, specular)),
-            ));
+            images.push(((shading, specular), render_image(gpu(), &scene, 240, 135, &settings(shading, specular))));
         }
     }
     for (i, (ka, a)) in images.iter().enumerate() {
         for (kb, b) in &images[i + 1..] {
             let (s, _) = flip_compare(&a.to_srgb8(), &b.to_srgb8(), 240, 135, 0.99);
-            assert!(
-                s.mean > 0.005,
-                "{ka:?} and {kb:?} look alike: FLIP mean {}",
-                s.mean
-            );
+            assert!(s.mean > 0.005, "{ka:?} and {kb:?} look alike: FLIP mean {}", s.mean);
         }
     }
 }
@@ -89,11 +66,7 @@ fn coarse_sphere(tessellation: u32, h: f64, m: f64) -> Scene {
 /// Pixels inside the sphere's disc where the linear luminance is discontinuous: the second
 /// difference across the pixel (horizontally or vertically) exceeds `threshold`. A smooth
 /// gradient, however steep, has a small second difference; a step between facets has a large one.
-fn discontinuities(
-    img: &shadelab_render::LinearImage,
-    disc: &[(u32, u32)],
-    threshold: f32,
-) -> usize {
+fn discontinuities(img: &shadelab_render::LinearImage, disc: &[(u32, u32)], threshold: f32) -> usize {
     let inside: std::collections::HashSet<_> = disc.iter().copied().collect();
     let l = |x: u32, y: u32| luminance(img.get(x, y));
     disc.iter()
@@ -119,13 +92,7 @@ fn flat_shows_facet_edges_and_gouraud_smooths_them() {
     let threshold = 0.02;
     let mut counts = Vec::new();
     for shading in ShadingMode::ALL_MODES {
-        let img = render_image(
-            gpu(),
-            &scene,
-            w,
-            h,
-            &settings(shading, SpecularModel::Phong),
-        );
+        let img = render_image(gpu(), &scene, w, h, &settings(shading, SpecularModel::Phong));
         counts.push(discontinuities(&img, &disc, threshold));
     }
     eprintln!(
@@ -135,18 +102,9 @@ fn flat_shows_facet_edges_and_gouraud_smooths_them() {
         counts[1],
         counts[2]
     );
-    assert!(
-        counts[0] > 200,
-        "flat shading should show facet edges: {counts:?}"
-    );
-    assert!(
-        counts[1] * 10 < counts[0],
-        "Gouraud should smooth facet edges: {counts:?}"
-    );
-    assert!(
-        counts[2] * 10 < counts[0],
-        "Phong shading should be smooth: {counts:?}"
-    );
+    assert!(counts[0] > 200, "flat shading should show facet edges: {counts:?}");
+    assert!(counts[1] * 10 < counts[0], "Gouraud should smooth facet edges: {counts:?}");
+    assert!(counts[2] * 10 < counts[0], "Phong shading should be smooth: {counts:?}");
 }
 
 #[test]
@@ -158,21 +116,13 @@ fn phong_shading_keeps_the_highlight_that_gouraud_loses() {
         let disc = sphere_disc(&scene.camera, DVec3::new(0.0, 1.0, 0.0), 1.0, w, h, 0.95);
         let peak = |shading| {
             let img = render_image(gpu(), &scene, w, h, &settings(shading, specular));
-            disc.iter()
-                .map(|&(x, y)| luminance(img.get(x, y)))
-                .fold(0.0f32, f32::max)
+            disc.iter().map(|&(x, y)| luminance(img.get(x, y))).fold(0.0f32, f32::max)
         };
         let (gouraud, phong) = (peak(ShadingMode::Gouraud), peak(ShadingMode::Phong));
         // Without a highlight the brightest diffuse pixel of this blue material is below 0.4.
         eprintln!("{specular}: peak luminance gouraud {gouraud:.3}, phong {phong:.3}");
-        assert!(
-            phong > 0.8,
-            "{specular}: Phong shading lost the highlight ({phong})"
-        );
-        assert!(
-            phong > gouraud + 0.4,
-            "{specular}: Gouraud kept the highlight ({gouraud} vs {phong})"
-        );
+        assert!(phong > 0.8, "{specular}: Phong shading lost the highlight ({phong})");
+        assert!(phong > gouraud + 0.4, "{specular}: Gouraud kept the highlight ({gouraud} vs {phong})");
     }
 }
 
@@ -182,22 +132,12 @@ fn readback_handles_any_width_with_256_byte_rows() {
     for (w, h) in [(1, 1), (3, 5), (17, 2), (65, 3), (300, 7)] {
         let t = Target::new(&g.device, w, h, target::HDR_FORMAT);
         // Each texel holds its own coordinates, so a misread row shows.
-        let texels: Vec<[f32; 4]> = (0..h)
-            .flat_map(|y| (0..w).map(move |x| [x as f32, y as f32, 0.5, 1.0]))
-            .collect();
+        let texels: Vec<[f32; 4]> = (0..h).flat_map(|y| (0..w).map(move |x| [x as f32, y as f32, 0.5, 1.0])).collect();
         g.queue.write_texture(
             t.color.as_image_copy(),
             bytemuck::cast_slice(&texels),
-            wgpu::TexelCopyBufferLayout {
-                offset: 0,
-                bytes_per_row: Some(w * 16),
-                rows_per_image: Some(h),
-            },
-            wgpu::Extent3d {
-                width: w,
-                height: h,
-                depth_or_array_layers: 1,
-            },
+            wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: Some(w * 16), rows_per_image: Some(h) },
+            wgpu::Extent3d { width: w, height: h, depth_or_array_layers: 1 },
         );
         let img = target::read_back(&g.device, &g.queue, &t);
         assert_eq!(img.pixels, texels, "{w}×{h}");
@@ -209,10 +149,7 @@ fn extreme_sizes_render() {
     let scene = Scene::builtin("default").unwrap();
     for (w, h) in [(1, 1), (8192, 2), (2, 8192), (333, 77)] {
         let img = render_image(gpu(), &scene, w, h, &RenderSettings::default());
-        assert_eq!(
-            (img.width, img.height, img.pixels.len()),
-            (w, h, (w * h) as usize)
-        );
+        assert_eq!((img.width, img.height, img.pixels.len()), (w, h, (w * h) as usize));
         assert_eq!(img.nonfinite_count(), 0);
     }
 }

@@ -7,11 +7,7 @@
 use std::path::{Path, PathBuf};
 use std::process::{Command, ExitCode};
 
-const ICD_DIRS: &[&str] = &[
-    "/usr/share/vulkan/icd.d",
-    "/etc/vulkan/icd.d",
-    "/usr/local/share/vulkan/icd.d",
-];
+const ICD_DIRS: &[&str] = &["/usr/share/vulkan/icd.d", "/etc/vulkan/icd.d", "/usr/local/share/vulkan/icd.d"];
 const INSTALL: &str = "sudo apt-get install mesa-vulkan-drivers";
 
 fn main() -> ExitCode {
@@ -27,22 +23,13 @@ fn main() -> ExitCode {
 
 /// The lavapipe ICD manifest, if installed.
 fn lavapipe_icd() -> Option<PathBuf> {
-    ICD_DIRS
-        .iter()
-        .flat_map(|d| std::fs::read_dir(d).into_iter().flatten().flatten())
-        .map(|e| e.path())
-        .find(|p| {
-            p.file_name()
-                .and_then(|n| n.to_str())
-                .is_some_and(|n| n.starts_with("lvp_icd") && n.ends_with(".json"))
-        })
+    ICD_DIRS.iter().flat_map(|d| std::fs::read_dir(d).into_iter().flatten().flatten()).map(|e| e.path()).find(|p| {
+        p.file_name().and_then(|n| n.to_str()).is_some_and(|n| n.starts_with("lvp_icd") && n.ends_with(".json"))
+    })
 }
 
 fn is_root() -> bool {
-    Command::new("id")
-        .arg("-u")
-        .output()
-        .is_ok_and(|o| String::from_utf8_lossy(&o.stdout).trim() == "0")
+    Command::new("id").arg("-u").output().is_ok_and(|o| String::from_utf8_lossy(&o.stdout).trim() == "0")
 }
 
 fn run(cmd: &mut Command) -> bool {
@@ -56,29 +43,16 @@ fn ensure_lavapipe() -> Result<PathBuf, String> {
     }
     let debian = Path::new("/etc/debian_version").exists();
     if !(debian && is_root()) {
-        return Err(format!(
-            "lavapipe (Mesa's CPU Vulkan driver) is not installed; install it with:\n    {INSTALL}"
-        ));
+        return Err(format!("lavapipe (Mesa's CPU Vulkan driver) is not installed; install it with:\n    {INSTALL}"));
     }
     eprintln!("xtask: lavapipe is missing; installing mesa-vulkan-drivers");
-    let ok = run(Command::new("apt-get")
-        .args(["update", "-q"])
-        .env("DEBIAN_FRONTEND", "noninteractive"))
+    let ok = run(Command::new("apt-get").args(["update", "-q"]).env("DEBIAN_FRONTEND", "noninteractive"))
         && run(Command::new("apt-get")
-            .args([
-                "install",
-                "-y",
-                "-q",
-                "--no-install-recommends",
-                "mesa-vulkan-drivers",
-                "libvulkan1",
-            ])
+            .args(["install", "-y", "-q", "--no-install-recommends", "mesa-vulkan-drivers", "libvulkan1"])
             .env("DEBIAN_FRONTEND", "noninteractive"));
     match (ok, lavapipe_icd()) {
         (true, Some(icd)) => Ok(icd),
-        _ => Err(format!(
-            "installing lavapipe failed; install it with:\n    {INSTALL}"
-        )),
+        _ => Err(format!("installing lavapipe failed; install it with:\n    {INSTALL}")),
     }
 }
 
@@ -95,23 +69,102 @@ fn test(extra: &[String]) -> ExitCode {
     cmd.args(["test", "--release", "--workspace"]).args(extra);
     // Only lavapipe is visible to the Vulkan loader (both variable names, old and new loaders),
     // and the tests and the binary ask for it by name as well.
-    cmd.env("VK_DRIVER_FILES", &icd)
-        .env("VK_ICD_FILENAMES", &icd)
-        .env("SHADELAB_ADAPTER", "lavapipe");
-    if std::env::var_os("XDG_RUNTIME_DIR").is_none() {
-        // Mesa's window-system code complains on every device open without one.
-        let dir = std::env::temp_dir().join("shadelab-xdg");
-        let _ = std::fs::create_dir_all(&dir);
-        #[cfg(unix)]
-        {
-            use std::os::unix::fs::PermissionsExt;
-            let _ = std::fs::set_permissions(&dir, std::fs::Permissions::from_mode(0o700));
+    cmd.env("VK_DRIVER_FILES", &icd).env("VK_ICD_FILENAMES", &icd).env("SHADELAB_ADAPTER", "lavapipe");
+    let xdg = runtime_dir();
+    cmd.env("XDG_RUNTIME_DIR", &xdg);
+    if !run(&mut cmd) {
+        return ExitCode::FAILURE;
+    }
+    match viewer_smoke_test(&icd, &xdg) {
+        Ok(()) => {
+            eprintln!("xtask: viewer smoke test under Xvfb: passed");
+            ExitCode::SUCCESS
         }
-        cmd.env("XDG_RUNTIME_DIR", dir);
+        Err(msg) => {
+            eprintln!("xtask: viewer smoke test under Xvfb: FAILED: {msg}");
+            ExitCode::FAILURE
+        }
     }
-    if run(&mut cmd) {
-        ExitCode::SUCCESS
-    } else {
-        ExitCode::FAILURE
+}
+
+/// `XDG_RUNTIME_DIR` for the tests: the caller's, or a private one (Mesa's window-system code
+/// complains on every device open without one).
+fn runtime_dir() -> PathBuf {
+    if let Some(d) = std::env::var_os("XDG_RUNTIME_DIR") {
+        return d.into();
     }
+    let dir = std::env::temp_dir().join("shadelab-xdg");
+    let _ = std::fs::create_dir_all(&dir);
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::PermissionsExt;
+        let _ = std::fs::set_permissions(&dir, std::fs::Permissions::from_mode(0o700));
+    }
+    dir
+}
+
+/// Debian packages the real window needs under Xvfb (the X server, and the X libraries winit
+/// loads at run time).
+const X_PACKAGES: &[&str] =
+    &["xvfb", "xauth", "libx11-xcb1", "libxcursor1", "libxrandr2", "libxi6", "libxkbcommon-x11-0"];
+
+fn has_xvfb() -> bool {
+    Command::new("sh").args(["-c", "command -v Xvfb"]).output().is_ok_and(|o| o.status.success())
+}
+
+/// Start the real `shadelab` viewer in an Xvfb window, let it render a few frames, save the
+/// window (panel included) and check the picture is not blank.
+fn viewer_smoke_test(icd: &Path, xdg: &Path) -> Result<(), String> {
+    if !has_xvfb() {
+        if !(Path::new("/etc/debian_version").exists() && is_root()) {
+            return Err(format!(
+                "Xvfb is missing; install it with:\n    sudo apt-get install {}",
+                X_PACKAGES.join(" ")
+            ));
+        }
+        let ok = run(Command::new("apt-get")
+            .args(["install", "-y", "-q", "--no-install-recommends"])
+            .args(X_PACKAGES)
+            .env("DEBIAN_FRONTEND", "noninteractive"));
+        if !ok || !has_xvfb() {
+            return Err("installing Xvfb failed".into());
+        }
+    }
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).parent().unwrap().to_path_buf();
+    let shot = root.join("target").join("xvfb-smoke.png");
+    let _ = std::fs::remove_file(&shot);
+    let display = format!(":{}", 90 + std::process::id() % 100);
+    let mut xvfb = Command::new("Xvfb")
+        .args([display.as_str(), "-screen", "0", "1280x800x24", "-nolisten", "tcp"])
+        .stdout(std::process::Stdio::null())
+        .stderr(std::process::Stdio::null())
+        .spawn()
+        .map_err(|e| format!("starting Xvfb: {e}"))?;
+    std::thread::sleep(std::time::Duration::from_millis(1500));
+    let status = Command::new("timeout")
+        .arg("300")
+        .arg(root.join("target/release/shadelab"))
+        .args(["--screenshot", shot.to_str().unwrap(), "--exit-after-frames", "5"])
+        .env("DISPLAY", &display)
+        .env("VK_DRIVER_FILES", icd)
+        .env("VK_ICD_FILENAMES", icd)
+        .env("XDG_RUNTIME_DIR", xdg)
+        .env_remove("WAYLAND_DISPLAY")
+        .status();
+    let _ = xvfb.kill();
+    let _ = xvfb.wait();
+    match status {
+        Ok(s) if s.success() => {}
+        Ok(s) => return Err(format!("the viewer exited with {s}")),
+        Err(e) => return Err(format!("running the viewer: {e}")),
+    }
+    let img = image::open(&shot).map_err(|e| format!("reading {}: {e}", shot.display()))?.to_rgb8();
+    let distinct: std::collections::HashSet<[u8; 3]> = img.pixels().map(|p| p.0).collect();
+    // The panel's text and the shaded scene give thousands of colours; a blank or one-colour
+    // window gives a handful.
+    if distinct.len() < 500 {
+        return Err(format!("{} looks blank: {} distinct colours", shot.display(), distinct.len()));
+    }
+    eprintln!("xtask: {} is {}×{} with {} distinct colours", shot.display(), img.width(), img.height(), distinct.len());
+    Ok(())
 }

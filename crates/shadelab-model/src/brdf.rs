@@ -10,11 +10,7 @@ use glam::DVec3;
 /// Normalize `v`, or return `fallback` when `v` is (nearly) zero (guard `NORMALIZE_MIN_LEN2`).
 pub fn safe_normalize(v: DVec3, fallback: DVec3) -> DVec3 {
     let len2 = v.length_squared();
-    if len2 > NORMALIZE_MIN_LEN2 && len2.is_finite() {
-        v / len2.sqrt()
-    } else {
-        fallback
-    }
+    if len2 > NORMALIZE_MIN_LEN2 && len2.is_finite() { v / len2.sqrt() } else { fallback }
 }
 
 /// Spec §1, §3: Lambert's cosine with the oriented angle; a face turned away (`N·L ≤ 0`) is in its

@@ -5,6 +5,7 @@ pub mod brdf;
 pub mod guards;
 pub mod mesh;
 pub mod params;
+pub mod presets;
 pub mod scene;
 
 pub use params::{FalloffForm, LightKind, PhongExponent, ShadingMode, SpecularModel};

@@ -52,11 +52,7 @@ impl MeshData {
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum MeshError {
     #[error("triangle {triangle}, corner {corner}: position {position:?} is not finite")]
-    NonFinitePosition {
-        triangle: usize,
-        corner: usize,
-        position: [f64; 3],
-    },
+    NonFinitePosition { triangle: usize, corner: usize, position: [f64; 3] },
 }
 
 /// The unit normal of a triangle, or `None` for a zero-area one (guard `NORMALIZE_MIN_LEN2`).
@@ -68,9 +64,7 @@ pub fn face_normal(t: &[DVec3; 3]) -> Option<DVec3> {
 
 fn key(p: DVec3) -> [u32; 3] {
     // Positions that round to the same f32 are the same vertex on the GPU.
-    p.as_vec3()
-        .to_array()
-        .map(|c| if c == 0.0 { 0 } else { c.to_bits() })
+    p.as_vec3().to_array().map(|c| if c == 0.0 { 0 } else { c.to_bits() })
 }
 
 /// Build the smooth and flat meshes of a triangle soup with the crease-angle rule.
@@ -78,11 +72,7 @@ pub fn build_mesh(triangles: &[[DVec3; 3]], crease_angle_deg: f64) -> Result<Mes
     for (ti, t) in triangles.iter().enumerate() {
         for (ci, p) in t.iter().enumerate() {
             if !p.is_finite() {
-                return Err(MeshError::NonFinitePosition {
-                    triangle: ti,
-                    corner: ci,
-                    position: p.to_array(),
-                });
+                return Err(MeshError::NonFinitePosition { triangle: ti, corner: ci, position: p.to_array() });
             }
         }
     }
@@ -115,15 +105,10 @@ pub fn build_mesh(triangles: &[[DVec3; 3]], crease_angle_deg: f64) -> Result<Mes
             let fallback = own.unwrap_or(DVec3::Y);
             let n = safe_normalize(sum, fallback).as_vec3().to_array();
             let pos = p.as_vec3().to_array();
-            let idx = *welded
-                .entry((key(*p), n.map(f32::to_bits)))
-                .or_insert_with(|| {
-                    mesh.smooth_vertices.push(SmoothVertex {
-                        position: pos,
-                        normal: n,
-                    });
-                    (mesh.smooth_vertices.len() - 1) as u32
-                });
+            let idx = *welded.entry((key(*p), n.map(f32::to_bits))).or_insert_with(|| {
+                mesh.smooth_vertices.push(SmoothVertex { position: pos, normal: n });
+                (mesh.smooth_vertices.len() - 1) as u32
+            });
             mesh.indices.push(idx);
             mesh.flat_vertices.push(FlatVertex {
                 position: pos,
@@ -137,8 +122,7 @@ pub fn build_mesh(triangles: &[[DVec3; 3]], crease_angle_deg: f64) -> Result<Mes
 
 /// Tessellate a shape (see [`Shape`] for its object-space extent) and build its meshes.
 pub fn tessellate(shape: Shape, tessellation: u32) -> MeshData {
-    build_mesh(&triangles(shape, tessellation), CREASE_ANGLE_DEG)
-        .expect("procedural shapes are finite")
+    build_mesh(&triangles(shape, tessellation), CREASE_ANGLE_DEG).expect("procedural shapes are finite")
 }
 
 /// Segments around a sphere or cylinder for a tessellation parameter (at least 3).
@@ -202,11 +186,7 @@ fn sphere(seg: u32) -> Vec<[DVec3; 3]> {
         }
         let theta = std::f64::consts::PI * i as f64 / rings as f64;
         let phi = std::f64::consts::TAU * (j % seg) as f64 / seg as f64;
-        DVec3::new(
-            theta.sin() * phi.cos(),
-            theta.cos(),
-            theta.sin() * phi.sin(),
-        )
+        DVec3::new(theta.sin() * phi.cos(), theta.cos(), theta.sin() * phi.sin())
     };
     let mut out = Vec::new();
     for i in 0..rings {
@@ -231,13 +211,7 @@ fn cylinder(seg: u32) -> Vec<[DVec3; 3]> {
     };
     let mut out = Vec::new();
     for j in 0..seg {
-        quad(
-            &mut out,
-            rim(j, 1.0),
-            rim(j + 1, 1.0),
-            rim(j, -1.0),
-            rim(j + 1, -1.0),
-        );
+        quad(&mut out, rim(j, 1.0), rim(j + 1, 1.0), rim(j, -1.0), rim(j + 1, -1.0));
         out.push([DVec3::Y, rim(j, 1.0), rim(j + 1, 1.0)]);
         out.push([DVec3::NEG_Y, rim(j, -1.0), rim(j + 1, -1.0)]);
     }
@@ -248,13 +222,7 @@ fn grid(out: &mut Vec<[DVec3; 3]>, n: u32, point: impl Fn(f64, f64) -> DVec3) {
     let t = |i: u32| -1.0 + 2.0 * i as f64 / n as f64;
     for i in 0..n {
         for j in 0..n {
-            quad(
-                out,
-                point(t(i), t(j)),
-                point(t(i + 1), t(j)),
-                point(t(i), t(j + 1)),
-                point(t(i + 1), t(j + 1)),
-            );
+            quad(out, point(t(i), t(j)), point(t(i + 1), t(j)), point(t(i), t(j + 1)), point(t(i + 1), t(j + 1)));
         }
     }
 }
@@ -323,11 +291,7 @@ mod tests {
         for shape in Shape::ALL {
             for t in [1, 3, 8, 17] {
                 let m = tessellate(shape, t);
-                assert_eq!(
-                    m.triangle_count(),
-                    triangle_count(shape, t),
-                    "{shape:?} {t}"
-                );
+                assert_eq!(m.triangle_count(), triangle_count(shape, t), "{shape:?} {t}");
                 assert_eq!(m.flat_vertices.len(), 3 * m.triangle_count());
                 assert!(unit_normals(&m), "{shape:?} {t}");
             }
@@ -340,11 +304,7 @@ mod tests {
             for t in triangles(shape, 8) {
                 let n = face_normal(&t).unwrap();
                 let c = (t[0] + t[1] + t[2]) / 3.0;
-                let inside = if shape == Shape::Pyramid {
-                    DVec3::new(0.0, -0.5, 0.0)
-                } else {
-                    DVec3::ZERO
-                };
+                let inside = if shape == Shape::Pyramid { DVec3::new(0.0, -0.5, 0.0) } else { DVec3::ZERO };
                 assert!(n.dot(c - inside) > 0.0, "{shape:?}");
             }
         }
@@ -356,16 +316,10 @@ mod tests {
         // Smooth: one vertex per position (no creases), and the averaged normal is near the radius.
         for v in &m.smooth_vertices {
             let p = glam::Vec3::from(v.position);
-            assert!(
-                p.normalize().dot(glam::Vec3::from(v.normal)) > 0.999,
-                "{v:?}"
-            );
+            assert!(p.normalize().dot(glam::Vec3::from(v.normal)) > 0.999, "{v:?}");
         }
-        let positions: std::collections::HashSet<_> = m
-            .smooth_vertices
-            .iter()
-            .map(|v| v.position.map(f32::to_bits))
-            .collect();
+        let positions: std::collections::HashSet<_> =
+            m.smooth_vertices.iter().map(|v| v.position.map(f32::to_bits)).collect();
         assert_eq!(positions.len(), m.smooth_vertices.len());
     }
 
@@ -383,11 +337,7 @@ mod tests {
             assert!((n.abs().max_element() - 1.0).abs() < 1e-6, "{v:?}");
         }
         let p = tessellate(Shape::Pyramid, 1);
-        assert_eq!(
-            p.smooth_vertices.len(),
-            4 + 4 * 3,
-            "pyramid faces stay separate"
-        );
+        assert_eq!(p.smooth_vertices.len(), 4 + 4 * 3, "pyramid faces stay separate");
     }
 
     #[test]
@@ -399,9 +349,7 @@ mod tests {
         let m = build_mesh(&tris, CREASE_ANGLE_DEG).unwrap();
         assert!(unit_normals(&m));
         for v in &m.flat_vertices {
-            assert!(
-                glam::Vec3::from(v.normal).is_finite() && glam::Vec3::from(v.centroid).is_finite()
-            );
+            assert!(glam::Vec3::from(v.normal).is_finite() && glam::Vec3::from(v.centroid).is_finite());
         }
         // The degenerate triangles touching the good one take its normal (+y here).
         assert!(m.smooth_vertices.iter().all(|v| v.normal[1] > 0.999));

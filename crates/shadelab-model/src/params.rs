@@ -79,25 +79,11 @@ impl fmt::Display for PhongExponent {
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum ParamError {
     #[error("{flag}: {value} is out of range: {meaning} must be in [{min}, {max}]")]
-    OutOfRange {
-        flag: String,
-        value: String,
-        meaning: &'static str,
-        min: f64,
-        max: f64,
-    },
+    OutOfRange { flag: String, value: String, meaning: &'static str, min: f64, max: f64 },
     #[error("{flag}: '{value}' is not a number (allowed: {allowed})")]
-    NotANumber {
-        flag: String,
-        value: String,
-        allowed: String,
-    },
+    NotANumber { flag: String, value: String, allowed: String },
     #[error("{flag}: unknown value '{value}' (allowed: {allowed})")]
-    Unknown {
-        flag: String,
-        value: String,
-        allowed: String,
-    },
+    Unknown { flag: String, value: String, allowed: String },
 }
 
 /// A numeric parameter's allowed range, its symbol and meaning (used for validation, sliders
@@ -157,13 +143,8 @@ impl ParamRange {
 
 /// Beckmann roughness `m` (spec §5). 0 is allowed (clamped to `M_MIN` inside the model); above 1
 /// the lobe is so wide the highlight has gone, and the white-furnace check covers [0.05, 1].
-pub const M: ParamRange = ParamRange {
-    flag: "--m",
-    symbol: "m",
-    meaning: "roughness m (Beckmann facet slope)",
-    min: 0.0,
-    max: 1.0,
-};
+pub const M: ParamRange =
+    ParamRange { flag: "--m", symbol: "m", meaning: "roughness m (Beckmann facet slope)", min: 0.0, max: 1.0 };
 /// Phong exponent `h` (spec §3); "mirror" is accepted besides the numbers.
 pub const H: ParamRange = ParamRange {
     flag: "--h",
@@ -181,13 +162,8 @@ pub const MU: ParamRange = ParamRange {
     max: 1.0,
 };
 /// Falloff factor `α` of `I0/(1 + α d²)` (spec §6).
-pub const FALLOFF: ParamRange = ParamRange {
-    flag: "--falloff",
-    symbol: "α",
-    meaning: "falloff factor α",
-    min: 0.0,
-    max: 1e6,
-};
+pub const FALLOFF: ParamRange =
+    ParamRange { flag: "--falloff", symbol: "α", meaning: "falloff factor α", min: 0.0, max: 1e6 };
 /// Minimum distance `d0` of the chapter's `1/(d + d0)` (spec §2); at least `D0_MIN`.
 pub const D0: ParamRange = ParamRange {
     flag: "--d0",
@@ -197,21 +173,11 @@ pub const D0: ParamRange = ParamRange {
     max: 1e3,
 };
 /// Image width in pixels.
-pub const WIDTH: ParamRange = ParamRange {
-    flag: "--width",
-    symbol: "w",
-    meaning: "image width in pixels",
-    min: 1.0,
-    max: 8192.0,
-};
+pub const WIDTH: ParamRange =
+    ParamRange { flag: "--width", symbol: "w", meaning: "image width in pixels", min: 1.0, max: 8192.0 };
 /// Image height in pixels.
-pub const HEIGHT: ParamRange = ParamRange {
-    flag: "--height",
-    symbol: "h",
-    meaning: "image height in pixels",
-    min: 1.0,
-    max: 8192.0,
-};
+pub const HEIGHT: ParamRange =
+    ParamRange { flag: "--height", symbol: "h", meaning: "image height in pixels", min: 1.0, max: 8192.0 };
 /// A shape's tessellation (segments around, or subdivisions per edge).
 pub const TESSELLATION: ParamRange = ParamRange {
     flag: "--tessellation",
@@ -221,37 +187,24 @@ pub const TESSELLATION: ParamRange = ParamRange {
     max: 4096.0,
 };
 /// Colour channels, shares r_s, r_d, r_a and intensities in [0, 1].
-pub const UNIT: ParamRange = ParamRange {
-    flag: "value",
-    symbol: "",
-    meaning: "a share or colour",
-    min: 0.0,
-    max: 1.0,
-};
+pub const UNIT: ParamRange = ParamRange { flag: "value", symbol: "", meaning: "a share or colour", min: 0.0, max: 1.0 };
 /// Light intensity `I_L` (an HDR multiplier of the light's colour).
-pub const INTENSITY: ParamRange = ParamRange {
-    flag: "intensity",
-    symbol: "I_L",
-    meaning: "light intensity I_L",
-    min: 0.0,
-    max: 1e3,
-};
+pub const INTENSITY: ParamRange =
+    ParamRange { flag: "intensity", symbol: "I_L", meaning: "light intensity I_L", min: 0.0, max: 1e3 };
 
 /// Parse the Phong exponent: a number in `H`'s range, or `mirror`.
 pub fn parse_h(text: &str) -> Result<PhongExponent, ParamError> {
     if text.trim().eq_ignore_ascii_case("mirror") {
         return Ok(PhongExponent::Mirror);
     }
-    H.parse(text)
-        .map(PhongExponent::Finite)
-        .map_err(|e| match e {
-            ParamError::NotANumber { flag, value, .. } => ParamError::NotANumber {
-                flag,
-                value,
-                allowed: format!("a number in [1, {}] or 'mirror'", crate::guards::H_MAX),
-            },
-            e => e,
-        })
+    H.parse(text).map(PhongExponent::Finite).map_err(|e| match e {
+        ParamError::NotANumber { flag, value, .. } => ParamError::NotANumber {
+            flag,
+            value,
+            allowed: format!("a number in [1, {}] or 'mirror'", crate::guards::H_MAX),
+        },
+        e => e,
+    })
 }
 
 /// Parse `μ` as `R,G,B` or one value for all three channels.
@@ -282,59 +235,38 @@ pub trait NamedValue: Sized + Copy + 'static {
     where
         Self: PartialEq,
     {
-        Self::ALL
-            .iter()
-            .find(|(_, v)| *v == self)
-            .map(|(n, _)| *n)
-            .unwrap_or("?")
+        Self::ALL.iter().find(|(_, v)| *v == self).map(|(n, _)| *n).unwrap_or("?")
     }
 
     fn parse_named(text: &str) -> Result<Self, ParamError> {
         let t = text.trim().to_ascii_lowercase();
-        Self::ALL
-            .iter()
-            .find(|(n, _)| *n == t)
-            .map(|(_, v)| *v)
-            .ok_or_else(|| ParamError::Unknown {
-                flag: Self::FLAG.into(),
-                value: text.into(),
-                allowed: Self::ALL
-                    .iter()
-                    .map(|(n, _)| *n)
-                    .collect::<Vec<_>>()
-                    .join(", "),
-            })
+        Self::ALL.iter().find(|(n, _)| *n == t).map(|(_, v)| *v).ok_or_else(|| ParamError::Unknown {
+            flag: Self::FLAG.into(),
+            value: text.into(),
+            allowed: Self::ALL.iter().map(|(n, _)| *n).collect::<Vec<_>>().join(", "),
+        })
     }
 }
 
 impl NamedValue for ShadingMode {
     const FLAG: &'static str = "--shading";
-    const ALL: &'static [(&'static str, Self)] = &[
-        ("flat", ShadingMode::Flat),
-        ("gouraud", ShadingMode::Gouraud),
-        ("phong", ShadingMode::Phong),
-    ];
+    const ALL: &'static [(&'static str, Self)] =
+        &[("flat", ShadingMode::Flat), ("gouraud", ShadingMode::Gouraud), ("phong", ShadingMode::Phong)];
 }
 impl NamedValue for SpecularModel {
     const FLAG: &'static str = "--specular";
-    const ALL: &'static [(&'static str, Self)] = &[
-        ("phong", SpecularModel::Phong),
-        ("cook-torrance", SpecularModel::CookTorrance),
-    ];
+    const ALL: &'static [(&'static str, Self)] =
+        &[("phong", SpecularModel::Phong), ("cook-torrance", SpecularModel::CookTorrance)];
 }
 impl NamedValue for LightKind {
     const FLAG: &'static str = "--light";
-    const ALL: &'static [(&'static str, Self)] = &[
-        ("directional", LightKind::Directional),
-        ("point", LightKind::Point),
-    ];
+    const ALL: &'static [(&'static str, Self)] =
+        &[("directional", LightKind::Directional), ("point", LightKind::Point)];
 }
 impl NamedValue for FalloffForm {
     const FLAG: &'static str = "--falloff-form";
-    const ALL: &'static [(&'static str, Self)] = &[
-        ("quadratic", FalloffForm::Quadratic),
-        ("linear", FalloffForm::Linear),
-    ];
+    const ALL: &'static [(&'static str, Self)] =
+        &[("quadratic", FalloffForm::Quadratic), ("linear", FalloffForm::Linear)];
 }
 
 macro_rules! from_str_named {
@@ -351,8 +283,7 @@ macro_rules! from_str_named {
 from_str_named!(ShadingMode, SpecularModel, LightKind, FalloffForm);
 
 impl ShadingMode {
-    pub const ALL_MODES: [ShadingMode; 3] =
-        [ShadingMode::Flat, ShadingMode::Gouraud, ShadingMode::Phong];
+    pub const ALL_MODES: [ShadingMode; 3] = [ShadingMode::Flat, ShadingMode::Gouraud, ShadingMode::Phong];
 }
 impl SpecularModel {
     pub const ALL_MODELS: [SpecularModel; 2] = [SpecularModel::Phong, SpecularModel::CookTorrance];
@@ -384,10 +315,7 @@ mod tests {
         assert!(!e.contains('\n'));
         assert!(e.contains("--m") && e.contains("[0, 1]"), "{e}");
         let e = ShadingMode::parse_named("toon").unwrap_err().to_string();
-        assert!(
-            e.contains("--shading") && e.contains("flat, gouraud, phong"),
-            "{e}"
-        );
+        assert!(e.contains("--shading") && e.contains("flat, gouraud, phong"), "{e}");
     }
 
     #[test]

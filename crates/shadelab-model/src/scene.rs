@@ -104,13 +104,7 @@ pub enum Shape {
 }
 
 impl Shape {
-    pub const ALL: [Shape; 5] = [
-        Shape::Sphere,
-        Shape::Cylinder,
-        Shape::Cube,
-        Shape::Plane,
-        Shape::Pyramid,
-    ];
+    pub const ALL: [Shape; 5] = [Shape::Sphere, Shape::Cylinder, Shape::Cube, Shape::Plane, Shape::Pyramid];
     pub fn name(self) -> &'static str {
         match self {
             Shape::Sphere => "sphere",
@@ -133,11 +127,7 @@ pub struct Transform {
 
 impl Transform {
     pub fn new(translation: DVec3, scale: DVec3) -> Self {
-        Transform {
-            translation,
-            rotation_y: 0.0,
-            scale,
-        }
+        Transform { translation, rotation_y: 0.0, scale }
     }
     pub fn matrix(&self) -> DMat4 {
         DMat4::from_translation(self.translation)
@@ -162,6 +152,9 @@ pub struct Object {
     pub material: usize,
 }
 
+/// The aspect ratio the built-in scenes are composed for.
+pub const COMPOSED_ASPECT: f64 = 16.0 / 9.0;
+
 /// A perspective camera; the GPU renderer and the f64 reference use the same one.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Camera {
@@ -181,6 +174,16 @@ impl Camera {
     pub fn projection(&self, aspect: f64) -> DMat4 {
         DMat4::perspective_rh(self.fov_y_deg.to_radians(), aspect, self.near, self.far)
     }
+    /// The same camera with its vertical field of view widened, for images narrower than the
+    /// 16:9 the built-in scenes are composed for, so that the whole width still shows.
+    pub fn fitted(&self, aspect: f64) -> Camera {
+        if aspect >= COMPOSED_ASPECT || aspect <= 0.0 {
+            return *self;
+        }
+        let half = (self.fov_y_deg.to_radians() * 0.5).tan() * COMPOSED_ASPECT / aspect;
+        Camera { fov_y_deg: (2.0 * half.atan()).to_degrees().min(120.0), ..*self }
+    }
+
     /// World → clip (wgpu conventions: depth in [0, 1], y up), for the GPU.
     pub fn view_proj(&self, width: u32, height: u32) -> Mat4 {
         (self.projection(width as f64 / height as f64) * self.view()).as_mat4()
@@ -274,10 +277,7 @@ impl Scene {
 
     /// Total triangle count once tessellated.
     pub fn triangle_count(&self) -> usize {
-        self.objects
-            .iter()
-            .map(|o| crate::mesh::triangle_count(o.shape, o.tessellation))
-            .sum()
+        self.objects.iter().map(|o| crate::mesh::triangle_count(o.shape, o.tessellation)).sum()
     }
 }
 
@@ -430,16 +430,8 @@ pub fn single_shape_scene(name: &str, shape: Shape, tessellation: u32) -> Scene 
     };
     let (translation, scale, rotation_y) = match shape {
         Shape::Cylinder => (DVec3::new(0.0, 0.9, 0.0), DVec3::new(0.7, 0.9, 0.7), 0.0),
-        Shape::Pyramid => (
-            DVec3::new(0.0, 0.9, 0.0),
-            DVec3::splat(0.9),
-            30f64.to_radians(),
-        ),
-        Shape::Cube => (
-            DVec3::new(0.0, 0.7, 0.0),
-            DVec3::splat(0.7),
-            30f64.to_radians(),
-        ),
+        Shape::Pyramid => (DVec3::new(0.0, 0.9, 0.0), DVec3::splat(0.9), 30f64.to_radians()),
+        Shape::Cube => (DVec3::new(0.0, 0.7, 0.0), DVec3::splat(0.7), 30f64.to_radians()),
         _ => (DVec3::new(0.0, 1.0, 0.0), DVec3::splat(1.0), 0.0),
     };
     Scene {
@@ -450,22 +442,14 @@ pub fn single_shape_scene(name: &str, shape: Shape, tessellation: u32) -> Scene 
                 name: name.into(),
                 shape,
                 tessellation,
-                transform: Transform {
-                    translation,
-                    rotation_y,
-                    scale,
-                },
+                transform: Transform { translation, rotation_y, scale },
                 material: 1,
             },
         ],
         materials: vec![ground_mat, material],
         lights: default_lights(),
         ambient: [0.12; 3],
-        camera: Camera {
-            eye: DVec3::new(0.0, 2.2, 4.6),
-            target: DVec3::new(0.0, 0.8, 0.0),
-            ..default_camera()
-        },
+        camera: Camera { eye: DVec3::new(0.0, 2.2, 4.6), target: DVec3::new(0.0, 0.8, 0.0), ..default_camera() },
     }
 }
 
@@ -511,10 +495,6 @@ mod tests {
             ..Default::default()
         });
         assert!(s.materials.iter().all(|m| m.m == 0.0));
-        assert!(
-            s.lights
-                .iter()
-                .all(|l| l.kind == LightKind::Point && l.falloff_alpha == 2.0)
-        );
+        assert!(s.lights.iter().all(|l| l.kind == LightKind::Point && l.falloff_alpha == 2.0));
     }
 }

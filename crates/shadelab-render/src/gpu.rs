@@ -55,8 +55,7 @@ impl fmt::Debug for Gpu {
 
 /// Optional features the renderer uses when the adapter has them (GPU timing).
 pub fn wanted_features(adapter: &wgpu::Adapter) -> wgpu::Features {
-    adapter.features()
-        & (wgpu::Features::TIMESTAMP_QUERY | wgpu::Features::TIMESTAMP_QUERY_INSIDE_PASSES)
+    adapter.features() & (wgpu::Features::TIMESTAMP_QUERY | wgpu::Features::TIMESTAMP_QUERY_INSIDE_PASSES)
 }
 
 impl Gpu {
@@ -73,43 +72,29 @@ impl Gpu {
         let adapter = match choice {
             AdapterChoice::Lavapipe => {
                 let adapters = pollster::block_on(instance.enumerate_adapters(backends));
-                let seen = adapters
-                    .iter()
-                    .map(|a| a.get_info().name)
-                    .collect::<Vec<_>>()
-                    .join(", ");
+                let seen = adapters.iter().map(|a| a.get_info().name).collect::<Vec<_>>().join(", ");
                 adapters
                     .into_iter()
                     .find(|a| is_lavapipe(&a.get_info()))
-                    .ok_or(GpuError::NoLavapipe {
-                        seen: if seen.is_empty() { "none".into() } else { seen },
-                    })?
+                    .ok_or(GpuError::NoLavapipe { seen: if seen.is_empty() { "none".into() } else { seen } })?
             }
-            AdapterChoice::Auto => {
-                pollster::block_on(instance.request_adapter(&wgpu::RequestAdapterOptions {
-                    power_preference: wgpu::PowerPreference::HighPerformance,
-                    force_fallback_adapter: false,
-                    compatible_surface: None,
-                    apply_limit_buckets: false,
-                }))
-                .map_err(|e| GpuError::NoAdapter(e.to_string()))?
-            }
+            AdapterChoice::Auto => pollster::block_on(instance.request_adapter(&wgpu::RequestAdapterOptions {
+                power_preference: wgpu::PowerPreference::HighPerformance,
+                force_fallback_adapter: false,
+                compatible_surface: None,
+                apply_limit_buckets: false,
+            }))
+            .map_err(|e| GpuError::NoAdapter(e.to_string()))?,
         };
-        let (device, queue) =
-            pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor {
-                label: Some("shadelab"),
-                required_features: wanted_features(&adapter),
-                // The adapter's own limits: 8192² float targets and their readback need more than
-                // the portable defaults.
-                required_limits: adapter.limits(),
-                ..Default::default()
-            }))?;
-        Ok(Gpu {
-            instance,
-            adapter,
-            device,
-            queue,
-        })
+        let (device, queue) = pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor {
+            label: Some("shadelab"),
+            required_features: wanted_features(&adapter),
+            // The adapter's own limits: 8192² float targets and their readback need more than
+            // the portable defaults.
+            required_limits: adapter.limits(),
+            ..Default::default()
+        }))?;
+        Ok(Gpu { instance, adapter, device, queue })
     }
 
     /// Lavapipe, as every test opens it.

@@ -13,12 +13,7 @@ pub const DEPTH_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Depth32Float;
 
 /// Background colour (linear): dark enough for highlights to stand out, not black, so a blank
 /// image is told from a dark one.
-pub const CLEAR_COLOR: wgpu::Color = wgpu::Color {
-    r: 0.03,
-    g: 0.035,
-    b: 0.045,
-    a: 1.0,
-};
+pub const CLEAR_COLOR: wgpu::Color = wgpu::Color { r: 0.03, g: 0.035, b: 0.045, a: 1.0 };
 
 /// Everything that selects a distinct pipeline. Plain `Copy + Hash`: pipelines are cached by it
 /// and never rebuilt per frame.
@@ -40,11 +35,7 @@ pub struct RenderSettings {
 
 impl Default for RenderSettings {
     fn default() -> Self {
-        RenderSettings {
-            shading: ShadingMode::Phong,
-            specular: SpecularModel::CookTorrance,
-            debug_nonfinite: false,
-        }
+        RenderSettings { shading: ShadingMode::Phong, specular: SpecularModel::CookTorrance, debug_nonfinite: false }
     }
 }
 
@@ -95,10 +86,8 @@ fn uniform_entry(dynamic: bool, size: u64) -> wgpu::BindGroupLayoutEntry {
     }
 }
 
-const SMOOTH_ATTRS: [wgpu::VertexAttribute; 2] =
-    wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3];
-const FLAT_ATTRS: [wgpu::VertexAttribute; 3] =
-    wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3, 2 => Float32x3];
+const SMOOTH_ATTRS: [wgpu::VertexAttribute; 2] = wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3];
+const FLAT_ATTRS: [wgpu::VertexAttribute; 3] = wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3, 2 => Float32x3];
 
 impl Renderer {
     pub fn new(device: &wgpu::Device, queue: &wgpu::Queue) -> Renderer {
@@ -144,10 +133,7 @@ impl Renderer {
     fn build_pipeline(&self, key: PipelineKey) -> wgpu::RenderPipeline {
         let (vs, fs) = shaders::entry_points(key.shading);
         let constants = [("SPECULAR_MODEL", shaders::specular_constant(key.specular))];
-        let options = wgpu::PipelineCompilationOptions {
-            constants: &constants,
-            ..Default::default()
-        };
+        let options = wgpu::PipelineCompilationOptions { constants: &constants, ..Default::default() };
         let buffers = match key.shading {
             ShadingMode::Flat => [Some(wgpu::VertexBufferLayout {
                 array_stride: size_of::<FlatVertex>() as u64,
@@ -160,44 +146,43 @@ impl Renderer {
                 attributes: &SMOOTH_ATTRS,
             })],
         };
-        self.device
-            .create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-                label: Some(&format!("{:?}/{:?}", key.shading, key.specular)),
-                layout: Some(&self.pipeline_layout),
-                vertex: wgpu::VertexState {
-                    module: &self.module,
-                    entry_point: Some(vs),
-                    compilation_options: options.clone(),
-                    buffers: &buffers,
-                },
-                primitive: wgpu::PrimitiveState {
-                    topology: wgpu::PrimitiveTopology::TriangleList,
-                    // Every mesh is closed or seen from its front, but no culling keeps a wrong
-                    // winding from making geometry vanish.
-                    cull_mode: None,
-                    ..Default::default()
-                },
-                depth_stencil: Some(wgpu::DepthStencilState {
-                    format: DEPTH_FORMAT,
-                    depth_write_enabled: Some(true),
-                    depth_compare: Some(wgpu::CompareFunction::Less),
-                    stencil: Default::default(),
-                    bias: Default::default(),
-                }),
-                multisample: Default::default(),
-                fragment: Some(wgpu::FragmentState {
-                    module: &self.module,
-                    entry_point: Some(fs),
-                    compilation_options: options,
-                    targets: &[Some(wgpu::ColorTargetState {
-                        format: key.color_format,
-                        blend: None,
-                        write_mask: wgpu::ColorWrites::ALL,
-                    })],
-                }),
-                multiview_mask: None,
-                cache: None,
-            })
+        self.device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+            label: Some(&format!("{:?}/{:?}", key.shading, key.specular)),
+            layout: Some(&self.pipeline_layout),
+            vertex: wgpu::VertexState {
+                module: &self.module,
+                entry_point: Some(vs),
+                compilation_options: options.clone(),
+                buffers: &buffers,
+            },
+            primitive: wgpu::PrimitiveState {
+                topology: wgpu::PrimitiveTopology::TriangleList,
+                // Every mesh is closed or seen from its front, but no culling keeps a wrong
+                // winding from making geometry vanish.
+                cull_mode: None,
+                ..Default::default()
+            },
+            depth_stencil: Some(wgpu::DepthStencilState {
+                format: DEPTH_FORMAT,
+                depth_write_enabled: Some(true),
+                depth_compare: Some(wgpu::CompareFunction::Less),
+                stencil: Default::default(),
+                bias: Default::default(),
+            }),
+            multisample: Default::default(),
+            fragment: Some(wgpu::FragmentState {
+                module: &self.module,
+                entry_point: Some(fs),
+                compilation_options: options,
+                targets: &[Some(wgpu::ColorTargetState {
+                    format: key.color_format,
+                    blend: None,
+                    write_mask: wgpu::ColorWrites::ALL,
+                })],
+            }),
+            multiview_mask: None,
+            cache: None,
+        })
     }
 
     /// Upload a scene's meshes and uniforms.
@@ -207,9 +192,7 @@ impl Renderer {
         let mut objects = Vec::new();
         for o in &scene.objects {
             let k = (o.shape, o.tessellation);
-            meshes
-                .entry(k)
-                .or_insert_with(|| upload_mesh(device, &mesh::tessellate(o.shape, o.tessellation)));
+            meshes.entry(k).or_insert_with(|| upload_mesh(device, &mesh::tessellate(o.shape, o.tessellation)));
             objects.push(k);
         }
         let triangle_count = scene.triangle_count();
@@ -230,10 +213,7 @@ impl Renderer {
         let globals_bind = device.create_bind_group(&wgpu::BindGroupDescriptor {
             label: Some("globals"),
             layout: &self.globals_layout,
-            entries: &[wgpu::BindGroupEntry {
-                binding: 0,
-                resource: globals.as_entire_binding(),
-            }],
+            entries: &[wgpu::BindGroupEntry { binding: 0, resource: globals.as_entire_binding() }],
         });
         let objects_bind = device.create_bind_group(&wgpu::BindGroupDescriptor {
             label: Some("objects"),
@@ -247,35 +227,15 @@ impl Renderer {
                 }),
             }],
         });
-        SceneGpu {
-            meshes,
-            objects,
-            globals,
-            globals_bind,
-            objects_buf,
-            objects_bind,
-            object_stride,
-            triangle_count,
-        }
+        SceneGpu { meshes, objects, globals, globals_bind, objects_buf, objects_bind, object_stride, triangle_count }
     }
 
     /// Write a scene's parameters (materials, lights, camera) into its uniforms. Cheap: the
     /// viewer calls it whenever a parameter changes; geometry stays.
-    pub fn write_uniforms(
-        &self,
-        gpu_scene: &SceneGpu,
-        scene: &Scene,
-        target: &Target,
-        settings: &RenderSettings,
-    ) {
-        let flags = if settings.debug_nonfinite {
-            crate::uniforms::FLAG_DEBUG_NONFINITE
-        } else {
-            0
-        };
+    pub fn write_uniforms(&self, gpu_scene: &SceneGpu, scene: &Scene, target: &Target, settings: &RenderSettings) {
+        let flags = if settings.debug_nonfinite { crate::uniforms::FLAG_DEBUG_NONFINITE } else { 0 };
         let g = GlobalsUniform::new(scene, target.width, target.height, flags);
-        self.queue
-            .write_buffer(&gpu_scene.globals, 0, bytemuck::bytes_of(&g));
+        self.queue.write_buffer(&gpu_scene.globals, 0, bytemuck::bytes_of(&g));
         let mut bytes = vec![0u8; (gpu_scene.object_stride as usize) * scene.objects.len()];
         for (i, o) in scene.objects.iter().enumerate() {
             let u = ObjectUniform::new(o, &scene.materials[o.material]);
@@ -295,11 +255,7 @@ impl Renderer {
         settings: &RenderSettings,
         timestamps: Option<(&wgpu::QuerySet, u32)>,
     ) {
-        let key = PipelineKey {
-            shading: settings.shading,
-            specular: settings.specular,
-            color_format: target.format,
-        };
+        let key = PipelineKey { shading: settings.shading, specular: settings.specular, color_format: target.format };
         self.pipeline(key);
         let pipeline = &self.pipelines[&key];
         let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
@@ -308,17 +264,11 @@ impl Renderer {
                 view: &target.color_view,
                 depth_slice: None,
                 resolve_target: None,
-                ops: wgpu::Operations {
-                    load: wgpu::LoadOp::Clear(CLEAR_COLOR),
-                    store: wgpu::StoreOp::Store,
-                },
+                ops: wgpu::Operations { load: wgpu::LoadOp::Clear(CLEAR_COLOR), store: wgpu::StoreOp::Store },
             })],
             depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
                 view: &target.depth_view,
-                depth_ops: Some(wgpu::Operations {
-                    load: wgpu::LoadOp::Clear(1.0),
-                    store: wgpu::StoreOp::Discard,
-                }),
+                depth_ops: Some(wgpu::Operations { load: wgpu::LoadOp::Clear(1.0), store: wgpu::StoreOp::Discard }),
                 stencil_ops: None,
             }),
             timestamp_writes: timestamps.map(|(qs, i)| wgpu::RenderPassTimestampWrites {
@@ -333,11 +283,7 @@ impl Renderer {
         pass.set_bind_group(0, &gpu_scene.globals_bind, &[]);
         for (i, k) in gpu_scene.objects.iter().enumerate() {
             let mesh = &gpu_scene.meshes[k];
-            pass.set_bind_group(
-                1,
-                &gpu_scene.objects_bind,
-                &[(i as u64 * gpu_scene.object_stride) as u32],
-            );
+            pass.set_bind_group(1, &gpu_scene.objects_bind, &[(i as u64 * gpu_scene.object_stride) as u32]);
             if settings.shading == ShadingMode::Flat {
                 pass.set_vertex_buffer(0, mesh.flat.slice(..));
                 pass.draw(0..mesh.flat_count, 0..1);
@@ -350,13 +296,7 @@ impl Renderer {
     }
 
     /// Draw the scene into `target` and submit.
-    pub fn render(
-        &mut self,
-        gpu_scene: &SceneGpu,
-        scene: &Scene,
-        target: &Target,
-        settings: &RenderSettings,
-    ) {
+    pub fn render(&mut self, gpu_scene: &SceneGpu, scene: &Scene, target: &Target, settings: &RenderSettings) {
         self.write_uniforms(gpu_scene, scene, target, settings);
         let mut encoder = self.device.create_command_encoder(&Default::default());
         self.encode(&mut encoder, gpu_scene, target, settings, None);

@@ -7,20 +7,13 @@ pub const FILES: [(&str, &str); 4] = [
     ("common.wgsl", include_str!("../../../shaders/common.wgsl")),
     ("brdf.wgsl", include_str!("../../../shaders/brdf.wgsl")),
     ("lights.wgsl", include_str!("../../../shaders/lights.wgsl")),
-    (
-        "shading.wgsl",
-        include_str!("../../../shaders/shading.wgsl"),
-    ),
+    ("shading.wgsl", include_str!("../../../shaders/shading.wgsl")),
 ];
 
 /// Constants, guards and the lighting terms, without bindings or entry points (for compute
 /// passes that evaluate the terms directly).
 pub fn terms_source() -> String {
-    FILES[..3]
-        .iter()
-        .map(|(_, s)| *s)
-        .collect::<Vec<_>>()
-        .join("\n")
+    FILES[..3].iter().map(|(_, s)| *s).collect::<Vec<_>>().join("\n")
 }
 
 /// The whole renderer module: terms plus the shading entry points.
@@ -61,9 +54,7 @@ mod tests {
     }
 
     fn validate(m: &naga::Module) -> naga::valid::ModuleInfo {
-        Validator::new(ValidationFlags::all(), Capabilities::default())
-            .validate(m)
-            .unwrap_or_else(|e| panic!("{e:?}"))
+        Validator::new(ValidationFlags::all(), Capabilities::default()).validate(m).unwrap_or_else(|e| panic!("{e:?}"))
     }
 
     #[test]
@@ -75,10 +66,7 @@ mod tests {
             for specular in SpecularModel::ALL_MODELS {
                 let mut constants = naga::back::PipelineConstants::default();
                 constants.insert("SPECULAR_MODEL".to_string(), specular_constant(specular));
-                for (stage, ep) in [
-                    (naga::ShaderStage::Vertex, vs),
-                    (naga::ShaderStage::Fragment, fs),
-                ] {
+                for (stage, ep) in [(naga::ShaderStage::Vertex, vs), (naga::ShaderStage::Fragment, fs)] {
                     let (m, _) = naga::back::pipeline_constants::process_overrides(
                         &module,
                         &info,
@@ -97,19 +85,11 @@ mod tests {
 
     /// (size, [(field, offset)]) of a WGSL struct as naga lays it out.
     fn wgsl_layout(module: &naga::Module, name: &str) -> (u32, Vec<(String, u32)>) {
-        let ty = module
-            .types
-            .iter()
-            .find(|(_, t)| t.name.as_deref() == Some(name))
-            .unwrap_or_else(|| panic!("{name}"));
+        let ty = module.types.iter().find(|(_, t)| t.name.as_deref() == Some(name)).unwrap_or_else(|| panic!("{name}"));
         match &ty.1.inner {
-            naga::TypeInner::Struct { members, span } => (
-                *span,
-                members
-                    .iter()
-                    .map(|m| (m.name.clone().unwrap(), m.offset))
-                    .collect(),
-            ),
+            naga::TypeInner::Struct { members, span } => {
+                (*span, members.iter().map(|m| (m.name.clone().unwrap(), m.offset)).collect())
+            }
             _ => panic!("{name} is not a struct"),
         }
     }
@@ -139,10 +119,7 @@ mod tests {
 
     /// The value of a named `const` in the module, as f64.
     pub(crate) fn wgsl_constant(module: &naga::Module, name: &str) -> Option<f64> {
-        let (_, c) = module
-            .constants
-            .iter()
-            .find(|(_, c)| c.name.as_deref() == Some(name))?;
+        let (_, c) = module.constants.iter().find(|(_, c)| c.name.as_deref() == Some(name))?;
         match module.global_expressions[c.init] {
             naga::Expression::Literal(naga::Literal::F32(v)) => Some(v as f64),
             naga::Expression::Literal(naga::Literal::U32(v)) => Some(v as f64),
@@ -155,13 +132,9 @@ mod tests {
     fn wgsl_guards_equal_rust_guards() {
         let module = parse(&terms_source());
         for (name, value) in shadelab_model::guards::ALL {
-            let w = wgsl_constant(&module, name)
-                .unwrap_or_else(|| panic!("{name} missing from common.wgsl"));
+            let w = wgsl_constant(&module, name).unwrap_or_else(|| panic!("{name} missing from common.wgsl"));
             assert_eq!(w as f32, *value as f32, "{name}: WGSL {w} vs Rust {value}");
         }
-        assert_eq!(
-            wgsl_constant(&module, "MAX_LIGHTS"),
-            Some(shadelab_model::scene::MAX_LIGHTS as f64)
-        );
+        assert_eq!(wgsl_constant(&module, "MAX_LIGHTS"), Some(shadelab_model::scene::MAX_LIGHTS as f64));
     }
 }

@@ -19,17 +19,11 @@ pub struct Target {
 pub const HDR_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba32Float;
 
 impl Target {
-    pub fn new(
-        device: &wgpu::Device,
-        width: u32,
-        height: u32,
-        format: wgpu::TextureFormat,
-    ) -> Target {
-        let size = wgpu::Extent3d {
-            width,
-            height,
-            depth_or_array_layers: 1,
-        };
+    pub fn new(device: &wgpu::Device, width: u32, height: u32, format: wgpu::TextureFormat) -> Target {
+        let size = wgpu::Extent3d { width, height, depth_or_array_layers: 1 };
+        // An sRGB target can also be viewed without decoding (see `encoded_view`).
+        let plain = format.remove_srgb_suffix();
+        let view_formats: &[wgpu::TextureFormat] = if plain != format { &[plain] } else { &[] };
         let color = device.create_texture(&wgpu::TextureDescriptor {
             label: Some("shadelab color"),
             size,
@@ -41,7 +35,7 @@ impl Target {
                 | wgpu::TextureUsages::COPY_SRC
                 | wgpu::TextureUsages::COPY_DST
                 | wgpu::TextureUsages::TEXTURE_BINDING,
-            view_formats: &[],
+            view_formats,
         });
         let depth = device.create_texture(&wgpu::TextureDescriptor {
             label: Some("shadelab depth"),
@@ -62,6 +56,15 @@ impl Target {
             format,
         }
     }
+
+    /// A view of the colour that reads the stored (sRGB-encoded) bytes without decoding them:
+    /// what egui expects of a texture it shows.
+    pub fn encoded_view(&self) -> wgpu::TextureView {
+        self.color.create_view(&wgpu::TextureViewDescriptor {
+            format: Some(self.format.remove_srgb_suffix()),
+            ..Default::default()
+        })
+    }
 }
 
 /// A linear RGBA float image, rows top to bottom.
@@ -75,11 +78,7 @@ pub struct LinearImage {
 /// Linear → sRGB transfer function (IEC 61966-2-1), input clamped to [0, 1].
 pub fn linear_to_srgb(x: f32) -> f32 {
     let x = if x.is_nan() { 0.0 } else { x.clamp(0.0, 1.0) };
-    if x <= 0.003_130_8 {
-        12.92 * x
-    } else {
-        1.055 * x.powf(1.0 / 2.4) - 0.055
-    }
+    if x <= 0.003_130_8 { 12.92 * x } else { 1.055 * x.powf(1.0 / 2.4) - 0.055 }
 }
 
 impl LinearImage {
@@ -89,18 +88,12 @@ impl LinearImage {
 
     /// 8-bit sRGB RGB bytes (clamped; NaN as 0), as the PNG output and FLIP comparisons use.
     pub fn to_srgb8(&self) -> Vec<u8> {
-        self.pixels
-            .iter()
-            .flat_map(|p| [p[0], p[1], p[2]].map(|c| (linear_to_srgb(c) * 255.0 + 0.5) as u8))
-            .collect()
+        self.pixels.iter().flat_map(|p| [p[0], p[1], p[2]].map(|c| (linear_to_srgb(c) * 255.0 + 0.5) as u8)).collect()
     }
 
     /// Number of pixels with a NaN or infinite channel.
     pub fn nonfinite_count(&self) -> usize {
-        self.pixels
-            .iter()
-            .filter(|p| p.iter().any(|c| !c.is_finite()))
-            .count()
+        self.pixels.iter().filter(|p| p.iter().any(|c| !c.is_finite())).count()
     }
 }
 
@@ -117,10 +110,7 @@ const READBACK_BAND_BYTES: u64 = 64 << 20;
 
 /// Read an `Rgba32Float` target back to the CPU.
 pub fn read_back(device: &wgpu::Device, queue: &wgpu::Queue, target: &Target) -> LinearImage {
-    assert_eq!(
-        target.format, HDR_FORMAT,
-        "read_back reads Rgba32Float targets"
-    );
+    assert_eq!(target.format, HDR_FORMAT, "read_back reads Rgba32Float targets");
     let (w, h) = (target.width, target.height);
     let bpr = padded_bytes_per_row(w, 16);
     let band_rows = ((READBACK_BAND_BYTES / bpr as u64).max(1) as u32).min(h);
@@ -144,24 +134,14 @@ pub fn read_back(device: &wgpu::Device, queue: &wgpu::Queue, target: &Target) ->
             },
             wgpu::TexelCopyBufferInfo {
                 buffer: &staging,
-                layout: wgpu::TexelCopyBufferLayout {
-                    offset: 0,
-                    bytes_per_row: Some(bpr),
-                    rows_per_image: Some(rows),
-                },
+                layout: wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: Some(bpr), rows_per_image: Some(rows) },
             },
-            wgpu::Extent3d {
-                width: w,
-                height: rows,
-                depth_or_array_layers: 1,
-            },
+            wgpu::Extent3d { width: w, height: rows, depth_or_array_layers: 1 },
         );
         queue.submit([enc.finish()]);
         let slice = staging.slice(..bpr as u64 * rows as u64);
         slice.map_async(wgpu::MapMode::Read, |r| r.expect("map readback buffer"));
-        device
-            .poll(wgpu::PollType::wait_indefinitely())
-            .expect("device poll");
+        device.poll(wgpu::PollType::wait_indefinitely()).expect("device poll");
         {
             let data = slice.get_mapped_range().expect("mapped range");
             for row in 0..rows as usize {
@@ -176,11 +156,7 @@ pub fn read_back(device: &wgpu::Device, queue: &wgpu::Queue, target: &Target) ->
         staging.unmap();
         y0 += rows;
     }
-    LinearImage {
-        width: w,
-        height: h,
-        pixels,
-    }
+    LinearImage { width: w, height: h, pixels }
 }
 
 #[cfg(test)]

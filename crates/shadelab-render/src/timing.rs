@@ -31,51 +31,35 @@ pub struct FrameTimer {
 
 impl FrameTimer {
     pub fn new(device: &wgpu::Device, queue: &wgpu::Queue) -> FrameTimer {
-        let queries = device
-            .features()
-            .contains(wgpu::Features::TIMESTAMP_QUERY)
-            .then(|| {
-                let set = device.create_query_set(&wgpu::QuerySetDescriptor {
-                    label: Some("frame timestamps"),
-                    ty: wgpu::QueryType::Timestamp,
-                    count: 2,
-                });
-                let resolve = device.create_buffer(&wgpu::BufferDescriptor {
-                    label: Some("timestamp resolve"),
-                    size: 16,
-                    usage: wgpu::BufferUsages::QUERY_RESOLVE | wgpu::BufferUsages::COPY_SRC,
-                    mapped_at_creation: false,
-                });
-                let read = device.create_buffer(&wgpu::BufferDescriptor {
-                    label: Some("timestamp read"),
-                    size: 16,
-                    usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
-                    mapped_at_creation: false,
-                });
-                (set, resolve, read)
+        let queries = device.features().contains(wgpu::Features::TIMESTAMP_QUERY).then(|| {
+            let set = device.create_query_set(&wgpu::QuerySetDescriptor {
+                label: Some("frame timestamps"),
+                ty: wgpu::QueryType::Timestamp,
+                count: 2,
             });
-        FrameTimer {
-            queries,
-            period_ns: queue.get_timestamp_period() as f64,
-        }
+            let resolve = device.create_buffer(&wgpu::BufferDescriptor {
+                label: Some("timestamp resolve"),
+                size: 16,
+                usage: wgpu::BufferUsages::QUERY_RESOLVE | wgpu::BufferUsages::COPY_SRC,
+                mapped_at_creation: false,
+            });
+            let read = device.create_buffer(&wgpu::BufferDescriptor {
+                label: Some("timestamp read"),
+                size: 16,
+                usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
+                mapped_at_creation: false,
+            });
+            (set, resolve, read)
+        });
+        FrameTimer { queries, period_ns: queue.get_timestamp_period() as f64 }
     }
 
     pub fn source(&self) -> TimeSource {
-        if self.queries.is_some() {
-            TimeSource::GpuTimestamps
-        } else {
-            TimeSource::CpuSubmitWait
-        }
+        if self.queries.is_some() { TimeSource::GpuTimestamps } else { TimeSource::CpuSubmitWait }
     }
 
     /// Render one frame, wait for it, and return its time in milliseconds.
-    pub fn frame(
-        &self,
-        r: &mut Renderer,
-        gpu_scene: &SceneGpu,
-        target: &Target,
-        settings: &RenderSettings,
-    ) -> f64 {
+    pub fn frame(&self, r: &mut Renderer, gpu_scene: &SceneGpu, target: &Target, settings: &RenderSettings) -> f64 {
         let mut enc = r.device.create_command_encoder(&Default::default());
         let start = Instant::now();
         match &self.queries {
@@ -86,20 +70,15 @@ impl FrameTimer {
                 r.queue.submit([enc.finish()]);
                 let slice = read.slice(..);
                 slice.map_async(wgpu::MapMode::Read, |res| res.expect("map timestamps"));
-                r.device
-                    .poll(wgpu::PollType::wait_indefinitely())
-                    .expect("poll");
-                let t: [u64; 2] =
-                    bytemuck::pod_read_unaligned(&slice.get_mapped_range().expect("mapped"));
+                r.device.poll(wgpu::PollType::wait_indefinitely()).expect("poll");
+                let t: [u64; 2] = bytemuck::pod_read_unaligned(&slice.get_mapped_range().expect("mapped"));
                 read.unmap();
                 t[1].saturating_sub(t[0]) as f64 * self.period_ns * 1e-6
             }
             None => {
                 r.encode(&mut enc, gpu_scene, target, settings, None);
                 r.queue.submit([enc.finish()]);
-                r.device
-                    .poll(wgpu::PollType::wait_indefinitely())
-                    .expect("poll");
+                r.device.poll(wgpu::PollType::wait_indefinitely()).expect("poll");
                 start.elapsed().as_secs_f64() * 1e3
             }
         }
@@ -113,11 +92,7 @@ pub fn median(v: &mut [f64]) -> f64 {
     }
     v.sort_by(f64::total_cmp);
     let n = v.len();
-    if n % 2 == 1 {
-        v[n / 2]
-    } else {
-        0.5 * (v[n / 2 - 1] + v[n / 2])
-    }
+    if n % 2 == 1 { v[n / 2] } else { 0.5 * (v[n / 2 - 1] + v[n / 2]) }
 }
 
 /// The `q` quantile (0..=1) of a sorted sample, nearest rank.

@@ -14,23 +14,16 @@ pub fn run_render(args: &cli::BenchRenderArgs) -> Result<(), Failure> {
     let gpu = Gpu::headless(AdapterChoice::from_env()).context("opening a GPU adapter")?;
     let mut r = Renderer::new(&gpu.device, &gpu.queue);
     let gs = r.upload(&scene);
-    let target = Target::new(
-        &gpu.device,
-        width,
-        height,
-        shadelab_render::target::HDR_FORMAT,
-    );
+    let target = Target::new(&gpu.device, width, height, shadelab_render::target::HDR_FORMAT);
     let timer = FrameTimer::new(&gpu.device, &gpu.queue);
     let combos: Vec<RenderSettings> = ShadingMode::ALL_MODES
         .into_iter()
         .flat_map(|shading| {
-            SpecularModel::ALL_MODELS
-                .into_iter()
-                .map(move |specular| RenderSettings {
-                    shading,
-                    specular,
-                    debug_nonfinite: false,
-                })
+            SpecularModel::ALL_MODELS.into_iter().map(move |specular| RenderSettings {
+                shading,
+                specular,
+                debug_nonfinite: false,
+            })
         })
         .collect();
     // Build every pipeline and warm up before measuring anything.

@@ -115,23 +115,15 @@ pub struct BenchRenderArgs {
 }
 
 /// Frames for benchmarks and the viewer's --exit-after-frames.
-pub const FRAMES: params::ParamRange = params::ParamRange {
-    flag: "--frames",
-    symbol: "N",
-    meaning: "number of frames",
-    min: 1.0,
-    max: 1e6,
-};
+pub const FRAMES: params::ParamRange =
+    params::ParamRange { flag: "--frames", symbol: "N", meaning: "number of frames", min: 1.0, max: 1e6 };
 
 /// Build the scene the arguments ask for.
 pub fn scene(args: &SceneArgs) -> Result<Scene, ParamError> {
     let mut scene = Scene::builtin(&args.scene).ok_or_else(|| ParamError::Unknown {
         flag: "--scene".into(),
         value: args.scene.clone(),
-        allowed: format!(
-            "{}; scene files are not supported yet",
-            shadelab_model::scene::BUILTIN_SCENES.join(", ")
-        ),
+        allowed: format!("{}; scene files are not supported yet", shadelab_model::scene::BUILTIN_SCENES.join(", ")),
     })?;
     scene.apply(&overrides(args)?);
     Ok(scene)
@@ -142,26 +134,14 @@ pub fn overrides(a: &SceneArgs) -> Result<Overrides, ParamError> {
         m: a.m.as_deref().map(|t| params::M.parse(t)).transpose()?,
         h: a.h.as_deref().map(params::parse_h).transpose()?,
         mu: a.mu.as_deref().map(params::parse_mu).transpose()?,
-        falloff_alpha: a
-            .falloff
-            .as_deref()
-            .map(|t| params::FALLOFF.parse(t))
-            .transpose()?,
-        falloff_form: a
-            .falloff_form
-            .as_deref()
-            .map(FalloffForm::parse_named)
-            .transpose()?,
+        falloff_alpha: a.falloff.as_deref().map(|t| params::FALLOFF.parse(t)).transpose()?,
+        falloff_form: a.falloff_form.as_deref().map(FalloffForm::parse_named).transpose()?,
         d0: a.d0.as_deref().map(|t| params::D0.parse(t)).transpose()?,
         light: a.light.as_deref().map(LightKind::parse_named).transpose()?,
     })
 }
 
-pub fn settings(
-    shading: &str,
-    specular: &str,
-    debug_nonfinite: bool,
-) -> Result<RenderSettings, ParamError> {
+pub fn settings(shading: &str, specular: &str, debug_nonfinite: bool) -> Result<RenderSettings, ParamError> {
     Ok(RenderSettings {
         shading: ShadingMode::parse_named(shading)?,
         specular: SpecularModel::parse_named(specular)?,
@@ -170,8 +150,5 @@ pub fn settings(
 }
 
 pub fn size(width: &str, height: &str) -> Result<(u32, u32), ParamError> {
-    Ok((
-        params::WIDTH.parse_u32(width)?,
-        params::HEIGHT.parse_u32(height)?,
-    ))
+    Ok((params::WIDTH.parse_u32(width)?, params::HEIGHT.parse_u32(height)?))
 }

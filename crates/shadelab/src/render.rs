@@ -13,12 +13,7 @@ pub enum ImageKind {
 
 /// The output kind from the file's extension.
 pub fn image_kind(path: &Path) -> Result<ImageKind, Failure> {
-    match path
-        .extension()
-        .and_then(|e| e.to_str())
-        .map(str::to_ascii_lowercase)
-        .as_deref()
-    {
+    match path.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase).as_deref() {
         Some("png") => Ok(ImageKind::Png),
         Some("exr") => Ok(ImageKind::Exr),
         _ => Err(Failure::Usage(format!(
@@ -36,8 +31,7 @@ pub fn run(args: &cli::RenderArgs) -> Result<(), Failure> {
     let gpu = Gpu::headless(AdapterChoice::from_env()).context("opening a GPU adapter")?;
     log::info!("adapter: {}", gpu.describe());
     let image = shadelab_render::render_image(&gpu, &scene, width, height, &settings);
-    save(&image, &args.output, kind)
-        .with_context(|| format!("writing {}", args.output.display()))?;
+    save(&image, &args.output, kind).with_context(|| format!("writing {}", args.output.display()))?;
     let bad = image.nonfinite_count();
     if bad > 0 {
         log::warn!("{bad} pixels are not finite");
@@ -49,14 +43,13 @@ pub fn run(args: &cli::RenderArgs) -> Result<(), Failure> {
 pub fn save(image: &LinearImage, path: &Path, kind: ImageKind) -> anyhow::Result<()> {
     match kind {
         ImageKind::Png => {
-            let img = image::RgbImage::from_raw(image.width, image.height, image.to_srgb8())
-                .context("image buffer size")?;
+            let img =
+                image::RgbImage::from_raw(image.width, image.height, image.to_srgb8()).context("image buffer size")?;
             img.save(path)?;
         }
         ImageKind::Exr => {
             let flat: Vec<f32> = image.pixels.iter().flatten().copied().collect();
-            let img = image::Rgba32FImage::from_raw(image.width, image.height, flat)
-                .context("image buffer size")?;
+            let img = image::Rgba32FImage::from_raw(image.width, image.height, flat).context("image buffer size")?;
             img.save(path)?;
         }
     }

@@ -1,8 +1,579 @@
-//! The interactive viewer (eframe): placeholder until the panel lands.
+//! The interactive viewer (eframe + egui-wgpu): the scene in the central area, drawn by the same
+//! `Renderer` as `shadelab render` into an offscreen target that egui shows; the parameter panel
+//! at the side edits the model, never wgpu objects.
 
-use crate::Failure;
+use crate::{Failure, cli, render};
+use eframe::egui::{self, Color32, Key, PointerButton, Rect, pos2};
+use eframe::egui_wgpu;
+use glam::DVec3;
+use shadelab_model::params::{self, NamedValue, ParamRange};
+use shadelab_model::presets::PRESETS;
+use shadelab_model::scene::{BUILTIN_SCENES, MAX_LIGHTS};
+use shadelab_model::{Camera, FalloffForm, Light, LightKind, PhongExponent, Scene, ShadingMode, SpecularModel};
+use shadelab_render::timing::{FrameTimer, TimeSource};
+use shadelab_render::{RenderSettings, Renderer, SceneGpu, Target};
 use std::path::PathBuf;
+use std::sync::{Arc, Mutex};
 
-pub fn run(_screenshot: Option<PathBuf>, _frames: Option<&str>) -> Result<(), Failure> {
-    Err(Failure::Run(anyhow::anyhow!("viewer not built yet")))
+/// Format of the view's target: egui samples it as linear colour, like its own textures.
+const VIEW_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba8UnormSrgb;
+/// Frames after which `--screenshot` alone takes its picture.
+const SCREENSHOT_DEFAULT_FRAME: u32 = 5;
+
+pub fn run(screenshot: Option<PathBuf>, frames: Option<&str>) -> Result<(), Failure> {
+    let exit_after = frames.map(|f| cli::FRAMES.parse_u32(f)).transpose()?;
+    if let Some(p) = &screenshot
+        && render::image_kind(p)? != render::ImageKind::Png
+    {
+        return Err(Failure::Usage(format!("--screenshot: '{}' must be a .png file", p.display())));
+    }
+    let mut wgpu_options = egui_wgpu::WgpuConfiguration::default();
+    if let egui_wgpu::WgpuSetup::CreateNew(create) = &mut wgpu_options.wgpu_setup {
+        // Timestamp queries when the adapter has them (the panel's GPU time).
+        create.device_descriptor = Arc::new(|adapter| wgpu::DeviceDescriptor {
+            label: Some("shadelab viewer"),
+            required_features: shadelab_render::gpu::wanted_features(adapter),
+            required_limits: adapter.limits(),
+            ..Default::default()
+        });
+    }
+    let options = eframe::NativeOptions {
+        viewport: egui::ViewportBuilder::default().with_inner_size([1280.0, 760.0]).with_title("shadelab"),
+        renderer: eframe::Renderer::Wgpu,
+        wgpu_options,
+        ..Default::default()
+    };
+    eframe::run_native(
+        "shadelab",
+        options,
+        Box::new(move |cc| Ok(Box::new(Viewer::new(cc, screenshot, exit_after)?) as Box<dyn eframe::App>)),
+    )
+    .map_err(|e| Failure::Run(anyhow::anyhow!("viewer: {e}")))
+}
+
+/// Orbit camera around a target: yaw and pitch in radians, distance in scene units.
+#[derive(Clone, Copy, Debug)]
+struct Orbit {
+    target: DVec3,
+    yaw: f64,
+    pitch: f64,
+    distance: f64,
+}
+
+impl Orbit {
+    fn from_camera(c: &Camera) -> Orbit {
+        let d = c.eye - c.target;
+        let distance = d.length();
+        Orbit { target: c.target, yaw: d.x.atan2(d.z), pitch: (d.y / distance).asin(), distance }
+    }
+    fn camera(&self, base: &Camera) -> Camera {
+        let dir = DVec3::new(self.pitch.cos() * self.yaw.sin(), self.pitch.sin(), self.pitch.cos() * self.yaw.cos());
+        Camera { eye: self.target + dir * self.distance, target: self.target, ..*base }
+    }
+}
+
+struct View {
+    target: Target,
+    texture: egui::TextureId,
+}
+
+struct Viewer {
+    scene_name: String,
+    scene: Scene,
+    base_camera: Camera,
+    orbit: Orbit,
+    settings: RenderSettings,
+    renderer: Renderer,
+    gpu_scene: SceneGpu,
+    egui_renderer: Arc<egui::mutex::RwLock<egui_wgpu::Renderer>>,
+    view: Option<View>,
+    timer: FrameTimer,
+    frame_ms: Option<f64>,
+    continuous: bool,
+    selected_material: usize,
+    mu_linked: bool,
+    frames: u32,
+    exit_after: Option<u32>,
+    screenshot_path: Option<PathBuf>,
+    screenshot_slot: Arc<Mutex<Option<Arc<egui::ColorImage>>>>,
+    screenshot_requested: bool,
+    saved_count: u32,
+    message: Option<(String, bool)>,
+}
+
+impl Viewer {
+    fn new(
+        cc: &eframe::CreationContext<'_>,
+        screenshot_path: Option<PathBuf>,
+        exit_after: Option<u32>,
+    ) -> Result<Viewer, String> {
+        let rs = cc.wgpu_render_state.as_ref().ok_or("the viewer needs eframe's wgpu renderer")?;
+        let renderer = Renderer::new(&rs.device, &rs.queue);
+        let scene = Scene::builtin("default").expect("built-in default scene");
+        let gpu_scene = renderer.upload(&scene);
+        log::info!("viewer adapter: {:?}", rs.adapter.get_info());
+        Ok(Viewer {
+            scene_name: "default".into(),
+            base_camera: scene.camera,
+            orbit: Orbit::from_camera(&scene.camera),
+            selected_material: scene.objects.get(1).map_or(0, |o| o.material),
+            scene,
+            settings: RenderSettings::default(),
+            timer: FrameTimer::new(&rs.device, &rs.queue),
+            renderer,
+            gpu_scene,
+            egui_renderer: rs.renderer.clone(),
+            view: None,
+            frame_ms: None,
+            continuous: exit_after.is_some(),
+            mu_linked: true,
+            frames: 0,
+            exit_after,
+            screenshot_path,
+            screenshot_slot: Arc::new(Mutex::new(None)),
+            screenshot_requested: false,
+            saved_count: 0,
+            message: None,
+        })
+    }
+
+    fn load_scene(&mut self, name: &str) {
+        match Scene::builtin(name) {
+            Some(s) => {
+                self.gpu_scene = self.renderer.upload(&s);
+                self.base_camera = s.camera;
+                self.orbit = Orbit::from_camera(&s.camera);
+                self.selected_material = s.objects.get(1).map_or(0, |o| o.material);
+                self.scene = s;
+                self.scene_name = name.into();
+                self.message = None;
+            }
+            None => self.message = Some((format!("unknown scene '{name}'"), true)),
+        }
+    }
+
+    fn keyboard(&mut self, ctx: &egui::Context) {
+        if ctx.memory(|m| m.focused().is_some()) {
+            return; // typing into a field
+        }
+        ctx.input(|i| {
+            if i.key_pressed(Key::Num1) {
+                self.settings.shading = ShadingMode::Flat;
+            }
+            if i.key_pressed(Key::Num2) {
+                self.settings.shading = ShadingMode::Gouraud;
+            }
+            if i.key_pressed(Key::Num3) {
+                self.settings.shading = ShadingMode::Phong;
+            }
+            if i.key_pressed(Key::S) {
+                self.settings.specular = match self.settings.specular {
+                    SpecularModel::Phong => SpecularModel::CookTorrance,
+                    SpecularModel::CookTorrance => SpecularModel::Phong,
+                };
+            }
+        });
+        if ctx.input(|i| i.key_pressed(Key::F12)) {
+            self.save_view_png();
+        }
+    }
+
+    /// Render the current view again into a float target at the view's resolution and save it.
+    fn save_view_png(&mut self) {
+        let Some(view) = &self.view else { return };
+        let (w, h) = (view.target.width, view.target.height);
+        let target = Target::new(&self.renderer.device, w, h, shadelab_render::target::HDR_FORMAT);
+        self.renderer.render(&self.gpu_scene, &self.scene, &target, &self.settings);
+        let image = shadelab_render::target::read_back(&self.renderer.device, &self.renderer.queue, &target);
+        self.saved_count += 1;
+        let path = PathBuf::from(format!("shadelab-screenshot-{}.png", self.saved_count));
+        self.message = Some(match render::save(&image, &path, render::ImageKind::Png) {
+            Ok(()) => (format!("saved {} ({w}×{h})", path.display()), false),
+            Err(e) => (format!("screenshot failed: {e:#}"), true),
+        });
+    }
+
+    fn ensure_view(&mut self, w: u32, h: u32) {
+        if self.view.as_ref().is_some_and(|v| v.target.width == w && v.target.height == h) {
+            return;
+        }
+        let device = &self.renderer.device;
+        let target = Target::new(device, w, h, VIEW_FORMAT);
+        // egui takes a texture's values as sRGB-encoded: give it the stored bytes undecoded.
+        let shown = target.encoded_view();
+        let mut er = self.egui_renderer.write();
+        let texture = match &self.view {
+            Some(v) => {
+                er.update_egui_texture_from_wgpu_texture(device, &shown, wgpu::FilterMode::Linear, v.texture);
+                v.texture
+            }
+            None => er.register_native_texture(device, &shown, wgpu::FilterMode::Linear),
+        };
+        self.view = Some(View { target, texture });
+    }
+
+    fn viewport(&mut self, ui: &mut egui::Ui) {
+        let avail = ui.available_size();
+        let (rect, response) = ui.allocate_exact_size(avail, egui::Sense::click_and_drag());
+        let ppp = ui.ctx().pixels_per_point();
+        let w = ((avail.x * ppp).round().max(0.0) as u32).min(8192);
+        let h = ((avail.y * ppp).round().max(0.0) as u32).min(8192);
+        if w == 0 || h == 0 {
+            return; // minimized or squeezed to nothing: no frame to draw
+        }
+        // Camera: drag orbits, right/middle drag pans, wheel zooms.
+        let delta = response.drag_delta();
+        if response.dragged_by(PointerButton::Primary) {
+            self.orbit.yaw -= delta.x as f64 * 0.01;
+            self.orbit.pitch = (self.orbit.pitch + delta.y as f64 * 0.01).clamp(-1.5, 1.5);
+        }
+        if response.dragged_by(PointerButton::Secondary) || response.dragged_by(PointerButton::Middle) {
+            let cam = self.orbit.camera(&self.base_camera);
+            let forward = (cam.target - cam.eye).normalize();
+            let right = forward.cross(cam.up).normalize();
+            let up = right.cross(forward);
+            let scale = self.orbit.distance * 0.0015;
+            self.orbit.target += (-right * delta.x as f64 + up * delta.y as f64) * scale;
+        }
+        if response.hovered() {
+            let scroll = ui.input(|i| i.smooth_scroll_delta.y) as f64;
+            self.orbit.distance = (self.orbit.distance * (-scroll * 0.002).exp()).clamp(0.3, 60.0);
+        }
+        if response.double_clicked() {
+            self.orbit = Orbit::from_camera(&self.base_camera);
+        }
+        self.scene.camera = self.orbit.camera(&self.base_camera).fitted(w as f64 / h as f64);
+        self.ensure_view(w, h);
+        let view = self.view.as_ref().expect("view just made");
+        self.renderer.write_uniforms(&self.gpu_scene, &self.scene, &view.target, &self.settings);
+        self.frame_ms = Some(self.timer.frame(&mut self.renderer, &self.gpu_scene, &view.target, &self.settings));
+        let painter = ui.painter_at(rect);
+        painter.image(view.texture, rect, Rect::from_min_max(pos2(0.0, 0.0), pos2(1.0, 1.0)), Color32::WHITE);
+        // Where the lights are: a marker at each point light, and at the far point a directional
+        // light comes from.
+        let vp = self.scene.camera.projection(w as f64 / h as f64) * self.scene.camera.view();
+        for (i, l) in self.scene.lights.iter().enumerate() {
+            let p = match l.kind {
+                LightKind::Point => l.position,
+                LightKind::Directional => self.orbit.target - l.direction * 4.0,
+            };
+            let clip = vp * p.extend(1.0);
+            // Behind the eye the projection flips: divide by |w| so the marker keeps its side.
+            let (x, y) = (clip.x / clip.w.abs().max(1e-9), clip.y / clip.w.abs().max(1e-9));
+            let at = pos2(
+                rect.left() + ((x + 1.0) * 0.5) as f32 * rect.width(),
+                rect.top() + ((1.0 - y) * 0.5) as f32 * rect.height(),
+            );
+            let c = l.color.map(|c| (c.clamp(0.0, 1.0) * 255.0) as u8);
+            let color = Color32::from_rgb(c[0], c[1], c[2]);
+            let inner = rect.shrink(12.0);
+            let on_view = clip.w > 0.0 && inner.contains(at);
+            // A light off the view is pinned to the view's edge and drawn hollow.
+            let at = if on_view { at } else { inner.clamp(at) };
+            if on_view {
+                painter.circle(at, 6.0, color, egui::Stroke::new(1.5, Color32::BLACK));
+            } else {
+                painter.circle_stroke(at, 6.0, egui::Stroke::new(2.5, color));
+            }
+            let kind = if l.kind == LightKind::Point { "point" } else { "dir." };
+            let label = format!("L{} {kind}{}", i + 1, if on_view { "" } else { " (off view)" });
+            let right_half = at.x > rect.center().x;
+            let (align, offset) = if right_half {
+                (egui::Align2::RIGHT_TOP, egui::vec2(-9.0, 6.0))
+            } else {
+                (egui::Align2::LEFT_TOP, egui::vec2(9.0, 6.0))
+            };
+            painter.text(at + offset, align, label, egui::FontId::proportional(12.0), Color32::WHITE);
+        }
+    }
+
+    fn panel(&mut self, ui: &mut egui::Ui) {
+        ui.heading("shadelab");
+        if let Some((msg, err)) = &self.message {
+            ui.colored_label(if *err { Color32::LIGHT_RED } else { Color32::LIGHT_GREEN }, msg);
+        }
+        let mut scene_choice = self.scene_name.clone();
+        egui::ComboBox::from_label("scene").selected_text(&scene_choice).show_ui(ui, |ui| {
+            for name in BUILTIN_SCENES {
+                ui.selectable_value(&mut scene_choice, name.to_string(), *name);
+            }
+        });
+        if scene_choice != self.scene_name {
+            self.load_scene(&scene_choice);
+        }
+        ui.horizontal(|ui| {
+            ui.label("shading");
+            for (i, (name, mode)) in ShadingMode::ALL.iter().enumerate() {
+                ui.selectable_value(&mut self.settings.shading, *mode, *name).on_hover_text(format!(
+                    "{} (key {})",
+                    shading_meaning(*mode),
+                    i + 1
+                ));
+            }
+        });
+        ui.horizontal(|ui| {
+            ui.label("specular");
+            ui.selectable_value(&mut self.settings.specular, SpecularModel::Phong, "Phong (V·R)^h")
+                .on_hover_text("Phong specular: (V·R)^h, the light's colour (key S toggles)");
+            ui.selectable_value(&mut self.settings.specular, SpecularModel::CookTorrance, "Cook–Torrance")
+                .on_hover_text(
+                    "Cook–Torrance: Beckmann D(m), geometric G, exact Fresnel F(μ) per channel (key S toggles)",
+                );
+        });
+        ui.checkbox(&mut self.settings.debug_nonfinite, "paint non-finite pixels magenta");
+        ui.separator();
+        self.material_ui(ui);
+        ui.separator();
+        self.lights_ui(ui);
+        ui.separator();
+        self.stats_ui(ui);
+    }
+
+    fn material_ui(&mut self, ui: &mut egui::Ui) {
+        let names: Vec<String> = self.scene.materials.iter().map(|m| m.name.clone()).collect();
+        self.selected_material = self.selected_material.min(names.len().saturating_sub(1));
+        egui::ComboBox::from_label("material").selected_text(&names[self.selected_material]).show_ui(ui, |ui| {
+            for (i, n) in names.iter().enumerate() {
+                ui.selectable_value(&mut self.selected_material, i, n);
+            }
+        });
+        let mat = &mut self.scene.materials[self.selected_material];
+        ui.horizontal_wrapped(|ui| {
+            ui.label("μ presets:");
+            for p in PRESETS {
+                let tip = format!("μ = ({:.3}, {:.3}, {:.3}) — {}", p.mu[0], p.mu[1], p.mu[2], p.source);
+                if ui.button(p.name).on_hover_text(tip).clicked() {
+                    mat.mu = p.mu;
+                    mat.color = p.color;
+                    mat.r_d = if p.metal { 0.1 } else { 0.8 };
+                }
+            }
+        });
+        ui.small(format!("μ = ({:.3}, {:.3}, {:.3})", mat.mu[0], mat.mu[1], mat.mu[2]));
+        slider(ui, &mut mat.m, &params::M, false);
+        let mut mirror = mat.h.is_mirror();
+        let mut h = mat.h.value().min(1e6);
+        ui.horizontal(|ui| {
+            ui.add_enabled(!mirror, egui::Slider::new(&mut h, 1.0..=1e6).logarithmic(true).text("h"))
+                .on_hover_text(tooltip(&params::H));
+            ui.checkbox(&mut mirror, "mirror").on_hover_text("h = ∞: a perfect mirror");
+        });
+        mat.h = if mirror { PhongExponent::Mirror } else { PhongExponent::Finite(h) };
+        ui.checkbox(&mut self.mu_linked, "μ linked (one value for R, G, B)");
+        if self.mu_linked {
+            let mut v = mat.mu[0];
+            if slider(ui, &mut v, &params::MU, false) {
+                mat.mu = [v; 3];
+            }
+        } else {
+            for (c, name) in mat.mu.iter_mut().zip(["μ R", "μ G", "μ B"]) {
+                ui.add(egui::Slider::new(c, 0.0..=1.0).text(name)).on_hover_text(tooltip(&params::MU));
+            }
+        }
+        ui.horizontal(|ui| {
+            let mut c = mat.color.map(|v| v as f32);
+            ui.label("C").on_hover_text("surface colour C (linear RGB)");
+            if ui.color_edit_button_rgb(&mut c).changed() {
+                mat.color = c.map(f64::from);
+            }
+        });
+        for (v, name, meaning) in [
+            (&mut mat.r_s, "r_s", "specular share r_s"),
+            (&mut mat.r_d, "r_d", "diffuse share r_d"),
+            (&mut mat.r_a, "r_a", "ambient reflectance r_a"),
+        ] {
+            ui.add(egui::Slider::new(v, 0.0..=1.0).text(name)).on_hover_text(meaning);
+        }
+        let mut amb = self.scene.ambient[0];
+        if ui
+            .add(egui::Slider::new(&mut amb, 0.0..=1.0).text("I_amb"))
+            .on_hover_text("ambient intensity I_amb of the scene")
+            .changed()
+        {
+            self.scene.ambient = [amb; 3];
+        }
+    }
+
+    fn lights_ui(&mut self, ui: &mut egui::Ui) {
+        ui.horizontal(|ui| {
+            ui.strong(format!("lights ({}/{MAX_LIGHTS})", self.scene.lights.len()));
+            if ui.add_enabled(self.scene.lights.len() < MAX_LIGHTS, egui::Button::new("add")).clicked() {
+                self.scene.lights.push(Light::point(DVec3::new(2.0, 2.5, 2.0), [1.0; 3], 1.0, 0.05));
+            }
+        });
+        let mut remove = None;
+        for (i, l) in self.scene.lights.iter_mut().enumerate() {
+            egui::CollapsingHeader::new(format!("L{} — {}", i + 1, l.kind.name())).id_salt(i).show(ui, |ui| {
+                ui.horizontal(|ui| {
+                    let mut kind = l.kind;
+                    ui.selectable_value(&mut kind, LightKind::Directional, "directional");
+                    ui.selectable_value(&mut kind, LightKind::Point, "point");
+                    l.set_kind(kind);
+                    if ui.button("remove").clicked() {
+                        remove = Some(i);
+                    }
+                });
+                let v = if l.kind == LightKind::Point { &mut l.position } else { &mut l.direction };
+                ui.horizontal(|ui| {
+                    ui.label(if l.kind == LightKind::Point { "position" } else { "direction" });
+                    for c in [&mut v.x, &mut v.y, &mut v.z] {
+                        ui.add(egui::DragValue::new(c).speed(0.05).range(-50.0..=50.0));
+                    }
+                });
+                if l.kind == LightKind::Directional {
+                    l.direction = l.direction.normalize_or(DVec3::NEG_Y);
+                }
+                ui.horizontal(|ui| {
+                    let mut c = l.color.map(|v| v as f32);
+                    if ui.color_edit_button_rgb(&mut c).changed() {
+                        l.color = c.map(f64::from);
+                    }
+                    ui.add(egui::Slider::new(&mut l.intensity, 0.0..=10.0).text("I_L"))
+                        .on_hover_text(tooltip(&params::INTENSITY));
+                });
+                if l.kind == LightKind::Point {
+                    ui.horizontal(|ui| {
+                        ui.selectable_value(&mut l.falloff_form, FalloffForm::Quadratic, "1/(1+αd²)");
+                        ui.selectable_value(&mut l.falloff_form, FalloffForm::Linear, "1/(d+d0)");
+                    });
+                    match l.falloff_form {
+                        FalloffForm::Quadratic => slider(ui, &mut l.falloff_alpha, &params::FALLOFF, true),
+                        FalloffForm::Linear => slider(ui, &mut l.d0, &params::D0, true),
+                    };
+                }
+            });
+        }
+        if let Some(i) = remove {
+            self.scene.lights.remove(i);
+        }
+    }
+
+    fn stats_ui(&mut self, ui: &mut egui::Ui) {
+        let source = match self.timer.source() {
+            TimeSource::GpuTimestamps => "GPU, timestamps",
+            TimeSource::CpuSubmitWait => "CPU, submit+wait",
+        };
+        if let Some(ms) = self.frame_ms {
+            ui.label(format!("scene pass: {ms:.2} ms ({source})"));
+        }
+        let dt = ui.input(|i| i.unstable_dt).max(1e-6);
+        ui.label(format!("frame interval: {:.1} ms ({:.0} fps)", dt * 1e3, 1.0 / dt));
+        ui.label(format!(
+            "{} triangles, {} lights, {} pipelines built",
+            self.gpu_scene.triangle_count,
+            self.scene.lights.len(),
+            self.renderer.pipeline_builds
+        ));
+        ui.checkbox(&mut self.continuous, "render continuously (for live timing)");
+        ui.collapsing("effects simulated", |ui| {
+            for e in effects(&self.scene, &self.settings) {
+                ui.label(format!("• {e}"));
+            }
+        });
+        ui.horizontal(|ui| {
+            if ui.button("screenshot (F12)").on_hover_text("save the view as PNG at its resolution").clicked() {
+                self.save_view_png();
+            }
+            if ui.button("reset camera").on_hover_text("or double-click the view").clicked() {
+                self.orbit = Orbit::from_camera(&self.base_camera);
+            }
+        });
+        ui.small("drag: orbit · right/middle drag: pan · wheel: zoom · 1/2/3: shading · S: specular · F12: screenshot");
+    }
+
+    /// `--screenshot` / `--exit-after-frames`: grab the whole window, then close.
+    fn scripted_exit(&mut self, ctx: &egui::Context) {
+        let shot_at = self.exit_after.unwrap_or(SCREENSHOT_DEFAULT_FRAME);
+        if let Some(path) = &self.screenshot_path {
+            if self.frames >= shot_at && !self.screenshot_requested {
+                let slot = self.screenshot_slot.clone();
+                ctx.request_screenshot(move |img| *slot.lock().unwrap() = Some(img));
+                self.screenshot_requested = true;
+            }
+            let taken = self.screenshot_slot.lock().unwrap().take();
+            if let Some(img) = taken {
+                let [w, h] = img.size;
+                let rgba = image::RgbaImage::from_raw(w as u32, h as u32, img.as_raw().to_vec());
+                match rgba.map(|i| i.save(path)) {
+                    Some(Ok(())) => log::info!("saved {}", path.display()),
+                    _ => eprintln!("error: --screenshot: could not write {}", path.display()),
+                }
+                self.screenshot_path = None;
+                if self.exit_after.is_some() {
+                    ctx.send_viewport_cmd(egui::ViewportCommand::Close);
+                }
+            }
+            ctx.request_repaint();
+        } else if let Some(n) = self.exit_after {
+            if self.frames >= n {
+                ctx.send_viewport_cmd(egui::ViewportCommand::Close);
+            }
+            ctx.request_repaint();
+        }
+    }
+}
+
+impl eframe::App for Viewer {
+    fn ui(&mut self, ui: &mut egui::Ui, _frame: &mut eframe::Frame) {
+        let ctx = ui.ctx().clone();
+        self.keyboard(&ctx);
+        egui::Panel::right("parameters").resizable(true).default_size(340.0).show(ui, |ui| {
+            egui::ScrollArea::vertical().show(ui, |ui| self.panel(ui));
+        });
+        egui::CentralPanel::default().show(ui, |ui| self.viewport(ui));
+        self.frames += 1;
+        self.scripted_exit(&ctx);
+        if self.continuous {
+            ctx.request_repaint();
+        }
+    }
+}
+
+fn tooltip(r: &ParamRange) -> String {
+    format!("{} — {}, in [{}, {}]", r.symbol, r.meaning, r.min, r.max)
+}
+
+/// A slider over a parameter's allowed range, with its symbol and meaning as tooltip.
+fn slider(ui: &mut egui::Ui, v: &mut f64, r: &ParamRange, log: bool) -> bool {
+    ui.add(egui::Slider::new(v, r.min..=r.max).logarithmic(log).text(r.symbol)).on_hover_text(tooltip(r)).changed()
+}
+
+fn shading_meaning(m: ShadingMode) -> &'static str {
+    match m {
+        ShadingMode::Flat => "flat: one normal and one colour per face, lit at its centroid",
+        ShadingMode::Gouraud => "Gouraud: lit at the vertices, colour interpolated",
+        ShadingMode::Phong => "Phong shading: normals interpolated and renormalized, lit per pixel",
+    }
+}
+
+/// What the current pipeline and scene simulate, in words.
+fn effects(scene: &Scene, s: &RenderSettings) -> Vec<String> {
+    let mut out = vec![shading_meaning(s.shading).to_string()];
+    out.push(match s.specular {
+        SpecularModel::Phong => "Phong specular (V·R)^h".into(),
+        SpecularModel::CookTorrance => {
+            "Cook–Torrance specular: Beckmann D(m), min() G, exact Fresnel per channel".into()
+        }
+    });
+    out.push("Lambert diffuse with own shadow (N·L ≤ 0: ambient only)".into());
+    let dir = scene.lights.iter().filter(|l| l.kind == LightKind::Directional).count();
+    let point: Vec<_> = scene.lights.iter().filter(|l| l.kind == LightKind::Point).collect();
+    if dir > 0 {
+        out.push(format!("{dir} directional light(s)"));
+    }
+    if !point.is_empty() {
+        let forms: Vec<_> = point
+            .iter()
+            .map(|l| match l.falloff_form {
+                FalloffForm::Quadratic if l.falloff_alpha > 0.0 => format!("1/(1+{}d²)", l.falloff_alpha),
+                FalloffForm::Quadratic => "no falloff (α = 0)".to_string(),
+                FalloffForm::Linear => format!("1/(d+{})", l.d0),
+            })
+            .collect();
+        out.push(format!("{} point light(s): {}", point.len(), forms.join(", ")));
+    }
+    if scene.ambient.iter().any(|a| *a > 0.0) {
+        out.push("ambient term I_amb·r_a·C".into());
+    }
+    out
 }

@@ -20,11 +20,7 @@ fn out_dir() -> PathBuf {
 
 /// stderr lines that are shadelab's own (the Vulkan driver may print its own warnings).
 fn error_lines(o: &Output) -> Vec<String> {
-    String::from_utf8_lossy(&o.stderr)
-        .lines()
-        .filter(|l| l.starts_with("error:"))
-        .map(String::from)
-        .collect()
+    String::from_utf8_lossy(&o.stderr).lines().filter(|l| l.starts_with("error:")).map(String::from).collect()
 }
 
 #[test]
@@ -41,20 +37,11 @@ fn bad_values_exit_2_with_one_line_naming_flag_and_range() {
         (&["--h", "sharp"], &["--h", "mirror"]),
         (&["--width", "0"], &["--width", "[1, 8192]"]),
         (&["--height", "8193"], &["--height", "[1, 8192]"]),
-        (
-            &["--shading", "toon"],
-            &["--shading", "flat, gouraud, phong"],
-        ),
-        (
-            &["--specular", "blinn"],
-            &["--specular", "phong, cook-torrance"],
-        ),
+        (&["--shading", "toon"], &["--shading", "flat, gouraud, phong"]),
+        (&["--specular", "blinn"], &["--specular", "phong, cook-torrance"]),
         (&["--light", "sun"], &["--light", "directional, point"]),
         (&["--falloff", "-2"], &["--falloff", "[0, 1000000]"]),
-        (
-            &["--falloff-form", "cubic"],
-            &["--falloff-form", "quadratic, linear"],
-        ),
+        (&["--falloff-form", "cubic"], &["--falloff-form", "quadratic, linear"]),
         (&["--d0", "0"], &["--d0", "[0.001, 1000]"]),
         (&["--scene", "nowhere.gltf"], &["--scene", "default"]),
         (&["--output", "x.bmp"], &["--output", ".png, .exr"]),
@@ -67,12 +54,7 @@ fn bad_values_exit_2_with_one_line_naming_flag_and_range() {
         }
         all.extend_from_slice(args);
         let o = shadelab(&all);
-        assert_eq!(
-            o.status.code(),
-            Some(2),
-            "{args:?}: {}",
-            String::from_utf8_lossy(&o.stderr)
-        );
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {}", String::from_utf8_lossy(&o.stderr));
         let lines = error_lines(&o);
         assert_eq!(lines.len(), 1, "{args:?}: {lines:?}");
         for n in *needles {
@@ -147,11 +129,7 @@ fn every_scene_flag_is_accepted() {
             "--output",
             path.to_str().unwrap(),
         ]);
-        assert!(
-            o.status.success(),
-            "{scene}: {}",
-            String::from_utf8_lossy(&o.stderr)
-        );
+        assert!(o.status.success(), "{scene}: {}", String::from_utf8_lossy(&o.stderr));
     }
 }
 
@@ -183,11 +161,7 @@ fn extreme_legal_values_write_an_exr_without_nonfinite_pixels() {
         assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
         let img = image::open(&path).unwrap().to_rgba32f();
         assert_eq!((img.width(), img.height()), (160, 90));
-        assert!(
-            img.pixels()
-                .all(|p| p.0.iter().all(|c| c.is_finite() && *c >= 0.0)),
-            "{specular}"
-        );
+        assert!(img.pixels().all(|p| p.0.iter().all(|c| c.is_finite() && *c >= 0.0)), "{specular}");
         // Linear float: the background is stored as-is, not sRGB-encoded.
         let p = img.get_pixel(0, 0).0;
         assert!((p[0] - 0.03).abs() < 1e-6, "{p:?}");

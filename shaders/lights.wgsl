@@ -49,3 +49,31 @@ fn light_sample(light: Light, p: vec3<f32>, n: vec3<f32>) -> LightSample {
     }
     return s;
 }
+
+// What one light adds to the Phong illumination model (spec §3) at a point with unit normal `n`
+// and unit view vector `v`: I_L · (r_d·C·max(N·L, 0) + r_s·S), zero in the point's own shadow.
+// `specular_model` is SPECULAR_PHONG or SPECULAR_COOK_TORRANCE; `v_index` is per channel.
+fn light_contribution(
+    s: LightSample,
+    n: vec3<f32>,
+    v: vec3<f32>,
+    color: vec3<f32>,
+    r_s: f32,
+    r_d: f32,
+    m: f32,
+    h: f32,
+    mirror: bool,
+    v_index: vec3<f32>,
+    specular_model: u32,
+) -> vec3<f32> {
+    let n_dot_l = dot(n, s.l);
+    var spec: vec3<f32>;
+    if (specular_model == SPECULAR_COOK_TORRANCE) {
+        spec = specular_cook_torrance(n, v, s.l, m, v_index);
+    } else {
+        let r = 2.0 * n_dot_l * n - s.l;
+        spec = vec3(select(0.0, specular_phong(dot(v, r), h, mirror), dot(n, v) > 0.0));
+    }
+    let lit = r_d * color * diffuse_lambert(n_dot_l) + r_s * spec;
+    return select(vec3(0.0), s.radiance * lit, n_dot_l > 0.0);
+}

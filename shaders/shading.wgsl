@@ -52,22 +52,12 @@ fn shade(p: vec3<f32>, n_in: vec3<f32>) -> vec3<f32> {
     let n = safe_normalize(n_in, v);
     let c = object.color.rgb;
     let v_index = fresnel_v_from_mu(object.mu.rgb);
-    let n_dot_v = dot(n, v);
     var total = globals.ambient.rgb * object.r_a * c;
     for (var i = 0u; i < min(globals.light_count, MAX_LIGHTS); i++) {
         let s = light_sample(globals.lights[i], p, n);
-        let n_dot_l = dot(n, s.l);
-        if (n_dot_l <= 0.0) {
-            continue; // own shadow: ambient only
-        }
-        var spec: vec3<f32>;
-        if (SPECULAR_MODEL == SPECULAR_COOK_TORRANCE) {
-            spec = specular_cook_torrance(n, v, s.l, object.m, v_index);
-        } else {
-            let r = 2.0 * n_dot_l * n - s.l;
-            spec = vec3(select(0.0, specular_phong(dot(v, r), object.h, object.mirror != 0u), n_dot_v > 0.0));
-        }
-        total += s.radiance * (object.r_d * c * diffuse_lambert(n_dot_l) + object.r_s * spec);
+        total += light_contribution(
+            s, n, v, c, object.r_s, object.r_d, object.m, object.h, object.mirror != 0u, v_index, SPECULAR_MODEL,
+        );
     }
     return total;
 }

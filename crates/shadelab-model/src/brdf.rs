@@ -5,6 +5,8 @@
 //! constants of [`crate::guards`], the same values as in the WGSL.
 
 use crate::guards::*;
+use crate::params::{FalloffForm, LightKind, SpecularModel};
+use crate::scene::{Light, Material};
 use glam::DVec3;
 
 /// Normalize `v`, or return `fallback` when `v` is (nearly) zero (guard `NORMALIZE_MIN_LEN2`).
@@ -50,10 +52,16 @@ pub fn d_beckmann(n_dot_h: f64, m: f64) -> f64 {
     (1.0 / (4.0 * m2 * c2 * c2)) * ((1.0 - 1.0 / c2) / m2).exp()
 }
 
-/// The normalized Beckmann distribution `exp(−tan²α/m²)/(π m² cos⁴α)` (integrates to 1 over the
-/// projected hemisphere). Used only to check the seed's form against it (spec §5).
+/// The normalized Beckmann distribution `exp(−tan²α/m²)/(π m² cos⁴α)` (its projected area
+/// integrates to 1), written independently of [`d_beckmann`] so that tests can check the seed's
+/// form against it (spec §5: seed D = π/4 × this).
 pub fn d_beckmann_normalized(n_dot_h: f64, m: f64) -> f64 {
-    d_beckmann(n_dot_h, m) * 4.0 / std::f64::consts::PI
+    if n_dot_h <= 0.0 {
+        return 0.0;
+    }
+    let cos2 = n_dot_h * n_dot_h;
+    let tan2 = (1.0 - cos2) / cos2;
+    (-tan2 / (m * m)).exp() / (std::f64::consts::PI * m * m * cos2 * cos2)
 }
 
 /// Spec §5: geometric attenuation `G = min{1, 2(N·H)(N·V)/(V·H), 2(N·H)(N·L)/(V·H)}`.
@@ -128,4 +136,75 @@ pub fn falloff_quadratic(d: f64, alpha: f64) -> f64 {
 /// Spec §2: the chapter's `1/(d + d0)` falloff, `d0` kept at or above `D0_MIN`.
 pub fn falloff_linear(d: f64, d0: f64) -> f64 {
     1.0 / (d.max(0.0) + d0.max(D0_MIN))
+}
+
+/// Direction to a light (unit) and its incident intensity `I_L` per channel at point `p` with
+/// normal `n`. A point light closer than `LIGHT_DIST_MIN` touches the surface: `L = N`.
+pub fn light_sample(light: &Light, p: DVec3, n: DVec3) -> (DVec3, [f64; 3]) {
+    let radiance = light.color.map(|c| c * light.intensity);
+    match light.kind {
+        LightKind::Point => {
+            let to_light = light.position - p;
+            let d = to_light.length();
+            let l = if d > LIGHT_DIST_MIN { to_light / d } else { n };
+            let f = match light.falloff_form {
+                FalloffForm::Quadratic => falloff_quadratic(d, light.falloff_alpha),
+                FalloffForm::Linear => falloff_linear(d, light.d0),
+            };
+            (l, radiance.map(|r| r * f))
+        }
+        LightKind::Directional => (safe_normalize(-light.direction, n), radiance),
+    }
+}
+
+/// Spec §3: what one light adds, `I_L · (r_d·C·max(N·L, 0) + r_s·S)`, zero in own shadow.
+#[allow(clippy::too_many_arguments)]
+pub fn light_contribution(
+    l: DVec3,
+    radiance: [f64; 3],
+    n: DVec3,
+    v: DVec3,
+    mat: &Material,
+    v_index: [f64; 3],
+    specular: SpecularModel,
+) -> [f64; 3] {
+    let n_dot_l = n.dot(l);
+    if n_dot_l <= 0.0 {
+        return [0.0; 3];
+    }
+    let spec = match specular {
+        SpecularModel::CookTorrance => specular_cook_torrance(n, v, l, mat.m, v_index),
+        SpecularModel::Phong => {
+            let r = 2.0 * n_dot_l * n - l;
+            let s = if n.dot(v) > 0.0 { specular_phong(v.dot(r), mat.h.value(), mat.h.is_mirror()) } else { 0.0 };
+            [s; 3]
+        }
+    };
+    std::array::from_fn(|i| radiance[i] * (mat.r_d * mat.color[i] * diffuse_lambert(n_dot_l) + mat.r_s * spec[i]))
+}
+
+/// Spec §3: the Phong illumination model `I_a + Σ I_L (r_d C (N·L) + r_s S)` at world point `p`
+/// with (not necessarily unit) normal `n_in`, seen from `eye`; the twin of `shade` in
+/// `shaders/shading.wgsl`.
+pub fn shade(
+    p: DVec3,
+    n_in: DVec3,
+    eye: DVec3,
+    mat: &Material,
+    lights: &[Light],
+    ambient: [f64; 3],
+    specular: SpecularModel,
+) -> [f64; 3] {
+    let v = safe_normalize(eye - p, DVec3::Y);
+    let n = safe_normalize(n_in, v);
+    let v_index = mat.mu.map(fresnel_v_from_mu);
+    let mut total: [f64; 3] = std::array::from_fn(|i| ambient[i] * mat.r_a * mat.color[i]);
+    for light in lights.iter().take(crate::scene::MAX_LIGHTS) {
+        let (l, radiance) = light_sample(light, p, n);
+        let c = light_contribution(l, radiance, n, v, mat, v_index, specular);
+        for i in 0..3 {
+            total[i] += c[i];
+        }
+    }
+    total
 }

@@ -3,9 +3,12 @@
 
 pub mod brdf;
 pub mod guards;
+#[cfg(test)]
+mod identities;
 pub mod mesh;
 pub mod params;
 pub mod presets;
+pub mod reference;
 pub mod scene;
 
 pub use params::{FalloffForm, LightKind, PhongExponent, ShadingMode, SpecularModel};

@@ -215,6 +215,10 @@ pub struct Scene {
     pub camera: Camera,
 }
 
+/// Background colour (linear RGB): dark enough for highlights to stand out, not black, so a blank
+/// image is told from a dark one.
+pub const BACKGROUND: [f64; 3] = [0.03, 0.035, 0.045];
+
 /// Most lights a scene may hold (the GPU uniform has this many slots).
 pub const MAX_LIGHTS: usize = 8;
 

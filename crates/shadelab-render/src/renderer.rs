@@ -11,9 +11,13 @@ use wgpu::util::DeviceExt;
 
 pub const DEPTH_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Depth32Float;
 
-/// Background colour (linear): dark enough for highlights to stand out, not black, so a blank
-/// image is told from a dark one.
-pub const CLEAR_COLOR: wgpu::Color = wgpu::Color { r: 0.03, g: 0.035, b: 0.045, a: 1.0 };
+/// The scene's background (`scene::BACKGROUND`), the same as the f64 reference's.
+pub const CLEAR_COLOR: wgpu::Color = wgpu::Color {
+    r: shadelab_model::scene::BACKGROUND[0],
+    g: shadelab_model::scene::BACKGROUND[1],
+    b: shadelab_model::scene::BACKGROUND[2],
+    a: 1.0,
+};
 
 /// Everything that selects a distinct pipeline. Plain `Copy + Hash`: pipelines are cached by it
 /// and never rebuilt per frame.

@@ -27,12 +27,16 @@ fn specular_phong(v_dot_r: f32, h_in: f32, mirror: bool) -> f32 {
 
 // Spec §5: Beckmann facet distribution in the seed's form
 // D = 1/(4 m² (N·H)⁴) · exp((1 − 1/(N·H)²)/m²), which is π/4 × the normalized Beckmann D.
-fn d_beckmann(n_dot_h: f32, m_in: f32) -> f32 {
+// `sin2_nh` = 1 − (N·H)², passed in because computed as |N × H|² it keeps its precision at the
+// peak (Filament computes GGX's 1 − (N·H)² the same way): with m = M_MIN the peak spans only
+// ~8 f32 ulps of N·H, and 1 − 1/(N·H)² from a rounded N·H would be off by 10 %.
+fn d_beckmann(n_dot_h: f32, sin2_nh: f32, m_in: f32) -> f32 {
     let c = clamp(n_dot_h, N_DOT_H_MIN, 1.0);
     let m = max(m_in, M_MIN);
     let m2 = m * m;
     let c2 = c * c;
-    let d = (1.0 / (4.0 * m2 * c2 * c2)) * exp((1.0 - 1.0 / c2) / m2);
+    // 1 − 1/c² = −sin²/c²
+    let d = (1.0 / (4.0 * m2 * c2 * c2)) * exp(-max(sin2_nh, 0.0) / (c2 * m2));
     return select(0.0, d, n_dot_h > 0.0);
 }
 
@@ -57,7 +61,8 @@ fn fresnel_v_from_mu(mu: vec3<f32>) -> vec3<f32> {
 fn f_fresnel_exact(c_in: f32, v_in: vec3<f32>) -> vec3<f32> {
     let c = clamp(c_in, 0.0, 1.0);
     let v = max(v_in, vec3(1.0));
-    let g = sqrt(max(v * v + c * c - 1.0, vec3(0.0)));
+    // g² = (v − 1)(v + 1) + c²: exact for v = 1 (μ = 0), where v² + c² − 1 cancels in f32.
+    let g = sqrt(max((v - 1.0) * (v + 1.0) + c * c, vec3(0.0)));
     let a = (g - c) / max(g + c, vec3(FRESNEL_G_PLUS_C_MIN));
     // c(g − c) + 1 ≥ 1 − c² + c·g > 0 for v ≥ 1, so this division is safe.
     let b = (c * (g + c) - 1.0) / (c * (g - c) + 1.0);
@@ -72,7 +77,8 @@ fn specular_cook_torrance(n: vec3<f32>, v: vec3<f32>, l: vec3<f32>, m: f32, v_in
     let h = safe_normalize(l + v, n);
     let n_dot_h = dot(n, h);
     let v_dot_h = clamp(dot(v, h), 0.0, 1.0);
-    let d = d_beckmann(n_dot_h, m);
+    let n_x_h = cross(n, h);
+    let d = d_beckmann(n_dot_h, dot(n_x_h, n_x_h), m);
     let g = g_cook_torrance(n_dot_h, n_dot_v, n_dot_l, v_dot_h);
     let k = d * g / max(n_dot_v, N_DOT_V_MIN);
     let lit = n_dot_l > 0.0 && n_dot_v > 0.0;

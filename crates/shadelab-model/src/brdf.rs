@@ -42,14 +42,15 @@ pub fn specular_phong(v_dot_r: f64, h: f64, mirror: bool) -> f64 {
 
 /// Spec §5: the Beckmann facet distribution in the seed's form
 /// `D = 1/(4 m² (N·H)⁴) · exp((1 − 1/(N·H)²)/m²)`; equals π/4 × the normalized Beckmann D.
-pub fn d_beckmann(n_dot_h: f64, m: f64) -> f64 {
+/// `sin2_nh` = 1 − (N·H)², computed by the caller as |N × H|² (precise at the peak; see the WGSL).
+pub fn d_beckmann(n_dot_h: f64, sin2_nh: f64, m: f64) -> f64 {
     if n_dot_h <= 0.0 {
         return 0.0;
     }
     let c = n_dot_h.clamp(N_DOT_H_MIN, 1.0);
     let m2 = m.max(M_MIN).powi(2);
     let c2 = c * c;
-    (1.0 / (4.0 * m2 * c2 * c2)) * ((1.0 - 1.0 / c2) / m2).exp()
+    (1.0 / (4.0 * m2 * c2 * c2)) * (-sin2_nh.max(0.0) / (c2 * m2)).exp()
 }
 
 /// The normalized Beckmann distribution `exp(−tan²α/m²)/(π m² cos⁴α)` (its projected area
@@ -88,7 +89,7 @@ pub fn fresnel_v_from_mu(mu: f64) -> f64 {
 pub fn f_fresnel_exact(c: f64, v: f64) -> f64 {
     let c = c.clamp(0.0, 1.0);
     let v = v.max(1.0);
-    let g = (v * v + c * c - 1.0).max(0.0).sqrt();
+    let g = ((v - 1.0) * (v + 1.0) + c * c).max(0.0).sqrt();
     let a = (g - c) / (g + c).max(FRESNEL_G_PLUS_C_MIN);
     // c(g − c) + 1 ≥ 1 − c² + c·g ≥ 0 since g ≥ c for v ≥ 1; it is ≥ 1 whenever c ≤ g.
     let b = (c * (g + c) - 1.0) / (c * (g - c) + 1.0);
@@ -107,7 +108,7 @@ pub fn specular_cook_torrance(n: DVec3, v: DVec3, l: DVec3, m: f64, v_index: [f6
     let h = safe_normalize(l + v, n);
     let n_dot_h = n.dot(h);
     let v_dot_h = v.dot(h).clamp(0.0, 1.0);
-    let d = d_beckmann(n_dot_h, m);
+    let d = d_beckmann(n_dot_h, n.cross(h).length_squared(), m);
     let g = g_cook_torrance(n_dot_h, n_dot_v, n_dot_l, v_dot_h);
     let k = d * g / n_dot_v.max(N_DOT_V_MIN);
     v_index.map(|vi| f_fresnel_exact(v_dot_h, vi) * k)
@@ -123,7 +124,7 @@ pub fn rho_s_forms(n: DVec3, v: DVec3, l: DVec3, m: f64, v_index: f64) -> (f64, 
     let v_dot_h = v.dot(h);
     let f = f_fresnel_exact(v_dot_h, v_index);
     let g = g_cook_torrance(n_dot_h, n_dot_v, n_dot_l, v_dot_h);
-    let seed = f / std::f64::consts::PI * d_beckmann(n_dot_h, m) * g / (n_dot_v * n_dot_l);
+    let seed = f / std::f64::consts::PI * d_beckmann(n_dot_h, n.cross(h).length_squared(), m) * g / (n_dot_v * n_dot_l);
     let modern = f * d_beckmann_normalized(n_dot_h, m) * g / (4.0 * n_dot_v * n_dot_l);
     (seed, modern)
 }

@@ -5,6 +5,7 @@
 pub mod gpu;
 pub mod renderer;
 pub mod shaders;
+pub mod sweep;
 pub mod target;
 pub mod timing;
 pub mod uniforms;

@@ -16,6 +16,14 @@ pub fn terms_source() -> String {
     FILES[..3].iter().map(|(_, s)| *s).collect::<Vec<_>>().join("\n")
 }
 
+/// The stability sweep's kernel (`shaders/sweep.wgsl`), appended to the terms.
+pub const SWEEP_KERNEL: &str = include_str!("../../../shaders/sweep.wgsl");
+
+/// The sweep's compute module: the shipped terms followed by the kernel.
+pub fn sweep_source() -> String {
+    format!("{}\n{}", terms_source(), SWEEP_KERNEL)
+}
+
 /// The whole renderer module: terms plus the shading entry points.
 pub fn lighting_source() -> String {
     FILES.iter().map(|(_, s)| *s).collect::<Vec<_>>().join("\n")
@@ -79,8 +87,9 @@ mod tests {
                 }
             }
         }
-        // The terms alone (used by compute passes) form a valid module too.
+        // The terms alone, and the sweep's compute module, are valid too.
         validate(&parse(&terms_source()));
+        validate(&parse(&sweep_source()));
     }
 
     /// (size, [(field, offset)]) of a WGSL struct as naga lays it out.

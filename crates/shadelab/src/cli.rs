@@ -32,6 +32,9 @@ pub enum Command {
     /// Measure: render time per shading mode × specular model.
     #[command(subcommand)]
     Bench(BenchCommand),
+    /// Evaluate every lighting term of the shipped WGSL over >10⁶ hard input combinations on the
+    /// GPU and compare with the f64 reference: non-finite values, bounds, relative errors.
+    Sweep,
 }
 
 #[derive(Subcommand, Debug)]

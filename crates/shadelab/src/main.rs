@@ -49,6 +49,7 @@ fn main() -> ExitCode {
     let result = match cli.command {
         Some(cli::Command::Render(args)) => render::run(&args),
         Some(cli::Command::Bench(cli::BenchCommand::Render(args))) => bench::run_render(&args),
+        Some(cli::Command::Sweep) => bench::run_sweep(),
         None => viewer::run(cli.screenshot, cli.exit_after_frames.as_deref()),
     };
     match result {

@@ -124,6 +124,19 @@ impl Renderer {
         }
     }
 
+    /// Replace the shader source (hot reload). The source is validated by naga first: on an
+    /// error nothing changes (the old module and pipelines stay) and naga's message is returned;
+    /// on success the cached pipelines are dropped and rebuilt once, on next use.
+    pub fn reload_shaders(&mut self, source: &str) -> Result<(), String> {
+        shaders::validate(source)?;
+        self.module = self.device.create_shader_module(wgpu::ShaderModuleDescriptor {
+            label: Some("shadelab lighting (reloaded)"),
+            source: wgpu::ShaderSource::Wgsl(source.to_owned().into()),
+        });
+        self.pipelines.clear();
+        Ok(())
+    }
+
     /// The pipeline for a key, built on first use and cached.
     pub fn pipeline(&mut self, key: PipelineKey) -> &wgpu::RenderPipeline {
         if !self.pipelines.contains_key(&key) {

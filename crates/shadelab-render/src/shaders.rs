@@ -29,6 +29,30 @@ pub fn lighting_source() -> String {
     FILES.iter().map(|(_, s)| *s).collect::<Vec<_>>().join("\n")
 }
 
+/// Parse and validate a WGSL module with naga; the error is naga's own message, with the
+/// offending line shown.
+pub fn validate(source: &str) -> Result<(), String> {
+    let module = naga::front::wgsl::parse_str(source).map_err(|e| e.emit_to_string(source))?;
+    naga::valid::Validator::new(naga::valid::ValidationFlags::all(), naga::valid::Capabilities::default())
+        .validate(&module)
+        .map_err(|e| e.emit_to_string(source))?;
+    Ok(())
+}
+
+/// The renderer's WGSL read from a folder holding the files of [`FILES`] (hot reload).
+pub fn read_lighting_source(dir: &std::path::Path) -> std::io::Result<String> {
+    let mut parts = Vec::new();
+    for (name, _) in FILES {
+        parts.push(std::fs::read_to_string(dir.join(name))?);
+    }
+    Ok(parts.join("\n"))
+}
+
+/// The newest modification time among those files (to notice an edit).
+pub fn newest_change(dir: &std::path::Path) -> Option<std::time::SystemTime> {
+    FILES.iter().filter_map(|(name, _)| std::fs::metadata(dir.join(name)).and_then(|m| m.modified()).ok()).max()
+}
+
 /// Entry points of a shading mode: (vertex, fragment).
 pub fn entry_points(mode: shadelab_model::ShadingMode) -> (&'static str, &'static str) {
     use shadelab_model::ShadingMode::*;

@@ -23,6 +23,10 @@ pub struct Cli {
     /// Viewer: render this many frames, then exit 0.
     #[arg(long, value_name = "N")]
     pub exit_after_frames: Option<String>,
+    /// Viewer, for developers: reload the WGSL from this folder (e.g. `shaders`) when a file
+    /// changes; a shader error is shown in the panel and the previous pipelines are kept.
+    #[arg(long, value_name = "DIR")]
+    pub shaders: Option<std::path::PathBuf>,
 }
 
 #[derive(Subcommand, Debug)]

@@ -1,34 +1,8 @@
-//! `shadelab`: the viewer (no subcommand), `render` and `bench`.
-
-mod bench;
-mod cli;
-mod render;
-mod viewer;
+//! `shadelab`: the viewer (no subcommand), `render`, `bench` and `sweep`.
 
 use clap::Parser;
+use shadelab::{EXIT_USAGE, Failure, bench, cli, render, viewer};
 use std::process::ExitCode;
-
-/// Exit code for a user's mistake (bad flag, out-of-range value, bad file).
-const EXIT_USAGE: u8 = 2;
-
-/// What went wrong: the user's input (exit 2) or the run itself (exit 1).
-#[derive(Debug)]
-pub enum Failure {
-    Usage(String),
-    Run(anyhow::Error),
-}
-
-impl From<shadelab_model::params::ParamError> for Failure {
-    fn from(e: shadelab_model::params::ParamError) -> Self {
-        Failure::Usage(e.to_string())
-    }
-}
-
-impl From<anyhow::Error> for Failure {
-    fn from(e: anyhow::Error) -> Self {
-        Failure::Run(e)
-    }
-}
 
 fn main() -> ExitCode {
     env_logger::Builder::from_env(env_logger::Env::default().default_filter_or("warn")).init();
@@ -50,7 +24,7 @@ fn main() -> ExitCode {
         Some(cli::Command::Render(args)) => render::run(&args),
         Some(cli::Command::Bench(cli::BenchCommand::Render(args))) => bench::run_render(&args),
         Some(cli::Command::Sweep) => bench::run_sweep(),
-        None => viewer::run(cli.screenshot, cli.exit_after_frames.as_deref()),
+        None => viewer::run(cli.screenshot, cli.exit_after_frames.as_deref(), cli.shaders),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

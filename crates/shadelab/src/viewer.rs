@@ -20,7 +20,7 @@ const VIEW_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba8UnormSrgb;
 /// Frames after which `--screenshot` alone takes its picture.
 const SCREENSHOT_DEFAULT_FRAME: u32 = 5;
 
-pub fn run(screenshot: Option<PathBuf>, frames: Option<&str>) -> Result<(), Failure> {
+pub fn run(screenshot: Option<PathBuf>, frames: Option<&str>, shaders: Option<PathBuf>) -> Result<(), Failure> {
     let exit_after = frames.map(|f| cli::FRAMES.parse_u32(f)).transpose()?;
     if let Some(p) = &screenshot
         && render::image_kind(p)? != render::ImageKind::Png
@@ -46,7 +46,11 @@ pub fn run(screenshot: Option<PathBuf>, frames: Option<&str>) -> Result<(), Fail
     eframe::run_native(
         "shadelab",
         options,
-        Box::new(move |cc| Ok(Box::new(Viewer::new(cc, screenshot, exit_after)?) as Box<dyn eframe::App>)),
+        Box::new(move |cc| {
+            let mut viewer = Viewer::new(cc, screenshot, exit_after)?;
+            viewer.shader_dir = shaders;
+            Ok(Box::new(viewer) as Box<dyn eframe::App>)
+        }),
     )
     .map_err(|e| Failure::Run(anyhow::anyhow!("viewer: {e}")))
 }
@@ -77,7 +81,8 @@ struct View {
     texture: egui::TextureId,
 }
 
-struct Viewer {
+/// The viewer's state; `pub` so that tests can drive it through egui_kittest.
+pub struct Viewer {
     scene_name: String,
     scene: Scene,
     base_camera: Camera,
@@ -99,10 +104,17 @@ struct Viewer {
     screenshot_requested: bool,
     saved_count: u32,
     message: Option<(String, bool)>,
+    /// Developer option: reload WGSL from here when it changes.
+    pub shader_dir: Option<PathBuf>,
+    /// Show the live timing numbers (snapshot tests turn them off: they differ every run).
+    pub show_live_numbers: bool,
+    shader_stamp: Option<std::time::SystemTime>,
 }
 
 impl Viewer {
-    fn new(
+    /// The viewer on the built-in default scene. `screenshot` and `exit_after` script a run (see
+    /// `--screenshot`, `--exit-after-frames`).
+    pub fn new(
         cc: &eframe::CreationContext<'_>,
         screenshot_path: Option<PathBuf>,
         exit_after: Option<u32>,
@@ -134,7 +146,50 @@ impl Viewer {
             screenshot_requested: false,
             saved_count: 0,
             message: None,
+            shader_dir: None,
+            shader_stamp: None,
+            show_live_numbers: true,
         })
+    }
+
+    /// Current shading mode, specular model and debug switch.
+    pub fn settings(&self) -> RenderSettings {
+        self.settings
+    }
+
+    /// How many pipelines have been built so far (must not grow per frame).
+    pub fn pipeline_builds(&self) -> u32 {
+        self.renderer.pipeline_builds
+    }
+
+    /// The scene being shown (parameters edited by the panel).
+    pub fn scene_mut(&mut self) -> &mut Scene {
+        &mut self.scene
+    }
+
+    /// The message line of the panel (text, is it an error).
+    pub fn message(&self) -> Option<&(String, bool)> {
+        self.message.as_ref()
+    }
+
+    /// Developer option: reload the WGSL when a file in the shader folder changed. A file that
+    /// does not validate leaves the running pipelines as they are and shows naga's message.
+    pub fn poll_shaders(&mut self) {
+        let Some(dir) = &self.shader_dir else { return };
+        let stamp = shadelab_render::shaders::newest_change(dir);
+        if stamp == self.shader_stamp {
+            return;
+        }
+        let first = self.shader_stamp.is_none();
+        self.shader_stamp = stamp;
+        let result = shadelab_render::shaders::read_lighting_source(dir)
+            .map_err(|e| format!("reading shaders from {}: {e}", dir.display()))
+            .and_then(|src| self.renderer.reload_shaders(&src));
+        self.message = Some(match result {
+            Ok(()) if first => (format!("shaders from {} (reloaded on change)", dir.display()), false),
+            Ok(()) => (format!("shaders reloaded from {}", dir.display()), false),
+            Err(e) => (format!("shader error, previous pipelines kept:\n{e}"), true),
+        });
     }
 
     fn load_scene(&mut self, name: &str) {
@@ -290,7 +345,8 @@ impl Viewer {
     fn panel(&mut self, ui: &mut egui::Ui) {
         ui.heading("shadelab");
         if let Some((msg, err)) = &self.message {
-            ui.colored_label(if *err { Color32::LIGHT_RED } else { Color32::LIGHT_GREEN }, msg);
+            let text = egui::RichText::new(msg).color(if *err { Color32::LIGHT_RED } else { Color32::LIGHT_GREEN });
+            ui.label(if *err { text.monospace() } else { text });
         }
         let mut scene_choice = self.scene_name.clone();
         egui::ComboBox::from_label("scene").selected_text(&scene_choice).show_ui(ui, |ui| {
@@ -453,11 +509,15 @@ impl Viewer {
             TimeSource::GpuTimestamps => "GPU, timestamps",
             TimeSource::CpuSubmitWait => "CPU, submit+wait",
         };
-        if let Some(ms) = self.frame_ms {
-            ui.label(format!("scene pass: {ms:.2} ms ({source})"));
+        if self.show_live_numbers {
+            if let Some(ms) = self.frame_ms {
+                ui.label(format!("scene pass: {ms:.2} ms ({source})"));
+            }
+            let dt = ui.input(|i| i.unstable_dt).max(1e-6);
+            ui.label(format!("frame interval: {:.1} ms ({:.0} fps)", dt * 1e3, 1.0 / dt));
+        } else {
+            ui.label(format!("scene pass: — ms ({source})"));
         }
-        let dt = ui.input(|i| i.unstable_dt).max(1e-6);
-        ui.label(format!("frame interval: {:.1} ms ({:.0} fps)", dt * 1e3, 1.0 / dt));
         ui.label(format!(
             "{} triangles, {} lights, {} pipelines built",
             self.gpu_scene.triangle_count,
@@ -516,6 +576,10 @@ impl Viewer {
 impl eframe::App for Viewer {
     fn ui(&mut self, ui: &mut egui::Ui, _frame: &mut eframe::Frame) {
         let ctx = ui.ctx().clone();
+        if self.shader_dir.is_some() {
+            self.poll_shaders();
+            ctx.request_repaint_after(std::time::Duration::from_millis(500));
+        }
         self.keyboard(&ctx);
         egui::Panel::right("parameters").resizable(true).default_size(340.0).show(ui, |ui| {
             egui::ScrollArea::vertical().show(ui, |ui| self.panel(ui));

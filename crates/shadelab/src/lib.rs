@@ -1,0 +1,29 @@
+//! The `shadelab` application: the viewer (eframe), `render`, `bench` and `sweep`. The binary
+//! is a thin `main`; the modules live here so that tests can drive the viewer.
+
+pub mod bench;
+pub mod cli;
+pub mod render;
+pub mod viewer;
+
+/// Exit code for a user's mistake (bad flag, out-of-range value, bad file).
+pub const EXIT_USAGE: u8 = 2;
+
+/// What went wrong: the user's input (exit 2) or the run itself (exit 1).
+#[derive(Debug)]
+pub enum Failure {
+    Usage(String),
+    Run(anyhow::Error),
+}
+
+impl From<shadelab_model::params::ParamError> for Failure {
+    fn from(e: shadelab_model::params::ParamError) -> Self {
+        Failure::Usage(e.to_string())
+    }
+}
+
+impl From<anyhow::Error> for Failure {
+    fn from(e: anyhow::Error) -> Self {
+        Failure::Run(e)
+    }
+}

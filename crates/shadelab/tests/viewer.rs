@@ -1,0 +1,130 @@
+//! The viewer driven by egui_kittest on lavapipe (wgpu): what a person sees and clicks.
+
+use egui_kittest::Harness;
+use egui_kittest::kittest::Queryable;
+use shadelab::viewer::Viewer;
+use shadelab_model::{ShadingMode, SpecularModel};
+
+fn harness() -> Harness<'static, Viewer> {
+    let mut h = Harness::builder()
+        .with_size(egui::vec2(1100.0, 640.0))
+        .wgpu()
+        .build_eframe(|cc| Viewer::new(cc, None, None).expect("viewer"));
+    h.run_steps(2);
+    h
+}
+
+/// Pixels of the scene area (left of the panel) that differ by more than 8 in any channel.
+fn changed_view_pixels(a: &image::RgbaImage, b: &image::RgbaImage) -> usize {
+    let view_width = a.width() * 6 / 10;
+    (0..a.height())
+        .flat_map(|y| (0..view_width).map(move |x| (x, y)))
+        .filter(|&(x, y)| {
+            let (p, q) = (a.get_pixel(x, y).0, b.get_pixel(x, y).0);
+            (0..3).any(|c| p[c].abs_diff(q[c]) > 8)
+        })
+        .count()
+}
+
+#[test]
+fn snapshot_of_panel_and_view() {
+    let mut h = harness();
+    h.state_mut().show_live_numbers = false; // they differ every run
+    h.run_steps(2);
+    // The golden is tests/snapshots/viewer_default.png; UPDATE_SNAPSHOTS=1 regenerates it.
+    h.snapshot("viewer_default");
+}
+
+#[test]
+fn clicking_the_specular_model_changes_the_image() {
+    let mut h = harness();
+    assert_eq!(h.state().settings().specular, SpecularModel::CookTorrance);
+    let before = h.render().expect("render");
+    h.get_by_label("Phong (V·R)^h").click();
+    h.run_steps(3);
+    assert_eq!(h.state().settings().specular, SpecularModel::Phong);
+    let after = h.render().expect("render");
+    let changed = changed_view_pixels(&before, &after);
+    // Phong specular lights up the rough spheres' highlights and whitens the gold's.
+    assert!(changed > 2000, "only {changed} pixels of the view changed");
+}
+
+#[test]
+fn keyboard_shortcuts_switch_modes() {
+    let mut h = harness();
+    let phong = h.render().expect("render");
+    h.key_press(egui::Key::Num1);
+    h.run_steps(2);
+    assert_eq!(h.state().settings().shading, ShadingMode::Flat);
+    let flat = h.render().expect("render");
+    assert!(changed_view_pixels(&phong, &flat) > 2000);
+    h.key_press(egui::Key::Num2);
+    h.run_steps(2);
+    assert_eq!(h.state().settings().shading, ShadingMode::Gouraud);
+    h.key_press(egui::Key::S);
+    h.run_steps(2);
+    assert_eq!(h.state().settings().specular, SpecularModel::Phong);
+}
+
+#[test]
+fn parameter_changes_never_rebuild_pipelines() {
+    let mut h = harness();
+    let builds = h.state().pipeline_builds();
+    let first = h.render().expect("render");
+    for i in 1..=8 {
+        let scene = h.state_mut().scene_mut();
+        for mat in &mut scene.materials {
+            mat.m = 0.1 * i as f64;
+        }
+        scene.lights[0].intensity = 0.2 * i as f64;
+        h.run_steps(1);
+    }
+    assert_eq!(h.state().pipeline_builds(), builds, "a parameter change rebuilt a pipeline");
+    assert!(changed_view_pixels(&first, &h.render().expect("render")) > 1000, "the parameters had no effect");
+}
+
+#[test]
+fn a_broken_shader_on_hot_reload_keeps_the_old_pipeline_and_shows_nagas_message() {
+    let dir = std::path::PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("hot-reload-shaders");
+    std::fs::create_dir_all(&dir).unwrap();
+    let shipped = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../shaders");
+    for (name, _) in shadelab_render::shaders::FILES {
+        std::fs::copy(shipped.join(name), dir.join(name)).unwrap();
+    }
+    let mut h = harness();
+    h.state_mut().shader_dir = Some(dir.clone());
+    h.run_steps(2);
+    assert_eq!(h.state().message().map(|m| m.1), Some(false), "{:?}", h.state().message());
+    let good = h.render().expect("render");
+    let builds = h.state().pipeline_builds();
+
+    // Break brdf.wgsl: a call to a function that does not exist.
+    let brdf = std::fs::read_to_string(dir.join("brdf.wgsl")).unwrap();
+    std::thread::sleep(std::time::Duration::from_millis(20));
+    std::fs::write(dir.join("brdf.wgsl"), brdf.replace("max(n_dot_l, 0.0)", "maximum(n_dot_l, 0.0)")).unwrap();
+    h.state_mut().poll_shaders();
+    h.run_steps(2);
+    let (msg, is_error) = h.state().message().cloned().expect("a message");
+    assert!(is_error && msg.contains("maximum"), "{msg}");
+    assert_eq!(h.state().pipeline_builds(), builds, "the old pipeline must stay");
+    assert_eq!(changed_view_pixels(&good, &h.render().expect("render")), 0, "the picture must not change");
+
+    // Fixed again: reloaded, pipelines rebuilt once.
+    std::thread::sleep(std::time::Duration::from_millis(20));
+    std::fs::write(dir.join("brdf.wgsl"), brdf).unwrap();
+    h.state_mut().poll_shaders();
+    h.run_steps(2);
+    assert_eq!(h.state().message().map(|m| m.1), Some(false), "{:?}", h.state().message());
+    assert!(h.state().pipeline_builds() > builds);
+}
+
+#[test]
+fn resizing_to_nothing_and_back_does_not_crash() {
+    let mut h = harness();
+    for size in [egui::vec2(0.0, 0.0), egui::vec2(1.0, 1.0), egui::vec2(300.0, 0.0), egui::vec2(1100.0, 640.0)] {
+        h.set_size(size);
+        h.run_steps(2);
+    }
+    let img = h.render().expect("render");
+    assert!(changed_view_pixels(&img, &image::RgbaImage::new(img.width(), img.height())) > 10_000);
+}

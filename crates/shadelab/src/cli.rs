@@ -23,6 +23,12 @@ pub struct Cli {
     /// Viewer: render this many frames, then exit 0.
     #[arg(long, value_name = "N")]
     pub exit_after_frames: Option<String>,
+    /// Viewer: start in this shading mode (flat | gouraud | phong).
+    #[arg(long, default_value = "phong")]
+    pub shading: String,
+    /// Viewer: start with this specular model (phong | cook-torrance).
+    #[arg(long, default_value = "cook-torrance")]
+    pub specular: String,
     /// Viewer, for developers: reload the WGSL from this folder (e.g. `shaders`) when a file
     /// changes; a shader error is shown in the panel and the previous pipelines are kept.
     #[arg(long, value_name = "DIR")]

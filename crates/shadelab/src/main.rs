@@ -24,7 +24,13 @@ fn main() -> ExitCode {
         Some(cli::Command::Render(args)) => render::run(&args),
         Some(cli::Command::Bench(cli::BenchCommand::Render(args))) => bench::run_render(&args),
         Some(cli::Command::Sweep) => bench::run_sweep(),
-        None => viewer::run(cli.screenshot, cli.exit_after_frames.as_deref(), cli.shaders),
+        None => viewer::run(viewer::Options {
+            screenshot: cli.screenshot,
+            exit_after_frames: cli.exit_after_frames,
+            shaders: cli.shaders,
+            shading: cli.shading,
+            specular: cli.specular,
+        }),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

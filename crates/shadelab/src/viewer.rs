@@ -20,8 +20,20 @@ const VIEW_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba8UnormSrgb;
 /// Frames after which `--screenshot` alone takes its picture.
 const SCREENSHOT_DEFAULT_FRAME: u32 = 5;
 
-pub fn run(screenshot: Option<PathBuf>, frames: Option<&str>, shaders: Option<PathBuf>) -> Result<(), Failure> {
-    let exit_after = frames.map(|f| cli::FRAMES.parse_u32(f)).transpose()?;
+/// The viewer's command-line options.
+#[derive(Debug, Default)]
+pub struct Options {
+    pub screenshot: Option<PathBuf>,
+    pub exit_after_frames: Option<String>,
+    pub shaders: Option<PathBuf>,
+    pub shading: String,
+    pub specular: String,
+}
+
+pub fn run(options: Options) -> Result<(), Failure> {
+    let Options { screenshot, exit_after_frames, shaders, shading, specular } = options;
+    let exit_after = exit_after_frames.as_deref().map(|f| cli::FRAMES.parse_u32(f)).transpose()?;
+    let settings = cli::settings(&shading, &specular, false)?;
     if let Some(p) = &screenshot
         && render::image_kind(p)? != render::ImageKind::Png
     {
@@ -49,6 +61,7 @@ pub fn run(screenshot: Option<PathBuf>, frames: Option<&str>, shaders: Option<Pa
         Box::new(move |cc| {
             let mut viewer = Viewer::new(cc, screenshot, exit_after)?;
             viewer.shader_dir = shaders;
+            viewer.settings = settings;
             Ok(Box::new(viewer) as Box<dyn eframe::App>)
         }),
     )

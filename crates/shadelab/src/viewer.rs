@@ -421,10 +421,13 @@ impl Viewer {
         ui.small(format!("μ = ({:.3}, {:.3}, {:.3})", mat.mu[0], mat.mu[1], mat.mu[2]));
         slider(ui, &mut mat.m, &params::M, false);
         let mut mirror = mat.h.is_mirror();
-        let mut h = mat.h.value().min(1e6);
+        let mut h = mat.h.value();
         ui.horizontal(|ui| {
-            ui.add_enabled(!mirror, egui::Slider::new(&mut h, 1.0..=1e6).logarithmic(true).text("h"))
-                .on_hover_text(tooltip(&params::H));
+            ui.add_enabled(
+                !mirror,
+                egui::Slider::new(&mut h, params::H.min..=params::H.max).logarithmic(true).text("h"),
+            )
+            .on_hover_text(tooltip(&params::H));
             ui.checkbox(&mut mirror, "mirror").on_hover_text("h = ∞: a perfect mirror");
         });
         mat.h = if mirror { PhongExponent::Mirror } else { PhongExponent::Finite(h) };
@@ -497,8 +500,7 @@ impl Viewer {
                     if ui.color_edit_button_rgb(&mut c).changed() {
                         l.color = c.map(f64::from);
                     }
-                    ui.add(egui::Slider::new(&mut l.intensity, 0.0..=10.0).text("I_L"))
-                        .on_hover_text(tooltip(&params::INTENSITY));
+                    slider(ui, &mut l.intensity, &params::INTENSITY, true);
                 });
                 if l.kind == LightKind::Point {
                     ui.horizontal(|ui| {

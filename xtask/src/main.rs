@@ -8,7 +8,8 @@ use std::path::{Path, PathBuf};
 use std::process::{Command, ExitCode};
 
 const ICD_DIRS: &[&str] = &["/usr/share/vulkan/icd.d", "/etc/vulkan/icd.d", "/usr/local/share/vulkan/icd.d"];
-const INSTALL: &str = "sudo apt-get install mesa-vulkan-drivers";
+/// Debian packages of lavapipe and the Vulkan loader.
+const LAVAPIPE_PACKAGES: &[&str] = &["mesa-vulkan-drivers", "libvulkan1"];
 
 fn main() -> ExitCode {
     let args: Vec<String> = std::env::args().skip(1).collect();
@@ -37,23 +38,26 @@ fn run(cmd: &mut Command) -> bool {
     cmd.status().is_ok_and(|s| s.success())
 }
 
+/// Install Debian packages for something missing: as root on Debian/Ubuntu, `apt-get update`
+/// then `apt-get install`; otherwise the error is the one command to run.
+fn apt_install(what: &str, packages: &[&str]) -> Result<(), String> {
+    let command = format!("sudo apt-get install {}", packages.join(" "));
+    if !(Path::new("/etc/debian_version").exists() && is_root()) {
+        return Err(format!("{what} is not installed; install it with:\n    {command}"));
+    }
+    eprintln!("xtask: {what} is missing; installing {}", packages.join(" "));
+    let apt = |args: &[&str]| run(Command::new("apt-get").args(args).env("DEBIAN_FRONTEND", "noninteractive"));
+    let ok =
+        apt(&["update", "-q"]) && apt(&[&["install", "-y", "-q", "--no-install-recommends"][..], packages].concat());
+    if ok { Ok(()) } else { Err(format!("installing {what} failed; install it with:\n    {command}")) }
+}
+
 fn ensure_lavapipe() -> Result<PathBuf, String> {
     if let Some(icd) = lavapipe_icd() {
         return Ok(icd);
     }
-    let debian = Path::new("/etc/debian_version").exists();
-    if !(debian && is_root()) {
-        return Err(format!("lavapipe (Mesa's CPU Vulkan driver) is not installed; install it with:\n    {INSTALL}"));
-    }
-    eprintln!("xtask: lavapipe is missing; installing mesa-vulkan-drivers");
-    let ok = run(Command::new("apt-get").args(["update", "-q"]).env("DEBIAN_FRONTEND", "noninteractive"))
-        && run(Command::new("apt-get")
-            .args(["install", "-y", "-q", "--no-install-recommends", "mesa-vulkan-drivers", "libvulkan1"])
-            .env("DEBIAN_FRONTEND", "noninteractive"));
-    match (ok, lavapipe_icd()) {
-        (true, Some(icd)) => Ok(icd),
-        _ => Err(format!("installing lavapipe failed; install it with:\n    {INSTALL}")),
-    }
+    apt_install("lavapipe (Mesa's CPU Vulkan driver)", LAVAPIPE_PACKAGES)?;
+    lavapipe_icd().ok_or_else(|| "mesa-vulkan-drivers is installed but no lavapipe ICD was found".into())
 }
 
 fn test(extra: &[String]) -> ExitCode {
@@ -116,18 +120,9 @@ fn has_xvfb() -> bool {
 /// window (panel included) and check the picture is not blank.
 fn viewer_smoke_test(icd: &Path, xdg: &Path) -> Result<(), String> {
     if !has_xvfb() {
-        if !(Path::new("/etc/debian_version").exists() && is_root()) {
-            return Err(format!(
-                "Xvfb is missing; install it with:\n    sudo apt-get install {}",
-                X_PACKAGES.join(" ")
-            ));
-        }
-        let ok = run(Command::new("apt-get")
-            .args(["install", "-y", "-q", "--no-install-recommends"])
-            .args(X_PACKAGES)
-            .env("DEBIAN_FRONTEND", "noninteractive"));
-        if !ok || !has_xvfb() {
-            return Err("installing Xvfb failed".into());
+        apt_install("Xvfb", X_PACKAGES)?;
+        if !has_xvfb() {
+            return Err("the Xvfb packages are installed but Xvfb is not on PATH".into());
         }
     }
     let root = Path::new(env!("CARGO_MANIFEST_DIR")).parent().unwrap().to_path_buf();

@@ -65,7 +65,7 @@ impl Light {
     pub fn directional(direction: DVec3, color: [f64; 3], intensity: f64) -> Self {
         Light {
             kind: LightKind::Directional,
-            position: -direction.normalize() * 6.0,
+            position: -direction.normalize() * LIGHT_STAND_OFF,
             direction: direction.normalize(),
             color,
             intensity,
@@ -219,6 +219,11 @@ pub struct Scene {
 /// image is told from a dark one.
 pub const BACKGROUND: [f64; 3] = [0.03, 0.035, 0.045];
 
+/// How far from the origin a directional light is placed when it becomes a point light: twice as
+/// far as any built-in object but the ground (all within 3 of the origin), so it lights them from
+/// about the same direction as before.
+pub const LIGHT_STAND_OFF: f64 = 6.0;
+
 /// Most lights a scene may hold (the GPU uniform has this many slots).
 pub const MAX_LIGHTS: usize = 8;
 
@@ -287,14 +292,14 @@ impl Scene {
 
 impl Light {
     /// Turn the light into another kind, keeping where it shines from: a directional light
-    /// becomes a point light 6 units back along its direction from the origin; a point light
+    /// becomes a point light `LIGHT_STAND_OFF` units back along its direction from the origin; a point light
     /// becomes a directional light along the line from it to the origin.
     pub fn set_kind(&mut self, kind: LightKind) {
         if self.kind == kind {
             return;
         }
         match kind {
-            LightKind::Point => self.position = -self.direction * 6.0,
+            LightKind::Point => self.position = -self.direction * LIGHT_STAND_OFF,
             LightKind::Directional => self.direction = (-self.position).normalize_or(DVec3::NEG_Y),
         }
         self.kind = kind;

@@ -9,7 +9,7 @@ use shadelab_render::{AdapterChoice, Gpu, RenderSettings, Renderer, Target};
 pub fn run_render(args: &cli::BenchRenderArgs) -> Result<(), Failure> {
     let (width, height) = cli::size(&args.width, &args.height)?;
     let frames = cli::FRAMES.parse_u32(&args.frames)? as usize;
-    let warmup = cli::FRAMES.parse_u32(&args.warmup).unwrap_or(0) as usize;
+    let warmup = cli::WARMUP.parse_u32(&args.warmup)? as usize;
     let scene = cli::scene(&args.scene)?;
     let gpu = Gpu::headless(AdapterChoice::from_env()).context("opening a GPU adapter")?;
     let mut r = Renderer::new(&gpu.device, &gpu.queue);
@@ -26,7 +26,7 @@ pub fn run_render(args: &cli::BenchRenderArgs) -> Result<(), Failure> {
             })
         })
         .collect();
-    // Build every pipeline and warm up before measuring anything.
+    // Build every pipeline (one frame at least) and warm up before measuring anything.
     for s in &combos {
         r.write_uniforms(&gs, &scene, &target, s);
         for _ in 0..warmup.max(1) {

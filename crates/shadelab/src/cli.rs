@@ -127,6 +127,10 @@ pub struct BenchRenderArgs {
     pub warmup: String,
 }
 
+/// Warm-up frames of a benchmark (at least one is always drawn, to build the pipelines).
+pub const WARMUP: params::ParamRange =
+    params::ParamRange { flag: "--warmup", symbol: "N", meaning: "number of warm-up frames", min: 0.0, max: 1e6 };
+
 /// Frames for benchmarks and the viewer's --exit-after-frames.
 pub const FRAMES: params::ParamRange =
     params::ParamRange { flag: "--frames", symbol: "N", meaning: "number of frames", min: 1.0, max: 1e6 };

@@ -169,6 +169,18 @@ fn extreme_legal_values_write_an_exr_without_nonfinite_pixels() {
 }
 
 #[test]
+fn bench_rejects_a_bad_frame_count() {
+    for (flag, value, needle) in
+        [("--warmup", "abc", "--warmup"), ("--warmup", "-1", "[0, 1000000]"), ("--frames", "0", "--frames")]
+    {
+        let o = shadelab(&["bench", "render", flag, value]);
+        assert_eq!(o.status.code(), Some(2), "{flag} {value}: {}", String::from_utf8_lossy(&o.stderr));
+        let lines = error_lines(&o);
+        assert!(lines.len() == 1 && lines[0].contains(needle), "{flag} {value}: {lines:?}");
+    }
+}
+
+#[test]
 fn help_exits_0() {
     let o = shadelab(&["render", "--help"]);
     assert_eq!(o.status.code(), Some(0));

@@ -144,3 +144,17 @@ fn vs_phong(in: SmoothIn) -> PhongOut {
 fn fs_phong(in: PhongOut) -> @location(0) vec4<f32> {
     return finish(shade(in.world_pos, in.world_normal));
 }
+
+// The null-shader baseline of the cost study: the same geometry, vertex fetch, transform and
+// depth test, but no lighting at all (a constant colour). What rasterizing the scene costs.
+const BASELINE_COLOR: vec3<f32> = vec3(0.5, 0.5, 0.5);
+
+@vertex
+fn vs_baseline(in: SmoothIn) -> @builtin(position) vec4<f32> {
+    return globals.view_proj * vec4(to_world(in.position), 1.0);
+}
+
+@fragment
+fn fs_baseline() -> @location(0) vec4<f32> {
+    return vec4(BASELINE_COLOR, 1.0);
+}

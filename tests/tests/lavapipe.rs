@@ -22,7 +22,7 @@ const GOLDEN_H: u32 = 270;
 const GOLDEN: FlipThresholds = FlipThresholds { mean: 0.0001, percentile: (0.99, 0.02) };
 
 fn settings(shading: ShadingMode, specular: SpecularModel) -> RenderSettings {
-    RenderSettings { shading, specular, debug_nonfinite: false }
+    RenderSettings::new(shading, specular)
 }
 
 #[test]

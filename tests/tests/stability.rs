@@ -51,7 +51,7 @@ fn phong_shading_of_a_fine_sphere_matches_the_f64_reference() {
     let (w, h) = (320, 180);
     for specular in SpecularModel::ALL_MODELS {
         let scene = single_shape_scene("sphere", Shape::Sphere, 256);
-        let settings = RenderSettings { shading: ShadingMode::Phong, specular, debug_nonfinite: false };
+        let settings = RenderSettings::new(ShadingMode::Phong, specular);
         let gpu_img = render_image(gpu(), &scene, w, h, &settings);
         let reference = render_reference(&scene, specular, w, h);
         let pixels = interior(&reference, 1);
@@ -97,13 +97,13 @@ fn extreme_legal_parameters_and_a_light_touching_the_surface_stay_finite() {
             scene.lights[0].position = DVec3::new(0.0, 1.0, 1.0);
             scene.lights[1].position = DVec3::new(0.0, 2.0, 0.0);
             let img =
-                render_image(gpu(), &scene, 160, 90, &RenderSettings { shading, specular, debug_nonfinite: false });
+                render_image(gpu(), &scene, 160, 90, &RenderSettings::new(shading, specular));
             assert_eq!(img.nonfinite_count(), 0, "{shading}/{specular}");
             assert!(img.pixels.iter().all(|p| p.iter().all(|c| *c >= 0.0)), "{shading}/{specular}");
             let mut mirror = scene.clone();
             mirror.apply(&Overrides { h: Some(PhongExponent::Mirror), ..Default::default() });
             let img =
-                render_image(gpu(), &mirror, 160, 90, &RenderSettings { shading, specular, debug_nonfinite: false });
+                render_image(gpu(), &mirror, 160, 90, &RenderSettings::new(shading, specular));
             assert_eq!(img.nonfinite_count(), 0, "mirror {shading}/{specular}");
         }
     }

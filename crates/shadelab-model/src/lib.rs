@@ -10,6 +10,7 @@ pub mod params;
 pub mod presets;
 pub mod reference;
 pub mod scene;
+pub mod study;
 
 pub use params::{FalloffForm, LightKind, PhongExponent, ShadingMode, SpecularModel};
 pub use scene::{Camera, Light, Material, Object, Overrides, Scene, Shape, Transform};

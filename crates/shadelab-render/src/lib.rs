@@ -2,6 +2,7 @@
 //! pipeline per permutation (cached), capture to a linear float image, GPU timing. Knows nothing
 //! of egui.
 
+pub mod accuracy;
 pub mod gpu;
 pub mod renderer;
 pub mod shaders;

@@ -26,6 +26,19 @@ pub struct PipelineKey {
     pub shading: ShadingMode,
     pub specular: SpecularModel,
     pub color_format: wgpu::TextureFormat,
+    /// The null-shader baseline (constant colour; `shading` and `specular` are then fixed).
+    pub null_baseline: bool,
+}
+
+impl PipelineKey {
+    pub fn new(settings: &RenderSettings, color_format: wgpu::TextureFormat) -> PipelineKey {
+        if settings.null_baseline {
+            // One baseline pipeline, whatever the shading settings say.
+            let d = RenderSettings::default();
+            return PipelineKey { shading: d.shading, specular: d.specular, color_format, null_baseline: true };
+        }
+        PipelineKey { shading: settings.shading, specular: settings.specular, color_format, null_baseline: false }
+    }
 }
 
 /// Per-frame choices that do not change the geometry.
@@ -35,11 +48,29 @@ pub struct RenderSettings {
     pub specular: SpecularModel,
     /// Paint pixels whose colour is NaN or infinite magenta.
     pub debug_nonfinite: bool,
+    /// Draw the null-shader baseline instead (same geometry, constant colour, no lighting): what
+    /// rasterizing the scene costs, the denominator of the cost study.
+    pub null_baseline: bool,
+}
+
+impl RenderSettings {
+    pub fn new(shading: ShadingMode, specular: SpecularModel) -> RenderSettings {
+        RenderSettings { shading, specular, ..Default::default() }
+    }
+    /// The null-shader baseline.
+    pub fn baseline() -> RenderSettings {
+        RenderSettings { null_baseline: true, ..Default::default() }
+    }
 }
 
 impl Default for RenderSettings {
     fn default() -> Self {
-        RenderSettings { shading: ShadingMode::Phong, specular: SpecularModel::CookTorrance, debug_nonfinite: false }
+        RenderSettings {
+            shading: ShadingMode::Phong,
+            specular: SpecularModel::CookTorrance,
+            debug_nonfinite: false,
+            null_baseline: false,
+        }
     }
 }
 
@@ -148,11 +179,12 @@ impl Renderer {
     }
 
     fn build_pipeline(&self, key: PipelineKey) -> wgpu::RenderPipeline {
-        let (vs, fs) = shaders::entry_points(key.shading);
+        let (vs, fs) =
+            if key.null_baseline { shaders::BASELINE_ENTRY_POINTS } else { shaders::entry_points(key.shading) };
         let constants = [("SPECULAR_MODEL", shaders::specular_constant(key.specular))];
         let options = wgpu::PipelineCompilationOptions { constants: &constants, ..Default::default() };
         let buffers = match key.shading {
-            ShadingMode::Flat => [Some(wgpu::VertexBufferLayout {
+            ShadingMode::Flat if !key.null_baseline => [Some(wgpu::VertexBufferLayout {
                 array_stride: size_of::<FlatVertex>() as u64,
                 step_mode: wgpu::VertexStepMode::Vertex,
                 attributes: &FLAT_ATTRS,
@@ -164,7 +196,11 @@ impl Renderer {
             })],
         };
         self.device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-            label: Some(&format!("{:?}/{:?}", key.shading, key.specular)),
+            label: Some(&if key.null_baseline {
+                "null baseline".to_string()
+            } else {
+                format!("{:?}/{:?}", key.shading, key.specular)
+            }),
             layout: Some(&self.pipeline_layout),
             vertex: wgpu::VertexState {
                 module: &self.module,
@@ -209,7 +245,9 @@ impl Renderer {
         let mut objects = Vec::new();
         for o in &scene.objects {
             let k = (o.shape, o.tessellation);
-            meshes.entry(k).or_insert_with(|| upload_mesh(device, &mesh::tessellate(o.shape, o.tessellation)));
+            // `Shape::Mesh(i)` keys by its index: each file mesh is built once (its normals, else
+            // the crease-angle rule), shared by every object that shows it.
+            meshes.entry(k).or_insert_with(|| upload_mesh(device, &scene.mesh_data(o)));
             objects.push(k);
         }
         let triangle_count = scene.triangle_count();
@@ -272,7 +310,7 @@ impl Renderer {
         settings: &RenderSettings,
         timestamps: Option<(&wgpu::QuerySet, u32)>,
     ) {
-        let key = PipelineKey { shading: settings.shading, specular: settings.specular, color_format: target.format };
+        let key = PipelineKey::new(settings, target.format);
         self.pipeline(key);
         let pipeline = &self.pipelines[&key];
         let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
@@ -301,7 +339,7 @@ impl Renderer {
         for (i, k) in gpu_scene.objects.iter().enumerate() {
             let mesh = &gpu_scene.meshes[k];
             pass.set_bind_group(1, &gpu_scene.objects_bind, &[(i as u64 * gpu_scene.object_stride) as u32]);
-            if settings.shading == ShadingMode::Flat {
+            if key.shading == ShadingMode::Flat {
                 pass.set_vertex_buffer(0, mesh.flat.slice(..));
                 pass.draw(0..mesh.flat_count, 0..1);
             } else {

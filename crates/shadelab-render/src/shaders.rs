@@ -63,6 +63,9 @@ pub fn entry_points(mode: shadelab_model::ShadingMode) -> (&'static str, &'stati
     }
 }
 
+/// Entry points of the null-shader baseline (constant colour): (vertex, fragment).
+pub const BASELINE_ENTRY_POINTS: (&str, &str) = ("vs_baseline", "fs_baseline");
+
 /// The value of the `SPECULAR_MODEL` override constant for a specular model.
 pub fn specular_constant(model: shadelab_model::SpecularModel) -> f64 {
     match model {
@@ -111,6 +114,8 @@ mod tests {
                 }
             }
         }
+        let (vs, fs) = BASELINE_ENTRY_POINTS;
+        assert!(module.entry_points.iter().any(|e| e.name == vs) && module.entry_points.iter().any(|e| e.name == fs));
         // The terms alone, and the sweep's compute module, are valid too.
         validate(&parse(&terms_source()));
         validate(&parse(&sweep_source()));

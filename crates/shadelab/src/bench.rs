@@ -19,11 +19,7 @@ pub fn run_render(args: &cli::BenchRenderArgs) -> Result<(), Failure> {
     let combos: Vec<RenderSettings> = ShadingMode::ALL_MODES
         .into_iter()
         .flat_map(|shading| {
-            SpecularModel::ALL_MODELS.into_iter().map(move |specular| RenderSettings {
-                shading,
-                specular,
-                debug_nonfinite: false,
-            })
+            SpecularModel::ALL_MODELS.into_iter().map(move |specular| RenderSettings::new(shading, specular))
         })
         .collect();
     // Build every pipeline (one frame at least) and warm up before measuring anything.

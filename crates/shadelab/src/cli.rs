@@ -51,6 +51,27 @@ pub enum Command {
 pub enum BenchCommand {
     /// Frame time of a scene for each shading × specular combination, interleaved in one run.
     Render(BenchRenderArgs),
+    /// What accuracy costs in time: every shading mode × specular model × level of detail ×
+    /// resolution of the analytic scenes, timed against a null-shader baseline and compared
+    /// with the f64 reference; also the cost per light and per resolution. Writes a CSV, a
+    /// Markdown report and plots.
+    Accuracy(BenchAccuracyArgs),
+}
+
+#[derive(Args, Debug)]
+pub struct BenchAccuracyArgs {
+    /// A small subset (2 scenes, 3 levels, small sizes, 10 frames): well under a minute.
+    #[arg(long)]
+    pub quick: bool,
+    /// Folder for accuracy.csv, accuracy.md, error-vs-time.png and scaling.png.
+    #[arg(long, default_value = "bench-accuracy", value_name = "DIR")]
+    pub out: PathBuf,
+    /// Measured frames per configuration (default 50; 10 with --quick).
+    #[arg(long, value_name = "N")]
+    pub frames: Option<String>,
+    /// Warm-up frames per configuration (default 5; 2 with --quick).
+    #[arg(long, value_name = "N")]
+    pub warmup: Option<String>,
 }
 
 /// The scene and the parameters that override it (shared by `render` and `bench`).
@@ -163,6 +184,7 @@ pub fn settings(shading: &str, specular: &str, debug_nonfinite: bool) -> Result<
         shading: ShadingMode::parse_named(shading)?,
         specular: SpecularModel::parse_named(specular)?,
         debug_nonfinite,
+        null_baseline: false,
     })
 }
 

@@ -1,8 +1,10 @@
 //! The `shadelab` application: the viewer (eframe), `render`, `bench` and `sweep`. The binary
 //! is a thin `main`; the modules live here so that tests can drive the viewer.
 
+pub mod accuracy;
 pub mod bench;
 pub mod cli;
+pub mod plots;
 pub mod render;
 pub mod viewer;
 

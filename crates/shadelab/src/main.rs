@@ -1,7 +1,7 @@
 //! `shadelab`: the viewer (no subcommand), `render`, `bench` and `sweep`.
 
 use clap::Parser;
-use shadelab::{EXIT_USAGE, Failure, bench, cli, render, viewer};
+use shadelab::{EXIT_USAGE, Failure, accuracy, bench, cli, render, viewer};
 use std::process::ExitCode;
 
 fn main() -> ExitCode {
@@ -23,6 +23,7 @@ fn main() -> ExitCode {
     let result = match cli.command {
         Some(cli::Command::Render(args)) => render::run(&args),
         Some(cli::Command::Bench(cli::BenchCommand::Render(args))) => bench::run_render(&args),
+        Some(cli::Command::Bench(cli::BenchCommand::Accuracy(args))) => accuracy::run(&args),
         Some(cli::Command::Sweep) => bench::run_sweep(),
         None => viewer::run(viewer::Options {
             screenshot: cli.screenshot,

@@ -1,0 +1,86 @@
+//! Scenes for the accuracy–cost study (`shadelab bench accuracy`): the analytic scenes the f64
+//! reference knows exactly, at one level of detail, and with a chosen number of lights.
+
+use crate::scene::{Light, MAX_LIGHTS, Scene, Shape};
+use glam::DVec3;
+
+/// Scenes whose exact geometry the reference ray-caster knows (every object is an analytic shape).
+pub const ANALYTIC_SCENES: [&str; 4] = ["sphere", "cylinder", "pyramid", "default"];
+
+/// A planar face gets `level / PLANAR_CELLS_PER_LEVEL` cells per side, so that the coarsest
+/// level (8 segments around a sphere) is one quad per face and the finest (512) is 64 × 64: a
+/// face under a point light needs vertices inside it for Gouraud shading to see the falloff, but
+/// far fewer than a curved surface needs to follow its curvature.
+pub const PLANAR_CELLS_PER_LEVEL: u32 = 8;
+
+/// The scene with every object at one level of detail: `level` segments around spheres and
+/// cylinders, `level / PLANAR_CELLS_PER_LEVEL` (at least 1) cells per side of planar faces.
+pub fn at_level(scene: &Scene, level: u32) -> Scene {
+    let mut s = scene.clone();
+    for o in &mut s.objects {
+        o.tessellation = tessellation_at_level(o.shape, level, o.tessellation);
+    }
+    s
+}
+
+/// The tessellation parameter of one shape at a level of detail (`keep` for shapes the levels
+/// do not apply to).
+#[allow(unreachable_patterns)]
+pub fn tessellation_at_level(shape: Shape, level: u32, keep: u32) -> u32 {
+    match shape {
+        Shape::Sphere | Shape::Cylinder => level.max(3),
+        Shape::Cube | Shape::Plane | Shape::Pyramid => (level / PLANAR_CELLS_PER_LEVEL).max(1),
+        _ => keep,
+    }
+}
+
+/// The scene lit by `n` (1 ..= MAX_LIGHTS) point lights instead of its own, spread on a ring
+/// above it, their total intensity that of the scene's lights (so the image stays exposed alike
+/// while the work per pixel grows with `n`).
+pub fn with_point_lights(scene: &Scene, n: usize) -> Scene {
+    let n = n.clamp(1, MAX_LIGHTS);
+    let total: f64 = scene.lights.iter().map(|l| l.intensity).sum::<f64>().max(1.0);
+    let mut s = scene.clone();
+    s.lights = (0..n)
+        .map(|i| {
+            let a = std::f64::consts::TAU * (i as f64 + 0.125) / n as f64;
+            let p = DVec3::new(3.0 * a.cos(), 3.0, 3.0 * a.sin() + 1.0);
+            Light::point(p, [1.0, 0.98, 0.95], total / n as f64, 0.05)
+        })
+        .collect();
+    s
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn analytic_scenes_exist() {
+        for name in ANALYTIC_SCENES {
+            assert!(Scene::builtin(name).is_some(), "{name}");
+        }
+    }
+
+    #[test]
+    fn levels_change_triangle_counts_monotonically() {
+        for name in ANALYTIC_SCENES {
+            let base = Scene::builtin(name).unwrap();
+            let counts: Vec<usize> = [8, 32, 128, 512].iter().map(|&l| at_level(&base, l).triangle_count()).collect();
+            assert!(counts.windows(2).all(|w| w[0] < w[1]), "{name}: {counts:?}");
+        }
+    }
+
+    #[test]
+    fn light_count_and_total_intensity() {
+        let base = Scene::builtin("sphere").unwrap();
+        let total: f64 = base.lights.iter().map(|l| l.intensity).sum();
+        for n in [1, 2, 4, 8] {
+            let s = with_point_lights(&base, n);
+            assert_eq!(s.lights.len(), n);
+            let t: f64 = s.lights.iter().map(|l| l.intensity).sum();
+            assert!((t - total.max(1.0)).abs() < 1e-12);
+        }
+        assert_eq!(with_point_lights(&base, 99).lights.len(), MAX_LIGHTS);
+    }
+}

@@ -1,0 +1,512 @@
+//! `shadelab bench accuracy`: what accuracy costs in time. Every shading mode × specular model ×
+//! level of detail × resolution of the analytic scenes is timed on the GPU (beside a null-shader
+//! baseline) and compared with the f64 reference of the exact surface; then the cost of each
+//! added light and of each resolution step. Writes a CSV, a Markdown report and two plots.
+
+use crate::{Failure, cli, plots};
+use anyhow::Context;
+use shadelab_model::reference::{ReferenceImage, render_reference};
+use shadelab_model::study::{self, ANALYTIC_SCENES};
+use shadelab_model::{Scene, ShadingMode, SpecularModel};
+use shadelab_render::accuracy::{self, ErrorStats};
+use shadelab_render::timing::{FrameTimer, TimeSource, median, quantile_sorted};
+use shadelab_render::{Gpu, RenderSettings, Renderer, Target, target};
+use std::collections::HashMap;
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+
+/// What one run measures.
+#[derive(Clone, Debug)]
+pub struct Plan {
+    pub scenes: Vec<&'static str>,
+    /// Levels of detail: segments around spheres and cylinders (see `study::at_level`).
+    pub levels: Vec<u32>,
+    pub resolutions: Vec<(u32, u32)>,
+    /// Cost per light: this scene, level and resolution with 1, 2, 4, 8 point lights.
+    pub light_study: (&'static str, u32, (u32, u32)),
+    pub light_counts: Vec<usize>,
+    /// Cost per resolution step: this scene and level at these sizes.
+    pub resolution_study: (&'static str, u32),
+    pub study_resolutions: Vec<(u32, u32)>,
+    pub frames: usize,
+    pub warmup: usize,
+}
+
+impl Plan {
+    /// The full study (a few minutes on lavapipe).
+    pub fn full() -> Plan {
+        Plan {
+            scenes: ANALYTIC_SCENES.to_vec(),
+            levels: vec![8, 16, 32, 64, 128, 256, 512],
+            resolutions: vec![(320, 180), (640, 360)],
+            light_study: ("sphere", 64, (640, 360)),
+            light_counts: vec![1, 2, 4, 8],
+            resolution_study: ("default", 64),
+            study_resolutions: vec![(160, 90), (320, 180), (640, 360), (1280, 720), (1920, 1080)],
+            frames: 50,
+            warmup: 5,
+        }
+    }
+
+    /// A small subset for CI and a first look (well under a minute on lavapipe).
+    pub fn quick() -> Plan {
+        Plan {
+            scenes: vec!["sphere", "default"],
+            levels: vec![8, 32, 128],
+            resolutions: vec![(160, 90), (320, 180)],
+            light_study: ("sphere", 32, (160, 90)),
+            light_counts: vec![1, 2, 4, 8],
+            resolution_study: ("default", 32),
+            study_resolutions: vec![(160, 90), (320, 180), (640, 360)],
+            frames: 10,
+            warmup: 2,
+        }
+    }
+}
+
+/// Which part of the study a row belongs to.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Study {
+    /// Mode × specular × level × resolution, scene lights.
+    Modes,
+    /// Cost per added light.
+    Lights,
+    /// Cost per resolution step.
+    Resolution,
+}
+
+impl Study {
+    pub fn name(self) -> &'static str {
+        match self {
+            Study::Modes => "modes",
+            Study::Lights => "lights",
+            Study::Resolution => "resolution",
+        }
+    }
+}
+
+/// One measured configuration. `shading`/`specular` are `None` for the null-shader baseline,
+/// which has no error.
+#[derive(Clone, Debug)]
+pub struct Row {
+    pub study: Study,
+    pub scene: String,
+    pub level: u32,
+    pub triangles: usize,
+    pub width: u32,
+    pub height: u32,
+    pub lights: usize,
+    pub shading: Option<ShadingMode>,
+    pub specular: Option<SpecularModel>,
+    pub frames: usize,
+    pub median_ms: f64,
+    pub p10_ms: f64,
+    pub p90_ms: f64,
+    /// Median time over the baseline's median in the same group.
+    pub ratio_to_baseline: f64,
+    pub error: Option<ErrorStats>,
+    /// On the Pareto front of (time, RMSE) among the shaded rows of its scene and resolution.
+    pub pareto: bool,
+}
+
+impl Row {
+    pub fn program(&self) -> String {
+        match (self.shading, self.specular) {
+            (Some(s), Some(p)) => format!("{s}/{p}"),
+            _ => "baseline".into(),
+        }
+    }
+}
+
+/// Everything a run produced.
+pub struct Report {
+    pub rows: Vec<Row>,
+    pub device: String,
+    pub time_source: TimeSource,
+    pub plan: Plan,
+    pub command: String,
+    pub seconds: f64,
+}
+
+/// One group: a scene at a level and size, all programs interleaved frame by frame.
+struct Group {
+    study: Study,
+    name: &'static str,
+    scene: Scene,
+    level: u32,
+    size: (u32, u32),
+}
+
+fn programs() -> Vec<RenderSettings> {
+    let mut v = vec![RenderSettings::baseline()];
+    for shading in ShadingMode::ALL_MODES {
+        for specular in SpecularModel::ALL_MODELS {
+            v.push(RenderSettings::new(shading, specular));
+        }
+    }
+    v
+}
+
+fn groups(plan: &Plan) -> Vec<Group> {
+    let base = |name: &str| Scene::builtin(name).expect("analytic scenes are built in");
+    let mut out = Vec::new();
+    for &name in &plan.scenes {
+        for &level in &plan.levels {
+            for &size in &plan.resolutions {
+                out.push(Group { study: Study::Modes, name, scene: study::at_level(&base(name), level), level, size });
+            }
+        }
+    }
+    let (name, level, size) = plan.light_study;
+    for &n in &plan.light_counts {
+        let scene = study::with_point_lights(&study::at_level(&base(name), level), n);
+        out.push(Group { study: Study::Lights, name, scene, level, size });
+    }
+    let (name, level) = plan.resolution_study;
+    for &size in &plan.study_resolutions {
+        out.push(Group { study: Study::Resolution, name, scene: study::at_level(&base(name), level), level, size });
+    }
+    out
+}
+
+/// Run the study. `progress` is told each finished group.
+pub fn run_plan(gpu: &Gpu, plan: &Plan, command: &str, mut progress: impl FnMut(&str)) -> Report {
+    let start = std::time::Instant::now();
+    let mut r = Renderer::new(&gpu.device, &gpu.queue);
+    let timer = FrameTimer::new(&gpu.device, &gpu.queue);
+    let programs = programs();
+    // The reference depends on the scene's lights, the size and the specular model, not on
+    // the level of detail: computed once per combination.
+    let mut references: HashMap<(String, usize, (u32, u32), SpecularModel), ReferenceImage> = HashMap::new();
+    let mut rows = Vec::new();
+    for g in groups(plan) {
+        let (w, h) = g.size;
+        let gs = r.upload(&g.scene);
+        let target = Target::new(&gpu.device, w, h, target::HDR_FORMAT);
+        for s in &programs {
+            r.write_uniforms(&gs, &g.scene, &target, s);
+            for _ in 0..plan.warmup.max(1) {
+                timer.frame(&mut r, &gs, &target, s);
+            }
+        }
+        let mut samples = vec![Vec::with_capacity(plan.frames); programs.len()];
+        for _ in 0..plan.frames {
+            for (i, s) in programs.iter().enumerate() {
+                r.write_uniforms(&gs, &g.scene, &target, s);
+                samples[i].push(timer.frame(&mut r, &gs, &target, s));
+            }
+        }
+        let baseline_ms = median(&mut samples[0]);
+        for (i, s) in programs.iter().enumerate() {
+            let error = (!s.null_baseline).then(|| {
+                r.render(&gs, &g.scene, &target, s);
+                let image = target::read_back(&gpu.device, &gpu.queue, &target);
+                let key = (g.name.to_string(), g.scene.lights.len(), g.size, s.specular);
+                let reference = references.entry(key).or_insert_with(|| render_reference(&g.scene, s.specular, w, h));
+                accuracy::compare(&image, reference).stats
+            });
+            let m = median(&mut samples[i]);
+            rows.push(Row {
+                study: g.study,
+                scene: g.name.to_string(),
+                level: g.level,
+                triangles: g.scene.triangle_count(),
+                width: w,
+                height: h,
+                lights: g.scene.lights.len(),
+                shading: (!s.null_baseline).then_some(s.shading),
+                specular: (!s.null_baseline).then_some(s.specular),
+                frames: plan.frames,
+                median_ms: m,
+                p10_ms: quantile_sorted(&samples[i], 0.1),
+                p90_ms: quantile_sorted(&samples[i], 0.9),
+                ratio_to_baseline: m / baseline_ms,
+                error,
+                pareto: false,
+            });
+        }
+        progress(&format!("{} {} L{} {}×{}", g.study.name(), g.name, g.level, w, h));
+    }
+    mark_pareto(&mut rows);
+    Report {
+        rows,
+        device: gpu.describe(),
+        time_source: timer.source(),
+        plan: plan.clone(),
+        command: command.to_string(),
+        seconds: start.elapsed().as_secs_f64(),
+    }
+}
+
+/// Mark, within each (scene, resolution, specular model) of the modes study, the shaded rows no
+/// other row beats in both time and RMSE. Specular models are kept apart: each is compared with
+/// its own exact image, so their errors measure different things.
+pub fn mark_pareto(rows: &mut [Row]) {
+    let key = |r: &Row| (r.scene.clone(), r.width, r.height, r.specular);
+    let mut keys: Vec<_> = rows.iter().filter(|r| r.study == Study::Modes && r.error.is_some()).map(key).collect();
+    keys.dedup();
+    for k in keys {
+        let mut idx: Vec<usize> = (0..rows.len())
+            .filter(|&i| rows[i].study == Study::Modes && rows[i].error.is_some() && key(&rows[i]) == k)
+            .collect();
+        idx.sort_by(|&a, &b| {
+            rows[a].median_ms.total_cmp(&rows[b].median_ms).then(rmse(&rows[a]).total_cmp(&rmse(&rows[b])))
+        });
+        let mut best = f64::INFINITY;
+        for i in idx {
+            let e = rmse(&rows[i]);
+            if e < best {
+                rows[i].pareto = true;
+                best = e;
+            }
+        }
+    }
+}
+
+fn rmse(r: &Row) -> f64 {
+    r.error.map_or(f64::NAN, |e| e.rmse)
+}
+
+/// The CSV header; one line per row follows.
+pub const CSV_HEADER: &str = "study,scene,level,triangles,width,height,lights,shading,specular,frames,median_ms,p10_ms,p90_ms,ratio_to_baseline,rmse,max_abs,flip_mean,share_off_1_255,pareto";
+
+pub fn csv(report: &Report) -> String {
+    let mut s = String::from(CSV_HEADER);
+    s.push('\n');
+    for r in &report.rows {
+        let (sh, sp) = match (r.shading, r.specular) {
+            (Some(a), Some(b)) => (a.to_string(), b.to_string()),
+            _ => ("baseline".into(), "none".into()),
+        };
+        let e = |f: fn(&ErrorStats) -> f64| r.error.as_ref().map_or(String::new(), |x| format!("{:.6e}", f(x)));
+        let _ = writeln!(
+            s,
+            "{},{},{},{},{},{},{},{},{},{},{:.4},{:.4},{:.4},{:.4},{},{},{},{},{}",
+            r.study.name(),
+            r.scene,
+            r.level,
+            r.triangles,
+            r.width,
+            r.height,
+            r.lights,
+            sh,
+            sp,
+            r.frames,
+            r.median_ms,
+            r.p10_ms,
+            r.p90_ms,
+            r.ratio_to_baseline,
+            e(|x| x.rmse),
+            e(|x| x.max_abs),
+            e(|x| x.flip_mean),
+            e(|x| x.share_off),
+            r.pareto
+        );
+    }
+    s
+}
+
+/// For each scene, resolution and specular model: the error Phong shading reaches at the
+/// coarsest level, and the level (and time) at which Gouraud shading first reaches it.
+pub struct Crossover {
+    pub scene: String,
+    pub size: (u32, u32),
+    pub specular: SpecularModel,
+    pub phong_level: u32,
+    pub phong_rmse: f64,
+    pub phong_ms: f64,
+    /// (level, rmse, ms) of the first Gouraud row at or below `phong_rmse`, if any.
+    pub gouraud: Option<(u32, f64, f64)>,
+}
+
+pub fn crossovers(report: &Report) -> Vec<Crossover> {
+    let modes: Vec<&Row> = report.rows.iter().filter(|r| r.study == Study::Modes && r.error.is_some()).collect();
+    let mut out = Vec::new();
+    for &scene in &report.plan.scenes {
+        for &size in &report.plan.resolutions {
+            for specular in SpecularModel::ALL_MODELS {
+                let pick = |mode: ShadingMode| {
+                    let mut v: Vec<&&Row> = modes
+                        .iter()
+                        .filter(|r| {
+                            r.scene == scene
+                                && (r.width, r.height) == size
+                                && r.shading == Some(mode)
+                                && r.specular == Some(specular)
+                        })
+                        .collect();
+                    v.sort_by_key(|r| r.level);
+                    v
+                };
+                let (phong, gouraud) = (pick(ShadingMode::Phong), pick(ShadingMode::Gouraud));
+                let Some(p) = phong.first() else { continue };
+                let target = rmse(p);
+                out.push(Crossover {
+                    scene: scene.to_string(),
+                    size,
+                    specular,
+                    phong_level: p.level,
+                    phong_rmse: target,
+                    phong_ms: p.median_ms,
+                    gouraud: gouraud.iter().find(|g| rmse(g) <= target).map(|g| (g.level, rmse(g), g.median_ms)),
+                });
+            }
+        }
+    }
+    out
+}
+
+/// The Markdown report: device, command, the findings, then every table.
+pub fn markdown(report: &Report) -> String {
+    let mut s = String::new();
+    let _ = writeln!(s, "# What accuracy costs — `{}`\n", report.command);
+    let _ = writeln!(
+        s,
+        "Device: {}. Time: {}, median of {} frames after {} warm-up, every program of a group interleaved frame by frame. Error: against the f64 ray-cast reference of the exact surface, same size. Run took {:.0} s.\n",
+        report.device,
+        report.time_source.label(),
+        report.plan.frames,
+        report.plan.warmup,
+        report.seconds
+    );
+    let _ = writeln!(s, "## Gouraud against Phong shading\n");
+    let _ = writeln!(
+        s,
+        "The error Phong shading has at the coarsest level, and where Gouraud shading first gets as close to the exact surface:\n"
+    );
+    let _ = writeln!(
+        s,
+        "| scene | size | specular | Phong shading: level, RMSE, ms | Gouraud reaches it at: level, RMSE, ms |"
+    );
+    let _ = writeln!(s, "|---|---|---|---|---|");
+    for c in crossovers(report) {
+        let g = match c.gouraud {
+            Some((l, e, ms)) => format!("{l}, {e:.2e}, {ms:.2}"),
+            None => format!("not by level {}", report.plan.levels.last().copied().unwrap_or(0)),
+        };
+        let _ = writeln!(
+            s,
+            "| {} | {}×{} | {} | {}, {:.2e}, {:.2} | {} |",
+            c.scene, c.size.0, c.size.1, c.specular, c.phong_level, c.phong_rmse, c.phong_ms, g
+        );
+    }
+    let _ = writeln!(s, "\n## Every configuration\n");
+    let _ = writeln!(
+        s,
+        "RMSE and max: linear RGB. FLIP: nv-flip mean of the display-encoded images. Off: share of pixels more than one 8-bit sRGB step away. ×base: median time over the null-shader baseline's (same geometry, constant colour). ★: on the Pareto front of time and RMSE for its scene, size and specular model (nothing else with that specular model is both faster and closer).\n"
+    );
+    table(&mut s, report.rows.iter().filter(|r| r.study == Study::Modes));
+    let _ = writeln!(
+        s,
+        "\n## Cost per light ({} level {}, {}×{})\n",
+        report.plan.light_study.0, report.plan.light_study.1, report.plan.light_study.2.0, report.plan.light_study.2.1
+    );
+    table(&mut s, report.rows.iter().filter(|r| r.study == Study::Lights));
+    let _ = writeln!(
+        s,
+        "\n## Cost per resolution ({} level {})\n",
+        report.plan.resolution_study.0, report.plan.resolution_study.1
+    );
+    table(&mut s, report.rows.iter().filter(|r| r.study == Study::Resolution));
+    s
+}
+
+fn table<'a>(s: &mut String, rows: impl Iterator<Item = &'a Row>) {
+    let _ = writeln!(
+        s,
+        "| scene | level | triangles | size | lights | program | median ms | p10–p90 | ×base | RMSE | max | FLIP | off | ★ |"
+    );
+    let _ = writeln!(s, "|---|---:|---:|---|---:|---|---:|---|---:|---:|---:|---:|---:|---|");
+    for r in rows {
+        let (e1, e2, e3, e4) = match r.error {
+            Some(e) => (
+                format!("{:.2e}", e.rmse),
+                format!("{:.3}", e.max_abs),
+                format!("{:.4}", e.flip_mean),
+                format!("{:.1} %", e.share_off * 100.0),
+            ),
+            None => Default::default(),
+        };
+        let _ = writeln!(
+            s,
+            "| {} | {} | {} | {}×{} | {} | {} | {:.2} | {:.2}–{:.2} | {:.2} | {} | {} | {} | {} | {} |",
+            r.scene,
+            r.level,
+            r.triangles,
+            r.width,
+            r.height,
+            r.lights,
+            r.program(),
+            r.median_ms,
+            r.p10_ms,
+            r.p90_ms,
+            r.ratio_to_baseline,
+            e1,
+            e2,
+            e3,
+            e4,
+            if r.pareto { "★" } else { "" }
+        );
+    }
+}
+
+/// Files a run writes into its output folder.
+pub const OUTPUTS: [&str; 4] = ["accuracy.csv", "accuracy.md", "error-vs-time.png", "scaling.png"];
+
+pub fn write_outputs(report: &Report, dir: &Path) -> anyhow::Result<Vec<PathBuf>> {
+    std::fs::create_dir_all(dir).with_context(|| format!("creating {}", dir.display()))?;
+    let paths: Vec<PathBuf> = OUTPUTS.iter().map(|f| dir.join(f)).collect();
+    std::fs::write(&paths[0], csv(report)).with_context(|| format!("writing {}", paths[0].display()))?;
+    std::fs::write(&paths[1], markdown(report)).with_context(|| format!("writing {}", paths[1].display()))?;
+    plots::error_vs_time(report, &paths[2]).with_context(|| format!("writing {}", paths[2].display()))?;
+    plots::scaling(report, &paths[3]).with_context(|| format!("writing {}", paths[3].display()))?;
+    Ok(paths)
+}
+
+pub fn run(args: &cli::BenchAccuracyArgs) -> Result<(), Failure> {
+    let mut plan = if args.quick { Plan::quick() } else { Plan::full() };
+    if let Some(f) = &args.frames {
+        plan.frames = cli::FRAMES.parse_u32(f)? as usize;
+    }
+    if let Some(w) = &args.warmup {
+        plan.warmup = cli::WARMUP.parse_u32(w)? as usize;
+    }
+    let gpu = Gpu::headless(shadelab_render::AdapterChoice::from_env()).context("opening a GPU adapter")?;
+    let command = std::iter::once("shadelab".to_string()).chain(std::env::args().skip(1)).collect::<Vec<_>>().join(" ");
+    let total = groups(&plan).len() as u64;
+    let bar = indicatif::ProgressBar::new(total).with_style(
+        indicatif::ProgressStyle::with_template("{elapsed_precise} [{bar:30}] {pos}/{len} groups  {msg}")
+            .expect("static template")
+            .progress_chars("=> "),
+    );
+    eprintln!("# shadelab bench accuracy — {} groups on {}", total, gpu.describe());
+    let report = run_plan(&gpu, &plan, &command, |msg| {
+        bar.set_message(msg.to_string());
+        bar.inc(1);
+    });
+    bar.finish_and_clear();
+    let paths = write_outputs(&report, &args.out)?;
+    print!("{}", summary(&report));
+    for p in paths {
+        println!("wrote {}", p.display());
+    }
+    Ok(())
+}
+
+/// What the terminal shows at the end: the findings and the Pareto front.
+pub fn summary(report: &Report) -> String {
+    let mut s = String::new();
+    let _ = writeln!(s, "# device: {}; time: {}; {:.0} s", report.device, report.time_source.label(), report.seconds);
+    for c in crossovers(report) {
+        let g = match c.gouraud {
+            Some((l, e, ms)) => format!("Gouraud reaches it at level {l} ({e:.2e}, {ms:.2} ms)"),
+            None => "Gouraud does not reach it in the measured levels".into(),
+        };
+        let _ = writeln!(
+            s,
+            "{} {}×{} {}: Phong shading at level {} has RMSE {:.2e} in {:.2} ms; {}",
+            c.scene, c.size.0, c.size.1, c.specular, c.phong_level, c.phong_rmse, c.phong_ms, g
+        );
+    }
+    s
+}

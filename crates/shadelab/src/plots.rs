@@ -1,0 +1,284 @@
+//! The accuracy study's plots (plotters, drawn into a buffer and saved as PNG): error against
+//! time with the Pareto front, and how time grows with lights and pixels.
+
+use crate::accuracy::{Report, Row, Study};
+use plotters::coord::combinators::{BindKeyPoints, LogCoord, WithKeyPoints};
+use plotters::prelude::*;
+use shadelab_model::{ShadingMode, SpecularModel};
+use std::path::Path;
+
+/// Text is drawn with egui's own font (shipped with the viewer), so plots need no system fonts.
+fn register_font() {
+    static ONCE: std::sync::Once = std::sync::Once::new();
+    ONCE.call_once(|| {
+        plotters::style::register_font("sans-serif", FontStyle::Normal, epaint_default_fonts::UBUNTU_LIGHT)
+            .unwrap_or_else(|_| panic!("egui's bundled font is a valid TrueType font"));
+    });
+}
+
+/// A colour per program: one hue per shading mode, dark for Phong specular, light for
+/// Cook–Torrance.
+pub fn program_color(shading: Option<ShadingMode>, specular: Option<SpecularModel>) -> RGBColor {
+    use ShadingMode as M;
+    use SpecularModel as S;
+    match (shading, specular) {
+        (Some(M::Flat), Some(S::Phong)) => RGBColor(200, 30, 30),
+        (Some(M::Flat), Some(S::CookTorrance)) => RGBColor(245, 140, 120),
+        (Some(M::Gouraud), Some(S::Phong)) => RGBColor(35, 90, 180),
+        (Some(M::Gouraud), Some(S::CookTorrance)) => RGBColor(120, 175, 230),
+        (Some(M::Phong), Some(S::Phong)) => RGBColor(30, 140, 50),
+        (Some(M::Phong), Some(S::CookTorrance)) => RGBColor(140, 210, 110),
+        _ => RGBColor(110, 110, 110),
+    }
+}
+
+fn programs() -> Vec<(Option<ShadingMode>, Option<SpecularModel>)> {
+    let mut v = vec![(None, None)];
+    for s in ShadingMode::ALL_MODES {
+        for p in SpecularModel::ALL_MODELS {
+            v.push((Some(s), Some(p)));
+        }
+    }
+    v
+}
+
+fn label(shading: Option<ShadingMode>, specular: Option<SpecularModel>) -> String {
+    match (shading, specular) {
+        (Some(s), Some(p)) => format!("{s} shading, {p} specular"),
+        _ => "null-shader baseline".into(),
+    }
+}
+
+/// Log-axis range that holds every value, padded by a factor on each side.
+fn log_range(values: impl Iterator<Item = f64>) -> std::ops::Range<f64> {
+    let (lo, hi) = values
+        .filter(|v| v.is_finite() && *v > 0.0)
+        .fold((f64::INFINITY, 0.0f64), |(lo, hi), v| (lo.min(v), hi.max(v)));
+    if !lo.is_finite() {
+        return 1e-3..1.0;
+    }
+    let hi = if hi <= lo { lo * 10.0 } else { hi };
+    lo / 1.3..hi * 1.3
+}
+
+/// Axis labels at 1, 2, 5 × 10^k inside a range (a log axis otherwise labels only the powers
+/// of ten, which a range of one decade may not contain).
+fn nice_points(r: &std::ops::Range<f64>) -> Vec<f64> {
+    let mut out = Vec::new();
+    let mut decade = 10f64.powf(r.start.log10().floor());
+    while decade <= r.end {
+        for m in [1.0, 2.0, 5.0] {
+            let v = m * decade;
+            if r.contains(&v) {
+                out.push(v);
+            }
+        }
+        decade *= 10.0;
+    }
+    out
+}
+
+/// A log axis over a range with [`nice_points`] as its labels.
+fn log_axis(r: std::ops::Range<f64>) -> WithKeyPoints<LogCoord<f64>> {
+    let points = nice_points(&r);
+    r.log_scale().with_key_points(points)
+}
+
+fn save(buf: Vec<u8>, (w, h): (u32, u32), path: &Path) -> anyhow::Result<()> {
+    image::RgbImage::from_raw(w, h, buf).ok_or_else(|| anyhow::anyhow!("plot buffer size"))?.save(path)?;
+    Ok(())
+}
+
+fn plot_err(e: impl std::fmt::Display) -> anyhow::Error {
+    anyhow::anyhow!("drawing the plot: {e}")
+}
+
+/// Error (RMSE) against GPU time, log–log, one panel per scene at the plan's largest size; a
+/// line per program through its levels of detail; the Pareto front in black.
+pub fn error_vs_time(report: &Report, path: &Path) -> anyhow::Result<()> {
+    register_font();
+    let size = (1400u32, 1000u32);
+    let mut buf = vec![0u8; (size.0 * size.1 * 3) as usize];
+    let (w, h) = *report.plan.resolutions.iter().max_by_key(|(w, h)| w * h).unwrap_or(&(0, 0));
+    {
+        let root = BitMapBackend::with_buffer(&mut buf, size).into_drawing_area();
+        root.fill(&WHITE).map_err(plot_err)?;
+        let (title, body) = root.split_vertically(40);
+        title
+            .titled(
+                &format!("Error against time, {w}×{h}: {} ({})", report.device, report.time_source.label()),
+                ("sans-serif", 20),
+            )
+            .map_err(plot_err)?;
+        let n = report.plan.scenes.len().max(1);
+        let cols = if n > 1 { 2 } else { 1 };
+        let panels = body.split_evenly((n.div_ceil(cols), cols));
+        for (scene, area) in report.plan.scenes.iter().zip(panels.iter()) {
+            let rows: Vec<&Row> = report
+                .rows
+                .iter()
+                .filter(|r| r.study == Study::Modes && r.scene == *scene && (r.width, r.height) == (w, h))
+                .filter(|r| r.error.is_some())
+                .collect();
+            let xr = log_range(rows.iter().map(|r| r.median_ms));
+            let yr = log_range(rows.iter().map(|r| r.error.unwrap().rmse));
+            let mut chart = ChartBuilder::on(area)
+                .caption(format!("{scene}: RMSE vs GPU time (levels of detail along each line)"), ("sans-serif", 17))
+                .margin(12)
+                .x_label_area_size(40)
+                .y_label_area_size(70)
+                .build_cartesian_2d(log_axis(xr), log_axis(yr))
+                .map_err(plot_err)?;
+            chart
+                .configure_mesh()
+                .x_desc("median GPU ms per frame")
+                .y_desc("RMSE vs exact surface (linear)")
+                .y_label_formatter(&|v| format!("{v:.0e}"))
+                .x_label_formatter(&|v| format!("{v}"))
+                .draw()
+                .map_err(plot_err)?;
+            for (shading, specular) in programs().into_iter().skip(1) {
+                let color = program_color(shading, specular);
+                let mut pts: Vec<(f64, f64, u32)> = rows
+                    .iter()
+                    .filter(|r| r.shading == shading && r.specular == specular)
+                    .map(|r| (r.median_ms, r.error.unwrap().rmse, r.level))
+                    .collect();
+                pts.sort_by_key(|p| p.2);
+                chart
+                    .draw_series(LineSeries::new(pts.iter().map(|p| (p.0, p.1)), color.stroke_width(2)))
+                    .map_err(plot_err)?
+                    .label(label(shading, specular))
+                    .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], color.stroke_width(3)));
+                chart.draw_series(pts.iter().map(|p| Circle::new((p.0, p.1), 4, color.filled()))).map_err(plot_err)?;
+                // The coarsest level is labelled, so a reader sees which end is which.
+                if let Some(p) = pts.first() {
+                    chart
+                        .draw_series(std::iter::once(
+                            EmptyElement::at((p.0, p.1))
+                                + Text::new(
+                                    format!("level {}", p.2),
+                                    (7, -16),
+                                    ("sans-serif", 13).into_font().color(&color),
+                                ),
+                        ))
+                        .map_err(plot_err)?;
+                }
+            }
+            for specular in SpecularModel::ALL_MODELS {
+                let mut front: Vec<(f64, f64)> = rows
+                    .iter()
+                    .filter(|r| r.pareto && r.specular == Some(specular))
+                    .map(|r| (r.median_ms, r.error.unwrap().rmse))
+                    .collect();
+                front.sort_by(|a, b| a.0.total_cmp(&b.0));
+                let style = match specular {
+                    SpecularModel::Phong => BLACK.stroke_width(1),
+                    SpecularModel::CookTorrance => RGBColor(150, 150, 150).stroke_width(1),
+                };
+                chart
+                    .draw_series(LineSeries::new(front.iter().copied(), style))
+                    .map_err(plot_err)?
+                    .label(format!("Pareto front, {specular} specular"))
+                    .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], style));
+                chart.draw_series(front.iter().map(|p| Cross::new(*p, 6, style.stroke_width(2)))).map_err(plot_err)?;
+            }
+            chart
+                .configure_series_labels()
+                .position(SeriesLabelPosition::LowerLeft)
+                .background_style(WHITE.mix(0.85))
+                .border_style(BLACK)
+                .label_font(("sans-serif", 13))
+                .draw()
+                .map_err(plot_err)?;
+        }
+        root.present().map_err(plot_err)?;
+    }
+    save(buf, size, path)
+}
+
+/// How time grows: per added light (left) and per pixel count (right, log–log), every program
+/// and the baseline.
+pub fn scaling(report: &Report, path: &Path) -> anyhow::Result<()> {
+    register_font();
+    let size = (1400u32, 560u32);
+    let mut buf = vec![0u8; (size.0 * size.1 * 3) as usize];
+    {
+        let root = BitMapBackend::with_buffer(&mut buf, size).into_drawing_area();
+        root.fill(&WHITE).map_err(plot_err)?;
+        let (title, body) = root.split_vertically(40);
+        title
+            .titled(&format!("How cost grows: {} ({})", report.device, report.time_source.label()), ("sans-serif", 20))
+            .map_err(plot_err)?;
+        let (left, right) = body.split_horizontally(size.0 / 2);
+
+        let lights: Vec<&Row> = report.rows.iter().filter(|r| r.study == Study::Lights).collect();
+        let max_lights = lights.iter().map(|r| r.lights).max().unwrap_or(1) as f64;
+        let ymax = lights.iter().map(|r| r.median_ms).fold(0.0, f64::max) * 1.15 + 1e-3;
+        let (ls, ll, (lw, lh)) = report.plan.light_study;
+        let mut chart = ChartBuilder::on(&left)
+            .caption(format!("per light: {ls}, level {ll}, {lw}×{lh}"), ("sans-serif", 17))
+            .margin(12)
+            .x_label_area_size(40)
+            .y_label_area_size(60)
+            .build_cartesian_2d(0.5..max_lights + 0.5, 0.0..ymax)
+            .map_err(plot_err)?;
+        chart.configure_mesh().x_desc("point lights").y_desc("median GPU ms per frame").draw().map_err(plot_err)?;
+        for (shading, specular) in programs() {
+            let color = program_color(shading, specular);
+            let pts: Vec<(f64, f64)> = lights
+                .iter()
+                .filter(|r| r.shading == shading && r.specular == specular)
+                .map(|r| (r.lights as f64, r.median_ms))
+                .collect();
+            chart
+                .draw_series(LineSeries::new(pts.iter().copied(), color.stroke_width(2)))
+                .map_err(plot_err)?
+                .label(label(shading, specular))
+                .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], color.stroke_width(3)));
+            chart.draw_series(pts.iter().map(|p| Circle::new(*p, 4, color.filled()))).map_err(plot_err)?;
+        }
+        chart
+            .configure_series_labels()
+            .position(SeriesLabelPosition::UpperLeft)
+            .background_style(WHITE.mix(0.85))
+            .border_style(BLACK)
+            .label_font(("sans-serif", 13))
+            .draw()
+            .map_err(plot_err)?;
+
+        let res: Vec<&Row> = report.rows.iter().filter(|r| r.study == Study::Resolution).collect();
+        let mpx = |r: &Row| (r.width * r.height) as f64 / 1e6;
+        let (rs, rl) = report.plan.resolution_study;
+        let mut chart = ChartBuilder::on(&right)
+            .caption(format!("per pixel: {rs}, level {rl}"), ("sans-serif", 17))
+            .margin(12)
+            .x_label_area_size(40)
+            .y_label_area_size(60)
+            .build_cartesian_2d(
+                log_axis(log_range(res.iter().map(|r| mpx(r)))),
+                log_axis(log_range(res.iter().map(|r| r.median_ms))),
+            )
+            .map_err(plot_err)?;
+        chart
+            .configure_mesh()
+            .x_desc("megapixels")
+            .y_desc("median GPU ms per frame")
+            .x_label_formatter(&|v| format!("{v}"))
+            .y_label_formatter(&|v| format!("{v}"))
+            .draw()
+            .map_err(plot_err)?;
+        for (shading, specular) in programs() {
+            let color = program_color(shading, specular);
+            let pts: Vec<(f64, f64)> = res
+                .iter()
+                .filter(|r| r.shading == shading && r.specular == specular)
+                .map(|r| (mpx(r), r.median_ms))
+                .collect();
+            chart.draw_series(LineSeries::new(pts.iter().copied(), color.stroke_width(2))).map_err(plot_err)?;
+            chart.draw_series(pts.iter().map(|p| Circle::new(*p, 4, color.filled()))).map_err(plot_err)?;
+        }
+        root.present().map_err(plot_err)?;
+    }
+    save(buf, size, path)
+}

@@ -7,6 +7,15 @@ use glam::DVec3;
 /// Scenes whose exact geometry the reference ray-caster knows (every object is an analytic shape).
 pub const ANALYTIC_SCENES: [&str; 4] = ["sphere", "cylinder", "pyramid", "default"];
 
+/// Whether the f64 reference knows the scene's exact geometry: every object is an analytic shape
+/// (not a triangle mesh from a file).
+#[allow(unreachable_patterns)]
+pub fn is_analytic(scene: &Scene) -> bool {
+    scene.objects.iter().all(|o| {
+        matches!(o.shape, Shape::Sphere | Shape::Cylinder | Shape::Cube | Shape::Plane | Shape::Pyramid)
+    })
+}
+
 /// A planar face gets `level / PLANAR_CELLS_PER_LEVEL` cells per side, so that the coarsest
 /// level (8 segments around a sphere) is one quad per face and the finest (512) is 64 × 64: a
 /// face under a point light needs vertices inside it for Gouraud shading to see the falloff, but
@@ -58,7 +67,7 @@ mod tests {
     #[test]
     fn analytic_scenes_exist() {
         for name in ANALYTIC_SCENES {
-            assert!(Scene::builtin(name).is_some(), "{name}");
+            assert!(is_analytic(&Scene::builtin(name).expect(name)), "{name}");
         }
     }
 

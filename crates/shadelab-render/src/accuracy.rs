@@ -77,6 +77,12 @@ pub fn compare(image: &LinearImage, reference: &ReferenceImage) -> Comparison {
     }
 }
 
+/// nv-flip's magma colour scale, 256 RGB8 entries from FLIP error 0 to 1 (the colours of
+/// [`Comparison::flip_map_rgb8`]), for drawing a legend.
+pub fn magma_scale() -> Vec<[u8; 3]> {
+    nv_flip::magma_lut().to_vec().chunks_exact(3).map(|c| [c[0], c[1], c[2]]).collect()
+}
+
 /// The reference as a linear image (to show it or save it like a render).
 pub fn reference_image(reference: &ReferenceImage) -> LinearImage {
     LinearImage {

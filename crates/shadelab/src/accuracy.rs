@@ -471,6 +471,9 @@ pub fn run(args: &cli::BenchAccuracyArgs) -> Result<(), Failure> {
     if let Some(w) = &args.warmup {
         plan.warmup = cli::WARMUP.parse_u32(w)? as usize;
     }
+    // A folder that cannot be made is the user's to fix, and is found before minutes of work.
+    std::fs::create_dir_all(&args.out)
+        .map_err(|e| Failure::Usage(format!("--out: cannot create folder '{}': {e}", args.out.display())))?;
     let gpu = Gpu::headless(shadelab_render::AdapterChoice::from_env()).context("opening a GPU adapter")?;
     let command = std::iter::once("shadelab".to_string()).chain(std::env::args().skip(1)).collect::<Vec<_>>().join(" ");
     let total = groups(&plan).len() as u64;

@@ -33,6 +33,10 @@ pub struct Cli {
     /// changes; a shader error is shown in the panel and the previous pipelines are kept.
     #[arg(long, value_name = "DIR")]
     pub shaders: Option<std::path::PathBuf>,
+    /// Viewer: start with the "difference from reference" view on (FLIP error map of the mode
+    /// against the f64 reference, with its numbers and the GPU time).
+    #[arg(long)]
+    pub difference: bool,
 }
 
 #[derive(Subcommand, Debug)]

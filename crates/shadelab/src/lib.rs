@@ -4,6 +4,7 @@
 pub mod accuracy;
 pub mod bench;
 pub mod cli;
+pub mod difference;
 pub mod plots;
 pub mod render;
 pub mod viewer;

@@ -31,6 +31,7 @@ fn main() -> ExitCode {
             shaders: cli.shaders,
             shading: cli.shading,
             specular: cli.specular,
+            difference: cli.difference,
         }),
     };
     match result {

@@ -2,6 +2,7 @@
 //! `Renderer` as `shadelab render` into an offscreen target that egui shows; the parameter panel
 //! at the side edits the model, never wgpu objects.
 
+use crate::difference::DifferenceView;
 use crate::{Failure, cli, render};
 use eframe::egui::{self, Color32, Key, PointerButton, Rect, pos2};
 use eframe::egui_wgpu;
@@ -28,10 +29,11 @@ pub struct Options {
     pub shaders: Option<PathBuf>,
     pub shading: String,
     pub specular: String,
+    pub difference: bool,
 }
 
 pub fn run(options: Options) -> Result<(), Failure> {
-    let Options { screenshot, exit_after_frames, shaders, shading, specular } = options;
+    let Options { screenshot, exit_after_frames, shaders, shading, specular, difference } = options;
     let exit_after = exit_after_frames.as_deref().map(|f| cli::FRAMES.parse_u32(f)).transpose()?;
     let settings = cli::settings(&shading, &specular, false)?;
     if let Some(p) = &screenshot
@@ -62,6 +64,7 @@ pub fn run(options: Options) -> Result<(), Failure> {
             let mut viewer = Viewer::new(cc, screenshot, exit_after)?;
             viewer.shader_dir = shaders;
             viewer.settings = settings;
+            viewer.set_difference_view(difference);
             Ok(Box::new(viewer) as Box<dyn eframe::App>)
         }),
     )
@@ -122,6 +125,7 @@ pub struct Viewer {
     /// Show the live timing numbers (snapshot tests turn them off: they differ every run).
     pub show_live_numbers: bool,
     shader_stamp: Option<std::time::SystemTime>,
+    difference: DifferenceView,
 }
 
 impl Viewer {
@@ -162,12 +166,23 @@ impl Viewer {
             shader_dir: None,
             shader_stamp: None,
             show_live_numbers: true,
+            difference: DifferenceView::default(),
         })
     }
 
     /// Current shading mode, specular model and debug switch.
     pub fn settings(&self) -> RenderSettings {
         self.settings
+    }
+
+    /// Show or hide the "difference from reference" view.
+    pub fn set_difference_view(&mut self, on: bool) {
+        self.difference.enabled = on;
+    }
+
+    /// The error of the current mode against the reference, once the map on show is current.
+    pub fn difference(&self) -> Option<shadelab_render::accuracy::ErrorStats> {
+        self.difference.stats()
     }
 
     /// How many pipelines have been built so far (must not grow per frame).
@@ -315,8 +330,23 @@ impl Viewer {
         let view = self.view.as_ref().expect("view just made");
         self.renderer.write_uniforms(&self.gpu_scene, &self.scene, &view.target, &self.settings);
         self.frame_ms = Some(self.timer.frame(&mut self.renderer, &self.gpu_scene, &view.target, &self.settings));
+        let mut shown = view.texture;
+        let analytic = shadelab_model::study::is_analytic(&self.scene);
+        if self.difference.enabled && analytic {
+            let ctx = ui.ctx().clone();
+            if let Some(t) =
+                self.difference.update(&ctx, &mut self.renderer, &self.gpu_scene, &self.scene, &self.settings, (w, h))
+            {
+                shown = t;
+            }
+        }
         let painter = ui.painter_at(rect);
-        painter.image(view.texture, rect, Rect::from_min_max(pos2(0.0, 0.0), pos2(1.0, 1.0)), Color32::WHITE);
+        painter.image(shown, rect, Rect::from_min_max(pos2(0.0, 0.0), pos2(1.0, 1.0)), Color32::WHITE);
+        if self.difference.enabled && analytic {
+            let mode = format!("{} shading, {} specular", self.settings.shading, self.settings.specular);
+            self.difference.overlay(&painter, rect, &mode, self.frame_ms, self.show_live_numbers);
+            return; // the light markers would hide the error map
+        }
         // Where the lights are: a marker at each point light, and at the far point a directional
         // light comes from.
         let vp = self.scene.camera.projection(w as f64 / h as f64) * self.scene.camera.view();
@@ -390,6 +420,16 @@ impl Viewer {
                 );
         });
         ui.checkbox(&mut self.settings.debug_nonfinite, "paint non-finite pixels magenta");
+        let analytic = shadelab_model::study::is_analytic(&self.scene);
+        ui.add_enabled(analytic, egui::Checkbox::new(&mut self.difference.enabled, "difference from reference"))
+            .on_hover_text(format!(
+                "FLIP error map of this mode against the f64 ray-cast reference of the exact surface \
+                 (at most {} px wide), with RMSE and the GPU time; only for scenes of analytic shapes",
+                crate::difference::DIFFERENCE_MAX_WIDTH
+            ))
+            .on_disabled_hover_text(
+                "only for scenes made of analytic shapes (the reference knows their exact surface)",
+            );
         ui.separator();
         self.material_ui(ui);
         ui.separator();

@@ -173,11 +173,20 @@ fn bench_rejects_a_bad_frame_count() {
     for (flag, value, needle) in
         [("--warmup", "abc", "--warmup"), ("--warmup", "-1", "[0, 1000000]"), ("--frames", "0", "--frames")]
     {
-        let o = shadelab(&["bench", "render", flag, value]);
-        assert_eq!(o.status.code(), Some(2), "{flag} {value}: {}", String::from_utf8_lossy(&o.stderr));
-        let lines = error_lines(&o);
-        assert!(lines.len() == 1 && lines[0].contains(needle), "{flag} {value}: {lines:?}");
+        for bench in ["render", "accuracy"] {
+            let o = shadelab(&["bench", bench, flag, value]);
+            assert_eq!(o.status.code(), Some(2), "{bench} {flag} {value}: {}", String::from_utf8_lossy(&o.stderr));
+            let lines = error_lines(&o);
+            assert!(lines.len() == 1 && lines[0].contains(needle), "{bench} {flag} {value}: {lines:?}");
+        }
     }
+    // An output folder that cannot be made is refused before anything is measured.
+    let blocker = out_dir().join("not-a-folder");
+    std::fs::write(&blocker, b"a file").unwrap();
+    let o = shadelab(&["bench", "accuracy", "--quick", "--out", blocker.join("sub").to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(2), "{}", String::from_utf8_lossy(&o.stderr));
+    let lines = error_lines(&o);
+    assert!(lines.len() == 1 && lines[0].contains("--out"), "{lines:?}");
 }
 
 #[test]
@@ -199,5 +208,80 @@ fn help_exits_0() {
         "--output",
     ] {
         assert!(text.contains(flag), "{flag}");
+    }
+}
+
+/// `bench accuracy --quick` writes a well-formed CSV, report and plots, and on the coarsest
+/// sphere the error against the exact surface orders the shading modes as the chapter says:
+/// Phong shading < Gouraud < flat, for both specular models. Correctness only; times are
+/// reported, never asserted.
+#[test]
+fn bench_accuracy_quick_is_well_formed_and_orders_the_modes() {
+    let dir = out_dir().join("accuracy");
+    let _ = std::fs::remove_dir_all(&dir);
+    let o = shadelab(&["bench", "accuracy", "--quick", "--out", dir.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let stdout = String::from_utf8_lossy(&o.stdout);
+    assert!(stdout.contains("llvmpipe") && stdout.contains("GPU timestamps"), "{stdout}");
+
+    let csv = std::fs::read_to_string(dir.join("accuracy.csv")).unwrap();
+    let mut lines = csv.lines();
+    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+    assert_eq!(header.join(","), shadelab::accuracy::CSV_HEADER);
+    let col = |name: &str| header.iter().position(|h| *h == name).unwrap_or_else(|| panic!("no column {name}"));
+    let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
+    // 2 scenes × 3 levels × 2 sizes + 4 light counts + 3 sizes, 7 programs each.
+    assert_eq!(rows.len(), (2 * 3 * 2 + 4 + 3) * 7);
+    for r in &rows {
+        assert_eq!(r.len(), header.len(), "{r:?}");
+        let num = |c: &str| r[col(c)].parse::<f64>().unwrap_or_else(|_| panic!("{c} of {r:?}"));
+        assert!(num("median_ms") > 0.0 && num("p10_ms") <= num("median_ms") && num("median_ms") <= num("p90_ms"));
+        assert_eq!(num("frames"), 10.0);
+        if r[col("shading")] == "baseline" {
+            assert_eq!(num("ratio_to_baseline"), 1.0);
+            assert!(r[col("rmse")].is_empty() && r[col("pareto")] == "false");
+        } else {
+            for c in ["rmse", "max_abs", "flip_mean", "share_off_1_255"] {
+                assert!(num(c).is_finite() && num(c) >= 0.0, "{c} of {r:?}");
+            }
+            assert!(num("share_off_1_255") <= 1.0 && num("rmse") <= num("max_abs"));
+        }
+    }
+    // Every (scene, size, specular) of the modes study has a Pareto front.
+    assert!(rows.iter().filter(|r| r[col("pareto")] == "true").count() >= 2 * 2 * 2);
+
+    let rmse = |shading: &str, specular: &str, width: &str| -> f64 {
+        let r = rows
+            .iter()
+            .find(|r| {
+                r[col("study")] == "modes"
+                    && r[col("scene")] == "sphere"
+                    && r[col("level")] == "8"
+                    && r[col("width")] == width
+                    && r[col("shading")] == shading
+                    && r[col("specular")] == specular
+            })
+            .unwrap_or_else(|| panic!("sphere level 8 {shading}/{specular} at width {width}"));
+        r[col("rmse")].parse().unwrap()
+    };
+    for width in ["160", "320"] {
+        for specular in ["phong", "cook-torrance"] {
+            let (f, g, p) =
+                (rmse("flat", specular, width), rmse("gouraud", specular, width), rmse("phong", specular, width));
+            assert!(
+                p < g && g < f,
+                "coarse sphere, {specular} specular, width {width}: phong {p} gouraud {g} flat {f}"
+            );
+        }
+    }
+
+    let md = std::fs::read_to_string(dir.join("accuracy.md")).unwrap();
+    assert!(md.contains("llvmpipe") && md.contains("## Cost per light") && md.contains("★"), "{md}");
+    for (png, size) in [("error-vs-time.png", (1400, 1000)), ("scaling.png", (1400, 560))] {
+        let img = image::open(dir.join(png)).unwrap_or_else(|e| panic!("{png}: {e}"));
+        assert_eq!((img.width(), img.height()), size, "{png}");
+        // A plot, not a blank page: many distinct colours.
+        let colours: std::collections::HashSet<_> = img.to_rgb8().pixels().map(|p| p.0).collect();
+        assert!(colours.len() > 50, "{png}: {} colours", colours.len());
     }
 }

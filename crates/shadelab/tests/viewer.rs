@@ -128,3 +128,31 @@ fn resizing_to_nothing_and_back_does_not_crash() {
     let img = h.render().expect("render");
     assert!(changed_view_pixels(&img, &image::RgbaImage::new(img.width(), img.height())) > 10_000);
 }
+
+/// The "difference from reference" view: once the f64 reference is in, the view shows the FLIP
+/// map with its numbers; switching to flat shading (same reference, new render) raises the error.
+#[test]
+fn difference_from_reference_view() {
+    let mut h = harness();
+    let normal = h.render().expect("render");
+    h.get_by_label("difference from reference").click();
+    let wait = |h: &mut Harness<'static, Viewer>| {
+        let start = std::time::Instant::now();
+        loop {
+            h.run_steps(1);
+            if let Some(s) = h.state().difference() {
+                return s;
+            }
+            assert!(start.elapsed().as_secs() < 60, "no reference after 60 s");
+            std::thread::sleep(std::time::Duration::from_millis(50));
+        }
+    };
+    let phong = wait(&mut h);
+    assert!(phong.flip_mean > 0.0 && phong.rmse > 0.0 && phong.rmse.is_finite(), "{phong:?}");
+    let map = h.render().expect("render");
+    assert!(changed_view_pixels(&normal, &map) > 20_000, "the error map replaces the render");
+    h.key_press(egui::Key::Num1);
+    let flat = wait(&mut h);
+    assert_eq!(h.state().settings().shading, ShadingMode::Flat);
+    assert!(flat.rmse > phong.rmse * 1.5, "flat {flat:?} vs phong {phong:?}");
+}

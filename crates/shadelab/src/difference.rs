@@ -1,0 +1,170 @@
+//! The viewer's "difference from reference" view: the current mode's image against the f64
+//! reference of the exact surface, as a FLIP error map (magma colour scale) with its numbers,
+//! beside the mode's GPU time. The reference is ray-cast on a worker thread, so the viewer keeps
+//! drawing while it is computed; it is computed again only when the scene, the camera, the
+//! specular model or the size changes (a change of shading mode reuses it).
+
+use eframe::egui::{self, Color32, Rect, pos2, vec2};
+use shadelab_model::reference::{ReferenceImage, render_reference};
+use shadelab_model::{Scene, ShadingMode, SpecularModel};
+use shadelab_render::accuracy::{self, ErrorStats};
+use shadelab_render::{RenderSettings, Renderer, SceneGpu, Target, target};
+use std::sync::Arc;
+use std::sync::mpsc::{Receiver, channel};
+
+/// The comparison is made at most this wide (the view's aspect kept): the f64 ray cast of a
+/// full window would take seconds on two cores, and the error map is smooth enough to be shown
+/// scaled up.
+pub const DIFFERENCE_MAX_WIDTH: u32 = 480;
+
+/// What a reference image depends on.
+#[derive(Clone, PartialEq)]
+struct ReferenceKey {
+    scene: Scene,
+    specular: SpecularModel,
+    size: (u32, u32),
+}
+
+#[derive(Default)]
+pub struct DifferenceView {
+    pub enabled: bool,
+    reference: Option<(ReferenceKey, Arc<ReferenceImage>)>,
+    pending: Option<(ReferenceKey, Receiver<ReferenceImage>)>,
+    /// The map on show: what it is of, its texture, its numbers.
+    shown: Option<(ReferenceKey, ShadingMode, egui::TextureHandle, ErrorStats)>,
+    /// Whether `shown` matches the state of the last update.
+    current: bool,
+}
+
+/// The comparison size for a view size.
+pub fn difference_size(w: u32, h: u32) -> (u32, u32) {
+    if w <= DIFFERENCE_MAX_WIDTH {
+        return (w.max(1), h.max(1));
+    }
+    let s = DIFFERENCE_MAX_WIDTH as f64 / w as f64;
+    (DIFFERENCE_MAX_WIDTH, ((h as f64 * s).round() as u32).max(1))
+}
+
+impl DifferenceView {
+    /// The numbers of the map on show, if it matches the current state.
+    pub fn stats(&self) -> Option<ErrorStats> {
+        self.shown.as_ref().filter(|_| self.current).map(|s| s.3)
+    }
+
+    /// Whether a reference is being computed.
+    pub fn computing(&self) -> bool {
+        self.pending.is_some()
+    }
+
+    /// Bring the map up to date with the scene and settings; returns the texture to show, if
+    /// the map matches them.
+    pub fn update(
+        &mut self,
+        ctx: &egui::Context,
+        renderer: &mut Renderer,
+        gpu_scene: &SceneGpu,
+        scene: &Scene,
+        settings: &RenderSettings,
+        view_size: (u32, u32),
+    ) -> Option<egui::TextureId> {
+        let size = difference_size(view_size.0, view_size.1);
+        let key = ReferenceKey { scene: scene.clone(), specular: settings.specular, size };
+        self.current = false;
+        if let Some((k, shading, tex, _)) = &self.shown
+            && *k == key
+            && *shading == settings.shading
+        {
+            self.current = true;
+            return Some(tex.id());
+        }
+        // One worker at a time: a finished one hands its image over (even if the view has moved
+        // on since; it is then replaced), and a new one starts only for the latest key.
+        if let Some((k, rx)) = &self.pending
+            && let Ok(img) = rx.try_recv()
+        {
+            self.reference = Some((k.clone(), Arc::new(img)));
+            self.pending = None;
+        }
+        if self.pending.is_none() && self.reference.as_ref().is_none_or(|(k, _)| *k != key) {
+            let (tx, rx) = channel();
+            let (s, spec, (w, h)) = (scene.clone(), settings.specular, size);
+            let repaint = ctx.clone();
+            std::thread::spawn(move || {
+                // A send fails only when the viewer has been closed: nothing to do.
+                let _ = tx.send(render_reference(&s, spec, w, h));
+                repaint.request_repaint();
+            });
+            self.pending = Some((key.clone(), rx));
+        }
+        if self.pending.is_some() {
+            // Look again soon: the worker's repaint request may come before this frame ends.
+            ctx.request_repaint_after(std::time::Duration::from_millis(100));
+        }
+        let reference = match &self.reference {
+            Some((k, r)) if *k == key => r.clone(),
+            _ => return None,
+        };
+        let target = Target::new(&renderer.device, size.0, size.1, target::HDR_FORMAT);
+        renderer.render(gpu_scene, scene, &target, settings);
+        let image = target::read_back(&renderer.device, &renderer.queue, &target);
+        let cmp = accuracy::compare(&image, &reference);
+        let color = egui::ColorImage::from_rgb([size.0 as usize, size.1 as usize], &cmp.flip_map_rgb8);
+        let tex = ctx.load_texture("difference from reference", color, egui::TextureOptions::LINEAR);
+        let id = tex.id();
+        self.shown = Some((key, settings.shading, tex, cmp.stats));
+        self.current = true;
+        Some(id)
+    }
+
+    /// Draw the magma scale and the numbers over the view.
+    pub fn overlay(&self, painter: &egui::Painter, rect: Rect, mode: &str, gpu_ms: Option<f64>, live: bool) {
+        let bar = Rect::from_min_size(pos2(rect.left() + 12.0, rect.bottom() - 34.0), vec2(256.0, 12.0));
+        let scale = accuracy::magma_scale();
+        for (i, c) in scale.iter().enumerate() {
+            let x = bar.left() + i as f32 * bar.width() / scale.len() as f32;
+            let r =
+                Rect::from_min_max(pos2(x, bar.top()), pos2(x + bar.width() / scale.len() as f32 + 0.5, bar.bottom()));
+            painter.rect_filled(r, 0.0, Color32::from_rgb(c[0], c[1], c[2]));
+        }
+        let font = egui::FontId::proportional(12.0);
+        painter.text(bar.left_bottom() + vec2(0.0, 2.0), egui::Align2::LEFT_TOP, "0", font.clone(), Color32::WHITE);
+        painter.text(
+            bar.right_bottom() + vec2(0.0, 2.0),
+            egui::Align2::RIGHT_TOP,
+            "1  FLIP error",
+            font.clone(),
+            Color32::WHITE,
+        );
+        let text = match (self.stats(), self.computing()) {
+            (Some(s), _) => {
+                let time = match gpu_ms {
+                    Some(ms) if live => format!(" · {ms:.2} ms GPU"),
+                    _ => String::new(),
+                };
+                format!(
+                    "{mode}{time}\nagainst the f64 reference of the exact surface: FLIP mean {:.4} · RMSE {:.2e} · max {:.3} · {:.1} % of pixels off by > 1/255",
+                    s.flip_mean,
+                    s.rmse,
+                    s.max_abs,
+                    s.share_off * 100.0
+                )
+            }
+            (None, true) => "computing the f64 reference…".into(),
+            (None, false) => String::new(),
+        };
+        painter.text(rect.left_top() + vec2(10.0, 8.0), egui::Align2::LEFT_TOP, text, font, Color32::WHITE);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn comparison_size_keeps_aspect_and_caps_width() {
+        assert_eq!(difference_size(320, 180), (320, 180));
+        assert_eq!(difference_size(960, 540), (480, 270));
+        assert_eq!(difference_size(4000, 10), (480, 1));
+        assert_eq!(difference_size(0, 0), (1, 1));
+    }
+}

@@ -1,7 +1,9 @@
 //! The shadelab model: scenes, materials, lights, validated parameters, tessellation, and the
 //! lighting model in f64 (the reference). No GPU, no window: everything else depends on it.
 
+pub mod assets;
 pub mod brdf;
+pub mod gltf_io;
 pub mod guards;
 #[cfg(test)]
 mod identities;

@@ -69,13 +69,7 @@ fn key(p: DVec3) -> [u32; 3] {
 
 /// Build the smooth and flat meshes of a triangle soup with the crease-angle rule.
 pub fn build_mesh(triangles: &[[DVec3; 3]], crease_angle_deg: f64) -> Result<MeshData, MeshError> {
-    for (ti, t) in triangles.iter().enumerate() {
-        for (ci, p) in t.iter().enumerate() {
-            if !p.is_finite() {
-                return Err(MeshError::NonFinitePosition { triangle: ti, corner: ci, position: p.to_array() });
-            }
-        }
-    }
+    check_finite(triangles)?;
     let cos_crease = crease_angle_deg.to_radians().cos();
     let normals: Vec<Option<DVec3>> = triangles.iter().map(face_normal).collect();
     let mut around: HashMap<[u32; 3], Vec<usize>> = HashMap::new();
@@ -120,7 +114,79 @@ pub fn build_mesh(triangles: &[[DVec3; 3]], crease_angle_deg: f64) -> Result<Mes
     Ok(mesh)
 }
 
-/// Tessellate a shape (see [`Shape`] for its object-space extent) and build its meshes.
+/// A triangle mesh read from a scene file (`Shape::Mesh(i)` is `Scene::meshes[i]`), in object
+/// space. Stored as a triangle soup, like [`triangles`] gives for the analytic shapes, so that
+/// the same [`build_mesh`] welds it; corner normals are kept when the file has them.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct TriangleMesh {
+    pub name: String,
+    /// Triangles, counter-clockwise seen from the front (glTF 2.0 §3.7.2.1).
+    pub triangles: Vec<[DVec3; 3]>,
+    /// A normal per triangle corner, from the file; `None`: the crease-angle rule makes them.
+    pub normals: Option<Vec<[DVec3; 3]>>,
+}
+
+impl TriangleMesh {
+    /// The smooth and flat meshes: the file's normals for the smooth vertices when it has them,
+    /// else the crease-angle rule; flat shading always uses the face normal (spec §8).
+    pub fn build(&self) -> Result<MeshData, MeshError> {
+        match &self.normals {
+            Some(n) => build_mesh_with_normals(&self.triangles, n),
+            None => build_mesh(&self.triangles, CREASE_ANGLE_DEG),
+        }
+    }
+
+    /// Axis-aligned bounds `(min, max)` of the positions, `None` when empty.
+    pub fn bounds(&self) -> Option<(DVec3, DVec3)> {
+        let mut it = self.triangles.iter().flatten();
+        let first = *it.next()?;
+        Some(it.fold((first, first), |(lo, hi), p| (lo.min(*p), hi.max(*p))))
+    }
+}
+
+/// Build the meshes of a triangle soup whose corner normals are given (a scene file's): smooth
+/// vertices are welded by position and normal, so a file's hard edges stay hard. A zero or
+/// non-finite normal is replaced by the face's (guard `NORMALIZE_MIN_LEN2`).
+pub fn build_mesh_with_normals(triangles: &[[DVec3; 3]], normals: &[[DVec3; 3]]) -> Result<MeshData, MeshError> {
+    check_finite(triangles)?;
+    let mut mesh = MeshData::default();
+    let mut welded: HashMap<([u32; 3], [u32; 3]), u32> = HashMap::new();
+    for (t, tn) in triangles.iter().zip(normals.iter().chain(std::iter::repeat(&[DVec3::ZERO; 3]))) {
+        let face = face_normal(t).unwrap_or(DVec3::Y);
+        let centroid = (t[0] + t[1] + t[2]) / 3.0;
+        for (p, n) in t.iter().zip(tn) {
+            let n = if n.is_finite() { safe_normalize(*n, face) } else { face };
+            let n = n.as_vec3().to_array();
+            let pos = p.as_vec3().to_array();
+            let idx = *welded.entry((key(*p), n.map(f32::to_bits))).or_insert_with(|| {
+                mesh.smooth_vertices.push(SmoothVertex { position: pos, normal: n });
+                (mesh.smooth_vertices.len() - 1) as u32
+            });
+            mesh.indices.push(idx);
+            mesh.flat_vertices.push(FlatVertex {
+                position: pos,
+                normal: face.as_vec3().to_array(),
+                centroid: centroid.as_vec3().to_array(),
+            });
+        }
+    }
+    Ok(mesh)
+}
+
+fn check_finite(triangles: &[[DVec3; 3]]) -> Result<(), MeshError> {
+    for (ti, t) in triangles.iter().enumerate() {
+        for (ci, p) in t.iter().enumerate() {
+            if !p.is_finite() {
+                return Err(MeshError::NonFinitePosition { triangle: ti, corner: ci, position: p.to_array() });
+            }
+        }
+    }
+    Ok(())
+}
+
+/// Tessellate a shape (see [`Shape`] for its object-space extent) and build its meshes. A
+/// `Shape::Mesh` has no analytic form: build it from `Scene::meshes` ([`TriangleMesh::build`]
+/// or `Scene::mesh_data`); here it gives an empty mesh.
 pub fn tessellate(shape: Shape, tessellation: u32) -> MeshData {
     build_mesh(&triangles(shape, tessellation), CREASE_ANGLE_DEG).expect("procedural shapes are finite")
 }
@@ -145,10 +211,12 @@ pub fn triangle_count(shape: Shape, tessellation: u32) -> usize {
         Shape::Cube => 12 * n * n,
         Shape::Plane => 2 * n * n,
         Shape::Pyramid => 6 * n * n,
+        // Counted from `Scene::meshes` by `Scene::triangle_count`.
+        Shape::Mesh(_) => 0,
     }
 }
 
-/// The triangles of a shape, oriented so that each face's normal points out of the shape.
+/// The triangles of an analytic shape (empty for `Shape::Mesh`), oriented so that each face's normal points out of the shape.
 pub fn triangles(shape: Shape, tessellation: u32) -> Vec<[DVec3; 3]> {
     let n = tessellation.max(1);
     let (tris, inside) = match shape {
@@ -157,6 +225,8 @@ pub fn triangles(shape: Shape, tessellation: u32) -> Vec<[DVec3; 3]> {
         Shape::Cube => (cube(n), DVec3::ZERO),
         Shape::Plane => (plane(n), DVec3::NEG_Y),
         Shape::Pyramid => (pyramid(n), DVec3::new(0.0, -0.5, 0.0)),
+        // A file's mesh has no analytic form: its triangles are `Scene::meshes[i]`.
+        Shape::Mesh(_) => return Vec::new(),
     };
     // Every shape is convex (the plane is one face of one), so a face is oriented outwards when
     // its normal points away from a point inside.

@@ -2,7 +2,8 @@
 //! the *analytic* shapes (exact normals, no tessellation), shaded by the f64 model. The ground
 //! truth for tests and for the accuracy study.
 
-use crate::brdf::shade;
+use crate::brdf::{safe_normalize, shade};
+use crate::mesh::{TriangleMesh, face_normal};
 use crate::params::SpecularModel;
 use crate::scene::{BACKGROUND, Object, Scene, Shape};
 use glam::{DMat4, DVec3};
@@ -68,9 +69,11 @@ fn solve_quadratic(a: f64, b: f64, c: f64) -> Option<(f64, f64)> {
     Some((t0.min(t1), t0.max(t1)))
 }
 
-/// Intersect a ray (object space, `dir` not necessarily unit) with a unit shape.
+/// Intersect a ray (object space, `dir` not necessarily unit) with a unit shape. A
+/// `Shape::Mesh` has no analytic form and is not hit here: [`trace`] intersects its triangles.
 pub fn intersect_shape(shape: Shape, o: DVec3, dir: DVec3) -> Option<Hit> {
     match shape {
+        Shape::Mesh(_) => None,
         Shape::Sphere => {
             let (t0, t1) = solve_quadratic(dir.dot(dir), 2.0 * o.dot(dir), o.dot(o) - 1.0)?;
             let t = if t0 > RAY_T_MIN { t0 } else { t1 };
@@ -138,13 +141,51 @@ pub fn intersect_shape(shape: Shape, o: DVec3, dir: DVec3) -> Option<Hit> {
     }
 }
 
+/// Intersect a ray (object space) with a file's triangle mesh by brute force (Möller–Trumbore,
+/// every triangle: fine for the small meshes the reference is used on). The normal is the
+/// file's corner normals interpolated, or the face normal; it faces the ray's origin side as the
+/// face's winding says (no flipping).
+pub fn intersect_mesh(mesh: &TriangleMesh, o: DVec3, dir: DVec3) -> Option<Hit> {
+    let mut best: Option<Hit> = None;
+    for (k, t) in mesh.triangles.iter().enumerate() {
+        let (e1, e2) = (t[1] - t[0], t[2] - t[0]);
+        let p = dir.cross(e2);
+        let det = e1.dot(p);
+        if det.abs() < 1e-300 {
+            continue;
+        }
+        let s = o - t[0];
+        let u = s.dot(p) / det;
+        let q = s.cross(e1);
+        let v = dir.dot(q) / det;
+        let tt = e2.dot(q) / det;
+        if !(0.0..=1.0).contains(&u) || v < 0.0 || u + v > 1.0 || tt <= RAY_T_MIN || best.is_some_and(|b| tt >= b.0) {
+            continue;
+        }
+        let face = face_normal(t).unwrap_or(DVec3::Y);
+        let n = match &mesh.normals {
+            Some(ns) => {
+                let c = ns[k];
+                safe_normalize(c[0] * (1.0 - u - v) + c[1] * u + c[2] * v, face)
+            }
+            None => face,
+        };
+        best = Some((tt, n));
+    }
+    best
+}
+
 /// The nearest hit of a world ray among the scene's objects: (object index, world point, world
 /// unit normal).
 pub fn trace(scene: &Scene, inverses: &[DMat4], o: DVec3, dir: DVec3) -> Option<(usize, DVec3, DVec3)> {
     let mut best: Option<(f64, usize, DVec3)> = None;
     for (i, (obj, inv)) in scene.objects.iter().zip(inverses).enumerate() {
         let (lo, ld) = (inv.transform_point3(o), inv.transform_vector3(dir));
-        if let Some((t, n)) = intersect_shape(obj.shape, lo, ld)
+        let hit = match obj.shape {
+            Shape::Mesh(m) => scene.meshes.get(m).and_then(|mesh| intersect_mesh(mesh, lo, ld)),
+            shape => intersect_shape(shape, lo, ld),
+        };
+        if let Some((t, n)) = hit
             && best.is_none_or(|b| t < b.0)
         {
             best = Some((t, i, n));

@@ -24,6 +24,14 @@ pub struct Material {
     pub h: PhongExponent,
     /// Normal-incidence reflectance `μ` per channel (Cook–Torrance Fresnel).
     pub mu: [f64; 3],
+    /// Transparency `t` in [0, 1] (spec §2, glTF `KHR_materials_transmission`). Stored, not
+    /// rendered yet.
+    pub transmission: f64,
+    /// Absorption coefficient `a` per channel, per unit length, of `I_Td = I_T0·e^(−a·d)` (spec §7,
+    /// from glTF `KHR_materials_volume`). Stored, not rendered yet.
+    pub absorption: [f64; 3],
+    /// Thickness `d` of the material for that absorption (spec §7). Stored, not rendered yet.
+    pub thickness: f64,
 }
 
 impl Default for Material {
@@ -37,6 +45,9 @@ impl Default for Material {
             m: 0.3,
             h: PhongExponent::Finite(20.0),
             mu: [0.04; 3],
+            transmission: 0.0,
+            absorption: [0.0; 3],
+            thickness: 0.0,
         }
     }
 }
@@ -101,6 +112,8 @@ pub enum Shape {
     Plane,
     /// Square base `[-1, 1]²` at `y = -1`, apex at `(0, 1, 0)` (the chapter's figure 7.3).
     Pyramid,
+    /// A triangle mesh from a scene file: `Scene::meshes[i]` (keeps `Shape` `Copy + Hash`).
+    Mesh(usize),
 }
 
 impl Shape {
@@ -112,6 +125,7 @@ impl Shape {
             Shape::Cube => "cube",
             Shape::Plane => "plane",
             Shape::Pyramid => "pyramid",
+            Shape::Mesh(_) => "mesh",
         }
     }
 }
@@ -213,6 +227,8 @@ pub struct Scene {
     /// Scene-wide ambient intensity `I_amb` per channel (spec §3).
     pub ambient: [f64; 3],
     pub camera: Camera,
+    /// Triangle meshes from a scene file, indexed by `Shape::Mesh(i)`.
+    pub meshes: Vec<crate::mesh::TriangleMesh>,
 }
 
 /// Background colour (linear RGB): dark enough for highlights to stand out, not black, so a blank
@@ -286,7 +302,25 @@ impl Scene {
 
     /// Total triangle count once tessellated.
     pub fn triangle_count(&self) -> usize {
-        self.objects.iter().map(|o| crate::mesh::triangle_count(o.shape, o.tessellation)).sum()
+        self.objects.iter().map(|o| self.object_triangle_count(o)).sum()
+    }
+
+    /// Triangles of one object: its tessellation, or its mesh's count.
+    pub fn object_triangle_count(&self, o: &Object) -> usize {
+        match o.shape {
+            Shape::Mesh(i) => self.meshes.get(i).map_or(0, |m| m.triangles.len()),
+            shape => crate::mesh::triangle_count(shape, o.tessellation),
+        }
+    }
+
+    /// The GPU-ready meshes of an object: the analytic shape tessellated, or `Scene::meshes[i]`
+    /// built (the file's normals, else the crease-angle rule). A mesh index past `meshes` or a
+    /// non-finite position (which the loader already refuses) gives an empty mesh.
+    pub fn mesh_data(&self, o: &Object) -> crate::mesh::MeshData {
+        match o.shape {
+            Shape::Mesh(i) => self.meshes.get(i).and_then(|m| m.build().ok()).unwrap_or_default(),
+            shape => crate::mesh::tessellate(shape, o.tessellation),
+        }
     }
 }
 
@@ -348,6 +382,7 @@ fn ground() -> (Object, Material) {
             m: 0.5,
             h: PhongExponent::Finite(6.0),
             mu: [0.04; 3],
+            ..Material::default()
         },
     )
 }
@@ -369,6 +404,7 @@ pub fn default_scene() -> Scene {
             m,
             h: h_like_m(m),
             mu: [0.04; 3],
+            ..Material::default()
         });
         objects.push(Object {
             name: format!("sphere {}", i + 1),
@@ -388,6 +424,7 @@ pub fn default_scene() -> Scene {
         h: h_like_m(0.2),
         // Gold's reflectance at normal incidence (linear sRGB), Filament's material table.
         mu: [1.0, 0.766, 0.336],
+        ..Material::default()
     });
     objects.push(Object {
         name: "cylinder".into(),
@@ -405,6 +442,7 @@ pub fn default_scene() -> Scene {
         m: 0.3,
         h: h_like_m(0.3),
         mu: [0.05; 3],
+        ..Material::default()
     });
     objects.push(Object {
         name: "pyramid".into(),
@@ -424,6 +462,7 @@ pub fn default_scene() -> Scene {
         lights: default_lights(),
         ambient: [0.12; 3],
         camera: default_camera(),
+        meshes: Vec::new(),
     }
 }
 
@@ -459,6 +498,7 @@ pub fn single_shape_scene(name: &str, shape: Shape, tessellation: u32) -> Scene 
         lights: default_lights(),
         ambient: [0.12; 3],
         camera: Camera { eye: DVec3::new(0.0, 2.2, 4.6), target: DVec3::new(0.0, 0.8, 0.0), ..default_camera() },
+        meshes: Vec::new(),
     }
 }
 

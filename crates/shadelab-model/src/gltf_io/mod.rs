@@ -1,0 +1,141 @@
+//! Scenes in and out as glTF 2.0 (`.gltf` with embedded or external buffers, `.glb`).
+//!
+//! **Reading** parses the JSON with the `gltf` crate's data model (`gltf::json`), then checks
+//! every index, every byte range and every count itself before it reads or allocates anything.
+//! It does not call the crate's `validate()` nor `gltf::import`: in gltf 1.4.1 the validation
+//! hook of a primitive indexes `root.accessors[...]` unchecked (an out-of-range `POSITION`
+//! accessor panics), and `import` reads every buffer and image at its declared size. Bad input
+//! is an [`GltfError`], one line that starts with the file's name, never a panic.
+//!
+//! **Writing** ([`save_scene`]) stores every object as a triangle mesh with normals, the
+//! materials as glTF PBR fields that approximate the model, the lights as `KHR_lights_punctual`
+//! and the camera, plus the chapter's exact parameters in `extras.shadelab` objects, so that
+//! loading the file again gives the same scene.
+//!
+//! ## The material mapping (glTF metallic–roughness → the chapter's model)
+//!
+//! | glTF | model | why |
+//! |---|---|---|
+//! | `roughnessFactor` r | `m = r²` | glTF's perceptual roughness squared is the facet-slope RMS α (glTF 2.0 Appendix B), which Beckmann's `m` is too (spec §5) |
+//! | — | `h = 2/m² − 2`, clamped to [1, `H_MAX`]; `m = 0` is the mirror | the usual Beckmann ↔ Phong lobe match (Walter et al. 2007, "Microfacet models for refraction", the Phong distribution), as the built-in scenes use |
+//! | `baseColorFactor`, `metallicFactor` M | `C = baseColor·(1 − M)` | metals have no diffuse part (glTF 2.0 Appendix B, `c_diff = lerp(baseColor, 0, M)`) |
+//! | the same, `KHR_materials_ior` v, `KHR_materials_specular` | `μ = lerp(F0, baseColor, M)`, `F0 = min(((v−1)/(v+1))²·specularColor, 1)·specular` | glTF's `F0` (Appendix B and the two extensions' specs); μ is the chapter's reflectance at normal incidence (spec §5), per channel |
+//! | `KHR_materials_transmission` | `t` | the chapter's transparency (spec §2); stored, not rendered |
+//! | `KHR_materials_volume` attenuation colour c, distance D, thickness | `a = −ln(c)/D`, `d` = thickness | glTF's Beer law `c^(x/D)` is the chapter's `e^(−a·x)` (spec §7); stored, not rendered |
+//! | — | `r_s = r_d = r_a = 1` | glTF's base colour is already the whole albedo; with `I_L = E/π` (below) `r_d·C·(N·L)·I_L` is glTF's Lambert `(C/π)·E·(N·L)` |
+//!
+//! Lights: `I_L = intensity/π` (lux for directional lights, candela for point lights, so a white
+//! Lambert face facing a light of π lux shows 1, as in glTF viewers); a point light's falloff is
+//! `1/(1 + α d²)` with `α = max(1, RANGE_ALPHA_K/range²)`: `α = 1` is the inverse square beyond
+//! about one unit (glTF's `1/d²`) yet finite at `d = 0`; a short `range` raises α so that the light
+//! has fallen to 1 % at its range (glTF cuts it off there). A spot light is read as a point light
+//! at its position, with a warning: the model has no cone.
+
+mod load;
+mod save;
+
+pub use load::{load_scene, load_scene_from_bytes, load_scene_from_slice};
+pub use save::{save_scene, scene_to_glb, scene_to_gltf_json};
+
+use crate::params::{PhongExponent, ShadingMode, SpecularModel};
+use crate::scene::Scene;
+
+/// Most triangles a file may bring (every instance of a mesh counts). 2·10⁶ triangles are ~290 MB
+/// as f64 corners and normals here and ~200 MB of GPU buffers: lavapipe and the viewer stay
+/// usable, and the chapter's scenes have well under 10⁵. A larger count is more likely a broken
+/// or hostile file (u8 indices can name 48 bytes of corners per 3 bytes of file) than a scene.
+pub const MAX_TRIANGLES: usize = 2_000_000;
+
+/// Most objects (mesh instances × primitives): each is one draw call and one 256-byte uniform
+/// slot, so 16384 objects are 4 MiB of uniforms.
+pub const MAX_OBJECTS: usize = 16_384;
+
+/// Deepest node hierarchy followed. Character rigs reach ~100 levels; deeper is a broken file.
+/// (The walk uses an explicit stack, so this bounds work, not the call stack.)
+pub const MAX_NODE_DEPTH: usize = 256;
+
+/// Ambient intensity `I_amb` of a file without `extras.shadelab.ambient`: the built-in scenes'.
+pub const DEFAULT_AMBIENT: [f64; 3] = [0.12; 3];
+
+/// glTF's default index of refraction (`KHR_materials_ior`): `((1.5 − 1)/(1.5 + 1))² = 0.04`.
+pub const DEFAULT_IOR: f64 = 1.5;
+
+/// `1/(1 + α·range²)` is `1/(1 + RANGE_ALPHA_K)` = 1 % at a point light's glTF `range`.
+pub const RANGE_ALPHA_K: f64 = 99.0;
+
+/// Falloff `α` of a glTF point light without a short range: `1/(1 + d²)` ≈ glTF's `1/d²` beyond
+/// about one unit, and finite at the light.
+pub const POINT_FALLOFF_ALPHA: f64 = 1.0;
+
+/// Smallest `KHR_materials_volume` attenuation colour channel used: `c = 0` would make `a`
+/// infinite; `−ln(1e-6) ≈ 13.8`, so `e^(−a·D)` is 1e-6 at the attenuation distance.
+pub const ATTENUATION_COLOR_MIN: f64 = 1e-6;
+
+/// A μ at or below this in every channel is saved as a dielectric (`metallicFactor` 0, μ via
+/// `KHR_materials_ior`); above, as a metal (`baseColorFactor` = μ). Dielectrics reach μ ≈ 0.17
+/// (diamond, n = 2.42); metals start at ≈ 0.5 (iron).
+pub const DIELECTRIC_MU_MAX: f64 = 0.2;
+
+/// The shading mode and specular model a file asks for (`extras.shadelab` of the glTF scene):
+/// not part of [`Scene`], they choose the pipeline.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct SceneSettings {
+    pub shading: Option<ShadingMode>,
+    pub specular: Option<SpecularModel>,
+}
+
+/// A scene read from a file, with what the file asks for and what was ignored or changed.
+#[derive(Clone, Debug)]
+pub struct LoadedScene {
+    pub scene: Scene,
+    pub settings: SceneSettings,
+    /// One line each: unsupported optional extensions, spot cones, clamped values, defaults added.
+    pub warnings: Vec<String>,
+}
+
+/// A bad scene file: one line, starting with the file's name.
+#[derive(Debug, thiserror::Error)]
+pub enum GltfError {
+    /// The file cannot be read.
+    #[error("{file}: cannot read: {source}")]
+    Read { file: String, source: std::io::Error },
+    /// Not glTF at all, a broken GLB container or broken JSON.
+    #[error("{file}: {detail}")]
+    Format { file: String, detail: String },
+    /// Well-formed JSON whose content is wrong: a missing or out-of-range index, a byte range past
+    /// its buffer, an index past the vertex count, a non-finite position or transform.
+    #[error("{file}: {detail}")]
+    Invalid { file: String, detail: String },
+    /// The file requires extensions this loader does not implement.
+    #[error("{file}: requires unsupported extension(s): {extensions}")]
+    UnsupportedRequired { file: String, extensions: String },
+    /// More than the named limits ([`MAX_TRIANGLES`], [`MAX_OBJECTS`], [`MAX_NODE_DEPTH`]).
+    #[error("{file}: {detail}")]
+    TooLarge { file: String, detail: String },
+    /// The file cannot be written.
+    #[error("{file}: cannot write: {source}")]
+    Write { file: String, source: std::io::Error },
+}
+
+/// The chapter's `m` from glTF's perceptual roughness (see the module's table).
+pub fn m_from_roughness(roughness: f64) -> f64 {
+    (roughness.clamp(0.0, 1.0)).powi(2)
+}
+
+/// The Phong exponent with a lobe about as wide as Beckmann `m`: `h = 2/m² − 2`, clamped to
+/// [1, `H_MAX`]; `m = 0` (a perfect mirror of facets) is the mirror `h = ∞`.
+pub fn h_from_m(m: f64) -> PhongExponent {
+    if m <= 0.0 {
+        return PhongExponent::Mirror;
+    }
+    PhongExponent::Finite((2.0 / (m * m) - 2.0).clamp(1.0, crate::guards::H_MAX))
+}
+
+/// glTF's dielectric `F0` (`KHR_materials_ior` v, `KHR_materials_specular` factor and colour).
+pub fn dielectric_f0(ior: f64, specular_factor: f64, specular_color: [f64; 3]) -> [f64; 3] {
+    let f0 = crate::presets::mu_from_ior(ior);
+    specular_color.map(|c| (f0 * c).min(1.0) * specular_factor)
+}
+
+#[cfg(test)]
+mod tests;

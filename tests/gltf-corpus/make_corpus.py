@@ -1,0 +1,197 @@
+#!/usr/bin/env python3
+"""Writes the malformed glTF corpus and its README table (run from anywhere: python3 make_corpus.py).
+
+Each case is one small file, broken in one way, and the text its error line must contain. The
+test `gltf_io::tests::malformed_corpus_gives_the_expected_errors` reads the README's table.
+"""
+import base64
+import copy
+import json
+import os
+import struct
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+
+# Eight corners of a cube and two triangles that use them (u16 indices).
+POSITIONS = [(x, y, z) for x in (0.0, 1.0) for y in (0.0, 1.0) for z in (0.0, 1.0)]
+INDICES = [0, 1, 3, 0, 3, 2]
+
+
+def f32s(values):
+    return b"".join(struct.pack("<f", v) for v in values)
+
+
+def base_parts(positions=POSITIONS, indices=INDICES):
+    pos = f32s([c for p in positions for c in p])
+    idx = struct.pack(f"<{len(indices)}H", *indices)
+    bin_ = pos + idx + b"\0" * (-len(idx) % 4)
+    doc = {
+        "asset": {"version": "2.0"},
+        "scene": 0,
+        "scenes": [{"nodes": [0]}],
+        "nodes": [{"mesh": 0}],
+        "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}],
+        "accessors": [
+            {"bufferView": 0, "componentType": 5126, "count": len(positions), "type": "VEC3",
+             "min": [0, 0, 0], "max": [1, 1, 1]},
+            {"bufferView": 1, "componentType": 5123, "count": len(indices), "type": "SCALAR"},
+        ],
+        "bufferViews": [
+            {"buffer": 0, "byteOffset": 0, "byteLength": len(pos)},
+            {"buffer": 0, "byteOffset": len(pos), "byteLength": len(idx)},
+        ],
+    }
+    return doc, bin_
+
+
+def embed(doc, bin_, byte_length=None):
+    doc = copy.deepcopy(doc)
+    doc["buffers"] = [{
+        "byteLength": len(bin_) if byte_length is None else byte_length,
+        "uri": "data:application/octet-stream;base64," + base64.b64encode(bin_).decode(),
+    }]
+    return json.dumps(doc, indent=1).encode()
+
+
+def glb(doc, bin_):
+    doc = copy.deepcopy(doc)
+    doc["buffers"] = [{"byteLength": len(bin_)}]
+    j = json.dumps(doc).encode()
+    j += b" " * (-len(j) % 4)
+    b = bin_ + b"\0" * (-len(bin_) % 4)
+    total = 12 + 8 + len(j) + 8 + len(b)
+    return (b"glTF" + struct.pack("<II", 2, total) + struct.pack("<I", len(j)) + b"JSON" + j
+            + struct.pack("<I", len(b)) + b"BIN\0" + b)
+
+
+def edited(fn, positions=POSITIONS, indices=INDICES):
+    doc, bin_ = base_parts(positions, indices)
+    fn(doc)
+    return embed(doc, bin_)
+
+
+CASES = []
+
+
+def case(name, what, expected, data):
+    CASES.append((name, what, expected, data))
+
+
+valid_glb = glb(*base_parts())
+case("truncated.glb", "a valid GLB cut after 100 bytes", "truncated GLB: the header says", valid_glb[:100])
+case("truncated.gltf", "a valid .gltf cut in the middle of its JSON", "invalid glTF JSON: EOF while parsing",
+     embed(*base_parts())[:300])
+case("wrong-magic.glb", "a GLB whose magic is `glTX`", "not a glTF file: it starts with \"glTX\"",
+     b"glTX" + valid_glb[4:])
+case("glb-version-1.glb", "a GLB header of version 1", "GLB version 1 (only 2 is read)",
+     valid_glb[:4] + struct.pack("<I", 1) + valid_glb[8:])
+case("glb-length-below-header.glb", "GLB header length 4 (below its own 12 bytes; gltf 1.4.1 subtracts unchecked)",
+     "GLB without a JSON chunk", valid_glb[:8] + struct.pack("<I", 4) + valid_glb[12:])
+case("glb-json-chunk-too-long.glb", "the JSON chunk claims more bytes than the file has",
+     "truncated GLB: a JSON chunk of 1000000", valid_glb[:12] + struct.pack("<I", 1000000) + valid_glb[16:])
+case("empty.gltf", "an empty file", "empty file", b"")
+case("invalid-json.gltf", "JSON with a syntax error", "invalid glTF JSON: key must be a string at line 1 column 30",
+     b'{"asset": {"version": "2.0"},, "nodes": []}')
+case("missing-count.gltf", "an accessor without its required count", "invalid glTF JSON: missing field",
+     edited(lambda d: d["accessors"][0].pop("count")))
+case("accessor-past-buffer-view.gltf", "POSITION accessor of 9 vertices over a view of 8",
+     "accessor 0: 9 elements of 12 bytes from offset 0 need 108 bytes, buffer view 0 has 96",
+     edited(lambda d: d["accessors"][0].update(count=9)))
+case("buffer-view-past-buffer.gltf", "a buffer view that ends past its buffer",
+     "buffer view 0: bytes 0..1000 are past the end of buffer 0",
+     edited(lambda d: d["bufferViews"][0].update(byteLength=1000)))
+case("index-past-vertex-count.gltf", "index 17 in a mesh of 8 vertices",
+     "mesh 0 primitive 0: index 17 is past the vertex count 8",
+     embed(*base_parts(indices=[0, 1, 17, 0, 3, 2])))
+case("nan-position.gltf", "a NaN vertex position", "mesh 0 primitive 0: POSITION 1 is not finite",
+     embed(*base_parts(positions=[POSITIONS[0], (float("nan"), 0.0, 0.0)] + POSITIONS[2:])))
+case("inf-position.gltf", "an infinite vertex position", "mesh 0 primitive 0: POSITION 7 is not finite",
+     embed(*base_parts(positions=POSITIONS[:7] + [(0.0, float("inf"), 0.0)])))
+case("huge-count.gltf", "an accessor declaring 10^9 vertices over 96 bytes",
+     "1000000000 elements of 12 bytes from offset 0 need 12000000000 bytes",
+     edited(lambda d: d["accessors"][0].update(count=1000000000)))
+case("huge-buffer.gltf", "a buffer declaring 10^12 bytes with 108 bytes of data",
+     "buffer 0: byteLength 1000000000000 but its data: URI holds 108 bytes",
+     embed(*base_parts(), byte_length=10**12))
+
+
+doc, bin_ = base_parts()
+doc["buffers"] = [{"byteLength": len(bin_), "uri": "missing.bin"}]
+case("missing-external-buffer.gltf", "an external buffer file that does not exist",
+     "buffer 0: cannot read 'missing.bin'", json.dumps(doc, indent=1).encode())
+doc["buffers"] = [{"byteLength": len(bin_), "uri": "data:application/octet-stream;base64,@@@@"}]
+case("bad-base64.gltf", "a data: URI that is not base64", "buffer 0: bad base64 data",
+     json.dumps(doc, indent=1).encode())
+case("unsupported-required-extension.gltf", "requires KHR_draco_mesh_compression",
+     "requires unsupported extension(s): KHR_draco_mesh_compression",
+     edited(lambda d: d.update(extensionsUsed=["KHR_draco_mesh_compression"],
+                               extensionsRequired=["KHR_draco_mesh_compression"])))
+case("accessor-index-out-of-range.gltf", "POSITION names accessor 5 of 2 (gltf 1.4.1's validate() panics here)",
+     "mesh 0 primitive 0: POSITION: accessor 5 does not exist (the file has 2)",
+     edited(lambda d: d["meshes"][0]["primitives"][0]["attributes"].update(POSITION=5)))
+case("node-cycle.gltf", "node 0 and node 1 are each other's child", "node 0 is reached twice",
+     edited(lambda d: d.update(nodes=[{"mesh": 0, "children": [1]}, {"children": [0]}])))
+
+
+def deep(d):
+    d["nodes"] = [{"children": [i + 1]} for i in range(299)] + [{"mesh": 0}]
+
+
+case("node-depth-300.gltf", "a chain of 300 nested nodes", "the hierarchy is deeper than 256 (MAX_NODE_DEPTH)",
+     edited(deep))
+case("child-out-of-range.gltf", "a node whose child does not exist", "node 0: child node 9 does not exist",
+     edited(lambda d: d["nodes"][0].update(children=[9])))
+case("stride-below-element.gltf", "byteStride 4 for 12-byte positions",
+     "buffer view 0: byteStride 4 is less than the 12-byte elements",
+     edited(lambda d: d["bufferViews"][0].update(byteStride=4)))
+case("sparse-accessor.gltf", "a sparse POSITION accessor", "accessor 0 is sparse (not supported)",
+     edited(lambda d: d["accessors"][0].update(sparse={
+         "count": 1, "indices": {"bufferView": 1, "componentType": 5123}, "values": {"bufferView": 0}})))
+case("indices-not-multiple-of-3.gltf", "5 indices for a triangle list", "5 indices is not a multiple of 3",
+     embed(*base_parts(indices=[0, 1, 3, 0, 3])))
+case("normal-count-mismatch.gltf", "3 normals for 8 positions", "3 NORMALs for 8 POSITIONs",
+     edited(lambda d: (d["accessors"].append(
+         {"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3"}),
+         d["meshes"][0]["primitives"][0]["attributes"].update(NORMAL=2))))
+case("zero-quaternion.gltf", "a node rotation of (0, 0, 0, 0)", "node 0: rotation",
+     edited(lambda d: d["nodes"][0].update(rotation=[0, 0, 0, 0])))
+case("infinite-translation.gltf", "a translation of 1e39 (infinite as f32)", "node 0: transform is not finite",
+     edited(lambda d: d["nodes"][0].update(translation=[1e39, 0, 0])))
+case("material-out-of-range.gltf", "a primitive naming material 4 of none",
+     "mesh 0 primitive 0: material 4 does not exist (the file has 0)",
+     edited(lambda d: d["meshes"][0]["primitives"][0].update(material=4)))
+case("light-out-of-range.gltf", "a node naming KHR_lights_punctual light 3 of 1", "node 0: light 3 does not exist",
+     edited(lambda d: (d.update(extensionsUsed=["KHR_lights_punctual"],
+                                extensions={"KHR_lights_punctual": {"lights": [{"type": "point"}]}}),
+                       d["nodes"][0].update(extensions={"KHR_lights_punctual": {"light": 3}}))))
+case("camera-zero-fov.gltf", "a perspective camera with yfov 0", "camera 0: yfov 0 is not in (0, π)",
+     edited(lambda d: (d.update(cameras=[{"type": "perspective", "perspective": {"yfov": 0, "znear": 0.1}}]),
+                       d["nodes"].append({"camera": 0}), d["scenes"][0]["nodes"].append(1))))
+case("extras-h-not-a-number.gltf", "material extras with h = \"sharp\"",
+     "material 0: extras.shadelab.h = \"sharp\" is not a number in [1, 1000000000]",
+     edited(lambda d: (d.update(materials=[{"extras": {"shadelab": {"h": "sharp"}}}]),
+                       d["meshes"][0]["primitives"][0].update(material=0))))
+case("points-only.gltf", "a mesh of points only: nothing to show", "the scene has no triangle meshes to show",
+     edited(lambda d: d["meshes"][0]["primitives"][0].update(mode=0)))
+
+
+def main():
+    for f in os.listdir(HERE):
+        if f.endswith((".gltf", ".glb")):
+            os.remove(os.path.join(HERE, f))
+    rows = []
+    for name, what, expected, data in CASES:
+        with open(os.path.join(HERE, name), "wb") as f:
+            f.write(data)
+        assert "|" not in what + expected and "`" not in expected, name
+        rows.append(f"| `{name}` | {what} | `{expected}` |")
+    readme = os.path.join(HERE, "README.md")
+    text = open(readme, encoding="utf-8").read()
+    head = text[: text.index("| file | case | expected error contains |")]
+    table = "| file | case | expected error contains |\n|---|---|---|\n" + "\n".join(rows) + "\n"
+    open(readme, "w", encoding="utf-8").write(head + table)
+    print(f"wrote {len(CASES)} cases")
+
+
+if __name__ == "__main__":
+    main()

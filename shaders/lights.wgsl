@@ -32,21 +32,34 @@ struct LightSample {
 
 // Direction and intensity of one light at surface point `p` with normal `n`. A point light closer
 // than LIGHT_DIST_MIN touches the surface: its direction is undefined, so L = N.
+// The `#if EFFECT_…` blocks are kept only in permutations whose scene calls for the effect
+// (crates/shadelab-model/src/effects.rs decides; crates/shadelab-render/src/shaders.rs cuts).
 fn light_sample(light: Light, p: vec3<f32>, n: vec3<f32>) -> LightSample {
     var s: LightSample;
+#if EFFECT_POINT_LIGHTS
     if (light.kind == LIGHT_POINT) {
         let to_light = light.position.xyz - p;
         let d = length(to_light);
         s.l = select(n, to_light / max(d, LIGHT_DIST_MIN), d > LIGHT_DIST_MIN);
-        var f = falloff_quadratic(d, light.falloff_alpha);
+        var f = 1.0;
+#if EFFECT_FALLOFF_QUADRATIC
+        if (light.falloff_form == FALLOFF_QUADRATIC) {
+            f = falloff_quadratic(d, light.falloff_alpha);
+        }
+#endif
+#if EFFECT_FALLOFF_LINEAR
         if (light.falloff_form == FALLOFF_LINEAR) {
             f = falloff_linear(d, light.d0);
         }
+#endif
         s.radiance = light.radiance.rgb * f;
-    } else {
-        s.l = safe_normalize(-light.direction.xyz, n);
-        s.radiance = light.radiance.rgb;
+        return s;
     }
+#endif
+#if EFFECT_DIRECTIONAL_LIGHTS
+    s.l = safe_normalize(-light.direction.xyz, n);
+    s.radiance = light.radiance.rgb;
+#endif
     return s;
 }
 
@@ -67,13 +80,20 @@ fn light_contribution(
     specular_model: u32,
 ) -> vec3<f32> {
     let n_dot_l = dot(n, s.l);
-    var spec: vec3<f32>;
+    var lit = vec3(0.0);
+#if EFFECT_DIFFUSE
+    lit += r_d * color * diffuse_lambert(n_dot_l);
+#endif
+#if EFFECT_SPECULAR_COOK_TORRANCE
     if (specular_model == SPECULAR_COOK_TORRANCE) {
-        spec = specular_cook_torrance(n, v, s.l, m, v_index);
-    } else {
-        let r = 2.0 * n_dot_l * n - s.l;
-        spec = vec3(select(0.0, specular_phong(dot(v, r), h, mirror), dot(n, v) > 0.0));
+        lit += r_s * specular_cook_torrance(n, v, s.l, m, v_index);
     }
-    let lit = r_d * color * diffuse_lambert(n_dot_l) + r_s * spec;
+#endif
+#if EFFECT_SPECULAR_PHONG
+    if (specular_model == SPECULAR_PHONG) {
+        let r = 2.0 * n_dot_l * n - s.l;
+        lit += r_s * vec3(select(0.0, specular_phong(dot(v, r), h, mirror), dot(n, v) > 0.0));
+    }
+#endif
     return select(vec3(0.0), s.radiance * lit, n_dot_l > 0.0);
 }

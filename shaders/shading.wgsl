@@ -3,8 +3,9 @@
 // Flat: lit once per face at its centroid. Gouraud: lit at the vertices, colour interpolated.
 // Phong: normals interpolated, renormalized, lit per pixel.
 
-// Which specular term S is (SPECULAR_PHONG or SPECULAR_COOK_TORRANCE), set per pipeline.
-override SPECULAR_MODEL: u32 = SPECULAR_PHONG;
+// Each pipeline's module holds only the effects its scene calls for: the `#if EFFECT_…` blocks
+// (see crates/shadelab-model/src/effects.rs). The "uber" permutation keeps them all and leaves
+// the choice to the uniforms (globals.specular_model, r_s, α, …).
 
 struct Globals {
     view_proj: mat4x4<f32>,
@@ -15,7 +16,8 @@ struct Globals {
     light_count: u32,
     // bit 0: paint non-finite pixels magenta.
     flags: u32,
-    _pad0: u32,
+    // Which specular term S is: SPECULAR_PHONG or SPECULAR_COOK_TORRANCE.
+    specular_model: u32,
     _pad1: u32,
     lights: array<Light, MAX_LIGHTS>,
 }
@@ -51,12 +53,20 @@ fn shade(p: vec3<f32>, n_in: vec3<f32>) -> vec3<f32> {
     // A zero normal (e.g. interpolated between opposite vertex normals) faces the viewer.
     let n = safe_normalize(n_in, v);
     let c = object.color.rgb;
-    let v_index = fresnel_v_from_mu(object.mu.rgb);
-    var total = globals.ambient.rgb * object.r_a * c;
+    // The Fresnel index is used by Cook–Torrance only.
+    var v_index = vec3(1.0);
+#if EFFECT_SPECULAR_COOK_TORRANCE
+    v_index = fresnel_v_from_mu(object.mu.rgb);
+#endif
+    var total = vec3(0.0);
+#if EFFECT_AMBIENT
+    total += globals.ambient.rgb * object.r_a * c;
+#endif
     for (var i = 0u; i < min(globals.light_count, MAX_LIGHTS); i++) {
         let s = light_sample(globals.lights[i], p, n);
         total += light_contribution(
-            s, n, v, c, object.r_s, object.r_d, object.m, object.h, object.mirror != 0u, v_index, SPECULAR_MODEL,
+            s, n, v, c, object.r_s, object.r_d, object.m, object.h, object.mirror != 0u, v_index,
+            globals.specular_model,
         );
     }
     return total;

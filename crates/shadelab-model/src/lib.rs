@@ -3,6 +3,7 @@
 
 pub mod assets;
 pub mod brdf;
+pub mod effects;
 pub mod gltf_io;
 pub mod guards;
 #[cfg(test)]

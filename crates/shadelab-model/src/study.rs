@@ -11,9 +11,10 @@ pub const ANALYTIC_SCENES: [&str; 4] = ["sphere", "cylinder", "pyramid", "defaul
 /// (not a triangle mesh from a file).
 #[allow(unreachable_patterns)]
 pub fn is_analytic(scene: &Scene) -> bool {
-    scene.objects.iter().all(|o| {
-        matches!(o.shape, Shape::Sphere | Shape::Cylinder | Shape::Cube | Shape::Plane | Shape::Pyramid)
-    })
+    scene
+        .objects
+        .iter()
+        .all(|o| matches!(o.shape, Shape::Sphere | Shape::Cylinder | Shape::Cube | Shape::Plane | Shape::Pyramid))
 }
 
 /// A planar face gets `level / PLANAR_CELLS_PER_LEVEL` cells per side, so that the coarsest

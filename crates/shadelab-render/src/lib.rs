@@ -12,7 +12,7 @@ pub mod timing;
 pub mod uniforms;
 
 pub use gpu::{AdapterChoice, Gpu};
-pub use renderer::{PipelineKey, RenderSettings, Renderer, SceneGpu};
+pub use renderer::{PipelineKey, RenderSettings, Renderer, SceneGpu, Specialization};
 pub use target::{LinearImage, Target};
 
 /// Render a scene offscreen to a linear float image: the path `shadelab render` and the image

@@ -4,6 +4,7 @@
 use crate::shaders;
 use crate::target::Target;
 use crate::uniforms::{GlobalsUniform, ObjectUniform};
+use shadelab_model::effects::{self, EffectKey};
 use shadelab_model::mesh::{self, FlatVertex, SmoothVertex};
 use shadelab_model::{Scene, ShadingMode, Shape, SpecularModel};
 use std::collections::HashMap;
@@ -24,21 +25,34 @@ pub const CLEAR_COLOR: wgpu::Color = wgpu::Color {
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct PipelineKey {
     pub shading: ShadingMode,
-    pub specular: SpecularModel,
+    /// The effects the shader module contains (the specular model is one of them).
+    pub effects: EffectKey,
     pub color_format: wgpu::TextureFormat,
-    /// The null-shader baseline (constant colour; `shading` and `specular` are then fixed).
+    /// The null-shader baseline (constant colour; `shading` and `effects` are then fixed).
     pub null_baseline: bool,
 }
 
 impl PipelineKey {
-    pub fn new(settings: &RenderSettings, color_format: wgpu::TextureFormat) -> PipelineKey {
+    pub fn new(settings: &RenderSettings, effects: EffectKey, color_format: wgpu::TextureFormat) -> PipelineKey {
         if settings.null_baseline {
             // One baseline pipeline, whatever the shading settings say.
-            let d = RenderSettings::default();
-            return PipelineKey { shading: d.shading, specular: d.specular, color_format, null_baseline: true };
+            let shading = RenderSettings::default().shading;
+            return PipelineKey { shading, effects: EffectKey::NONE, color_format, null_baseline: true };
         }
-        PipelineKey { shading: settings.shading, specular: settings.specular, color_format, null_baseline: false }
+        PipelineKey { shading: settings.shading, effects, color_format, null_baseline: false }
     }
+}
+
+/// Which effect permutation draws a scene.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum Specialization {
+    /// Only the effects the scene calls for (`effects::analyze`).
+    #[default]
+    Specialized,
+    /// Every effect present, the unneeded ones switched off at run time by the uniforms.
+    Uber,
+    /// A given set (the benchmark's floors: the specialized set less one effect).
+    Fixed(EffectKey),
 }
 
 /// Per-frame choices that do not change the geometry.
@@ -51,6 +65,7 @@ pub struct RenderSettings {
     /// Draw the null-shader baseline instead (same geometry, constant colour, no lighting): what
     /// rasterizing the scene costs, the denominator of the cost study.
     pub null_baseline: bool,
+    pub specialization: Specialization,
 }
 
 impl RenderSettings {
@@ -70,6 +85,7 @@ impl Default for RenderSettings {
             specular: SpecularModel::CookTorrance,
             debug_nonfinite: false,
             null_baseline: false,
+            specialization: Specialization::Specialized,
         }
     }
 }
@@ -94,18 +110,41 @@ pub struct SceneGpu {
     objects_bind: wgpu::BindGroup,
     object_stride: u64,
     pub triangle_count: usize,
+    /// The effect set of the last `write_uniforms` (scene + settings).
+    effects: std::cell::Cell<EffectKey>,
+}
+
+impl SceneGpu {
+    /// The effect set the next draw uses.
+    pub fn effects(&self) -> EffectKey {
+        self.effects.get()
+    }
+}
+
+/// A pipeline being built on a worker thread (the viewer keeps drawing meanwhile).
+struct PendingBuild {
+    started: std::time::Instant,
+    rx: std::sync::mpsc::Receiver<wgpu::RenderPipeline>,
 }
 
 pub struct Renderer {
     pub device: wgpu::Device,
     pub queue: wgpu::Queue,
-    module: wgpu::ShaderModule,
+    /// The WGSL before preprocessing (shipped, or hot-reloaded).
+    raw_source: String,
+    modules: HashMap<EffectKey, wgpu::ShaderModule>,
     globals_layout: wgpu::BindGroupLayout,
     object_layout: wgpu::BindGroupLayout,
     pipeline_layout: wgpu::PipelineLayout,
     pipelines: HashMap<PipelineKey, wgpu::RenderPipeline>,
+    pending: HashMap<PipelineKey, PendingBuild>,
+    /// Build missing pipelines on a worker thread and draw with the uber pipeline meanwhile
+    /// (the viewer); off, a missing pipeline is built before the draw (renders, tests, benches).
+    pub build_in_background: bool,
     /// How many pipelines have been built (the viewer shows it: it must not grow per frame).
     pub pipeline_builds: u32,
+    /// The last pipeline built and how long it took (module + pipeline creation).
+    pub last_build: Option<(PipelineKey, std::time::Duration)>,
 }
 
 fn uniform_entry(dynamic: bool, size: u64) -> wgpu::BindGroupLayoutEntry {
@@ -126,10 +165,6 @@ const FLAT_ATTRS: [wgpu::VertexAttribute; 3] = wgpu::vertex_attr_array![0 => Flo
 
 impl Renderer {
     pub fn new(device: &wgpu::Device, queue: &wgpu::Queue) -> Renderer {
-        let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
-            label: Some("shadelab lighting"),
-            source: wgpu::ShaderSource::Wgsl(shaders::lighting_source().into()),
-        });
         let globals_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("globals"),
             entries: &[uniform_entry(false, size_of::<GlobalsUniform>() as u64)],
@@ -146,96 +181,99 @@ impl Renderer {
         Renderer {
             device: device.clone(),
             queue: queue.clone(),
-            module,
+            raw_source: shaders::raw_lighting_source(),
+            modules: HashMap::new(),
             globals_layout,
             object_layout,
             pipeline_layout,
             pipelines: HashMap::new(),
+            pending: HashMap::new(),
+            build_in_background: false,
             pipeline_builds: 0,
+            last_build: None,
         }
     }
 
-    /// Replace the shader source (hot reload). The source is validated by naga first: on an
-    /// error nothing changes (the old module and pipelines stay) and naga's message is returned;
-    /// on success the cached pipelines are dropped and rebuilt once, on next use.
-    pub fn reload_shaders(&mut self, source: &str) -> Result<(), String> {
-        shaders::validate(source)?;
-        self.module = self.device.create_shader_module(wgpu::ShaderModuleDescriptor {
-            label: Some("shadelab lighting (reloaded)"),
-            source: wgpu::ShaderSource::Wgsl(source.to_owned().into()),
-        });
+    /// Replace the shader source (hot reload). The source is preprocessed and validated by naga
+    /// first: on an error nothing changes (the old modules and pipelines stay) and the message is
+    /// returned; on success the cached modules and pipelines are dropped and rebuilt on next use.
+    pub fn reload_shaders(&mut self, raw_source: &str) -> Result<(), String> {
+        shaders::validate_raw(raw_source)?;
+        self.raw_source = raw_source.to_owned();
+        self.modules.clear();
         self.pipelines.clear();
+        self.pending.clear();
         Ok(())
+    }
+
+    fn module(&mut self, effects: EffectKey) -> wgpu::ShaderModule {
+        let (device, raw) = (&self.device, &self.raw_source);
+        self.modules
+            .entry(effects)
+            .or_insert_with(|| {
+                let src = shaders::lighting_source_for(raw, effects).expect("validated when loaded");
+                device.create_shader_module(wgpu::ShaderModuleDescriptor {
+                    label: Some(&format!("shadelab lighting [{}]", effects.label())),
+                    source: wgpu::ShaderSource::Wgsl(src.into()),
+                })
+            })
+            .clone()
     }
 
     /// The pipeline for a key, built on first use and cached.
     pub fn pipeline(&mut self, key: PipelineKey) -> &wgpu::RenderPipeline {
         if !self.pipelines.contains_key(&key) {
-            let p = self.build_pipeline(key);
-            self.pipeline_builds += 1;
-            self.pipelines.insert(key, p);
+            let start = std::time::Instant::now();
+            let module = self.module(key.effects);
+            let p = build_pipeline(&self.device, &self.pipeline_layout, &module, key);
+            self.finish_build(key, p, start.elapsed());
         }
         &self.pipelines[&key]
     }
 
-    fn build_pipeline(&self, key: PipelineKey) -> wgpu::RenderPipeline {
-        let (vs, fs) =
-            if key.null_baseline { shaders::BASELINE_ENTRY_POINTS } else { shaders::entry_points(key.shading) };
-        let constants = [("SPECULAR_MODEL", shaders::specular_constant(key.specular))];
-        let options = wgpu::PipelineCompilationOptions { constants: &constants, ..Default::default() };
-        let buffers = match key.shading {
-            ShadingMode::Flat if !key.null_baseline => [Some(wgpu::VertexBufferLayout {
-                array_stride: size_of::<FlatVertex>() as u64,
-                step_mode: wgpu::VertexStepMode::Vertex,
-                attributes: &FLAT_ATTRS,
-            })],
-            _ => [Some(wgpu::VertexBufferLayout {
-                array_stride: size_of::<SmoothVertex>() as u64,
-                step_mode: wgpu::VertexStepMode::Vertex,
-                attributes: &SMOOTH_ATTRS,
-            })],
-        };
-        self.device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-            label: Some(&if key.null_baseline {
-                "null baseline".to_string()
-            } else {
-                format!("{:?}/{:?}", key.shading, key.specular)
-            }),
-            layout: Some(&self.pipeline_layout),
-            vertex: wgpu::VertexState {
-                module: &self.module,
-                entry_point: Some(vs),
-                compilation_options: options.clone(),
-                buffers: &buffers,
-            },
-            primitive: wgpu::PrimitiveState {
-                topology: wgpu::PrimitiveTopology::TriangleList,
-                // Every mesh is closed or seen from its front, but no culling keeps a wrong
-                // winding from making geometry vanish.
-                cull_mode: None,
-                ..Default::default()
-            },
-            depth_stencil: Some(wgpu::DepthStencilState {
-                format: DEPTH_FORMAT,
-                depth_write_enabled: Some(true),
-                depth_compare: Some(wgpu::CompareFunction::Less),
-                stencil: Default::default(),
-                bias: Default::default(),
-            }),
-            multisample: Default::default(),
-            fragment: Some(wgpu::FragmentState {
-                module: &self.module,
-                entry_point: Some(fs),
-                compilation_options: options,
-                targets: &[Some(wgpu::ColorTargetState {
-                    format: key.color_format,
-                    blend: None,
-                    write_mask: wgpu::ColorWrites::ALL,
-                })],
-            }),
-            multiview_mask: None,
-            cache: None,
-        })
+    fn finish_build(&mut self, key: PipelineKey, p: wgpu::RenderPipeline, took: std::time::Duration) {
+        self.pipeline_builds += 1;
+        self.last_build = Some((key, took));
+        log::info!("pipeline {:?} [{}] built in {:.1} ms", key.shading, key.effects.label(), took.as_secs_f64() * 1e3);
+        self.pipelines.insert(key, p);
+    }
+
+    /// Move pipelines finished on worker threads into the cache.
+    pub fn poll_builds(&mut self) {
+        let done: Vec<(PipelineKey, wgpu::RenderPipeline, std::time::Duration)> = self
+            .pending
+            .iter()
+            .filter_map(|(k, b)| b.rx.try_recv().ok().map(|p| (*k, p, b.started.elapsed())))
+            .collect();
+        for (k, p, took) in done {
+            self.pending.remove(&k);
+            self.finish_build(k, p, took);
+        }
+    }
+
+    /// Whether pipelines are being built in the background.
+    pub fn building(&self) -> bool {
+        !self.pending.is_empty()
+    }
+
+    /// The key to draw with now: `key` if its pipeline is ready; with `build_in_background`, the
+    /// uber pipeline of the same shading while `key` is built on a worker thread.
+    fn ready_key(&mut self, key: PipelineKey) -> PipelineKey {
+        self.poll_builds();
+        if !self.build_in_background || self.pipelines.contains_key(&key) || key.null_baseline {
+            return key;
+        }
+        if !self.pending.contains_key(&key) {
+            let (tx, rx) = std::sync::mpsc::channel();
+            let (device, layout) = (self.device.clone(), self.pipeline_layout.clone());
+            let module = self.module(key.effects);
+            std::thread::spawn(move || {
+                // A send fails only if the renderer is gone: nothing to do then.
+                let _ = tx.send(build_pipeline(&device, &layout, &module, key));
+            });
+            self.pending.insert(key, PendingBuild { started: std::time::Instant::now(), rx });
+        }
+        PipelineKey { effects: EffectKey::UBER, ..key }
     }
 
     /// Upload a scene's meshes and uniforms.
@@ -282,14 +320,29 @@ impl Renderer {
                 }),
             }],
         });
-        SceneGpu { meshes, objects, globals, globals_bind, objects_buf, objects_bind, object_stride, triangle_count }
+        SceneGpu {
+            meshes,
+            objects,
+            globals,
+            globals_bind,
+            objects_buf,
+            objects_bind,
+            object_stride,
+            triangle_count,
+            effects: std::cell::Cell::new(EffectKey::UBER),
+        }
     }
 
     /// Write a scene's parameters (materials, lights, camera) into its uniforms. Cheap: the
     /// viewer calls it whenever a parameter changes; geometry stays.
     pub fn write_uniforms(&self, gpu_scene: &SceneGpu, scene: &Scene, target: &Target, settings: &RenderSettings) {
         let flags = if settings.debug_nonfinite { crate::uniforms::FLAG_DEBUG_NONFINITE } else { 0 };
-        let g = GlobalsUniform::new(scene, target.width, target.height, flags);
+        let g = GlobalsUniform::new(scene, target.width, target.height, flags, settings.specular);
+        gpu_scene.effects.set(match settings.specialization {
+            Specialization::Specialized => effects::analyze(scene, settings.specular).key,
+            Specialization::Uber => EffectKey::UBER,
+            Specialization::Fixed(k) => k,
+        });
         self.queue.write_buffer(&gpu_scene.globals, 0, bytemuck::bytes_of(&g));
         let mut bytes = vec![0u8; (gpu_scene.object_stride as usize) * scene.objects.len()];
         for (i, o) in scene.objects.iter().enumerate() {
@@ -310,7 +363,8 @@ impl Renderer {
         settings: &RenderSettings,
         timestamps: Option<(&wgpu::QuerySet, u32)>,
     ) {
-        let key = PipelineKey::new(settings, target.format);
+        let key = PipelineKey::new(settings, gpu_scene.effects(), target.format);
+        let key = self.ready_key(key);
         self.pipeline(key);
         let pipeline = &self.pipelines[&key];
         let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
@@ -380,4 +434,68 @@ fn upload_mesh(device: &wgpu::Device, m: &mesh::MeshData) -> MeshGpu {
         }),
         flat_count: m.flat_vertices.len() as u32,
     }
+}
+
+/// Build the pipeline of a key from its module (free, so worker threads can run it).
+fn build_pipeline(
+    device: &wgpu::Device,
+    layout: &wgpu::PipelineLayout,
+    module: &wgpu::ShaderModule,
+    key: PipelineKey,
+) -> wgpu::RenderPipeline {
+    let (vs, fs) = if key.null_baseline { shaders::BASELINE_ENTRY_POINTS } else { shaders::entry_points(key.shading) };
+    let options = wgpu::PipelineCompilationOptions::default();
+    let buffers = match key.shading {
+        ShadingMode::Flat if !key.null_baseline => [Some(wgpu::VertexBufferLayout {
+            array_stride: size_of::<FlatVertex>() as u64,
+            step_mode: wgpu::VertexStepMode::Vertex,
+            attributes: &FLAT_ATTRS,
+        })],
+        _ => [Some(wgpu::VertexBufferLayout {
+            array_stride: size_of::<SmoothVertex>() as u64,
+            step_mode: wgpu::VertexStepMode::Vertex,
+            attributes: &SMOOTH_ATTRS,
+        })],
+    };
+    device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+        label: Some(&if key.null_baseline {
+            "null baseline".to_string()
+        } else {
+            format!("{:?} [{}]", key.shading, key.effects.label())
+        }),
+        layout: Some(layout),
+        vertex: wgpu::VertexState {
+            module,
+            entry_point: Some(vs),
+            compilation_options: options.clone(),
+            buffers: &buffers,
+        },
+        primitive: wgpu::PrimitiveState {
+            topology: wgpu::PrimitiveTopology::TriangleList,
+            // Every mesh is closed or seen from its front, but no culling keeps a wrong
+            // winding from making geometry vanish.
+            cull_mode: None,
+            ..Default::default()
+        },
+        depth_stencil: Some(wgpu::DepthStencilState {
+            format: DEPTH_FORMAT,
+            depth_write_enabled: Some(true),
+            depth_compare: Some(wgpu::CompareFunction::Less),
+            stencil: Default::default(),
+            bias: Default::default(),
+        }),
+        multisample: Default::default(),
+        fragment: Some(wgpu::FragmentState {
+            module,
+            entry_point: Some(fs),
+            compilation_options: options,
+            targets: &[Some(wgpu::ColorTargetState {
+                format: key.color_format,
+                blend: None,
+                write_mask: wgpu::ColorWrites::ALL,
+            })],
+        }),
+        multiview_mask: None,
+        cache: None,
+    })
 }

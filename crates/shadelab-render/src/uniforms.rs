@@ -25,7 +25,8 @@ pub struct GlobalsUniform {
     pub ambient: [f32; 4],
     pub light_count: u32,
     pub flags: u32,
-    pub _pad0: u32,
+    /// SPECULAR_PHONG (0) or SPECULAR_COOK_TORRANCE (1).
+    pub specular_model: u32,
     pub _pad1: u32,
     pub lights: [LightUniform; MAX_LIGHTS],
 }
@@ -55,7 +56,7 @@ fn rgb(c: [f64; 3], w: f32) -> [f32; 4] {
 }
 
 impl GlobalsUniform {
-    pub fn new(scene: &Scene, width: u32, height: u32, flags: u32) -> Self {
+    pub fn new(scene: &Scene, width: u32, height: u32, flags: u32, specular: shadelab_model::SpecularModel) -> Self {
         let mut lights = [LightUniform::zeroed(); MAX_LIGHTS];
         for (slot, l) in lights.iter_mut().zip(&scene.lights) {
             *slot = LightUniform {
@@ -80,7 +81,7 @@ impl GlobalsUniform {
             ambient: rgb(scene.ambient, 1.0),
             light_count: scene.lights.len().min(MAX_LIGHTS) as u32,
             flags,
-            _pad0: 0,
+            specular_model: crate::shaders::specular_constant(specular) as u32,
             _pad1: 0,
             lights,
         }

@@ -96,3 +96,72 @@ pub fn run_sweep() -> Result<(), Failure> {
         Err(Failure::Run(anyhow::anyhow!("sweep failed for: {}", failed.join(", "))))
     }
 }
+
+/// `shadelab bench effects`: specialized vs uber vs per-effect floors, per scene and shading.
+pub fn run_effects(args: &cli::BenchEffectsArgs) -> Result<(), Failure> {
+    use shadelab_render::Specialization;
+    let (width, height) = cli::size(&args.width, &args.height)?;
+    let frames = cli::FRAMES.parse_u32(&args.frames)? as usize;
+    let warmup = cli::WARMUP.parse_u32(&args.warmup)? as usize;
+    let scenes = args
+        .scenes
+        .iter()
+        .map(|name| cli::scene(&cli::SceneArgs { scene: name.clone(), ..cli::SceneArgs::default() }))
+        .collect::<Result<Vec<_>, _>>()?;
+    let gpu = Gpu::headless(AdapterChoice::from_env()).context("opening a GPU adapter")?;
+    let mut r = Renderer::new(&gpu.device, &gpu.queue);
+    let target = Target::new(&gpu.device, width, height, shadelab_render::target::HDR_FORMAT);
+    let timer = FrameTimer::new(&gpu.device, &gpu.queue);
+    println!("# shadelab bench effects — {}×{}, {} frames per row after {} warm-up", width, height, frames, warmup);
+    println!("# device: {}; time: {}", gpu.describe(), timer.source().label());
+    println!("| scene | shading | pipeline | effects | median ms | p10–p90 ms | × specialized |");
+    println!("|---|---|---|---|---:|---|---:|");
+    let specular = SpecularModel::CookTorrance;
+    for scene in &scenes {
+        let gs = r.upload(scene);
+        let key = shadelab_model::effects::analyze(scene, specular).key;
+        for shading in ShadingMode::ALL_MODES {
+            let base = RenderSettings::new(shading, specular);
+            let mut programs = vec![
+                ("specialized".to_string(), RenderSettings { specialization: Specialization::Specialized, ..base }),
+                ("uber".to_string(), RenderSettings { specialization: Specialization::Uber, ..base }),
+            ];
+            for e in key.effects() {
+                programs.push((
+                    format!("without {}", e.name()),
+                    RenderSettings { specialization: Specialization::Fixed(key.without(e)), ..base },
+                ));
+            }
+            for (_, s) in &programs {
+                r.write_uniforms(&gs, scene, &target, s);
+                for _ in 0..warmup.max(1) {
+                    timer.frame(&mut r, &gs, &target, s);
+                }
+            }
+            let mut samples = vec![Vec::with_capacity(frames); programs.len()];
+            for _ in 0..frames {
+                for (i, (_, s)) in programs.iter().enumerate() {
+                    r.write_uniforms(&gs, scene, &target, s);
+                    samples[i].push(timer.frame(&mut r, &gs, &target, s));
+                }
+            }
+            let specialized = median(&mut samples[0]);
+            for (i, (name, s)) in programs.iter().enumerate() {
+                r.write_uniforms(&gs, scene, &target, s);
+                let m = median(&mut samples[i]);
+                println!(
+                    "| {} | {} | {} | {} | {:.3} | {:.3}–{:.3} | {:.3} |",
+                    scene.name,
+                    shading,
+                    name,
+                    gs.effects().label(),
+                    m,
+                    quantile_sorted(&samples[i], 0.1),
+                    quantile_sorted(&samples[i], 0.9),
+                    m / specialized
+                );
+            }
+        }
+    }
+    Ok(())
+}

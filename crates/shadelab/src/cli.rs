@@ -1,7 +1,9 @@
 //! Command-line arguments. Values arrive as text and are validated by the model's ranges, so a
 //! mistake gets one line naming the flag and its allowed range (exit code 2).
 
+use crate::Failure;
 use clap::{Args, Parser, Subcommand};
+use shadelab_model::gltf_io::{self, SceneSettings};
 use shadelab_model::params::{self, NamedValue, ParamError};
 use shadelab_model::{FalloffForm, LightKind, Overrides, Scene, ShadingMode, SpecularModel};
 use shadelab_render::RenderSettings;
@@ -60,9 +62,34 @@ pub enum BenchCommand {
     /// with the f64 reference; also the cost per light and per resolution. Writes a CSV, a
     /// Markdown report and plots.
     Accuracy(BenchAccuracyArgs),
+    /// What specialization saves: each scene drawn by its specialized pipeline (only the effects
+    /// it calls for), by the uber pipeline (every effect, switched off at run time) and, per
+    /// effect, by the specialized pipeline without it (the floor), interleaved in one run.
+    Effects(BenchEffectsArgs),
 }
 
 #[derive(Args, Debug)]
+#[command(allow_negative_numbers = true)]
+pub struct BenchEffectsArgs {
+    /// Scenes: built-in names or glTF files (repeat the flag for several).
+    #[arg(long = "scene", default_value = "default", value_name = "NAME|PATH")]
+    pub scenes: Vec<String>,
+    /// Width in pixels, 1 to 8192.
+    #[arg(long, default_value = "1280")]
+    pub width: String,
+    /// Height in pixels, 1 to 8192.
+    #[arg(long, default_value = "720")]
+    pub height: String,
+    /// Measured frames per pipeline (after warm-up).
+    #[arg(long, default_value = "50")]
+    pub frames: String,
+    /// Warm-up frames per pipeline (not measured).
+    #[arg(long, default_value = "3")]
+    pub warmup: String,
+}
+
+#[derive(Args, Debug)]
+#[command(allow_negative_numbers = true)]
 pub struct BenchAccuracyArgs {
     /// A small subset (2 scenes, 3 levels, small sizes, 10 frames): well under a minute.
     #[arg(long)]
@@ -79,10 +106,10 @@ pub struct BenchAccuracyArgs {
 }
 
 /// The scene and the parameters that override it (shared by `render` and `bench`).
-#[derive(Args, Debug, Clone)]
+#[derive(Args, Debug, Clone, Default)]
 #[command(allow_negative_numbers = true)]
 pub struct SceneArgs {
-    /// A built-in scene: default, sphere, cylinder, pyramid, cube.
+    /// A built-in scene (default, sphere, cylinder, pyramid, cube) or a glTF 2.0 file (.gltf, .glb).
     #[arg(long, default_value = "default", value_name = "NAME|PATH")]
     pub scene: String,
     /// Roughness m of every material, in [0, 1].
@@ -111,14 +138,18 @@ pub struct SceneArgs {
 #[derive(Args, Debug)]
 #[command(allow_negative_numbers = true)]
 pub struct RenderArgs {
-    /// flat | gouraud | phong
-    #[arg(long, default_value = "phong")]
-    pub shading: String,
-    /// phong | cook-torrance
-    #[arg(long, default_value = "cook-torrance")]
-    pub specular: String,
+    /// flat | gouraud | phong [default: the scene file's, else phong]
+    #[arg(long)]
+    pub shading: Option<String>,
+    /// phong | cook-torrance [default: the scene file's, else cook-torrance]
+    #[arg(long)]
+    pub specular: Option<String>,
     #[command(flatten)]
     pub scene: SceneArgs,
+    /// Also write the scene, after the overrides, as glTF 2.0 (.gltf with an embedded buffer, or
+    /// .glb), with the shading mode and specular model in its extras.
+    #[arg(long, value_name = "PATH")]
+    pub save_scene: Option<PathBuf>,
     /// Width in pixels, 1 to 8192.
     #[arg(long, default_value = "1280")]
     pub width: String,
@@ -131,6 +162,9 @@ pub struct RenderArgs {
     /// Paint pixels whose colour is NaN or infinite magenta.
     #[arg(long)]
     pub debug_nonfinite: bool,
+    /// Print the effects the scene calls for (the shader holds only those), each with its reason.
+    #[arg(long)]
+    pub explain: bool,
 }
 
 #[derive(Args, Debug)]
@@ -161,14 +195,48 @@ pub const FRAMES: params::ParamRange =
     params::ParamRange { flag: "--frames", symbol: "N", meaning: "number of frames", min: 1.0, max: 1e6 };
 
 /// Build the scene the arguments ask for.
-pub fn scene(args: &SceneArgs) -> Result<Scene, ParamError> {
-    let mut scene = Scene::builtin(&args.scene).ok_or_else(|| ParamError::Unknown {
-        flag: "--scene".into(),
-        value: args.scene.clone(),
-        allowed: format!("{}; scene files are not supported yet", shadelab_model::scene::BUILTIN_SCENES.join(", ")),
-    })?;
+pub fn scene(args: &SceneArgs) -> Result<Scene, Failure> {
+    scene_and_settings(args).map(|(scene, _)| scene)
+}
+
+/// Build the scene the arguments ask for: a built-in scene, or a glTF file (a name that is not
+/// built in and ends in .gltf/.glb or names a file), with the shading mode and specular model
+/// the file asks for. A bad file is the user's mistake (exit 2); its warnings are logged.
+pub fn scene_and_settings(args: &SceneArgs) -> Result<(Scene, SceneSettings), Failure> {
+    let name = &args.scene;
+    let is_file = {
+        let lower = name.to_ascii_lowercase();
+        lower.ends_with(".gltf") || lower.ends_with(".glb") || std::path::Path::new(name).is_file()
+    };
+    let (mut scene, settings) = match Scene::builtin(name) {
+        Some(s) => (s, SceneSettings::default()),
+        None if is_file => {
+            let loaded = gltf_io::load_scene(std::path::Path::new(name)).map_err(|e| Failure::Usage(e.to_string()))?;
+            for w in &loaded.warnings {
+                log::warn!("{name}: {w}");
+            }
+            (loaded.scene, loaded.settings)
+        }
+        None => {
+            return Err(ParamError::Unknown {
+                flag: "--scene".into(),
+                value: name.clone(),
+                allowed: format!("{}, or a .gltf/.glb file", shadelab_model::scene::BUILTIN_SCENES.join(", ")),
+            }
+            .into());
+        }
+    };
     scene.apply(&overrides(args)?);
-    Ok(scene)
+    Ok((scene, settings))
+}
+
+/// `--shading`/`--specular`: the flag when given, else the scene file's choice, else `default`.
+pub fn flag_or_file<T: NamedValue + PartialEq>(
+    flag: Option<&str>,
+    file: Option<T>,
+    default: T,
+) -> Result<T, ParamError> {
+    flag.map_or(Ok(file.unwrap_or(default)), T::parse_named)
 }
 
 pub fn overrides(a: &SceneArgs) -> Result<Overrides, ParamError> {
@@ -188,7 +256,7 @@ pub fn settings(shading: &str, specular: &str, debug_nonfinite: bool) -> Result<
         shading: ShadingMode::parse_named(shading)?,
         specular: SpecularModel::parse_named(specular)?,
         debug_nonfinite,
-        null_baseline: false,
+        ..Default::default()
     })
 }
 

@@ -2,6 +2,9 @@
 
 use crate::{Failure, cli};
 use anyhow::Context;
+use shadelab_model::gltf_io::{self, SceneSettings};
+use shadelab_model::params::NamedValue;
+use shadelab_model::{ShadingMode, SpecularModel};
 use shadelab_render::{AdapterChoice, Gpu, LinearImage};
 use std::path::Path;
 
@@ -23,11 +26,34 @@ pub fn image_kind(path: &Path) -> Result<ImageKind, Failure> {
     }
 }
 
+/// `--save-scene`: write the scene (overrides applied) as glTF, the extension choosing .gltf or
+/// .glb; any other extension is the user's mistake.
+pub fn save_scene(scene: &shadelab_model::Scene, settings: SceneSettings, path: &Path) -> Result<(), Failure> {
+    match path.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase).as_deref() {
+        Some("gltf" | "glb") => {}
+        _ => {
+            return Err(Failure::Usage(format!(
+                "--save-scene: '{}' has an unsupported extension (allowed: .gltf, .glb)",
+                path.display()
+            )));
+        }
+    }
+    gltf_io::save_scene(scene, &settings, path).map_err(|e| Failure::Run(e.into()))
+}
+
 pub fn run(args: &cli::RenderArgs) -> Result<(), Failure> {
-    let settings = cli::settings(&args.shading, &args.specular, args.debug_nonfinite)?;
+    let (scene, file) = cli::scene_and_settings(&args.scene)?;
+    let shading = cli::flag_or_file(args.shading.as_deref(), file.shading, ShadingMode::Phong)?;
+    let specular = cli::flag_or_file(args.specular.as_deref(), file.specular, SpecularModel::CookTorrance)?;
+    let settings = cli::settings(shading.name(), specular.name(), args.debug_nonfinite)?;
     let (width, height) = cli::size(&args.width, &args.height)?;
-    let scene = cli::scene(&args.scene)?;
     let kind = image_kind(&args.output)?;
+    if let Some(path) = &args.save_scene {
+        save_scene(&scene, SceneSettings { shading: Some(shading), specular: Some(specular) }, path)?;
+    }
+    if args.explain {
+        print!("{}", explain(&scene, &settings));
+    }
     let gpu = Gpu::headless(AdapterChoice::from_env()).context("opening a GPU adapter")?;
     log::info!("adapter: {}", gpu.describe());
     let image = shadelab_render::render_image(&gpu, &scene, width, height, &settings);
@@ -37,6 +63,23 @@ pub fn run(args: &cli::RenderArgs) -> Result<(), Failure> {
         log::warn!("{bad} pixels are not finite");
     }
     Ok(())
+}
+
+/// The effect analysis of a scene with these settings, one line per decision (`--explain`).
+pub fn explain(scene: &shadelab_model::Scene, settings: &shadelab_render::RenderSettings) -> String {
+    let a = shadelab_model::effects::analyze(scene, settings.specular);
+    let mut s = format!(
+        "# effects of scene '{}' with {} shading and {} specular — pipeline [{}]\n",
+        scene.name,
+        settings.shading,
+        settings.specular,
+        a.key.label()
+    );
+    for line in a.lines() {
+        s.push_str(&line);
+        s.push('\n');
+    }
+    s
 }
 
 /// Write a linear image: PNG as 8-bit sRGB, EXR as linear 32-bit float RGBA.

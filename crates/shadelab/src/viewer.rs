@@ -137,7 +137,9 @@ impl Viewer {
         exit_after: Option<u32>,
     ) -> Result<Viewer, String> {
         let rs = cc.wgpu_render_state.as_ref().ok_or("the viewer needs eframe's wgpu renderer")?;
-        let renderer = Renderer::new(&rs.device, &rs.queue);
+        let mut renderer = Renderer::new(&rs.device, &rs.queue);
+        // A new effect set compiles on a worker thread; the uber pipeline draws meanwhile.
+        renderer.build_in_background = true;
         let scene = Scene::builtin("default").expect("built-in default scene");
         let gpu_scene = renderer.upload(&scene);
         log::info!("viewer adapter: {:?}", rs.adapter.get_info());
@@ -580,9 +582,25 @@ impl Viewer {
             self.renderer.pipeline_builds
         ));
         ui.checkbox(&mut self.continuous, "render continuously (for live timing)");
-        ui.collapsing("effects simulated", |ui| {
-            for e in effects(&self.scene, &self.settings) {
-                ui.label(format!("• {e}"));
+        // The same analysis as `render --explain`: what this scene calls for, and why.
+        let analysis = shadelab_model::effects::analyze(&self.scene, self.settings.specular);
+        let drawn = self.gpu_scene.effects();
+        if self.renderer.building() {
+            ui.label(
+                egui::RichText::new(format!("compiling pipeline [{}]… drawn with the uber pipeline", drawn.label()))
+                    .color(Color32::YELLOW),
+            );
+            ui.ctx().request_repaint_after(std::time::Duration::from_millis(50));
+        } else if let Some((key, took)) = self.renderer.last_build
+            && self.show_live_numbers
+        {
+            ui.small(format!("last pipeline built: [{}] in {:.0} ms", key.effects.label(), took.as_secs_f64() * 1e3));
+        }
+        egui::CollapsingHeader::new("effects called for").default_open(false).show(ui, |ui| {
+            ui.small(format!("pipeline [{}]", analysis.key.label()));
+            ui.small(shading_meaning(self.settings.shading));
+            for line in analysis.lines() {
+                ui.label(format!("• {line}"));
             }
         });
         ui.horizontal(|ui| {
@@ -663,36 +681,4 @@ fn shading_meaning(m: ShadingMode) -> &'static str {
         ShadingMode::Gouraud => "Gouraud: lit at the vertices, colour interpolated",
         ShadingMode::Phong => "Phong shading: normals interpolated and renormalized, lit per pixel",
     }
-}
-
-/// What the current pipeline and scene simulate, in words.
-fn effects(scene: &Scene, s: &RenderSettings) -> Vec<String> {
-    let mut out = vec![shading_meaning(s.shading).to_string()];
-    out.push(match s.specular {
-        SpecularModel::Phong => "Phong specular (V·R)^h".into(),
-        SpecularModel::CookTorrance => {
-            "Cook–Torrance specular: Beckmann D(m), min() G, exact Fresnel per channel".into()
-        }
-    });
-    out.push("Lambert diffuse with own shadow (N·L ≤ 0: ambient only)".into());
-    let dir = scene.lights.iter().filter(|l| l.kind == LightKind::Directional).count();
-    let point: Vec<_> = scene.lights.iter().filter(|l| l.kind == LightKind::Point).collect();
-    if dir > 0 {
-        out.push(format!("{dir} directional light(s)"));
-    }
-    if !point.is_empty() {
-        let forms: Vec<_> = point
-            .iter()
-            .map(|l| match l.falloff_form {
-                FalloffForm::Quadratic if l.falloff_alpha > 0.0 => format!("1/(1+{}d²)", l.falloff_alpha),
-                FalloffForm::Quadratic => "no falloff (α = 0)".to_string(),
-                FalloffForm::Linear => format!("1/(d+{})", l.d0),
-            })
-            .collect();
-        out.push(format!("{} point light(s): {}", point.len(), forms.join(", ")));
-    }
-    if scene.ambient.iter().any(|a| *a > 0.0) {
-        out.push("ambient term I_amb·r_a·C".into());
-    }
-    out
 }

@@ -285,3 +285,47 @@ fn bench_accuracy_quick_is_well_formed_and_orders_the_modes() {
         assert!(colours.len() > 50, "{png}: {} colours", colours.len());
     }
 }
+
+/// `render --explain` lists every decision with its reason; `bench effects` measures the
+/// specialized, uber and floor pipelines side by side.
+#[test]
+fn explain_and_bench_effects() {
+    let png = out_dir().join("explain.png");
+    let o = shadelab(&[
+        "render",
+        "--explain",
+        "--scene",
+        "sphere",
+        "--light",
+        "directional",
+        "--specular",
+        "phong",
+        "--width",
+        "32",
+        "--height",
+        "18",
+        "--output",
+        png.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let text = String::from_utf8_lossy(&o.stdout);
+    for needle in [
+        "pipeline [diffuse+phong+ambient+dir]",
+        "point lights: off — 0 in the scene",
+        "Cook–Torrance specular: off — the specular model is phong",
+        "absorption: off — nothing transmits",
+    ] {
+        assert!(text.contains(needle), "missing '{needle}' in:\n{text}");
+    }
+    let o = shadelab(&["bench", "effects", "--frames", "2", "--warmup", "1", "--width", "64", "--height", "36"]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let text = String::from_utf8_lossy(&o.stdout);
+    for shading in ["flat", "gouraud", "phong"] {
+        for pipeline in ["specialized", "uber", "without Cook–Torrance specular", "without point lights"] {
+            assert!(
+                text.lines().any(|l| l.contains(&format!("| default | {shading} | {pipeline} |"))),
+                "no row {shading}/{pipeline} in:\n{text}"
+            );
+        }
+    }
+}

@@ -155,8 +155,16 @@ case("normal-count-mismatch.gltf", "3 normals for 8 positions", "3 NORMALs for 8
          d["meshes"][0]["primitives"][0]["attributes"].update(NORMAL=2))))
 case("zero-quaternion.gltf", "a node rotation of (0, 0, 0, 0)", "node 0: rotation",
      edited(lambda d: d["nodes"][0].update(rotation=[0, 0, 0, 0])))
-case("infinite-translation.gltf", "a translation of 1e39 (infinite as f32)", "node 0: transform is not finite",
+case("infinite-translation.gltf", "a translation of 1e39 (beyond f32)", "invalid glTF JSON: number out of range",
      edited(lambda d: d["nodes"][0].update(translation=[1e39, 0, 0])))
+
+
+def overflow(d):
+    d["nodes"] = [{"scale": [1e38, 1e38, 1e38], "children": [i + 1]} for i in range(9)] + [{"mesh": 0}]
+
+
+case("overflowing-hierarchy.gltf", "nine nested scales of 1e38: the world transform overflows f64",
+     "node 8: its world transform is not finite", edited(overflow))
 case("material-out-of-range.gltf", "a primitive naming material 4 of none",
      "mesh 0 primitive 0: material 4 does not exist (the file has 0)",
      edited(lambda d: d["meshes"][0]["primitives"][0].update(material=4)))

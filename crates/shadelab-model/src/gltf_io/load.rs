@@ -44,7 +44,7 @@ const THICKNESS: ParamRange = ParamRange { flag: "d", symbol: "d", meaning: "thi
 /// Read a scene file (`.gltf` or `.glb`; external buffers relative to the file's folder).
 pub fn load_scene(path: &Path) -> Result<LoadedScene, GltfError> {
     let file = path.display().to_string();
-    let bytes = std::fs::read(path).map_err(|source| GltfError::Read { file: file.clone(), source })?;
+    let bytes = std::fs::read(path).map_err(|error| GltfError::Read { file: file.clone(), error })?;
     load_scene_from_bytes(&bytes, &file, Some(path.parent().unwrap_or(Path::new("."))))
 }
 
@@ -761,7 +761,19 @@ impl<'a> Reader<'a> {
         let node = &self.root.nodes[ni];
         let name = node.name.clone().unwrap_or_else(|| self.file_meshes[mesh_i].0.name.clone());
         let name = if self.root.meshes[mi].primitives.len() > 1 { format!("{name} #{pi}") } else { name };
-        let (shape, tessellation, transform) = match (decompose(world), analytic) {
+        let exact = self.exact_transform(ni)?;
+        let decomposed = decompose(world).map(|t| match exact {
+            Some(e)
+                if agrees(e.translation, t.translation)
+                    && agrees(e.scale, t.scale)
+                    && agrees(DVec3::splat(e.rotation_y.sin()), DVec3::splat(t.rotation_y.sin()))
+                    && agrees(DVec3::splat(e.rotation_y.cos()), DVec3::splat(t.rotation_y.cos())) =>
+            {
+                e
+            }
+            _ => t,
+        });
+        let (shape, tessellation, transform) = match (decomposed, analytic) {
             (Some(t), Some((shape, tess))) => (shape, tess, t),
             (Some(t), None) => {
                 let entry = &mut self.file_meshes[mesh_i];
@@ -782,6 +794,21 @@ impl<'a> Reader<'a> {
         };
         scene.objects.push(Object { name, shape, tessellation, transform, material });
         Ok(())
+    }
+
+    /// The exact transform shadelab wrote in a node's `extras.shadelab`, if any.
+    fn exact_transform(&self, ni: usize) -> Result<Option<Transform>, GltfError> {
+        let what = format!("node {ni}");
+        let Some(ex) = shadelab_extras(&self.cx, &self.root.nodes[ni].extras, &what)? else { return Ok(None) };
+        let e = Extras { cx: &self.cx, what: &what, ex: &ex };
+        let rotation_y = match ex.get("rotation_y") {
+            Some(v) => Some(v.as_f64().ok_or_else(|| e.bad("rotation_y", v, "a number"))?),
+            None => None,
+        };
+        Ok(match (e.vec3("translation")?, rotation_y, e.vec3("scale")?) {
+            (Some(translation), Some(rotation_y), Some(scale)) => Some(Transform { translation, rotation_y, scale }),
+            _ => None,
+        })
     }
 
     fn material(&self, i: usize, m: &json::Material) -> Result<Material, GltfError> {
@@ -894,6 +921,16 @@ impl<'a> Reader<'a> {
             if let Some(f) = e.named::<FalloffForm>("falloff_form")? {
                 light.falloff_form = f;
             }
+            if let Some(p) = e.vec3("position")?
+                && agrees(p, light.position)
+            {
+                light.position = p;
+            }
+            if let Some(d) = e.vec3("direction")?
+                && agrees(d, light.direction)
+            {
+                light.direction = d;
+            }
         }
         Ok(light)
     }
@@ -936,9 +973,26 @@ impl<'a> Reader<'a> {
         let depth = (center - eye).dot(forward).max(radius * 0.1).max(1e-3);
         let mut camera =
             Camera { eye, target: eye + forward * depth, up: up_node.normalize(), fov_y_deg: fov, near, far };
-        // The orbit pivot and up vector shadelab wrote, when they still agree with the node.
+        // The exact eye, the orbit pivot and the up vector shadelab wrote, when they still agree
+        // with the node.
         if let Some(ex) = shadelab_extras(&self.cx, &c.extras, &what)? {
             let e = Extras { cx: &self.cx, what: &what, ex: &ex };
+            if let Some(eye) = e.vec3("eye")?
+                && agrees(eye, camera.eye)
+            {
+                camera.eye = eye;
+            }
+            for (key, field) in
+                [("fov_y_deg", &mut camera.fov_y_deg), ("near", &mut camera.near), ("far", &mut camera.far)]
+            {
+                if let Some(v) = ex.get(key) {
+                    let v = v.as_f64().ok_or_else(|| e.bad(key, v, "a number"))?;
+                    if agrees(DVec3::splat(v), DVec3::splat(*field)) {
+                        *field = v;
+                    }
+                }
+            }
+            let (eye, forward) = (camera.eye, forward);
             if let Some(t) = e.vec3("target")?
                 && (t - eye).length_squared() > 0.0
                 && (t - eye).normalize().dot(forward) > 1.0 - 1e-9
@@ -1071,6 +1125,13 @@ impl Extras<'_> {
         let s = v.as_str().ok_or_else(|| self.bad(key, v, &format!("one of {allowed}")))?;
         T::parse_named(s).map(Some).map_err(|_| self.bad(key, v, &format!("one of {allowed}")))
     }
+}
+
+/// Whether a value shadelab wrote exactly in extras still agrees with what the file's f32
+/// fields say (1e-5 relative: f32 rounding and a few products, not an edit).
+fn agrees(exact: DVec3, from_node: DVec3) -> bool {
+    let scale = 1.0 + exact.abs().max_element().max(from_node.abs().max_element());
+    (exact - from_node).abs().max_element() <= 1e-5 * scale && exact.is_finite()
 }
 
 /// The model's transform (scale, then rotation about y, then translation) equal to `m`, if

@@ -97,8 +97,8 @@ pub struct LoadedScene {
 #[derive(Debug, thiserror::Error)]
 pub enum GltfError {
     /// The file cannot be read.
-    #[error("{file}: cannot read: {source}")]
-    Read { file: String, source: std::io::Error },
+    #[error("{file}: cannot read: {error}")]
+    Read { file: String, error: std::io::Error },
     /// Not glTF at all, a broken GLB container or broken JSON.
     #[error("{file}: {detail}")]
     Format { file: String, detail: String },
@@ -113,8 +113,8 @@ pub enum GltfError {
     #[error("{file}: {detail}")]
     TooLarge { file: String, detail: String },
     /// The file cannot be written.
-    #[error("{file}: cannot write: {source}")]
-    Write { file: String, source: std::io::Error },
+    #[error("{file}: cannot write: {error}")]
+    Write { file: String, error: std::io::Error },
 }
 
 /// The chapter's `m` from glTF's perceptual roughness (see the module's table).

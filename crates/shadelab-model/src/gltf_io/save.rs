@@ -27,7 +27,7 @@ const TRIANGLES: u32 = 4;
 pub fn save_scene(scene: &Scene, settings: &SceneSettings, path: &Path) -> Result<(), GltfError> {
     let glb = path.extension().is_some_and(|e| e.eq_ignore_ascii_case("glb"));
     let bytes = if glb { scene_to_glb(scene, settings) } else { scene_to_gltf_json(scene, settings).into_bytes() };
-    std::fs::write(path, bytes).map_err(|source| GltfError::Write { file: path.display().to_string(), source })
+    std::fs::write(path, bytes).map_err(|error| GltfError::Write { file: path.display().to_string(), error })
 }
 
 /// The scene as `.gltf` JSON text with an embedded buffer.
@@ -111,6 +111,10 @@ fn document(scene: &Scene, settings: &SceneSettings) -> (Value, Vec<u8>) {
             "translation": vec3(t.translation),
             "rotation": quat(DQuat::from_rotation_y(t.rotation_y)),
             "scale": vec3(t.scale),
+            // The exact f64 transform (the node's fields are read as f32); used when it agrees.
+            "extras": { "shadelab": {
+                "translation": vec3(t.translation), "rotation_y": num(t.rotation_y), "scale": vec3(t.scale),
+            } },
         }));
     }
     let mut extensions_used = Vec::new();
@@ -134,7 +138,11 @@ fn document(scene: &Scene, settings: &SceneSettings) -> (Value, Vec<u8>) {
             "aspectRatio": num(COMPOSED_ASPECT),
         },
         // The orbit pivot and the up vector: the node's rotation alone does not keep them.
-        "extras": { "shadelab": { "target": vec3(c.target), "up": vec3(c.up) } },
+        // and the exact eye (the node's fields are read as f32).
+        "extras": { "shadelab": {
+            "eye": vec3(c.eye), "target": vec3(c.target), "up": vec3(c.up),
+            "fov_y_deg": num(c.fov_y_deg), "near": num(c.near), "far": num(c.far),
+        } },
     }]);
 
     let mut lights = Vec::new();
@@ -324,6 +332,9 @@ fn light(l: &Light) -> Value {
             "alpha": num(l.falloff_alpha),
             "falloff_form": l.falloff_form.name(),
             "d0": num(l.d0),
+            // Exact placement (the node's fields are read as f32); used when it agrees.
+            "position": vec3(l.position),
+            "direction": vec3(l.direction),
         } },
     })
 }

@@ -120,6 +120,8 @@ fn every_builtin_scene_round_trips_through_gltf_and_glb() {
         for bytes in [scene_to_gltf_json(&scene, &settings).into_bytes(), scene_to_glb(&scene, &settings)] {
             let back = load(&bytes);
             assert_same_scene(&scene, &back.scene);
+            // The extras carry every f64 exactly, so the scene comes back equal, bit for bit.
+            assert_eq!(back.scene, scene, "{name}");
             assert_eq!(back.settings, settings);
             assert!(back.warnings.is_empty(), "{name}: {:?}", back.warnings);
             // Analytic shapes come back analytic: the same tessellation, no stored mesh.
@@ -392,6 +394,10 @@ fn shipped_assets_match_their_generators() {
         let loaded = load_scene(&path).unwrap_or_else(|e| panic!("{e}"));
         let want = (a.scene)();
         assert_same_scene(&want, &loaded.scene);
+        assert_eq!(loaded.scene.camera, want.camera, "{}", a.file);
+        assert_eq!(loaded.scene.lights, want.lights, "{}", a.file);
+        assert_eq!(loaded.scene.objects, want.objects, "{}", a.file);
+        assert_eq!(loaded.scene, want, "{}", a.file);
         assert_eq!(loaded.settings, a.settings, "{}", a.file);
         assert!(loaded.warnings.is_empty(), "{}: {:?}", a.file, loaded.warnings);
         let size = std::fs::metadata(&path).unwrap().len();

@@ -210,7 +210,7 @@ pub fn scene_and_settings(args: &SceneArgs) -> Result<(Scene, SceneSettings), Fa
     };
     let (mut scene, settings) = match Scene::builtin(name) {
         Some(s) => (s, SceneSettings::default()),
-        None if is_file => {
+        None if is_file && std::path::Path::new(name).exists() => {
             let loaded = gltf_io::load_scene(std::path::Path::new(name)).map_err(|e| Failure::Usage(e.to_string()))?;
             for w in &loaded.warnings {
                 log::warn!("{name}: {w}");
@@ -221,7 +221,10 @@ pub fn scene_and_settings(args: &SceneArgs) -> Result<(Scene, SceneSettings), Fa
             return Err(ParamError::Unknown {
                 flag: "--scene".into(),
                 value: name.clone(),
-                allowed: format!("{}, or a .gltf/.glb file", shadelab_model::scene::BUILTIN_SCENES.join(", ")),
+                allowed: format!(
+                    "{}, or an existing .gltf/.glb file",
+                    shadelab_model::scene::BUILTIN_SCENES.join(", ")
+                ),
             }
             .into());
         }

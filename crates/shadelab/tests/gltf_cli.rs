@@ -1,0 +1,92 @@
+//! glTF scenes through the `shadelab` binary: `--scene FILE`, `--save-scene`, the file's shading
+//! and specular choice, and bad files exiting 2 with one line (on lavapipe, like `tests/cli.rs`).
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+fn shadelab(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_shadelab"))
+        .args(args)
+        .current_dir(project_root())
+        .env("SHADELAB_ADAPTER", "lavapipe")
+        .output()
+        .expect("run shadelab")
+}
+
+fn project_root() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../..")
+}
+
+fn out(name: &str) -> String {
+    let d = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("gltf-cli");
+    std::fs::create_dir_all(&d).unwrap();
+    d.join(name).to_str().unwrap().to_string()
+}
+
+fn ok(o: &Output) {
+    assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stderr));
+}
+
+fn error_lines(o: &Output) -> Vec<String> {
+    String::from_utf8_lossy(&o.stderr).lines().filter(|l| l.starts_with("error:")).map(String::from).collect()
+}
+
+const SIZE: [&str; 4] = ["--width", "160", "--height", "90"];
+
+#[test]
+fn saved_scene_renders_pixel_identical_with_its_recorded_modes() {
+    let (a, b, scene) = (out("a.png"), out("b.png"), out("saved.gltf"));
+    let mut args = vec!["render", "--shading", "gouraud", "--specular", "phong", "--m", "0.1", "--light", "point"];
+    args.extend(SIZE);
+    args.extend(["--output", &a, "--save-scene", &scene]);
+    ok(&shadelab(&args));
+    // No --shading/--specular: the file's (gouraud, phong) are used.
+    let mut args = vec!["render", "--scene", &scene];
+    args.extend(SIZE);
+    args.extend(["--output", &b]);
+    ok(&shadelab(&args));
+    assert!(std::fs::read(&a).unwrap() == std::fs::read(&b).unwrap(), "the reloaded scene renders differently");
+    // A flag still wins over the file.
+    let c = out("c.png");
+    let mut args = vec!["render", "--scene", &scene, "--shading", "flat"];
+    args.extend(SIZE);
+    args.extend(["--output", &c]);
+    ok(&shadelab(&args));
+    assert!(std::fs::read(&a).unwrap() != std::fs::read(&c).unwrap(), "--shading flat was ignored");
+}
+
+#[test]
+fn shipped_assets_and_glb_render() {
+    for scene in ["assets/figure-7-3-pyramid.gltf", "assets/gouraud-vs-phong.gltf", "assets/material-board.gltf"] {
+        let png = out("asset.png");
+        let glb = out("asset.glb");
+        let mut args = vec!["render", "--scene", scene, "--output", &png, "--save-scene", &glb];
+        args.extend(SIZE);
+        ok(&shadelab(&args));
+        let mut args = vec!["render", "--scene", &glb, "--output", &png];
+        args.extend(SIZE);
+        ok(&shadelab(&args));
+    }
+}
+
+#[test]
+fn bad_scene_files_exit_2_with_one_line() {
+    let png = out("bad.png");
+    let cases: &[(&str, &str)] = &[
+        ("tests/gltf-corpus/index-past-vertex-count.gltf", "mesh 0 primitive 0: index 17 is past the vertex count 8"),
+        ("tests/gltf-corpus/huge-count.gltf", "1000000000 elements of 12 bytes"),
+        ("tests/gltf-corpus/wrong-magic.glb", "not a glTF file"),
+        ("tests/gltf-corpus/missing-external-buffer.gltf", "cannot read 'missing.bin'"),
+        ("no-such-scene.glb", "--scene: unknown value 'no-such-scene.glb'"),
+    ];
+    for (scene, needle) in cases {
+        let o = shadelab(&["render", "--scene", scene, "--output", &png]);
+        assert_eq!(o.status.code(), Some(2), "{scene}: {}", String::from_utf8_lossy(&o.stderr));
+        let lines = error_lines(&o);
+        assert_eq!(lines.len(), 1, "{scene}: {lines:?}");
+        assert!(lines[0].contains(needle), "{scene}: {}", lines[0]);
+    }
+    let o = shadelab(&["render", "--output", &png, "--save-scene", &out("scene.obj")]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(error_lines(&o)[0].contains("--save-scene") && error_lines(&o)[0].contains(".gltf, .glb"));
+}

@@ -5,7 +5,7 @@
 //! It does not call the crate's `validate()` nor `gltf::import`: in gltf 1.4.1 the validation
 //! hook of a primitive indexes `root.accessors[...]` unchecked (an out-of-range `POSITION`
 //! accessor panics), and `import` reads every buffer and image at its declared size. Bad input
-//! is an [`GltfError`], one line that starts with the file's name, never a panic.
+//! is a [`GltfError`], one line that starts with the file's name, never a panic.
 //!
 //! **Writing** ([`save_scene`]) stores every object as a triangle mesh with normals, the
 //! materials as glTF PBR fields that approximate the model, the lights as `KHR_lights_punctual`
@@ -25,11 +25,30 @@
 //! | — | `r_s = r_d = r_a = 1` | glTF's base colour is already the whole albedo; with `I_L = E/π` (below) `r_d·C·(N·L)·I_L` is glTF's Lambert `(C/π)·E·(N·L)` |
 //!
 //! Lights: `I_L = intensity/π` (lux for directional lights, candela for point lights, so a white
-//! Lambert face facing a light of π lux shows 1, as in glTF viewers); a point light's falloff is
-//! `1/(1 + α d²)` with `α = max(1, RANGE_ALPHA_K/range²)`: `α = 1` is the inverse square beyond
-//! about one unit (glTF's `1/d²`) yet finite at `d = 0`; a short `range` raises α so that the light
-//! has fallen to 1 % at its range (glTF cuts it off there). A spot light is read as a point light
-//! at its position, with a warning: the model has no cone.
+//! Lambert face facing a light of π lux shows 1, as in glTF viewers). A point light's falloff is
+//! `1/(1 + α d²)` with `α = 1` (`POINT_FALLOFF_ALPHA`): glTF's inverse square beyond about one
+//! unit, yet finite at `d = 0`. glTF's `range` (a cut-off) has no counterpart in the model: it is
+//! ignored with a warning. A spot light is read as a point light at its position, with the warning
+//! "spot cone not rendered, treated as point light". More than `MAX_LIGHTS` lights: the first are
+//! kept, with a warning; none: a default directional light, with a warning. Saving runs the
+//! mapping backwards (`intensity = I_L·π`, divided by α for a quadratic point light so that the
+//! far field agrees) and writes the exact `I_L`, colour, α, falloff form and d0 in the light's
+//! `extras.shadelab`.
+//!
+//! ## `extras.shadelab`
+//!
+//! | where | keys |
+//! |---|---|
+//! | material | `C`, `m`, `h` (number or `"mirror"`), `mu`, `r_s`, `r_d`, `r_a`, `t`, `a`, `d` |
+//! | `KHR_lights_punctual` light | `I_L`, `color`, `alpha`, `falloff_form` (`quadratic`/`linear`), `d0`, `position`, `direction` |
+//! | scene | `ambient` (`I_amb`), `shading`, `specular` |
+//! | mesh | `shape`, `tessellation` (an analytic shape; loaded back as it when the triangles still match) |
+//! | node | `translation`, `rotation_y`, `scale` (exact f64 transform) |
+//! | camera | `eye`, `target` (orbit pivot), `up`, `fov_y_deg`, `near`, `far` |
+//!
+//! Every key is optional and range-checked like the command line's flags; a value out of range is
+//! an error. Placement values (node, light position/direction, camera) are used only when they
+//! agree with the file's own f32 fields within 1e-5 (an edited file keeps its edit).
 
 mod load;
 mod save;
@@ -60,11 +79,8 @@ pub const DEFAULT_AMBIENT: [f64; 3] = [0.12; 3];
 /// glTF's default index of refraction (`KHR_materials_ior`): `((1.5 − 1)/(1.5 + 1))² = 0.04`.
 pub const DEFAULT_IOR: f64 = 1.5;
 
-/// `1/(1 + α·range²)` is `1/(1 + RANGE_ALPHA_K)` = 1 % at a point light's glTF `range`.
-pub const RANGE_ALPHA_K: f64 = 99.0;
-
-/// Falloff `α` of a glTF point light without a short range: `1/(1 + d²)` ≈ glTF's `1/d²` beyond
-/// about one unit, and finite at the light.
+/// Falloff `α` of a glTF point light: `1/(1 + d²)` ≈ glTF's `1/d²` beyond about one unit, and
+/// finite at the light.
 pub const POINT_FALLOFF_ALPHA: f64 = 1.0;
 
 /// Smallest `KHR_materials_volume` attenuation colour channel used: `c = 0` would make `a`

@@ -563,3 +563,18 @@ fn unsupported_optional_extensions_and_textures_are_warnings() {
         "{w}"
     );
 }
+
+#[test]
+fn reference_ray_caster_sees_file_meshes() {
+    // A cube as a file mesh (baked under a tilt, so it is a `Shape::Mesh`), framed by the loader.
+    let mut scene = Scene::builtin("cube").unwrap();
+    scene.objects[1].transform.rotation_y = 0.3;
+    let mut doc: Value = serde_json::from_str(&scene_to_gltf_json(&scene, &SceneSettings::default())).unwrap();
+    doc["nodes"][1]["rotation"] = json!([0.2, 0.0, 0.0, 0.98]);
+    let s = load(&serde_json::to_vec(&doc).unwrap()).scene;
+    assert!(matches!(s.objects[1].shape, Shape::Mesh(_)));
+    let img = crate::reference::render_reference(&s, SpecularModel::CookTorrance, 64, 36);
+    let seen = img.object.iter().filter(|o| **o == Some(1)).count();
+    assert!(seen > 50, "the mesh covers {seen} pixels");
+    assert!(img.pixels.iter().all(|p| p.iter().all(|c| c.is_finite() && *c >= 0.0)));
+}

@@ -110,8 +110,11 @@ case("inf-position.gltf", "an infinite vertex position", "mesh 0 primitive 0: PO
 case("huge-count.gltf", "an accessor declaring 10^9 vertices over 96 bytes",
      "1000000000 elements of 12 bytes from offset 0 need 12000000000 bytes",
      edited(lambda d: d["accessors"][0].update(count=1000000000)))
-case("huge-buffer.gltf", "a buffer declaring 10^12 bytes with 108 bytes of data",
-     "buffer 0: byteLength 1000000000000 but its data: URI holds 108 bytes",
+case("huge-buffer.gltf", "a buffer declaring 10^8 bytes with 108 bytes of data",
+     "buffer 0: byteLength 100000000 but its data: URI holds 108 bytes",
+     embed(*base_parts(), byte_length=10**8))
+case("buffer-over-limit.gltf", "a buffer declaring 10^12 bytes, more than any scene can use",
+     "buffer 0: byteLength 1000000000000 is more than the limit of 1073741824 (MAX_FILE_BYTES)",
      embed(*base_parts(), byte_length=10**12))
 
 

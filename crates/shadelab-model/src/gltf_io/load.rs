@@ -3,7 +3,7 @@
 //! is a named constant (see the module's parent).
 
 use super::{
-    DEFAULT_AMBIENT, DEFAULT_IOR, GltfError, LoadedScene, MAX_NODE_DEPTH, MAX_OBJECTS, MAX_TRIANGLES,
+    DEFAULT_AMBIENT, DEFAULT_IOR, GltfError, LoadedScene, MAX_FILE_BYTES, MAX_NODE_DEPTH, MAX_OBJECTS, MAX_TRIANGLES,
     POINT_FALLOFF_ALPHA, SceneSettings, dielectric_f0, h_from_m, m_from_roughness,
 };
 use crate::brdf::safe_normalize;
@@ -44,7 +44,17 @@ const THICKNESS: ParamRange = ParamRange { flag: "d", symbol: "d", meaning: "thi
 /// Read a scene file (`.gltf` or `.glb`; external buffers relative to the file's folder).
 pub fn load_scene(path: &Path) -> Result<LoadedScene, GltfError> {
     let file = path.display().to_string();
-    let bytes = std::fs::read(path).map_err(|error| GltfError::Read { file: file.clone(), error })?;
+    let read = |error| GltfError::Read { file: file.clone(), error };
+    let f = std::fs::File::open(path).map_err(read)?;
+    let len = f.metadata().map_err(read)?.len();
+    if len > MAX_FILE_BYTES {
+        return Err(GltfError::TooLarge {
+            file: file.clone(),
+            detail: format!("{len} bytes are more than the limit of {MAX_FILE_BYTES} (MAX_FILE_BYTES)"),
+        });
+    }
+    let mut bytes = Vec::with_capacity(len as usize);
+    f.take(MAX_FILE_BYTES).read_to_end(&mut bytes).map_err(read)?;
     load_scene_from_bytes(&bytes, &file, Some(path.parent().unwrap_or(Path::new("."))))
 }
 
@@ -191,6 +201,11 @@ fn load_buffers<'a>(
     let mut out = Vec::with_capacity(root.buffers.len());
     for (i, b) in root.buffers.iter().enumerate() {
         let declared = b.byte_length.0;
+        if declared > MAX_FILE_BYTES {
+            return Err(cx.too_large(format!(
+                "buffer {i}: byteLength {declared} is more than the limit of {MAX_FILE_BYTES} (MAX_FILE_BYTES)"
+            )));
+        }
         let data: Cow<[u8]> = match b.uri.as_deref() {
             None => {
                 let bin = bin.filter(|_| i == 0).ok_or_else(|| {

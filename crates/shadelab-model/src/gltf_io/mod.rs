@@ -65,6 +65,11 @@ use crate::scene::Scene;
 /// or hostile file (u8 indices can name 48 bytes of corners per 3 bytes of file) than a scene.
 pub const MAX_TRIANGLES: usize = 2_000_000;
 
+/// Largest scene file or buffer read: 1 GiB. `MAX_TRIANGLES` triangles need at most ~170 MB
+/// (3 corners × (12 bytes of position + 12 of normal + 4 of index)), so a larger buffer cannot be
+/// used, and reading it would only spend memory and time.
+pub const MAX_FILE_BYTES: u64 = 1 << 30;
+
 /// Most objects (mesh instances × primitives): each is one draw call and one 256-byte uniform
 /// slot, so 16384 objects are 4 MiB of uniforms.
 pub const MAX_OBJECTS: usize = 16_384;

@@ -126,6 +126,8 @@ pub struct Viewer {
     pub show_live_numbers: bool,
     shader_stamp: Option<std::time::SystemTime>,
     difference: DifferenceView,
+    /// The panel's file path field (open / save scene).
+    pub file_field: String,
 }
 
 impl Viewer {
@@ -169,6 +171,7 @@ impl Viewer {
             shader_stamp: None,
             show_live_numbers: true,
             difference: DifferenceView::default(),
+            file_field: String::new(),
         })
     }
 
@@ -225,15 +228,65 @@ impl Viewer {
     fn load_scene(&mut self, name: &str) {
         match Scene::builtin(name) {
             Some(s) => {
-                self.gpu_scene = self.renderer.upload(&s);
-                self.base_camera = s.camera;
-                self.orbit = Orbit::from_camera(&s.camera);
-                self.selected_material = s.objects.get(1).map_or(0, |o| o.material);
-                self.scene = s;
-                self.scene_name = name.into();
+                self.show_scene(s, name);
                 self.message = None;
             }
             None => self.message = Some((format!("unknown scene '{name}'"), true)),
+        }
+    }
+
+    fn show_scene(&mut self, s: Scene, name: &str) {
+        self.gpu_scene = self.renderer.upload(&s);
+        self.base_camera = s.camera;
+        self.orbit = Orbit::from_camera(&s.camera);
+        self.selected_material = s.objects.get(1).map_or(0, |o| o.material);
+        self.scene = s;
+        self.scene_name = name.into();
+    }
+
+    /// Open a glTF 2.0 file (the path field, or a file dropped on the window). A bad file leaves
+    /// the current scene as it is and shows the loader's one-line error.
+    pub fn open_file(&mut self, path: &std::path::Path) {
+        match shadelab_model::gltf_io::load_scene(path) {
+            Ok(loaded) => {
+                if let Some(m) = loaded.settings.shading {
+                    self.settings.shading = m;
+                }
+                if let Some(m) = loaded.settings.specular {
+                    self.settings.specular = m;
+                }
+                let mut text = format!("opened {}", path.display());
+                for w in &loaded.warnings {
+                    text.push_str(&format!("\nwarning: {w}"));
+                }
+                self.show_scene(loaded.scene, &path.display().to_string());
+                self.message = Some((text, false));
+            }
+            Err(e) => self.message = Some((e.to_string(), true)),
+        }
+    }
+
+    /// Write the scene as shown (parameters, camera, shading mode, specular model) to a glTF file.
+    pub fn save_scene(&mut self, path: &std::path::Path) {
+        let settings = shadelab_model::gltf_io::SceneSettings {
+            shading: Some(self.settings.shading),
+            specular: Some(self.settings.specular),
+        };
+        let mut scene = self.scene.clone();
+        scene.camera = self.orbit.camera(&self.base_camera);
+        self.message = Some(match shadelab_model::gltf_io::save_scene(&scene, &settings, path) {
+            Ok(()) => (format!("saved {}", path.display()), false),
+            Err(e) => (e.to_string(), true),
+        });
+    }
+
+    /// Files dropped on the window are opened (the last one, if several).
+    fn dropped_files(&mut self, ctx: &egui::Context) {
+        let dropped: Vec<PathBuf> = ctx.input(|i| {
+            i.raw.dropped_files.iter().map(|f| f.path().to_path_buf()).filter(|p| !p.as_os_str().is_empty()).collect()
+        });
+        if let Some(p) = dropped.last() {
+            self.open_file(p);
         }
     }
 
@@ -402,6 +455,21 @@ impl Viewer {
         if scene_choice != self.scene_name {
             self.load_scene(&scene_choice);
         }
+        ui.horizontal(|ui| {
+            ui.add(
+                egui::TextEdit::singleline(&mut self.file_field).desired_width(170.0).hint_text("scene.gltf / .glb"),
+            )
+            .on_hover_text("a glTF 2.0 file to open (or drop a file on the window)");
+            if ui.button("open").clicked() {
+                let p = PathBuf::from(self.file_field.trim());
+                self.open_file(&p);
+            }
+            if ui.button("save scene").on_hover_text("write the scene as shown to this .gltf/.glb path").clicked() {
+                let name = self.file_field.trim();
+                let p = if name.is_empty() { PathBuf::from("shadelab-scene.gltf") } else { PathBuf::from(name) };
+                self.save_scene(&p);
+            }
+        });
         ui.horizontal(|ui| {
             ui.label("shading");
             for (i, (name, mode)) in ShadingMode::ALL.iter().enumerate() {
@@ -654,6 +722,7 @@ impl eframe::App for Viewer {
             ctx.request_repaint_after(std::time::Duration::from_millis(500));
         }
         self.keyboard(&ctx);
+        self.dropped_files(&ctx);
         egui::Panel::right("parameters").resizable(true).default_size(340.0).show(ui, |ui| {
             egui::ScrollArea::vertical().show(ui, |ui| self.panel(ui));
         });

@@ -156,3 +156,28 @@ fn difference_from_reference_view() {
     assert_eq!(h.state().settings().shading, ShadingMode::Flat);
     assert!(flat.rmse > phong.rmse * 1.5, "flat {flat:?} vs phong {phong:?}");
 }
+
+/// Opening glTF files in the viewer: a broken file shows the loader's one-line error and keeps
+/// the scene; a good one replaces it; "save scene" writes a file that opens to the same scene.
+#[test]
+fn open_and_save_scene_files() {
+    let mut h = harness();
+    let before = h.state_mut().scene_mut().clone();
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
+    h.state_mut().open_file(&root.join("tests/gltf-corpus/index-past-vertex-count.gltf"));
+    h.run_steps(2);
+    let (msg, is_error) = h.state().message().cloned().expect("a message");
+    assert!(is_error && msg.contains("index-past-vertex-count.gltf") && !msg.contains('\n'), "{msg}");
+    assert_eq!(*h.state_mut().scene_mut(), before, "a bad file leaves the scene as it was");
+    h.state_mut().open_file(&root.join("assets/material-board.gltf"));
+    h.run_steps(2);
+    assert!(!h.state().message().unwrap().1, "{:?}", h.state().message());
+    let board = h.state_mut().scene_mut().clone();
+    assert_ne!(board, before);
+    let out = std::path::PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("viewer-saved.gltf");
+    h.state_mut().save_scene(&out);
+    let saved = shadelab_model::gltf_io::load_scene(&out).expect("saved scene loads");
+    assert_eq!(saved.scene.objects, board.objects);
+    assert_eq!(saved.scene.materials, board.materials);
+    assert_eq!(saved.scene.lights, board.lights);
+}

@@ -1,5 +1,5 @@
 //! The scenes shipped in `assets/` as glTF, made here so that they can be regenerated and
-//! checked: `cargo test --release -p shadelab-model -- --ignored regenerate_assets` writes them,
+//! checked: `UPDATE_ASSETS=1 cargo test --release -p shadelab-model shipped_assets` writes them,
 //! and a normal test loads each file and compares it with its constructor.
 
 use crate::gltf_io::{SceneSettings, h_from_m};

@@ -81,11 +81,10 @@ pub fn build_mesh(triangles: &[[DVec3; 3]], crease_angle_deg: f64) -> Result<Mes
             }
         }
     }
-    let mut mesh = MeshData::default();
-    let mut welded: HashMap<([u32; 3], [u32; 3]), u32> = HashMap::new();
+    let mut mesh = Assembler::default();
     for (ti, t) in triangles.iter().enumerate() {
         let own = normals[ti];
-        let centroid = (t[0] + t[1] + t[2]) / 3.0;
+        let fallback = own.unwrap_or(DVec3::Y);
         for p in t {
             let mut sum = DVec3::ZERO;
             for &g in &around[&key(*p)] {
@@ -96,22 +95,36 @@ pub fn build_mesh(triangles: &[[DVec3; 3]], crease_angle_deg: f64) -> Result<Mes
                     }
                 }
             }
-            let fallback = own.unwrap_or(DVec3::Y);
-            let n = safe_normalize(sum, fallback).as_vec3().to_array();
-            let pos = p.as_vec3().to_array();
-            let idx = *welded.entry((key(*p), n.map(f32::to_bits))).or_insert_with(|| {
-                mesh.smooth_vertices.push(SmoothVertex { position: pos, normal: n });
-                (mesh.smooth_vertices.len() - 1) as u32
-            });
-            mesh.indices.push(idx);
-            mesh.flat_vertices.push(FlatVertex {
-                position: pos,
-                normal: fallback.as_vec3().to_array(),
-                centroid: centroid.as_vec3().to_array(),
-            });
+            mesh.corner(t, *p, safe_normalize(sum, fallback), fallback);
         }
     }
-    Ok(mesh)
+    Ok(mesh.data)
+}
+
+/// Builds a [`MeshData`] corner by corner: smooth vertices welded by position and normal (as
+/// f32, what the GPU sees), one flat vertex per corner.
+#[derive(Default)]
+struct Assembler {
+    data: MeshData,
+    welded: HashMap<([u32; 3], [u32; 3]), u32>,
+}
+
+impl Assembler {
+    /// Corner `p` of triangle `t` with its smooth normal and its face's normal.
+    fn corner(&mut self, t: &[DVec3; 3], p: DVec3, normal: DVec3, face: DVec3) {
+        let (pos, n) = (p.as_vec3().to_array(), normal.as_vec3().to_array());
+        let smooth = &mut self.data.smooth_vertices;
+        let idx = *self.welded.entry((key(p), n.map(f32::to_bits))).or_insert_with(|| {
+            smooth.push(SmoothVertex { position: pos, normal: n });
+            (smooth.len() - 1) as u32
+        });
+        self.data.indices.push(idx);
+        self.data.flat_vertices.push(FlatVertex {
+            position: pos,
+            normal: face.as_vec3().to_array(),
+            centroid: ((t[0] + t[1] + t[2]) / 3.0).as_vec3().to_array(),
+        });
+    }
 }
 
 /// A triangle mesh read from a scene file (`Shape::Mesh(i)` is `Scene::meshes[i]`), in object
@@ -149,28 +162,15 @@ impl TriangleMesh {
 /// non-finite normal is replaced by the face's (guard `NORMALIZE_MIN_LEN2`).
 pub fn build_mesh_with_normals(triangles: &[[DVec3; 3]], normals: &[[DVec3; 3]]) -> Result<MeshData, MeshError> {
     check_finite(triangles)?;
-    let mut mesh = MeshData::default();
-    let mut welded: HashMap<([u32; 3], [u32; 3]), u32> = HashMap::new();
+    let mut mesh = Assembler::default();
     for (t, tn) in triangles.iter().zip(normals.iter().chain(std::iter::repeat(&[DVec3::ZERO; 3]))) {
         let face = face_normal(t).unwrap_or(DVec3::Y);
-        let centroid = (t[0] + t[1] + t[2]) / 3.0;
         for (p, n) in t.iter().zip(tn) {
             let n = if n.is_finite() { safe_normalize(*n, face) } else { face };
-            let n = n.as_vec3().to_array();
-            let pos = p.as_vec3().to_array();
-            let idx = *welded.entry((key(*p), n.map(f32::to_bits))).or_insert_with(|| {
-                mesh.smooth_vertices.push(SmoothVertex { position: pos, normal: n });
-                (mesh.smooth_vertices.len() - 1) as u32
-            });
-            mesh.indices.push(idx);
-            mesh.flat_vertices.push(FlatVertex {
-                position: pos,
-                normal: face.as_vec3().to_array(),
-                centroid: centroid.as_vec3().to_array(),
-            });
+            mesh.corner(t, *p, n, face);
         }
     }
-    Ok(mesh)
+    Ok(mesh.data)
 }
 
 fn check_finite(triangles: &[[DVec3; 3]]) -> Result<(), MeshError> {

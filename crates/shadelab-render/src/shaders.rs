@@ -133,10 +133,10 @@ pub fn entry_points(mode: shadelab_model::ShadingMode) -> (&'static str, &'stati
 pub const BASELINE_ENTRY_POINTS: (&str, &str) = ("vs_baseline", "fs_baseline");
 
 /// The value of `globals.specular_model` (SPECULAR_PHONG or SPECULAR_COOK_TORRANCE) for a model.
-pub fn specular_constant(model: shadelab_model::SpecularModel) -> f64 {
+pub fn specular_constant(model: shadelab_model::SpecularModel) -> u32 {
     match model {
-        shadelab_model::SpecularModel::Phong => 0.0,
-        shadelab_model::SpecularModel::CookTorrance => 1.0,
+        shadelab_model::SpecularModel::Phong => 0,
+        shadelab_model::SpecularModel::CookTorrance => 1,
     }
 }
 
@@ -242,13 +242,12 @@ mod tests {
     fn members_read(module: &naga::Module, info: &naga::valid::ModuleInfo, ep: &str) -> Vec<(String, String)> {
         let mut out = Vec::new();
         let mut visit = |f: &naga::Function, fi: &naga::valid::FunctionInfo| {
-            for (h, e) in f.expressions.iter() {
+            for (_, e) in f.expressions.iter() {
                 if let naga::Expression::AccessIndex { base, index } = *e {
                     let mut ty = fi[base].ty.inner_with(&module.types);
                     if let naga::TypeInner::Pointer { base, .. } = ty {
                         ty = &module.types[*base].inner;
                     }
-                    let _ = h;
                     if let naga::TypeInner::Struct { members, .. } = ty {
                         let name = module.types.iter().find(|(_, t)| &t.inner == ty).and_then(|(_, t)| t.name.clone());
                         if let (Some(n), Some(m)) = (name, members.get(index as usize).and_then(|m| m.name.clone())) {
@@ -370,5 +369,11 @@ mod tests {
             assert_eq!(w as f32, *value as f32, "{name}: WGSL {w} vs Rust {value}");
         }
         assert_eq!(wgsl_constant(&module, "MAX_LIGHTS"), Some(shadelab_model::scene::MAX_LIGHTS as f64));
+        // globals.specular_model is compared with these constants.
+        for (name, model) in
+            [("SPECULAR_PHONG", SpecularModel::Phong), ("SPECULAR_COOK_TORRANCE", SpecularModel::CookTorrance)]
+        {
+            assert_eq!(wgsl_constant(&module, name), Some(specular_constant(model) as f64), "{name}");
+        }
     }
 }

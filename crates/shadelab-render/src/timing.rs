@@ -85,6 +85,38 @@ impl FrameTimer {
     }
 }
 
+impl FrameTimer {
+    /// Time several programs side by side: each is warmed up (at least one frame, which builds
+    /// its pipeline), then `frames` rounds draw every program once, so the machine's noise spreads
+    /// evenly over them. Returns each program's frame times in milliseconds.
+    #[allow(clippy::too_many_arguments)]
+    pub fn interleaved(
+        &self,
+        r: &mut Renderer,
+        gpu_scene: &SceneGpu,
+        scene: &shadelab_model::Scene,
+        target: &Target,
+        programs: &[RenderSettings],
+        frames: usize,
+        warmup: usize,
+    ) -> Vec<Vec<f64>> {
+        for s in programs {
+            r.write_uniforms(gpu_scene, scene, target, s);
+            for _ in 0..warmup.max(1) {
+                self.frame(r, gpu_scene, target, s);
+            }
+        }
+        let mut samples = vec![Vec::with_capacity(frames); programs.len()];
+        for _ in 0..frames {
+            for (i, s) in programs.iter().enumerate() {
+                r.write_uniforms(gpu_scene, scene, target, s);
+                samples[i].push(self.frame(r, gpu_scene, target, s));
+            }
+        }
+        samples
+    }
+}
+
 /// Median of a sample (sorts it).
 pub fn median(v: &mut [f64]) -> f64 {
     if v.is_empty() {

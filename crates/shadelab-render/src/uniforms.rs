@@ -81,7 +81,7 @@ impl GlobalsUniform {
             ambient: rgb(scene.ambient, 1.0),
             light_count: scene.lights.len().min(MAX_LIGHTS) as u32,
             flags,
-            specular_model: crate::shaders::specular_constant(specular) as u32,
+            specular_model: crate::shaders::specular_constant(specular),
             _pad1: 0,
             lights,
         }

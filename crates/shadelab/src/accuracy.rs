@@ -137,7 +137,8 @@ struct Group {
     size: (u32, u32),
 }
 
-fn programs() -> Vec<RenderSettings> {
+/// The baseline, then every shading mode × specular model.
+pub fn programs() -> Vec<RenderSettings> {
     let mut v = vec![RenderSettings::baseline()];
     for shading in ShadingMode::ALL_MODES {
         for specular in SpecularModel::ALL_MODELS {
@@ -183,19 +184,7 @@ pub fn run_plan(gpu: &Gpu, plan: &Plan, command: &str, mut progress: impl FnMut(
         let (w, h) = g.size;
         let gs = r.upload(&g.scene);
         let target = Target::new(&gpu.device, w, h, target::HDR_FORMAT);
-        for s in &programs {
-            r.write_uniforms(&gs, &g.scene, &target, s);
-            for _ in 0..plan.warmup.max(1) {
-                timer.frame(&mut r, &gs, &target, s);
-            }
-        }
-        let mut samples = vec![Vec::with_capacity(plan.frames); programs.len()];
-        for _ in 0..plan.frames {
-            for (i, s) in programs.iter().enumerate() {
-                r.write_uniforms(&gs, &g.scene, &target, s);
-                samples[i].push(timer.frame(&mut r, &gs, &target, s));
-            }
-        }
+        let mut samples = timer.interleaved(&mut r, &gs, &g.scene, &target, &programs, plan.frames, plan.warmup);
         let baseline_ms = median(&mut samples[0]);
         for (i, s) in programs.iter().enumerate() {
             let error = (!s.null_baseline).then(|| {

@@ -22,21 +22,7 @@ pub fn run_render(args: &cli::BenchRenderArgs) -> Result<(), Failure> {
             SpecularModel::ALL_MODELS.into_iter().map(move |specular| RenderSettings::new(shading, specular))
         })
         .collect();
-    // Build every pipeline (one frame at least) and warm up before measuring anything.
-    for s in &combos {
-        r.write_uniforms(&gs, &scene, &target, s);
-        for _ in 0..warmup.max(1) {
-            timer.frame(&mut r, &gs, &target, s);
-        }
-    }
-    // Interleave the combinations frame by frame, so machine noise spreads evenly over them.
-    let mut samples = vec![Vec::with_capacity(frames); combos.len()];
-    for _ in 0..frames {
-        for (i, s) in combos.iter().enumerate() {
-            r.write_uniforms(&gs, &scene, &target, s);
-            samples[i].push(timer.frame(&mut r, &gs, &target, s));
-        }
-    }
+    let mut samples = timer.interleaved(&mut r, &gs, &scene, &target, &combos, frames, warmup);
     println!(
         "# shadelab bench render — scene '{}', {}×{}, {} triangles, {} lights",
         scene.name,
@@ -132,19 +118,8 @@ pub fn run_effects(args: &cli::BenchEffectsArgs) -> Result<(), Failure> {
                     RenderSettings { specialization: Specialization::Fixed(key.without(e)), ..base },
                 ));
             }
-            for (_, s) in &programs {
-                r.write_uniforms(&gs, scene, &target, s);
-                for _ in 0..warmup.max(1) {
-                    timer.frame(&mut r, &gs, &target, s);
-                }
-            }
-            let mut samples = vec![Vec::with_capacity(frames); programs.len()];
-            for _ in 0..frames {
-                for (i, (_, s)) in programs.iter().enumerate() {
-                    r.write_uniforms(&gs, scene, &target, s);
-                    samples[i].push(timer.frame(&mut r, &gs, &target, s));
-                }
-            }
+            let settings: Vec<RenderSettings> = programs.iter().map(|(_, s)| *s).collect();
+            let mut samples = timer.interleaved(&mut r, &gs, scene, &target, &settings, frames, warmup);
             let specialized = median(&mut samples[0]);
             for (i, (name, s)) in programs.iter().enumerate() {
                 r.write_uniforms(&gs, scene, &target, s);

@@ -32,14 +32,12 @@ pub fn program_color(shading: Option<ShadingMode>, specular: Option<SpecularMode
     }
 }
 
+/// The study's programs as (shading, specular), `None` for the baseline.
 fn programs() -> Vec<(Option<ShadingMode>, Option<SpecularModel>)> {
-    let mut v = vec![(None, None)];
-    for s in ShadingMode::ALL_MODES {
-        for p in SpecularModel::ALL_MODELS {
-            v.push((Some(s), Some(p)));
-        }
-    }
-    v
+    crate::accuracy::programs()
+        .into_iter()
+        .map(|s| if s.null_baseline { (None, None) } else { (Some(s.shading), Some(s.specular)) })
+        .collect()
 }
 
 fn label(shading: Option<ShadingMode>, specular: Option<SpecularModel>) -> String {

@@ -389,8 +389,15 @@ fn khronos_box_sample_loads() {
 
 #[test]
 fn shipped_assets_match_their_generators() {
+    // `UPDATE_ASSETS=1` rewrites the files from their constructors first (look at the renders
+    // of every file it changes before committing it), like `UPDATE_GOLDENS`.
+    let update = std::env::var("UPDATE_ASSETS").as_deref() == Ok("1");
     for a in &ASSET_SCENES {
         let path = project_root().join("assets").join(a.file);
+        if update {
+            save_scene(&(a.scene)(), &a.settings, &path).unwrap();
+            eprintln!("wrote {}", path.display());
+        }
         let loaded = load_scene(&path).unwrap_or_else(|e| panic!("{e}"));
         let want = (a.scene)();
         assert_same_scene(&want, &loaded.scene);
@@ -402,17 +409,6 @@ fn shipped_assets_match_their_generators() {
         assert!(loaded.warnings.is_empty(), "{}: {:?}", a.file, loaded.warnings);
         let size = std::fs::metadata(&path).unwrap().len();
         assert!(size < 1_000_000, "{}: {size} bytes", a.file);
-    }
-}
-
-/// Writes `assets/*.gltf` from their constructors (`--ignored regenerate_assets`).
-#[test]
-#[ignore]
-fn regenerate_assets() {
-    for a in &ASSET_SCENES {
-        let path = project_root().join("assets").join(a.file);
-        save_scene(&(a.scene)(), &a.settings, &path).unwrap();
-        println!("wrote {}", path.display());
     }
 }
 

@@ -96,14 +96,12 @@ fn extreme_legal_parameters_and_a_light_touching_the_surface_stay_finite() {
             // One light exactly on the sphere's surface, one at a mesh vertex (the pole).
             scene.lights[0].position = DVec3::new(0.0, 1.0, 1.0);
             scene.lights[1].position = DVec3::new(0.0, 2.0, 0.0);
-            let img =
-                render_image(gpu(), &scene, 160, 90, &RenderSettings::new(shading, specular));
+            let img = render_image(gpu(), &scene, 160, 90, &RenderSettings::new(shading, specular));
             assert_eq!(img.nonfinite_count(), 0, "{shading}/{specular}");
             assert!(img.pixels.iter().all(|p| p.iter().all(|c| *c >= 0.0)), "{shading}/{specular}");
             let mut mirror = scene.clone();
             mirror.apply(&Overrides { h: Some(PhongExponent::Mirror), ..Default::default() });
-            let img =
-                render_image(gpu(), &mirror, 160, 90, &RenderSettings::new(shading, specular));
+            let img = render_image(gpu(), &mirror, 160, 90, &RenderSettings::new(shading, specular));
             assert_eq!(img.nonfinite_count(), 0, "mirror {shading}/{specular}");
         }
     }

@@ -114,7 +114,7 @@ case("huge-buffer.gltf", "a buffer declaring 10^8 bytes with 108 bytes of data",
      "buffer 0: byteLength 100000000 but its data: URI holds 108 bytes",
      embed(*base_parts(), byte_length=10**8))
 case("buffer-over-limit.gltf", "a buffer declaring 10^12 bytes, more than any scene can use",
-     "buffer 0: byteLength 1000000000000 is more than the limit of 1073741824 (MAX_FILE_BYTES)",
+     "buffer 0: byteLength 1000000000000 is more than the limit of 2147483648 (MAX_FILE_BYTES)",
      embed(*base_parts(), byte_length=10**12))
 
 

@@ -30,7 +30,7 @@ fn default_scene_goldens_for_all_six_combinations() {
     let scene = Scene::builtin("default").unwrap();
     for shading in ShadingMode::ALL_MODES {
         for specular in SpecularModel::ALL_MODELS {
-            let img = render_image(gpu(), &scene, GOLDEN_W, GOLDEN_H, &settings(shading, specular));
+            let img = render_image(gpu(), &scene, GOLDEN_W, GOLDEN_H, &settings(shading, specular)).expect("upload");
             assert_eq!(img.nonfinite_count(), 0);
             let stats = check_golden(&format!("default-{shading}-{specular}"), &img, GOLDEN);
             eprintln!("default-{shading}-{specular}: FLIP mean {:.5}, p99 {:.5}", stats.mean, stats.percentile);
@@ -44,7 +44,10 @@ fn the_six_combinations_differ_from_each_other() {
     let mut images = Vec::new();
     for shading in ShadingMode::ALL_MODES {
         for specular in SpecularModel::ALL_MODELS {
-            images.push(((shading, specular), render_image(gpu(), &scene, 240, 135, &settings(shading, specular))));
+            images.push((
+                (shading, specular),
+                render_image(gpu(), &scene, 240, 135, &settings(shading, specular)).expect("upload"),
+            ));
         }
     }
     for (i, (ka, a)) in images.iter().enumerate() {
@@ -92,7 +95,7 @@ fn flat_shows_facet_edges_and_gouraud_smooths_them() {
     let threshold = 0.02;
     let mut counts = Vec::new();
     for shading in ShadingMode::ALL_MODES {
-        let img = render_image(gpu(), &scene, w, h, &settings(shading, SpecularModel::Phong));
+        let img = render_image(gpu(), &scene, w, h, &settings(shading, SpecularModel::Phong)).expect("upload");
         counts.push(discontinuities(&img, &disc, threshold));
     }
     eprintln!(
@@ -115,7 +118,7 @@ fn phong_shading_keeps_the_highlight_that_gouraud_loses() {
         let scene = coarse_sphere(8, 400.0, 0.07);
         let disc = sphere_disc(&scene.camera, DVec3::new(0.0, 1.0, 0.0), 1.0, w, h, 0.95);
         let peak = |shading| {
-            let img = render_image(gpu(), &scene, w, h, &settings(shading, specular));
+            let img = render_image(gpu(), &scene, w, h, &settings(shading, specular)).expect("upload");
             disc.iter().map(|&(x, y)| luminance(img.get(x, y))).fold(0.0f32, f32::max)
         };
         let (gouraud, phong) = (peak(ShadingMode::Gouraud), peak(ShadingMode::Phong));
@@ -148,7 +151,7 @@ fn readback_handles_any_width_with_256_byte_rows() {
 fn extreme_sizes_render() {
     let scene = Scene::builtin("default").unwrap();
     for (w, h) in [(1, 1), (8192, 2), (2, 8192), (333, 77)] {
-        let img = render_image(gpu(), &scene, w, h, &RenderSettings::default());
+        let img = render_image(gpu(), &scene, w, h, &RenderSettings::default()).expect("upload");
         assert_eq!((img.width, img.height, img.pixels.len()), (w, h, (w * h) as usize));
         assert_eq!(img.nonfinite_count(), 0);
     }

@@ -52,7 +52,7 @@ fn phong_shading_of_a_fine_sphere_matches_the_f64_reference() {
     for specular in SpecularModel::ALL_MODELS {
         let scene = single_shape_scene("sphere", Shape::Sphere, 256);
         let settings = RenderSettings::new(ShadingMode::Phong, specular);
-        let gpu_img = render_image(gpu(), &scene, w, h, &settings);
+        let gpu_img = render_image(gpu(), &scene, w, h, &settings).expect("upload");
         let reference = render_reference(&scene, specular, w, h);
         let pixels = interior(&reference, 1);
         assert!(pixels.len() > 5000, "{} sphere pixels", pixels.len());
@@ -96,12 +96,12 @@ fn extreme_legal_parameters_and_a_light_touching_the_surface_stay_finite() {
             // One light exactly on the sphere's surface, one at a mesh vertex (the pole).
             scene.lights[0].position = DVec3::new(0.0, 1.0, 1.0);
             scene.lights[1].position = DVec3::new(0.0, 2.0, 0.0);
-            let img = render_image(gpu(), &scene, 160, 90, &RenderSettings::new(shading, specular));
+            let img = render_image(gpu(), &scene, 160, 90, &RenderSettings::new(shading, specular)).expect("upload");
             assert_eq!(img.nonfinite_count(), 0, "{shading}/{specular}");
             assert!(img.pixels.iter().all(|p| p.iter().all(|c| *c >= 0.0)), "{shading}/{specular}");
             let mut mirror = scene.clone();
             mirror.apply(&Overrides { h: Some(PhongExponent::Mirror), ..Default::default() });
-            let img = render_image(gpu(), &mirror, 160, 90, &RenderSettings::new(shading, specular));
+            let img = render_image(gpu(), &mirror, 160, 90, &RenderSettings::new(shading, specular)).expect("upload");
             assert_eq!(img.nonfinite_count(), 0, "mirror {shading}/{specular}");
         }
     }
@@ -113,11 +113,11 @@ fn debug_view_paints_nonfinite_pixels_magenta() {
     let mut scene = Scene::builtin("sphere").unwrap();
     scene.materials[1].color = [f64::NAN; 3];
     let settings = RenderSettings { debug_nonfinite: true, ..Default::default() };
-    let img = render_image(gpu(), &scene, 160, 90, &settings);
+    let img = render_image(gpu(), &scene, 160, 90, &settings).expect("upload");
     let magenta = img.pixels.iter().filter(|p| p[0] == 1.0 && p[1] == 0.0 && p[2] == 1.0).count();
     assert!(magenta > 500, "{magenta} magenta pixels");
     assert_eq!(img.nonfinite_count(), 0, "the debug view replaces every non-finite pixel");
     // Without the switch the same pixels come out non-finite (the readback keeps them).
-    let img = render_image(gpu(), &scene, 160, 90, &RenderSettings::default());
+    let img = render_image(gpu(), &scene, 160, 90, &RenderSettings::default()).expect("upload");
     assert!(img.nonfinite_count() > 500);
 }

@@ -9,7 +9,9 @@ use crate::brdf::safe_normalize;
 use crate::guards::NORMALIZE_MIN_LEN2;
 use crate::scene::Shape;
 use glam::DVec3;
-use std::collections::HashMap;
+// FxHash: welding hashes every corner (3 per triangle), and SipHash's resistance to chosen keys
+// buys nothing for positions.
+use rustc_hash::FxHashMap as HashMap;
 
 /// Faces whose normals differ by more than this belong to different surfaces (not averaged).
 /// 60° keeps the cube's 90° and the pyramid's 78° edges sharp and smooths a sphere or cylinder of
@@ -68,37 +70,97 @@ fn key(p: DVec3) -> [u32; 3] {
 }
 
 /// Build the smooth and flat meshes of a triangle soup with the crease-angle rule.
+///
+/// Corners that round to the same f32 position are one vertex; the faces around each vertex are
+/// kept as compressed rows (one array for all vertices, no list per vertex), and a vertex's
+/// corners with the same smooth normal share one smooth vertex. At 10⁷ triangles this is a few
+/// flat arrays instead of millions of small allocations.
 pub fn build_mesh(triangles: &[[DVec3; 3]], crease_angle_deg: f64) -> Result<MeshData, MeshError> {
     check_finite(triangles)?;
     let cos_crease = crease_angle_deg.to_radians().cos();
     let normals: Vec<Option<DVec3>> = triangles.iter().map(face_normal).collect();
-    let mut around: HashMap<[u32; 3], Vec<usize>> = HashMap::new();
-    for (ti, t) in triangles.iter().enumerate() {
-        for p in t {
-            let list = around.entry(key(*p)).or_default();
-            if list.last() != Some(&ti) && !list.contains(&ti) {
-                list.push(ti);
-            }
+    // The vertex of each corner (corner c of triangle t is 3t + c).
+    let corner_vertex: Vec<u32> = {
+        let mut ids: HashMap<[u32; 3], u32> = HashMap::default();
+        triangles
+            .iter()
+            .flatten()
+            .map(|p| {
+                let next = ids.len() as u32;
+                *ids.entry(key(*p)).or_insert(next)
+            })
+            .collect()
+    };
+    let vertices = corner_vertex.iter().map(|&v| v as usize + 1).max().unwrap_or(0);
+    // A corner whose vertex an earlier corner of the same triangle already has (a degenerate
+    // triangle): its face is listed once around that vertex.
+    let repeats = |c: usize| (1..=c % 3).any(|k| corner_vertex[c - k] == corner_vertex[c]);
+    // Faces around vertex v: faces[start[v]..start[v + 1]], in triangle order.
+    let mut start = vec![0usize; vertices + 1];
+    for (c, &v) in corner_vertex.iter().enumerate() {
+        if !repeats(c) {
+            start[v as usize + 1] += 1;
         }
     }
-    let mut mesh = Assembler::default();
-    for (ti, t) in triangles.iter().enumerate() {
-        let own = normals[ti];
-        let fallback = own.unwrap_or(DVec3::Y);
-        for p in t {
-            let mut sum = DVec3::ZERO;
-            for &g in &around[&key(*p)] {
-                if let Some(ng) = normals[g] {
-                    // A zero-area face has no surface of its own: it takes every neighbour.
-                    if own.is_none_or(|nf| nf.dot(ng) >= cos_crease) {
-                        sum += ng;
+    for v in 0..vertices {
+        start[v + 1] += start[v];
+    }
+    let mut faces = vec![0u32; start[vertices]];
+    let mut cursor = start.clone();
+    for (c, &v) in corner_vertex.iter().enumerate() {
+        if !repeats(c) {
+            faces[cursor[v as usize]] = (c / 3) as u32;
+            cursor[v as usize] += 1;
+        }
+    }
+    drop(cursor);
+    let mut data = MeshData {
+        smooth_vertices: Vec::with_capacity(vertices),
+        indices: vec![0; corner_vertex.len()],
+        flat_vertices: Vec::with_capacity(corner_vertex.len()),
+    };
+    // Per vertex: each of its corners' smooth normal; corners with the same normal (as f32, what
+    // the GPU sees) share a smooth vertex.
+    let mut made: Vec<([u32; 3], u32)> = Vec::new();
+    for v in 0..vertices {
+        let around = &faces[start[v]..start[v + 1]];
+        made.clear();
+        for &t in around {
+            let t = t as usize;
+            let own = normals[t];
+            let fallback = own.unwrap_or(DVec3::Y);
+            for c in (0..3).filter(|&c| corner_vertex[3 * t + c] as usize == v) {
+                let mut sum = DVec3::ZERO;
+                for &g in around {
+                    if let Some(ng) = normals[g as usize] {
+                        // A zero-area face has no surface of its own: it takes every neighbour.
+                        if own.is_none_or(|nf| nf.dot(ng) >= cos_crease) {
+                            sum += ng;
+                        }
                     }
                 }
+                let n = safe_normalize(sum, fallback).as_vec3().to_array();
+                let bits = n.map(f32::to_bits);
+                let idx = match made.iter().find(|(b, _)| *b == bits) {
+                    Some(&(_, i)) => i,
+                    None => {
+                        let position = triangles[t][c].as_vec3().to_array();
+                        data.smooth_vertices.push(SmoothVertex { position, normal: n });
+                        let i = (data.smooth_vertices.len() - 1) as u32;
+                        made.push((bits, i));
+                        i
+                    }
+                };
+                data.indices[3 * t + c] = idx;
             }
-            mesh.corner(t, *p, safe_normalize(sum, fallback), fallback);
         }
     }
-    Ok(mesh.data)
+    for (t, own) in triangles.iter().zip(&normals) {
+        let normal = own.unwrap_or(DVec3::Y).as_vec3().to_array();
+        let centroid = ((t[0] + t[1] + t[2]) / 3.0).as_vec3().to_array();
+        data.flat_vertices.extend(t.map(|p| FlatVertex { position: p.as_vec3().to_array(), normal, centroid }));
+    }
+    Ok(data)
 }
 
 /// Builds a [`MeshData`] corner by corner: smooth vertices welded by position and normal (as
@@ -128,33 +190,128 @@ impl Assembler {
 }
 
 /// A triangle mesh read from a scene file (`Shape::Mesh(i)` is `Scene::meshes[i]`), in object
-/// space. Stored as a triangle soup, like [`triangles`] gives for the analytic shapes, so that
-/// the same [`build_mesh`] welds it; corner normals are kept when the file has them.
+/// space, indexed as files store it: each vertex once, each triangle three vertex indices. (A
+/// triangle soup of f64 corners and normals would be 144 bytes a triangle; this is about 36 for
+/// a typical closed mesh, which matters at 10⁷ triangles.)
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct TriangleMesh {
     pub name: String,
-    /// Triangles, counter-clockwise seen from the front (glTF 2.0 §3.7.2.1).
-    pub triangles: Vec<[DVec3; 3]>,
-    /// A normal per triangle corner, from the file; `None`: the crease-angle rule makes them.
-    pub normals: Option<Vec<[DVec3; 3]>>,
+    /// Vertex positions.
+    pub positions: Vec<DVec3>,
+    /// A normal per vertex, from the file; `None`: the crease-angle rule makes them.
+    pub normals: Option<Vec<DVec3>>,
+    /// Triangles as indices into `positions` (and `normals`), counter-clockwise seen from the
+    /// front (glTF 2.0 §3.7.2.1). Every index is below `positions.len()` (the loader checks).
+    pub indices: Vec<[u32; 3]>,
 }
 
 impl TriangleMesh {
-    /// The smooth and flat meshes: the file's normals for the smooth vertices when it has them,
-    /// else the crease-angle rule; flat shading always uses the face normal (spec §8).
-    pub fn build(&self) -> Result<MeshData, MeshError> {
-        match &self.normals {
-            Some(n) => build_mesh_with_normals(&self.triangles, n),
-            None => build_mesh(&self.triangles, CREASE_ANGLE_DEG),
+    /// A mesh from a triangle soup (each corner its own vertex), with optional corner normals.
+    pub fn from_soup(name: &str, triangles: &[[DVec3; 3]], normals: Option<&[[DVec3; 3]]>) -> TriangleMesh {
+        TriangleMesh {
+            name: name.into(),
+            positions: triangles.iter().flatten().copied().collect(),
+            normals: normals.map(|n| n.iter().flatten().copied().collect()),
+            indices: (0..triangles.len() as u32).map(|k| [3 * k, 3 * k + 1, 3 * k + 2]).collect(),
         }
     }
 
-    /// Axis-aligned bounds `(min, max)` of the positions, `None` when empty.
-    pub fn bounds(&self) -> Option<(DVec3, DVec3)> {
-        let mut it = self.triangles.iter().flatten();
-        let first = *it.next()?;
-        Some(it.fold((first, first), |(lo, hi), p| (lo.min(*p), hi.max(*p))))
+    pub fn triangle_count(&self) -> usize {
+        self.indices.len()
     }
+
+    /// The corners of triangle `k`.
+    pub fn triangle(&self, k: usize) -> [DVec3; 3] {
+        self.indices[k].map(|i| self.positions[i as usize])
+    }
+
+    /// The file's normals at the corners of triangle `k`, if it has normals.
+    pub fn corner_normals(&self, k: usize) -> Option<[DVec3; 3]> {
+        self.normals.as_ref().map(|n| self.indices[k].map(|i| n[i as usize]))
+    }
+
+    /// Every triangle's corners.
+    pub fn triangles(&self) -> impl ExactSizeIterator<Item = [DVec3; 3]> + '_ {
+        (0..self.indices.len()).map(|k| self.triangle(k))
+    }
+
+    /// The smooth and flat meshes: the file's normals for the smooth vertices when it has them,
+    /// else the crease-angle rule; flat shading always uses the face normal (spec §8).
+    ///
+    /// With normals, the file's vertices are the smooth vertices as they are (no welding: the
+    /// file already shares what it shares). A vertex whose normal is zero or not finite has no
+    /// direction of its own: then every corner takes its own face's normal where needed
+    /// ([`build_mesh_with_normals`], the triangle-soup path).
+    pub fn build(&self) -> Result<MeshData, MeshError> {
+        self.check_finite()?;
+        match &self.normals {
+            Some(_) if self.has_usable_normals() => Ok(MeshData {
+                smooth_vertices: (0..self.positions.len()).map(|i| self.smooth_vertex(i)).collect(),
+                indices: self.indices.iter().flatten().copied().collect(),
+                flat_vertices: (0..self.indices.len()).flat_map(|k| self.flat_corners(k)).collect(),
+            }),
+            Some(_) => {
+                let tris: Vec<[DVec3; 3]> = self.triangles().collect();
+                let normals: Vec<[DVec3; 3]> = (0..self.indices.len()).filter_map(|k| self.corner_normals(k)).collect();
+                build_mesh_with_normals(&tris, &normals)
+            }
+            None => build_mesh(&self.triangles().collect::<Vec<_>>(), CREASE_ANGLE_DEG),
+        }
+    }
+
+    /// True when every vertex has a normal that can be normalized as it is: then the file's
+    /// vertices are the smooth vertices ([`Self::smooth_vertex`]) and a GPU buffer can be written
+    /// piece by piece, without a whole [`MeshData`] in memory.
+    pub fn has_usable_normals(&self) -> bool {
+        self.normals.as_ref().is_some_and(|n| n.len() == self.positions.len() && n.iter().all(|v| usable_normal(*v)))
+    }
+
+    /// Smooth vertex `i`: the file's position and unit normal (needs [`Self::has_usable_normals`]).
+    pub fn smooth_vertex(&self, i: usize) -> SmoothVertex {
+        let n = self.normals.as_ref().map_or(DVec3::Y, |n| n[i]);
+        SmoothVertex {
+            position: self.positions[i].as_vec3().to_array(),
+            normal: safe_normalize(n, DVec3::Y).as_vec3().to_array(),
+        }
+    }
+
+    /// The flat-shading corners of triangle `k`: its face normal and centroid at each corner.
+    pub fn flat_corners(&self, k: usize) -> [FlatVertex; 3] {
+        let t = self.triangle(k);
+        let normal = face_normal(&t).unwrap_or(DVec3::Y).as_vec3().to_array();
+        let centroid = ((t[0] + t[1] + t[2]) / 3.0).as_vec3().to_array();
+        t.map(|p| FlatVertex { position: p.as_vec3().to_array(), normal, centroid })
+    }
+
+    /// The first non-finite position a triangle uses, as an error.
+    pub fn check_finite(&self) -> Result<(), MeshError> {
+        if self.positions.iter().all(|p| p.is_finite()) {
+            return Ok(());
+        }
+        for (ti, t) in self.indices.iter().enumerate() {
+            for (ci, &i) in t.iter().enumerate() {
+                let p = self.positions[i as usize];
+                if !p.is_finite() {
+                    return Err(MeshError::NonFinitePosition { triangle: ti, corner: ci, position: p.to_array() });
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// Axis-aligned bounds `(min, max)` of the positions the triangles use, `None` when there are
+    /// none.
+    pub fn bounds(&self) -> Option<(DVec3, DVec3)> {
+        let mut it = self.indices.iter().flatten().map(|&i| self.positions[i as usize]);
+        let first = it.next()?;
+        Some(it.fold((first, first), |(lo, hi), p| (lo.min(p), hi.max(p))))
+    }
+}
+
+/// A file normal that can be normalized as it is (guard `NORMALIZE_MIN_LEN2`).
+fn usable_normal(n: DVec3) -> bool {
+    let len2 = n.length_squared();
+    len2.is_finite() && len2 > NORMALIZE_MIN_LEN2
 }
 
 /// Build the meshes of a triangle soup whose corner normals are given (a scene file's): smooth
@@ -432,5 +589,50 @@ mod tests {
         assert!(e.to_string().contains("triangle 0, corner 2"), "{e}");
         let t = [[DVec3::ZERO, DVec3::splat(f64::INFINITY), DVec3::Z]];
         assert!(build_mesh(&t, CREASE_ANGLE_DEG).is_err());
+    }
+}
+
+#[cfg(test)]
+mod rule_tests {
+    use super::*;
+
+    /// The crease-angle rule stated directly: the normal at a corner is the normalized sum of the
+    /// normals of every face touching its position that lies within the crease angle of its own
+    /// face (all of them for a zero-area face), each face once.
+    fn rule(tris: &[[DVec3; 3]], t: usize, c: usize) -> [f32; 3] {
+        let cos = CREASE_ANGLE_DEG.to_radians().cos();
+        let own = face_normal(&tris[t]);
+        let mut sum = DVec3::ZERO;
+        for g in tris.iter().filter(|g| g.iter().any(|q| key(*q) == key(tris[t][c]))) {
+            if let Some(ng) = face_normal(g) {
+                if own.is_none_or(|nf| nf.dot(ng) >= cos) {
+                    sum += ng;
+                }
+            }
+        }
+        safe_normalize(sum, own.unwrap_or(DVec3::Y)).as_vec3().to_array()
+    }
+
+    #[test]
+    fn build_mesh_follows_the_rule_and_shares_each_distinct_vertex_once() {
+        let mut cases: Vec<Vec<[DVec3; 3]>> = Shape::ALL.iter().map(|&s| triangles(s, 6)).collect();
+        // A zero-area triangle with two corners at one position, beside a normal one.
+        let (a, b, c) = (DVec3::ZERO, DVec3::X, DVec3::Y);
+        cases.push(vec![[a, b, c], [a, a, b]]);
+        for tris in cases {
+            let m = build_mesh(&tris, CREASE_ANGLE_DEG).unwrap();
+            assert_eq!(m.indices.len(), 3 * tris.len());
+            let mut distinct = std::collections::HashSet::new();
+            for (t, tri) in tris.iter().enumerate() {
+                for c in 0..3 {
+                    let v = m.smooth_vertices[m.indices[3 * t + c] as usize];
+                    assert_eq!(v.position, tri[c].as_vec3().to_array(), "triangle {t} corner {c}");
+                    assert_eq!(v.normal, rule(&tris, t, c), "triangle {t} corner {c}");
+                    distinct.insert((key(tri[c]), v.normal.map(f32::to_bits)));
+                }
+            }
+            assert_eq!(m.smooth_vertices.len(), distinct.len(), "each (position, normal) once");
+            assert_eq!(m.flat_vertices.len(), 3 * tris.len());
+        }
     }
 }

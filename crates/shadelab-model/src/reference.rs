@@ -147,7 +147,8 @@ pub fn intersect_shape(shape: Shape, o: DVec3, dir: DVec3) -> Option<Hit> {
 /// face's winding says (no flipping).
 pub fn intersect_mesh(mesh: &TriangleMesh, o: DVec3, dir: DVec3) -> Option<Hit> {
     let mut best: Option<Hit> = None;
-    for (k, t) in mesh.triangles.iter().enumerate() {
+    for k in 0..mesh.triangle_count() {
+        let t = &mesh.triangle(k);
         let (e1, e2) = (t[1] - t[0], t[2] - t[0]);
         let p = dir.cross(e2);
         let det = e1.dot(p);
@@ -163,11 +164,8 @@ pub fn intersect_mesh(mesh: &TriangleMesh, o: DVec3, dir: DVec3) -> Option<Hit> 
             continue;
         }
         let face = face_normal(t).unwrap_or(DVec3::Y);
-        let n = match &mesh.normals {
-            Some(ns) => {
-                let c = ns[k];
-                safe_normalize(c[0] * (1.0 - u - v) + c[1] * u + c[2] * v, face)
-            }
+        let n = match mesh.corner_normals(k) {
+            Some(c) => safe_normalize(c[0] * (1.0 - u - v) + c[1] * u + c[2] * v, face),
             None => face,
         };
         best = Some((tt, n));

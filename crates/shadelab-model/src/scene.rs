@@ -308,7 +308,7 @@ impl Scene {
     /// Triangles of one object: its tessellation, or its mesh's count.
     pub fn object_triangle_count(&self, o: &Object) -> usize {
         match o.shape {
-            Shape::Mesh(i) => self.meshes.get(i).map_or(0, |m| m.triangles.len()),
+            Shape::Mesh(i) => self.meshes.get(i).map_or(0, |m| m.triangle_count()),
             shape => crate::mesh::triangle_count(shape, o.tessellation),
         }
     }

@@ -12,21 +12,21 @@ pub mod timing;
 pub mod uniforms;
 
 pub use gpu::{AdapterChoice, Gpu};
-pub use renderer::{PipelineKey, RenderSettings, Renderer, SceneGpu, Specialization};
+pub use renderer::{PipelineKey, RenderSettings, Renderer, SceneGpu, Specialization, UploadError};
 pub use target::{LinearImage, Target};
 
 /// Render a scene offscreen to a linear float image: the path `shadelab render` and the image
-/// tests share.
+/// tests share. Fails only for a scene the device cannot hold ([`UploadError`]).
 pub fn render_image(
     gpu: &Gpu,
     scene: &shadelab_model::Scene,
     width: u32,
     height: u32,
     settings: &RenderSettings,
-) -> LinearImage {
+) -> Result<LinearImage, UploadError> {
     let mut r = Renderer::new(&gpu.device, &gpu.queue);
-    let gs = r.upload(scene);
+    let gs = r.upload(scene)?;
     let target = Target::new(&gpu.device, width, height, target::HDR_FORMAT);
     r.render(&gs, scene, &target, settings);
-    target::read_back(&gpu.device, &gpu.queue, &target)
+    Ok(target::read_back(&gpu.device, &gpu.queue, &target))
 }

@@ -5,10 +5,9 @@ use crate::shaders;
 use crate::target::Target;
 use crate::uniforms::{GlobalsUniform, ObjectUniform};
 use shadelab_model::effects::{self, EffectKey};
-use shadelab_model::mesh::{self, FlatVertex, SmoothVertex};
+use shadelab_model::mesh::{FlatVertex, SmoothVertex};
 use shadelab_model::{Scene, ShadingMode, Shape, SpecularModel};
 use std::collections::HashMap;
-use wgpu::util::DeviceExt;
 
 pub const DEPTH_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Depth32Float;
 
@@ -276,8 +275,9 @@ impl Renderer {
         PipelineKey { effects: EffectKey::UBER, ..key }
     }
 
-    /// Upload a scene's meshes and uniforms.
-    pub fn upload(&self, scene: &Scene) -> SceneGpu {
+    /// Upload a scene's meshes and uniforms. A mesh whose vertex or index buffer would be larger
+    /// than the device allows (`max_buffer_size`) is an error, not a GPU validation failure.
+    pub fn upload(&self, scene: &Scene) -> Result<SceneGpu, UploadError> {
         let device = &self.device;
         let mut meshes = HashMap::new();
         let mut objects = Vec::new();
@@ -285,7 +285,37 @@ impl Renderer {
             let k = (o.shape, o.tessellation);
             // `Shape::Mesh(i)` keys by its index: each file mesh is built once (its normals, else
             // the crease-angle rule), shared by every object that shows it.
-            meshes.entry(k).or_insert_with(|| upload_mesh(device, &scene.mesh_data(o)));
+            if let std::collections::hash_map::Entry::Vacant(e) = meshes.entry(k) {
+                let file_mesh = match o.shape {
+                    Shape::Mesh(i) => scene.meshes.get(i),
+                    _ => None,
+                };
+                let mesh = match file_mesh {
+                    // The file's vertices as they are: written to the GPU piece by piece.
+                    Some(m) if m.has_usable_normals() && m.check_finite().is_ok() => MeshGpu::new(
+                        device,
+                        &self.queue,
+                        &o.name,
+                        [m.positions.len(), 3 * m.triangle_count(), 3 * m.triangle_count()],
+                        |r, out| out.extend(r.map(|i| m.smooth_vertex(i))),
+                        |r, out| out.extend(m.indices[r.start / 3..r.end / 3].iter().flatten()),
+                        |r, out| out.extend((r.start / 3..r.end / 3).flat_map(|k| m.flat_corners(k))),
+                    )?,
+                    _ => {
+                        let d = scene.mesh_data(o);
+                        MeshGpu::new(
+                            device,
+                            &self.queue,
+                            &o.name,
+                            [d.smooth_vertices.len(), d.indices.len(), d.flat_vertices.len()],
+                            |r, out| out.extend_from_slice(&d.smooth_vertices[r]),
+                            |r, out| out.extend_from_slice(&d.indices[r]),
+                            |r, out| out.extend_from_slice(&d.flat_vertices[r]),
+                        )?
+                    }
+                };
+                e.insert(mesh);
+            }
             objects.push(k);
         }
         let triangle_count = scene.triangle_count();
@@ -320,7 +350,7 @@ impl Renderer {
                 }),
             }],
         });
-        SceneGpu {
+        Ok(SceneGpu {
             meshes,
             objects,
             globals,
@@ -330,7 +360,7 @@ impl Renderer {
             object_stride,
             triangle_count,
             effects: std::cell::Cell::new(EffectKey::UBER),
-        }
+        })
     }
 
     /// Write a scene's parameters (materials, lights, camera) into its uniforms. Cheap: the
@@ -413,27 +443,105 @@ impl Renderer {
     }
 }
 
-fn upload_mesh(device: &wgpu::Device, m: &mesh::MeshData) -> MeshGpu {
-    let usage = wgpu::BufferUsages::VERTEX;
-    MeshGpu {
-        smooth: device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
-            label: Some("smooth vertices"),
-            contents: bytemuck::cast_slice(&m.smooth_vertices),
-            usage,
-        }),
-        indices: device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
-            label: Some("indices"),
-            contents: bytemuck::cast_slice(&m.indices),
-            usage: wgpu::BufferUsages::INDEX,
-        }),
-        index_count: m.indices.len() as u32,
-        flat: device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
-            label: Some("flat vertices"),
-            contents: bytemuck::cast_slice(&m.flat_vertices),
-            usage,
-        }),
-        flat_count: m.flat_vertices.len() as u32,
+/// A scene the device cannot hold.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum UploadError {
+    #[error(
+        "object '{object}': its {what} need {bytes} bytes, more than this device's largest buffer ({limit} bytes, max_buffer_size)"
+    )]
+    BufferTooLarge { object: String, what: &'static str, bytes: u64, limit: u64 },
+}
+
+/// Elements written per piece by [`buffer_from_pieces`]: 2¹⁶ flat vertices are 2.25 MiB, small
+/// beside any mesh worth writing in pieces, large enough that the per-piece cost vanishes.
+const PIECE_ELEMENTS: usize = 1 << 16;
+
+/// Most staging memory one upload holds at a time: pieces are written into batches of this
+/// size, and each batch's submission is waited for before the next is mapped, so a 10⁷-triangle
+/// mesh never has a second whole copy of its 1.3 GB of vertex data in staging memory.
+pub const STAGING_BATCH_BYTES: u64 = 64 << 20;
+
+impl MeshGpu {
+    /// A mesh's three GPU buffers, each of `counts` elements (smooth vertices, indices, flat
+    /// vertices) made by its `fill(range, out)`, which appends the elements of `range`. A range
+    /// of indices always covers whole triangles (it starts and ends at multiples of 3).
+    #[allow(clippy::too_many_arguments)]
+    fn new(
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        object: &str,
+        counts: [usize; 3],
+        smooth: impl Fn(std::ops::Range<usize>, &mut Vec<SmoothVertex>),
+        indices: impl Fn(std::ops::Range<usize>, &mut Vec<u32>),
+        flat: impl Fn(std::ops::Range<usize>, &mut Vec<FlatVertex>),
+    ) -> Result<MeshGpu, UploadError> {
+        let limit = device.limits().max_buffer_size;
+        let sizes = [size_of::<SmoothVertex>(), size_of::<u32>(), size_of::<FlatVertex>()];
+        for ((what, count), size) in ["smooth vertices", "indices", "flat vertices"].into_iter().zip(counts).zip(sizes)
+        {
+            let bytes = (count as u64).saturating_mul(size as u64);
+            if bytes > limit {
+                return Err(UploadError::BufferTooLarge { object: object.into(), what, bytes, limit });
+            }
+        }
+        let vertex = wgpu::BufferUsages::VERTEX;
+        Ok(MeshGpu {
+            smooth: buffer_from_pieces(device, queue, "smooth vertices", vertex, counts[0], smooth),
+            indices: buffer_from_pieces(device, queue, "indices", wgpu::BufferUsages::INDEX, counts[1], indices),
+            index_count: counts[1] as u32,
+            flat: buffer_from_pieces(device, queue, "flat vertices", vertex, counts[2], flat),
+            flat_count: counts[2] as u32,
+        })
     }
+}
+
+/// A GPU buffer of `count` elements, made `PIECE_ELEMENTS` at a time by `fill` straight into the
+/// queue's staging memory: the whole array never exists on the CPU beside it. (Also not
+/// `create_buffer_init`: it maps the buffer at creation, which wgpu zero-fills before the data is
+/// copied in, a second pass over more than a gigabyte at 10⁷ triangles. A queue write marks the
+/// buffer initialized, so nothing is cleared.)
+fn buffer_from_pieces<T: bytemuck::Pod>(
+    device: &wgpu::Device,
+    queue: &wgpu::Queue,
+    label: &str,
+    usage: wgpu::BufferUsages,
+    count: usize,
+    fill: impl Fn(std::ops::Range<usize>, &mut Vec<T>),
+) -> wgpu::Buffer {
+    let bytes = (count * size_of::<T>()) as u64;
+    // wgpu buffers are at least COPY_BUFFER_ALIGNMENT (4) bytes; every element here is a multiple
+    // of 4 bytes already, so only an empty mesh needs the minimum.
+    let buffer = device.create_buffer(&wgpu::BufferDescriptor {
+        label: Some(label),
+        size: bytes.max(wgpu::COPY_BUFFER_ALIGNMENT),
+        usage: usage | wgpu::BufferUsages::COPY_DST,
+        mapped_at_creation: false,
+    });
+    // Whole triangles per piece when T is an index (3 per triangle) or a flat corner, and whole
+    // pieces per batch.
+    let step = PIECE_ELEMENTS - PIECE_ELEMENTS % 3;
+    let batch = (STAGING_BATCH_BYTES as usize / size_of::<T>() / step).max(1) * step;
+    let mut piece = Vec::with_capacity(step);
+    for first in (0..count).step_by(batch) {
+        let last = (first + batch).min(count);
+        let offset = (first * size_of::<T>()) as u64;
+        let size = wgpu::BufferSize::new(((last - first) * size_of::<T>()) as u64).expect("a batch is not empty");
+        let mut view = queue.write_buffer_with(&buffer, offset, size).expect("a write inside the buffer just made");
+        for start in (first..last).step_by(step) {
+            piece.clear();
+            fill(start..(start + step).min(last), &mut piece);
+            let at = (start - first) * size_of::<T>();
+            let b: &[u8] = bytemuck::cast_slice(&piece);
+            view.slice(at..at + b.len()).copy_from_slice(b);
+        }
+        drop(view);
+        if last < count {
+            // Let this batch's copy run and its staging memory go before the next is mapped.
+            queue.submit([]);
+            let _ = device.poll(wgpu::PollType::wait_indefinitely());
+        }
+    }
+    buffer
 }
 
 /// Build the pipeline of a key from its module (free, so worker threads can run it).

@@ -182,7 +182,7 @@ pub fn run_plan(gpu: &Gpu, plan: &Plan, command: &str, mut progress: impl FnMut(
     let mut rows = Vec::new();
     for g in groups(plan) {
         let (w, h) = g.size;
-        let gs = r.upload(&g.scene);
+        let gs = r.upload(&g.scene).expect("the study scenes are analytic shapes, far below any buffer limit");
         let target = Target::new(&gpu.device, w, h, target::HDR_FORMAT);
         let mut samples = timer.interleaved(&mut r, &gs, &g.scene, &target, &programs, plan.frames, plan.warmup);
         let baseline_ms = median(&mut samples[0]);

@@ -66,6 +66,55 @@ pub enum BenchCommand {
     /// it calls for), by the uber pipeline (every effect, switched off at run time) and, per
     /// effect, by the specialized pipeline without it (the floor), interleaved in one run.
     Effects(BenchEffectsArgs),
+    /// What a scene file costs to open: load (read, check, triangles), build + upload (normals,
+    /// GPU buffers), first frame (pipeline + draw), the next frame, and the process's peak
+    /// memory. One scene per process, so the peak is this scene's.
+    Load(BenchLoadArgs),
+    /// Large meshes: generate spheres of about the given triangle counts as .glb and run
+    /// `bench load` on each in a fresh process (under /usr/bin/time -v when installed).
+    Mesh(BenchMeshArgs),
+}
+
+#[derive(Args, Debug)]
+#[command(allow_negative_numbers = true)]
+pub struct BenchLoadArgs {
+    #[command(flatten)]
+    pub scene: SceneArgs,
+    /// flat | gouraud | phong [default: the scene file's, else phong]
+    #[arg(long)]
+    pub shading: Option<String>,
+    /// phong | cook-torrance [default: the scene file's, else cook-torrance]
+    #[arg(long)]
+    pub specular: Option<String>,
+    /// Width in pixels, 1 to 8192.
+    #[arg(long, default_value = "1280")]
+    pub width: String,
+    /// Height in pixels, 1 to 8192.
+    #[arg(long, default_value = "720")]
+    pub height: String,
+}
+
+#[derive(Args, Debug)]
+#[command(allow_negative_numbers = true)]
+pub struct BenchMeshArgs {
+    /// Triangle counts, comma-separated, each in [1, MAX_TRIANGLES].
+    #[arg(long, default_value = "1000000,10000000", value_name = "N,N,...")]
+    pub triangles: String,
+    /// Leave NORMAL out of the files: the loader makes normals by the crease-angle rule.
+    #[arg(long)]
+    pub without_normals: bool,
+    /// Folder for the generated .glb files (kept, so that they can be opened in the viewer).
+    #[arg(long, default_value = "bench-mesh", value_name = "DIR")]
+    pub out: PathBuf,
+    /// flat | gouraud | phong
+    #[arg(long, default_value = "phong")]
+    pub shading: String,
+    /// Width in pixels, 1 to 8192.
+    #[arg(long, default_value = "1280")]
+    pub width: String,
+    /// Height in pixels, 1 to 8192.
+    #[arg(long, default_value = "720")]
+    pub height: String,
 }
 
 #[derive(Args, Debug)]

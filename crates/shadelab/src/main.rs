@@ -25,6 +25,8 @@ fn main() -> ExitCode {
         Some(cli::Command::Bench(cli::BenchCommand::Render(args))) => bench::run_render(&args),
         Some(cli::Command::Bench(cli::BenchCommand::Accuracy(args))) => accuracy::run(&args),
         Some(cli::Command::Bench(cli::BenchCommand::Effects(args))) => bench::run_effects(&args),
+        Some(cli::Command::Bench(cli::BenchCommand::Load(args))) => bench::run_load(&args),
+        Some(cli::Command::Bench(cli::BenchCommand::Mesh(args))) => bench::run_mesh(&args),
         Some(cli::Command::Sweep) => bench::run_sweep(),
         None => viewer::run(viewer::Options {
             screenshot: cli.screenshot,

@@ -56,7 +56,8 @@ pub fn run(args: &cli::RenderArgs) -> Result<(), Failure> {
     }
     let gpu = Gpu::headless(AdapterChoice::from_env()).context("opening a GPU adapter")?;
     log::info!("adapter: {}", gpu.describe());
-    let image = shadelab_render::render_image(&gpu, &scene, width, height, &settings);
+    let image = shadelab_render::render_image(&gpu, &scene, width, height, &settings)
+        .map_err(|e| Failure::Usage(format!("{}: {e}", args.scene.scene)))?;
     save(&image, &args.output, kind).with_context(|| format!("writing {}", args.output.display()))?;
     let bad = image.nonfinite_count();
     if bad > 0 {

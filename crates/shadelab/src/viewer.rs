@@ -143,7 +143,7 @@ impl Viewer {
         // A new effect set compiles on a worker thread; the uber pipeline draws meanwhile.
         renderer.build_in_background = true;
         let scene = Scene::builtin("default").expect("built-in default scene");
-        let gpu_scene = renderer.upload(&scene);
+        let gpu_scene = renderer.upload(&scene).map_err(|e| e.to_string())?;
         log::info!("viewer adapter: {:?}", rs.adapter.get_info());
         Ok(Viewer {
             scene_name: "default".into(),
@@ -228,20 +228,21 @@ impl Viewer {
     fn load_scene(&mut self, name: &str) {
         match Scene::builtin(name) {
             Some(s) => {
-                self.show_scene(s, name);
-                self.message = None;
+                self.message = self.show_scene(s, name).err().map(|e| (e, true));
             }
             None => self.message = Some((format!("unknown scene '{name}'"), true)),
         }
     }
 
-    fn show_scene(&mut self, s: Scene, name: &str) {
-        self.gpu_scene = self.renderer.upload(&s);
+    /// Show a scene; one the GPU cannot hold leaves the current scene as it is.
+    fn show_scene(&mut self, s: Scene, name: &str) -> Result<(), String> {
+        self.gpu_scene = self.renderer.upload(&s).map_err(|e| format!("{name}: {e}"))?;
         self.base_camera = s.camera;
         self.orbit = Orbit::from_camera(&s.camera);
         self.selected_material = s.objects.get(1).map_or(0, |o| o.material);
         self.scene = s;
         self.scene_name = name.into();
+        Ok(())
     }
 
     /// Open a glTF 2.0 file (the path field, or a file dropped on the window). A bad file leaves
@@ -249,17 +250,20 @@ impl Viewer {
     pub fn open_file(&mut self, path: &std::path::Path) {
         match shadelab_model::gltf_io::load_scene(path) {
             Ok(loaded) => {
+                let mut text = format!("opened {}", path.display());
+                for w in &loaded.warnings {
+                    text.push_str(&format!("\nwarning: {w}"));
+                }
+                if let Err(e) = self.show_scene(loaded.scene, &path.display().to_string()) {
+                    self.message = Some((e, true));
+                    return;
+                }
                 if let Some(m) = loaded.settings.shading {
                     self.settings.shading = m;
                 }
                 if let Some(m) = loaded.settings.specular {
                     self.settings.specular = m;
                 }
-                let mut text = format!("opened {}", path.display());
-                for w in &loaded.warnings {
-                    text.push_str(&format!("\nwarning: {w}"));
-                }
-                self.show_scene(loaded.scene, &path.display().to_string());
                 self.message = Some((text, false));
             }
             Err(e) => self.message = Some((e.to_string(), true)),

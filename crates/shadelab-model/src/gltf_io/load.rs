@@ -515,7 +515,7 @@ impl<'a> Reader<'a> {
             None => None,
         };
         let corners = self.corners(prim, positions.len(), &what)?;
-        let tris: Vec<[usize; 3]> = match mode {
+        let tris: Vec<[u32; 3]> = match mode {
             Mode::Triangles => {
                 if corners.len() % 3 != 0 {
                     return Err(self.cx.invalid(format!(
@@ -524,22 +524,18 @@ impl<'a> Reader<'a> {
                         if prim.indices.is_some() { "indices" } else { "vertices" }
                     )));
                 }
-                corners.chunks_exact(3).map(|c| [c[0] as usize, c[1] as usize, c[2] as usize]).collect()
+                corners.chunks_exact(3).map(|c| [c[0], c[1], c[2]]).collect()
             }
             // glTF 2.0 §3.7.2.1: strip triangle i is {v_i, v_(i+1+i%2), v_(i+2−i%2)}; fan
             // triangle i is {v_(i+1), v_(i+2), v_0}.
             Mode::TriangleStrip => (0..corners.len().saturating_sub(2))
-                .map(|i| [corners[i], corners[i + 1 + i % 2], corners[i + 2 - i % 2]].map(|c| c as usize))
+                .map(|i| [corners[i], corners[i + 1 + i % 2], corners[i + 2 - i % 2]])
                 .collect(),
-            _ => (0..corners.len().saturating_sub(2))
-                .map(|i| [corners[i + 1], corners[i + 2], corners[0]].map(|c| c as usize))
-                .collect(),
+            _ => (0..corners.len().saturating_sub(2)).map(|i| [corners[i + 1], corners[i + 2], corners[0]]).collect(),
         };
         if tris.len() > MAX_TRIANGLES {
             return Err(self.too_many(tris.len()));
         }
-        let triangles = tris.iter().map(|t| t.map(|i| positions[i])).collect();
-        let normals = normals.map(|n| tris.iter().map(|t| t.map(|i| n[i])).collect());
         let material = prim.material.map(|m| m.value());
         if let Some(m) = material
             && m >= root.materials.len()
@@ -550,7 +546,7 @@ impl<'a> Reader<'a> {
         }
         let name = mesh.name.clone().unwrap_or_else(|| format!("mesh {mi}"));
         let name = if mesh.primitives.len() > 1 { format!("{name} #{pi}") } else { name };
-        let tm = TriangleMesh { name, triangles, normals };
+        let tm = TriangleMesh { name, positions, normals, indices: tris };
         let analytic = self.analytic_shape(&mesh.extras, &tm, &what)?;
         self.file_meshes.push((tm, None));
         Ok(Some(Prim { mesh: self.file_meshes.len() - 1, material, analytic }))
@@ -572,13 +568,13 @@ impl<'a> Reader<'a> {
         let tess = tess.as_u64().and_then(|t| params::TESSELLATION.check(t as f64).ok()).ok_or_else(|| {
             self.cx.invalid(format!("{what}: extras.shadelab.tessellation {tess} is not in [1, 4096]"))
         })? as u32;
-        if crate::mesh::triangle_count(shape, tess) != mesh.triangles.len() {
+        if crate::mesh::triangle_count(shape, tess) != mesh.triangle_count() {
             return Ok(None);
         }
         let exact = crate::mesh::triangles(shape, tess);
         // Positions went through f32: 1e-6 relative is a few f32 ulps.
-        let same = exact.iter().zip(&mesh.triangles).all(|(a, b)| {
-            a.iter().zip(b).all(|(p, q)| (*p - *q).abs().max_element() <= 1e-6 * (1.0 + p.abs().max_element()))
+        let same = exact.iter().zip(mesh.triangles()).all(|(a, b)| {
+            a.iter().zip(b).all(|(p, q)| (*p - q).abs().max_element() <= 1e-6 * (1.0 + p.abs().max_element()))
         });
         Ok(same.then_some((shape, tess)))
     }
@@ -658,6 +654,11 @@ impl<'a> Reader<'a> {
         }
         if scene.objects.is_empty() {
             return Err(self.cx.invalid("the scene has no triangle meshes to show".into()));
+        }
+        for (mesh, slot) in std::mem::take(&mut self.file_meshes) {
+            if let Some(i) = slot {
+                scene.meshes[i] = mesh;
+            }
         }
         let (center, radius) = bounds(&scene);
         for (ni, li, world) in light_nodes {
@@ -755,7 +756,7 @@ impl<'a> Reader<'a> {
     ) -> Result<(), GltfError> {
         let Some(prim) = self.prim(mi, pi)? else { return Ok(()) };
         let (mesh_i, material, analytic) = (prim.mesh, prim.material, prim.analytic);
-        let count = self.file_meshes[mesh_i].0.triangles.len();
+        let count = self.file_meshes[mesh_i].0.triangle_count();
         if self.cx.triangles.saturating_add(count) > MAX_TRIANGLES {
             return Err(self.too_many(count));
         }
@@ -791,16 +792,17 @@ impl<'a> Reader<'a> {
         let (shape, tessellation, transform) = match (decomposed, analytic) {
             (Some(t), Some((shape, tess))) => (shape, tess, t),
             (Some(t), None) => {
-                let entry = &mut self.file_meshes[mesh_i];
-                let idx = *entry.1.get_or_insert_with(|| {
-                    scene.meshes.push(entry.0.clone());
+                // A slot now; the file mesh moves into it once every object is placed (in
+                // `scene`): a large mesh is never held twice.
+                let idx = *self.file_meshes[mesh_i].1.get_or_insert_with(|| {
+                    scene.meshes.push(TriangleMesh::default());
                     scene.meshes.len() - 1
                 });
                 (Shape::Mesh(idx), 1, t)
             }
             (None, _) => {
                 let baked = bake(&self.file_meshes[mesh_i].0, world);
-                if baked.triangles.iter().flatten().any(|p| !p.is_finite()) {
+                if baked.positions.iter().any(|p| !p.is_finite()) {
                     return Err(self.cx.invalid(format!("node {ni}: a transformed position is not finite")));
                 }
                 scene.meshes.push(baked);
@@ -1169,11 +1171,12 @@ fn decompose(m: &DMat4) -> Option<Transform> {
 fn bake(mesh: &TriangleMesh, m: &DMat4) -> TriangleMesh {
     let flip = m.determinant() < 0.0;
     let nm = DMat3::from_mat4(*m).inverse().transpose();
-    let order = |t: [DVec3; 3]| if flip { [t[0], t[2], t[1]] } else { t };
     TriangleMesh {
         name: mesh.name.clone(),
-        triangles: mesh.triangles.iter().map(|t| order(t.map(|p| m.transform_point3(p)))).collect(),
-        normals: mesh.normals.as_ref().map(|ns| ns.iter().map(|n| order(n.map(|n| nm * n))).collect()),
+        positions: mesh.positions.iter().map(|&p| m.transform_point3(p)).collect(),
+        normals: mesh.normals.as_ref().map(|ns| ns.iter().map(|&n| nm * n).collect()),
+        // A mirror reverses the winding.
+        indices: mesh.indices.iter().map(|t| if flip { [t[0], t[2], t[1]] } else { *t }).collect(),
     }
 }
 

@@ -52,6 +52,7 @@
 
 mod load;
 mod save;
+pub mod synthetic;
 
 pub use load::{load_scene, load_scene_from_bytes, load_scene_from_slice};
 pub use save::{save_scene, scene_to_glb, scene_to_gltf_json};
@@ -59,16 +60,20 @@ pub use save::{save_scene, scene_to_glb, scene_to_gltf_json};
 use crate::params::{PhongExponent, ShadingMode, SpecularModel};
 use crate::scene::Scene;
 
-/// Most triangles a file may bring (every instance of a mesh counts). 2·10⁶ triangles are ~290 MB
-/// as f64 corners and normals here and ~200 MB of GPU buffers: lavapipe and the viewer stay
-/// usable, and the chapter's scenes have well under 10⁵. A larger count is more likely a broken
-/// or hostile file (u8 indices can name 48 bytes of corners per 3 bytes of file) than a scene.
-pub const MAX_TRIANGLES: usize = 2_000_000;
+/// Most triangles a file may bring (every instance of a mesh counts): the memory budget of a
+/// scene. `shadelab bench mesh` measured the peak of a whole run (load, GPU buffers, first frame)
+/// on lavapipe, where the GPU's buffers are in the same memory, at about 180 bytes a triangle over
+/// the program's own ~110 MiB for a file with normals and about 290 without (the crease-angle rule
+/// works on a triangle soup): 16·10⁶ triangles are 3 to 5 GB, which an 8 GB machine still holds.
+/// On a discrete GPU about 145 bytes a triangle of that is in its memory instead (smooth and
+/// flat vertex buffers, indices). More is more likely a broken or hostile file (u8 indices name a
+/// triangle per 3 bytes of file) than a scene; the limit is checked before anything is built.
+pub const MAX_TRIANGLES: usize = 16_000_000;
 
-/// Largest scene file or buffer read: 1 GiB. `MAX_TRIANGLES` triangles need at most ~170 MB
-/// (3 corners × (12 bytes of position + 12 of normal + 4 of index)), so a larger buffer cannot be
-/// used, and reading it would only spend memory and time.
-pub const MAX_FILE_BYTES: u64 = 1 << 30;
+/// Largest scene file or buffer read: 2 GiB. `MAX_TRIANGLES` triangles need at most ~1.3 GB
+/// (3 unshared corners × (12 bytes of position + 12 of normal + 4 of index)), so a larger buffer
+/// cannot be used, and reading it would only spend memory and time.
+pub const MAX_FILE_BYTES: u64 = 1 << 31;
 
 /// Most objects (mesh instances × primitives): each is one draw call and one 256-byte uniform
 /// slot, so 16384 objects are 4 MiB of uniforms.

@@ -14,13 +14,13 @@ use std::collections::HashMap;
 use std::path::Path;
 
 /// `bufferView.target` values (glTF 2.0 §5.11).
-const ARRAY_BUFFER: u32 = 34962;
-const ELEMENT_ARRAY_BUFFER: u32 = 34963;
+pub(super) const ARRAY_BUFFER: u32 = 34962;
+pub(super) const ELEMENT_ARRAY_BUFFER: u32 = 34963;
 /// `accessor.componentType` values (glTF 2.0 §5.1.3).
-const FLOAT: u32 = 5126;
-const UNSIGNED_INT: u32 = 5125;
+pub(super) const FLOAT: u32 = 5126;
+pub(super) const UNSIGNED_INT: u32 = 5125;
 /// `primitive.mode` of triangle lists.
-const TRIANGLES: u32 = 4;
+pub(super) const TRIANGLES: u32 = 4;
 
 /// Write the scene as `.glb` when the path ends in `.glb`, else as `.gltf` with the buffer
 /// embedded as a base64 data: URI.
@@ -45,7 +45,13 @@ pub fn scene_to_gltf_json(scene: &Scene, settings: &SceneSettings) -> String {
 /// The scene as a binary `.glb` (glTF 2.0 §4.4: header, JSON chunk padded with spaces, BIN
 /// chunk padded with zeros).
 pub fn scene_to_glb(scene: &Scene, settings: &SceneSettings) -> Vec<u8> {
-    let (mut root, mut bin) = document(scene, settings);
+    let (root, bin) = document(scene, settings);
+    glb_container(root, bin)
+}
+
+/// A glTF document and its one binary buffer as `.glb` (glTF 2.0 §4.4: header, JSON chunk padded
+/// with spaces, BIN chunk padded with zeros); sets `buffers` to that one buffer.
+pub(crate) fn glb_container(mut root: Value, mut bin: Vec<u8>) -> Vec<u8> {
     root["buffers"] = json!([{ "byteLength": bin.len() }]);
     let mut json = serde_json::to_vec(&root).expect("a JSON value serializes");
     while json.len() % 4 != 0 {

@@ -22,7 +22,7 @@ fn near1(a: f64, b: f64, what: &str) {
 
 fn object_triangles(s: &Scene, o: &Object) -> Vec<[DVec3; 3]> {
     match o.shape {
-        Shape::Mesh(i) => s.meshes[i].triangles.clone(),
+        Shape::Mesh(i) => s.meshes[i].triangles().collect(),
         shape => crate::mesh::triangles(shape, o.tessellation),
     }
 }
@@ -157,11 +157,9 @@ fn save_scene_writes_gltf_or_glb_by_extension() {
 fn mesh_objects_round_trip_with_and_without_normals() {
     let mut scene = Scene::builtin("sphere").unwrap();
     let tris = crate::mesh::triangles(Shape::Cube, 2);
-    let normals = tris.iter().map(|t| [crate::mesh::face_normal(t).unwrap(); 3]).collect();
-    scene.meshes = vec![
-        TriangleMesh { name: "soup".into(), triangles: tris.clone(), normals: None },
-        TriangleMesh { name: "faceted".into(), triangles: tris, normals: Some(normals) },
-    ];
+    let normals: Vec<[DVec3; 3]> = tris.iter().map(|t| [crate::mesh::face_normal(t).unwrap(); 3]).collect();
+    scene.meshes =
+        vec![TriangleMesh::from_soup("soup", &tris, None), TriangleMesh::from_soup("faceted", &tris, Some(&normals))];
     for (i, x) in [-2.0, 2.0].into_iter().enumerate() {
         scene.objects.push(Object {
             name: format!("mesh {i}"),
@@ -317,9 +315,9 @@ fn hierarchy_transforms_decompose_or_bake() {
     near(t.translation, DVec3::X, "translation");
     near1(t.rotation_y, 45f64.to_radians(), "rotation_y");
     near(t.scale, DVec3::splat(2.0), "scale");
-    let baked = &s.meshes[1].triangles[0];
+    let baked = &s.meshes[1].triangle(0);
     near(baked[2], DVec3::new(1.0, 0.0, 1.0), "rotated corner");
-    let mirrored = &s.meshes[2].triangles[0];
+    let mirrored = &s.meshes[2].triangle(0);
     let n = crate::mesh::face_normal(mirrored).unwrap();
     near(n, DVec3::Z, "mirrored face normal");
 }
@@ -338,7 +336,7 @@ fn strips_and_fans_become_triangles() {
         let s = load(&with_buffer(doc, &bin)).scene;
         let p = |i: usize| DVec3::new((i % 2) as f64, (i / 2) as f64, 0.0);
         let want: Vec<[DVec3; 3]> = want.iter().map(|t| t.map(p)).collect();
-        assert_eq!(s.meshes[0].triangles, want, "mode {mode}");
+        assert_eq!(s.meshes[0].triangles().collect::<Vec<_>>(), want, "mode {mode}");
     }
 }
 
@@ -521,20 +519,24 @@ fn limits_on_triangles_and_objects_are_errors_before_allocation() {
     });
     let e = load_scene_from_slice(&glb(doc, &bin)).unwrap_err();
     assert!(matches!(e, GltfError::TooLarge { .. }), "{e}");
-    assert!(e.to_string().contains("2000001 triangles are more than the limit of 2000000 (MAX_TRIANGLES)"), "{e}");
-    // Instances count: a 1000-triangle mesh shown by 2001 nodes.
-    let corners: Vec<f32> = (0..3000).flat_map(|i| [i as f32, (i % 3) as f32, 0.0]).collect();
-    let nodes: Vec<Value> = (0..2001).map(|_| json!({ "mesh": 0 })).collect();
+    let want = format!("{} triangles are more than the limit of {MAX_TRIANGLES} (MAX_TRIANGLES)", MAX_TRIANGLES + 1);
+    assert!(e.to_string().contains(&want), "{e}");
+    // Instances count: a 10⁴-triangle mesh shown by one node more than the limit allows.
+    let per_mesh = 10_000;
+    let instances = MAX_TRIANGLES / per_mesh + 1;
+    assert!(instances <= MAX_OBJECTS, "the triangle limit must be reached before the object limit");
+    let corners: Vec<f32> = (0..3 * per_mesh).flat_map(|i| [i as f32, (i % 3) as f32, 0.0]).collect();
+    let nodes: Vec<Value> = (0..instances).map(|_| json!({ "mesh": 0 })).collect();
     let doc = json!({
         "asset": { "version": "2.0" },
-        "scenes": [{ "nodes": (0..2001).collect::<Vec<_>>() }],
+        "scenes": [{ "nodes": (0..instances).collect::<Vec<_>>() }],
         "nodes": nodes,
         "meshes": [{ "primitives": [{ "attributes": { "POSITION": 0 } }] }],
-        "accessors": [{ "bufferView": 0, "componentType": 5126, "count": 3000, "type": "VEC3" }],
-        "bufferViews": [{ "buffer": 0, "byteLength": 36000 }],
+        "accessors": [{ "bufferView": 0, "componentType": 5126, "count": 3 * per_mesh, "type": "VEC3" }],
+        "bufferViews": [{ "buffer": 0, "byteLength": 36 * per_mesh }],
     });
     let e = load_scene_from_slice(&glb(doc, &f32s(&corners))).unwrap_err().to_string();
-    assert!(e.contains("2001000 triangles are more than the limit"), "{e}");
+    assert!(e.contains(&format!("{} triangles are more than the limit", instances * per_mesh)), "{e}");
     // Objects: one more node than MAX_OBJECTS.
     let doc = json!({
         "asset": { "version": "2.0" },

@@ -14,12 +14,14 @@ const FRESNEL_SQRT_MU_MAX: f32 = 0.9999;
 const FRESNEL_G_PLUS_C_MIN: f32 = 1e-6;
 const LIGHT_DIST_MIN: f32 = 1e-4;
 const D0_MIN: f32 = 1e-3;
+const SPOT_COS_SPAN_MIN: f32 = 1e-3;
 
 // Light slots in the scene uniform (scene::MAX_LIGHTS).
 const MAX_LIGHTS: u32 = 8u;
 
 const LIGHT_DIRECTIONAL: u32 = 0u;
 const LIGHT_POINT: u32 = 1u;
+const LIGHT_SPOT: u32 = 2u;
 const FALLOFF_QUADRATIC: u32 = 0u;
 const FALLOFF_LINEAR: u32 = 1u;
 const SPECULAR_PHONG: u32 = 0u;

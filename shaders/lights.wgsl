@@ -1,7 +1,7 @@
 // Light sources and distance falloff (spec §2, §6).
 
 struct Light {
-    // xyz: position of a point light.
+    // xyz: position of a point or spot light.
     position: vec4<f32>,
     // xyz: direction a directional light travels (L = −direction).
     direction: vec4<f32>,
@@ -11,6 +11,15 @@ struct Light {
     falloff_form: u32,
     falloff_alpha: f32,
     d0: f32,
+    // xyz: unit axis of a spot light, the way it shines (kept apart from `direction`, so that a
+    // permutation without directional lights reads nothing of theirs).
+    spot_axis: vec4<f32>,
+    // Spot cones: cos of the inner and outer half-angles.
+    cos_inner: f32,
+    cos_outer: f32,
+    // Point and spot lights: where the light ends; 0 = never.
+    range: f32,
+    _pad: f32,
 }
 
 // Spec §6: I(d) = I0/(1 + α d²); in (0, 1] for α ≥ 0.
@@ -23,6 +32,23 @@ fn falloff_linear(d: f32, d0: f32) -> f32 {
     return 1.0 / (max(d, 0.0) + max(d0, D0_MIN));
 }
 
+// KHR_lights_punctual's spot cone: 1 inside the inner cone, 0 outside the outer one, the square
+// of a ramp linear in cos between; the span cos_inner − cos_outer at least SPOT_COS_SPAN_MIN.
+fn spot_cone(cos_angle: f32, cos_inner: f32, cos_outer: f32) -> f32 {
+    let t = clamp((cos_angle - cos_outer) / max(cos_inner - cos_outer, SPOT_COS_SPAN_MIN), 0.0, 1.0);
+    return t * t;
+}
+
+// KHR_lights_punctual's range window clamp(1 − (d/range)⁴, 0, 1): 0 at d = range; range ≤ 0 is none.
+fn window_range(d: f32, range: f32) -> f32 {
+    if (range <= 0.0) {
+        return 1.0;
+    }
+    let x = min(max(d, 0.0) / range, 1.0);
+    let x2 = x * x;
+    return 1.0 - x2 * x2;
+}
+
 struct LightSample {
     // Unit vector from the surface towards the light.
     l: vec3<f32>,
@@ -30,14 +56,15 @@ struct LightSample {
     radiance: vec3<f32>,
 }
 
-// Direction and intensity of one light at surface point `p` with normal `n`. A point light closer
-// than LIGHT_DIST_MIN touches the surface: its direction is undefined, so L = N.
+// Direction and intensity of one light at surface point `p` with normal `n`. A point or spot light
+// closer than LIGHT_DIST_MIN touches the surface: its direction is undefined, so L = N.
 // The `#if EFFECT_…` blocks are kept only in permutations whose scene calls for the effect
 // (crates/shadelab-model/src/effects.rs decides; crates/shadelab-render/src/shaders.rs cuts).
 fn light_sample(light: Light, p: vec3<f32>, n: vec3<f32>) -> LightSample {
     var s: LightSample;
 #if EFFECT_POINT_LIGHTS
-    if (light.kind == LIGHT_POINT) {
+    // Point and spot lights (a spot is a point light with a cone).
+    if (light.kind == LIGHT_POINT || light.kind == LIGHT_SPOT) {
         let to_light = light.position.xyz - p;
         let d = length(to_light);
         s.l = select(n, to_light / max(d, LIGHT_DIST_MIN), d > LIGHT_DIST_MIN);
@@ -50,6 +77,14 @@ fn light_sample(light: Light, p: vec3<f32>, n: vec3<f32>) -> LightSample {
 #if EFFECT_FALLOFF_LINEAR
         if (light.falloff_form == FALLOFF_LINEAR) {
             f = falloff_linear(d, light.d0);
+        }
+#endif
+#if EFFECT_LIGHT_RANGE
+        f *= window_range(d, light.range);
+#endif
+#if EFFECT_SPOT_LIGHTS
+        if (light.kind == LIGHT_SPOT) {
+            f *= spot_cone(dot(-s.l, light.spot_axis.xyz), light.cos_inner, light.cos_outer);
         }
 #endif
         s.radiance = light.radiance.rgb * f;

@@ -17,7 +17,10 @@ struct SweepCounts {
 // Material used for the per-light contribution.
 const SWEEP_COLOR: vec3<f32> = vec3(0.8, 0.5, 0.2);
 // Floats written per combination.
-const SWEEP_OUTPUTS: u32 = 18u;
+const SWEEP_OUTPUTS: u32 = 20u;
+// Spot cones: the outer half-angle is m·SWEEP_CONE_PER_M (m in [0, 1] spans 0 to 90°), the inner
+// one the share min(α, 1) of it (α ≥ 1: inner = outer, the SPOT_COS_SPAN_MIN guard's case).
+const SWEEP_CONE_PER_M: f32 = 1.5707964;
 
 @group(0) @binding(0) var<uniform> counts: SweepCounts;
 // Rows: geometry (n, v, l) × count, then m (x), h (x = h, y = 1 for mirror), μ (xyz), d (x),
@@ -96,4 +99,9 @@ fn sweep(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workgroups)
     outputs[base + 15u] = c_ct.x;
     outputs[base + 16u] = c_ct.y;
     outputs[base + 17u] = c_ct.z;
+    // The spot cone at the angle between V and L; the range window at distance d with range d0.
+    let outer = m * SWEEP_CONE_PER_M;
+    let inner = outer * min(a_row.x, 1.0);
+    outputs[base + 18u] = spot_cone(dot(v, l), cos(inner), cos(outer));
+    outputs[base + 19u] = window_range(d, a_row.y);
 }

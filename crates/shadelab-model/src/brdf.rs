@@ -139,19 +139,47 @@ pub fn falloff_linear(d: f64, d0: f64) -> f64 {
     1.0 / (d.max(0.0) + d0.max(D0_MIN))
 }
 
+/// KHR_lights_punctual's spot cone (the extension's recommended form): 1 inside the inner cone,
+/// 0 outside the outer one, between them the square of a ramp linear in the cosine. `cos_angle`
+/// is the cosine between the spot's axis and the direction from the light to the point; the
+/// span `cos_inner − cos_outer` is kept at or above `SPOT_COS_SPAN_MIN`.
+pub fn spot_cone(cos_angle: f64, cos_inner: f64, cos_outer: f64) -> f64 {
+    let t = ((cos_angle - cos_outer) / (cos_inner - cos_outer).max(SPOT_COS_SPAN_MIN)).clamp(0.0, 1.0);
+    t * t
+}
+
+/// KHR_lights_punctual's range window (the extension's recommended form)
+/// `clamp(1 − (d/range)⁴, 0, 1)`: the light fades to exactly 0 at `d = range`, with hardly any
+/// change near the light. A range of 0 or less is none (1 everywhere).
+pub fn window_range(d: f64, range: f64) -> f64 {
+    if range <= 0.0 {
+        return 1.0;
+    }
+    let x = (d.max(0.0) / range).min(1.0);
+    let x2 = x * x;
+    1.0 - x2 * x2
+}
+
 /// Direction to a light (unit) and its incident intensity `I_L` per channel at point `p` with
-/// normal `n`. A point light closer than `LIGHT_DIST_MIN` touches the surface: `L = N`.
+/// normal `n`. A point or spot light closer than `LIGHT_DIST_MIN` touches the surface: `L = N`.
 pub fn light_sample(light: &Light, p: DVec3, n: DVec3) -> (DVec3, [f64; 3]) {
     let radiance = light.color.map(|c| c * light.intensity);
     match light.kind {
-        LightKind::Point => {
+        LightKind::Point | LightKind::Spot => {
             let to_light = light.position - p;
             let d = to_light.length();
             let l = if d > LIGHT_DIST_MIN { to_light / d } else { n };
-            let f = match light.falloff_form {
+            let mut f = match light.falloff_form {
                 FalloffForm::Quadratic => falloff_quadratic(d, light.falloff_alpha),
                 FalloffForm::Linear => falloff_linear(d, light.d0),
             };
+            if let Some(range) = light.range {
+                f *= window_range(d, range);
+            }
+            if light.kind == LightKind::Spot {
+                let axis = safe_normalize(light.direction, DVec3::NEG_Y);
+                f *= spot_cone((-l).dot(axis), light.inner_cone.cos(), light.outer_cone.cos());
+            }
             (l, radiance.map(|r| r * f))
         }
         LightKind::Directional => (safe_normalize(-light.direction, n), radiance),

@@ -32,6 +32,10 @@ pub struct EffectKey {
     pub falloff_quadratic: bool,
     /// The chapter's `1/(d + d0)`.
     pub falloff_linear: bool,
+    /// Spot cones (on top of point lights: a spot light is a point light with a cone).
+    pub spot_lights: bool,
+    /// glTF's range window on point and spot lights that have a range.
+    pub light_range: bool,
 }
 
 /// One effect of [`EffectKey`], by name.
@@ -45,10 +49,12 @@ pub enum Effect {
     PointLights,
     FalloffQuadratic,
     FalloffLinear,
+    SpotLights,
+    LightRange,
 }
 
 impl Effect {
-    pub const ALL: [Effect; 8] = [
+    pub const ALL: [Effect; 10] = [
         Effect::Diffuse,
         Effect::SpecularPhong,
         Effect::SpecularCookTorrance,
@@ -57,6 +63,8 @@ impl Effect {
         Effect::PointLights,
         Effect::FalloffQuadratic,
         Effect::FalloffLinear,
+        Effect::SpotLights,
+        Effect::LightRange,
     ];
 
     /// The WGSL preprocessor name of the effect.
@@ -70,6 +78,8 @@ impl Effect {
             Effect::PointLights => "EFFECT_POINT_LIGHTS",
             Effect::FalloffQuadratic => "EFFECT_FALLOFF_QUADRATIC",
             Effect::FalloffLinear => "EFFECT_FALLOFF_LINEAR",
+            Effect::SpotLights => "EFFECT_SPOT_LIGHTS",
+            Effect::LightRange => "EFFECT_LIGHT_RANGE",
         }
     }
 
@@ -83,6 +93,8 @@ impl Effect {
             Effect::PointLights => "point lights",
             Effect::FalloffQuadratic => "falloff 1/(1+αd²)",
             Effect::FalloffLinear => "falloff 1/(d+d0)",
+            Effect::SpotLights => "spot cones",
+            Effect::LightRange => "light range",
         }
     }
 
@@ -100,6 +112,8 @@ impl Effect {
             Effect::PointLights => &[],
             Effect::FalloffQuadratic => &["falloff_quadratic"],
             Effect::FalloffLinear => &["falloff_linear"],
+            Effect::SpotLights => &["spot_cone"],
+            Effect::LightRange => &["window_range"],
         }
     }
 }
@@ -116,6 +130,8 @@ impl EffectKey {
         point_lights: true,
         falloff_quadratic: true,
         falloff_linear: true,
+        spot_lights: true,
+        light_range: true,
     };
     /// No effect: the shader outputs black (the floor of every effect).
     pub const NONE: EffectKey = EffectKey {
@@ -127,6 +143,8 @@ impl EffectKey {
         point_lights: false,
         falloff_quadratic: false,
         falloff_linear: false,
+        spot_lights: false,
+        light_range: false,
     };
 
     pub fn has(&self, e: Effect) -> bool {
@@ -143,6 +161,8 @@ impl EffectKey {
             Effect::PointLights => &self.point_lights,
             Effect::FalloffQuadratic => &self.falloff_quadratic,
             Effect::FalloffLinear => &self.falloff_linear,
+            Effect::SpotLights => &self.spot_lights,
+            Effect::LightRange => &self.light_range,
         }
     }
 
@@ -157,6 +177,8 @@ impl EffectKey {
             Effect::PointLights => &mut self.point_lights,
             Effect::FalloffQuadratic => &mut self.falloff_quadratic,
             Effect::FalloffLinear => &mut self.falloff_linear,
+            Effect::SpotLights => &mut self.spot_lights,
+            Effect::LightRange => &mut self.light_range,
         };
         *f = false;
         self
@@ -186,6 +208,8 @@ impl EffectKey {
             Effect::PointLights => "point",
             Effect::FalloffQuadratic => "quad",
             Effect::FalloffLinear => "linear",
+            Effect::SpotLights => "spot",
+            Effect::LightRange => "range",
         };
         let v: Vec<&str> = self.effects().into_iter().map(short).collect();
         if v.is_empty() { "none".into() } else { v.join("+") }
@@ -228,11 +252,37 @@ pub fn analyze(scene: &Scene, specular: SpecularModel) -> Analysis {
         scene.objects.iter().filter_map(|o| mats.get(o.material)).collect::<Vec<_>>();
     let lights = &scene.lights[..scene.lights.len().min(crate::scene::MAX_LIGHTS)];
     let n_dir = lights.iter().filter(|l| l.kind == LightKind::Directional).count();
-    let points: Vec<_> = lights.iter().filter(|l| l.kind == LightKind::Point).collect();
+    // Point and spot lights: both have a position, a distance and a falloff.
+    let points: Vec<_> = lights.iter().filter(|l| l.kind != LightKind::Directional).collect();
+    let n_spot = points.iter().filter(|l| l.kind == LightKind::Spot).count();
     let lit = !lights.is_empty();
 
     let directional_lights = decide(&mut d, "directional lights", n_dir > 0, format!("{n_dir} in the scene"));
-    let point_lights = decide(&mut d, "point lights", !points.is_empty(), format!("{} in the scene", points.len()));
+    let point_lights = decide(
+        &mut d,
+        "point lights",
+        !points.is_empty(),
+        if n_spot == 0 {
+            format!("{} in the scene", points.len())
+        } else {
+            format!(
+                "{} point and {n_spot} spot light(s) in the scene (a spot is a point light with a cone)",
+                points.len() - n_spot
+            )
+        },
+    );
+    let spot_lights = decide(&mut d, "spot cones", n_spot > 0, format!("{n_spot} spot light(s)"));
+    let ranged = points.iter().filter(|l| l.range.is_some()).count();
+    let light_range = decide(
+        &mut d,
+        "light range",
+        ranged > 0,
+        if ranged > 0 {
+            format!("{ranged} point or spot light(s) end at a range")
+        } else {
+            "no light has a range".into()
+        },
+    );
     let quad: Vec<_> =
         points.iter().filter(|l| l.falloff_form == FalloffForm::Quadratic && l.falloff_alpha > 0.0).collect();
     let falloff_quadratic = decide(
@@ -240,10 +290,10 @@ pub fn analyze(scene: &Scene, specular: SpecularModel) -> Analysis {
         "falloff 1/(1+αd²)",
         !quad.is_empty(),
         if quad.is_empty() {
-            "no point light with α > 0 (α = 0 is no falloff)".into()
+            "no point or spot light with α > 0 (α = 0 is no falloff)".into()
         } else {
             let alphas: Vec<String> = quad.iter().map(|l| format!("{}", l.falloff_alpha)).collect();
-            format!("{} point light(s) with α = {}", quad.len(), alphas.join(", "))
+            format!("{} point or spot light(s) with α = {}", quad.len(), alphas.join(", "))
         },
     );
     let lin = points.iter().filter(|l| l.falloff_form == FalloffForm::Linear).count();
@@ -251,7 +301,11 @@ pub fn analyze(scene: &Scene, specular: SpecularModel) -> Analysis {
         &mut d,
         "falloff 1/(d+d0)",
         lin > 0,
-        if lin > 0 { format!("{lin} point light(s) use the chapter's form") } else { "no point light uses it".into() },
+        if lin > 0 {
+            format!("{lin} point or spot light(s) use the chapter's form")
+        } else {
+            "no point or spot light uses it".into()
+        },
     );
     let max_rd = used.iter().map(|m| m.r_d * m.color.iter().cloned().fold(0.0, f64::max)).fold(0.0, f64::max);
     let diffuse = decide(
@@ -335,6 +389,8 @@ pub fn analyze(scene: &Scene, specular: SpecularModel) -> Analysis {
             point_lights,
             falloff_quadratic,
             falloff_linear,
+            spot_lights,
+            light_range,
         },
         decisions: d,
     }
@@ -378,6 +434,12 @@ mod tests {
         s.lights[1].falloff_form = FalloffForm::Linear;
         let k = analyze(&s, SpecularModel::Phong).key;
         assert!(k.point_lights && k.falloff_linear && !k.falloff_quadratic);
+        assert!(!k.spot_lights && !k.light_range);
+        s.lights[1].set_kind(LightKind::Spot);
+        let k = analyze(&s, SpecularModel::Phong).key;
+        assert!(k.point_lights && k.spot_lights && !k.light_range, "a spot needs the point-light path too");
+        s.lights[1].range = Some(4.0);
+        assert!(analyze(&s, SpecularModel::Phong).key.light_range);
         s.lights.clear();
         assert_eq!(analyze(&s, SpecularModel::Phong).key, EffectKey::NONE.with_ambient_if(false));
     }

@@ -52,6 +52,12 @@ pub const LIGHT_DIST_MIN: f64 = 1e-4;
 /// a light touches a surface (d = 0). Parameter validation keeps `d0` at or above it.
 pub const D0_MIN: f64 = 1e-3;
 
+/// Smallest span `cos(inner) − cos(outer)` of a spot light's ramp (KHR_lights_punctual's own
+/// recommended floor). Equal cones would divide by zero; with this floor the edge is a ramp at
+/// most 1e-3 wide in cos, about 0.08° at a 45° cone (the hard edge it stands for, at a pixel's
+/// scale), and the ramp's slope is at most 1e3.
+pub const SPOT_COS_SPAN_MIN: f64 = 1e-3;
+
 /// All guards by name, in the order they are declared (used by the WGSL ↔ Rust equality test and
 /// by the README table).
 pub const ALL: &[(&str, f64)] = &[
@@ -65,4 +71,5 @@ pub const ALL: &[(&str, f64)] = &[
     ("FRESNEL_G_PLUS_C_MIN", FRESNEL_G_PLUS_C_MIN),
     ("LIGHT_DIST_MIN", LIGHT_DIST_MIN),
     ("D0_MIN", D0_MIN),
+    ("SPOT_COS_SPAN_MIN", SPOT_COS_SPAN_MIN),
 ];

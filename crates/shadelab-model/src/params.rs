@@ -34,6 +34,9 @@ pub enum LightKind {
     Directional,
     /// A point source with distance falloff.
     Point,
+    /// A point source that lights only a cone (glTF's spot light): fully inside the inner cone,
+    /// not at all outside the outer one, a smooth ramp between.
+    Spot,
 }
 
 /// Which distance falloff a point light uses.
@@ -172,6 +175,20 @@ pub const D0: ParamRange = ParamRange {
     min: crate::guards::D0_MIN,
     max: 1e3,
 };
+/// Half-angle of a spot light's cone, radians (glTF `innerConeAngle`, `outerConeAngle`): from
+/// the axis (0) to a half-space (π/2).
+pub const CONE_ANGLE: ParamRange = ParamRange {
+    flag: "cone angle",
+    symbol: "θ",
+    meaning: "spot cone half-angle in radians",
+    min: 0.0,
+    max: std::f64::consts::FRAC_PI_2,
+};
+/// [`CONE_ANGLE`] with π/2 rounded up to f32, as glTF files store it.
+pub const CONE_ANGLE_F32: ParamRange = ParamRange { max: std::f32::consts::FRAC_PI_2 as f64, ..CONE_ANGLE };
+/// Distance at which a point or spot light ends (glTF `range`).
+pub const RANGE: ParamRange =
+    ParamRange { flag: "range", symbol: "r", meaning: "light range (where its light ends)", min: 1e-6, max: 1e9 };
 /// Image width in pixels.
 pub const WIDTH: ParamRange =
     ParamRange { flag: "--width", symbol: "w", meaning: "image width in pixels", min: 1.0, max: 8192.0 };
@@ -261,7 +278,7 @@ impl NamedValue for SpecularModel {
 impl NamedValue for LightKind {
     const FLAG: &'static str = "--light";
     const ALL: &'static [(&'static str, Self)] =
-        &[("directional", LightKind::Directional), ("point", LightKind::Point)];
+        &[("directional", LightKind::Directional), ("point", LightKind::Point), ("spot", LightKind::Spot)];
 }
 impl NamedValue for FalloffForm {
     const FLAG: &'static str = "--falloff-form";

@@ -70,7 +70,19 @@ pub struct Light {
     pub falloff_alpha: f64,
     /// `d0` of `1/(d + d0)`.
     pub d0: f64,
+    /// Spot lights: half-angles of the inner cone (full light) and of the outer cone (no light
+    /// beyond), radians, `0 ≤ inner < outer ≤ π/2` (glTF `innerConeAngle`, `outerConeAngle`).
+    /// The axis is `direction`.
+    pub inner_cone: f64,
+    pub outer_cone: f64,
+    /// Point and spot lights: the distance at which the light ends (glTF `range`), reached
+    /// smoothly by [`crate::brdf::window_range`]; `None`: it never ends.
+    pub range: Option<f64>,
 }
+
+/// glTF's default outer cone of a spot light (π/4), also the cone a light gets when it is made
+/// a spot light.
+pub const SPOT_OUTER_CONE_DEFAULT: f64 = std::f64::consts::FRAC_PI_4;
 
 impl Light {
     pub fn directional(direction: DVec3, color: [f64; 3], intensity: f64) -> Self {
@@ -83,6 +95,9 @@ impl Light {
             falloff_form: FalloffForm::Quadratic,
             falloff_alpha: 0.0,
             d0: 1.0,
+            inner_cone: 0.0,
+            outer_cone: SPOT_OUTER_CONE_DEFAULT,
+            range: None,
         }
     }
     pub fn point(position: DVec3, color: [f64; 3], intensity: f64, falloff_alpha: f64) -> Self {
@@ -95,6 +110,26 @@ impl Light {
             falloff_form: FalloffForm::Quadratic,
             falloff_alpha,
             d0: 1.0,
+            inner_cone: 0.0,
+            outer_cone: SPOT_OUTER_CONE_DEFAULT,
+            range: None,
+        }
+    }
+    /// A spot light at `position` shining along `direction`, with cones `inner < outer` (radians).
+    pub fn spot(
+        position: DVec3,
+        direction: DVec3,
+        color: [f64; 3],
+        intensity: f64,
+        falloff_alpha: f64,
+        (inner_cone, outer_cone): (f64, f64),
+    ) -> Self {
+        Light {
+            kind: LightKind::Spot,
+            direction: direction.normalize_or(DVec3::NEG_Y),
+            inner_cone,
+            outer_cone,
+            ..Light::point(position, color, intensity, falloff_alpha)
         }
     }
 }
@@ -326,15 +361,16 @@ impl Scene {
 
 impl Light {
     /// Turn the light into another kind, keeping where it shines from: a directional light
-    /// becomes a point light `LIGHT_STAND_OFF` units back along its direction from the origin; a point light
-    /// becomes a directional light along the line from it to the origin.
+    /// becomes a point or spot light `LIGHT_STAND_OFF` units back along its direction from the
+    /// origin (a spot keeps the direction as its axis); a point light becomes a directional light
+    /// or a spot light along the line from it to the origin; a spot light keeps its position
+    /// (point) or its axis (directional).
     pub fn set_kind(&mut self, kind: LightKind) {
-        if self.kind == kind {
-            return;
-        }
-        match kind {
-            LightKind::Point => self.position = -self.direction * LIGHT_STAND_OFF,
-            LightKind::Directional => self.direction = (-self.position).normalize_or(DVec3::NEG_Y),
+        use LightKind::*;
+        match (self.kind, kind) {
+            (Directional, Point | Spot) => self.position = -self.direction * LIGHT_STAND_OFF,
+            (Point, Directional | Spot) => self.direction = (-self.position).normalize_or(DVec3::NEG_Y),
+            _ => {}
         }
         self.kind = kind;
     }

@@ -273,6 +273,8 @@ mod tests {
             Effect::PointLights => &[("Light", "position")],
             Effect::FalloffQuadratic => &[("Light", "falloff_alpha")],
             Effect::FalloffLinear => &[("Light", "d0")],
+            Effect::SpotLights => &[("Light", "spot_axis"), ("Light", "cos_inner"), ("Light", "cos_outer")],
+            Effect::LightRange => &[("Light", "range")],
             Effect::SpecularCookTorrance => &[("Object", "mu")],
             // r_d, h and mirror are passed to light_contribution in every permutation (unused
             // there without the effect): their functions are the proof for these two.
@@ -338,7 +340,7 @@ mod tests {
         let module = parse(&lighting_source());
         assert_eq!(
             wgsl_layout(&module, "Light"),
-            rust_layout!(LightUniform: position, direction, radiance, kind, falloff_form, falloff_alpha, d0)
+            rust_layout!(LightUniform: position, direction, radiance, kind, falloff_form, falloff_alpha, d0, spot_axis, cos_inner, cos_outer, range, _pad)
         );
         assert_eq!(
             wgsl_layout(&module, "Globals"),

@@ -40,7 +40,9 @@ pub const ERROR_ABS_FLOOR: f64 = 1e-6;
 
 /// Colour of the material in the per-light contribution (`SWEEP_COLOR` in sweep.wgsl).
 const SWEEP_COLOR: [f64; 3] = [0.8, 0.5, 0.2];
-const OUTPUTS: usize = 18;
+const OUTPUTS: usize = 20;
+/// Outer spot cone per unit of m (`SWEEP_CONE_PER_M` in sweep.wgsl, π/2 as an f32).
+const SWEEP_CONE_PER_M: f64 = std::f32::consts::FRAC_PI_2 as f64;
 
 /// One geometry: a (possibly zero or non-unit) normal, and unit view and light vectors, in f32
 /// as the GPU gets them.
@@ -210,8 +212,10 @@ impl SweepInputs {
 
 /// The f64 reference of the kernel's outputs for one combination's inputs.
 #[allow(clippy::too_many_arguments)]
-/// `l_len` scales the light direction a point light's sample gives (1 for the exact model): the
-/// GPU's `to_light / d` is a unit vector only to a few f32 ulps.
+/// `l_len` scales the light direction a point light's sample gives, and the spot cone's cosines
+/// (1 for the exact model): the GPU's `to_light / d` is a unit vector, and its `cos` of a cone
+/// angle exact, only to a few f32 ulps. (Near 1 an f32 cosine is good to 6e-8, so a cone under a
+/// degree, where `1 − cos` is ~1e-4 or less, is decided by that rounding.)
 fn reference(
     n_raw: DVec3,
     v: DVec3,
@@ -234,6 +238,7 @@ fn reference(
         falloff_form: FalloffForm::Quadratic,
         falloff_alpha: alpha,
         d0,
+        ..Light::point(DVec3::ZERO, [1.0; 3], 1.0, 0.0)
     };
     let quadratic = brdf::light_sample(&light, DVec3::ZERO, n);
     light.falloff_form = FalloffForm::Linear;
@@ -252,6 +257,8 @@ fn reference(
     let ct = brdf::specular_cook_torrance(n, v, l, m, v_index);
     let cp = brdf::light_contribution(quadratic.0, quadratic.1, n, v, &mat, v_index, SpecularModel::Phong);
     let cc = brdf::light_contribution(linear.0, linear.1, n, v, &mat, v_index, SpecularModel::CookTorrance);
+    let outer = m * SWEEP_CONE_PER_M;
+    let inner = outer * alpha.min(1.0);
     [
         brdf::diffuse_lambert(n.dot(l)),
         brdf::specular_phong(v.dot(r), h, mirror),
@@ -271,6 +278,8 @@ fn reference(
         cc[0],
         cc[1],
         cc[2],
+        brdf::spot_cone(v.dot(l), inner.cos() * l_len, outer.cos() * l_len),
+        brdf::window_range(d, d0),
     ]
 }
 
@@ -371,6 +380,8 @@ fn terms() -> Vec<TermReport> {
             (0.8 + d_max / N_DOT_V_MIN) / D0_MIN,
             "(r_d C + r_s S_max) / D0_MIN",
         ),
+        t("spot_cone", 18..19, 1.0, "a ramp clamped to [0, 1], squared"),
+        t("window_range", 19..20, 1.0, "1 − x⁴, x clamped to [0, 1]"),
     ]
 }
 

@@ -2,6 +2,8 @@
 //! `uniform_layouts_match_wgsl` holds every size and field offset equal to naga's layout.
 
 use bytemuck::{Pod, Zeroable};
+use glam::DVec3;
+use shadelab_model::brdf::safe_normalize;
 use shadelab_model::scene::MAX_LIGHTS;
 use shadelab_model::{FalloffForm, LightKind, Material, Object, Scene};
 
@@ -15,6 +17,12 @@ pub struct LightUniform {
     pub falloff_form: u32,
     pub falloff_alpha: f32,
     pub d0: f32,
+    pub spot_axis: [f32; 4],
+    pub cos_inner: f32,
+    pub cos_outer: f32,
+    /// 0: the light never ends.
+    pub range: f32,
+    pub _pad: f32,
 }
 
 #[repr(C)]
@@ -66,6 +74,7 @@ impl GlobalsUniform {
                 kind: match l.kind {
                     LightKind::Directional => 0,
                     LightKind::Point => 1,
+                    LightKind::Spot => 2,
                 },
                 falloff_form: match l.falloff_form {
                     FalloffForm::Quadratic => 0,
@@ -73,6 +82,11 @@ impl GlobalsUniform {
                 },
                 falloff_alpha: l.falloff_alpha as f32,
                 d0: l.d0 as f32,
+                spot_axis: safe_normalize(l.direction, DVec3::NEG_Y).as_vec3().extend(0.0).to_array(),
+                cos_inner: l.inner_cone.cos() as f32,
+                cos_outer: l.outer_cone.cos() as f32,
+                range: l.range.unwrap_or(0.0) as f32,
+                _pad: 0.0,
             };
         }
         GlobalsUniform {

@@ -179,8 +179,9 @@ pub struct SceneArgs {
     /// d0 of the linear falloff 1/(d + d0), in [0.001, 1000].
     #[arg(long)]
     pub d0: Option<String>,
-    /// Make every light directional or point.
-    #[arg(long, value_name = "directional|point")]
+    /// Make every light directional, point or spot (a spot gets glTF's default cone, 45°, aimed
+    /// at the origin).
+    #[arg(long, value_name = "directional|point|spot")]
     pub light: Option<String>,
 }
 

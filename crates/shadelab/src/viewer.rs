@@ -97,6 +97,31 @@ struct View {
     texture: egui::TextureId,
 }
 
+/// What a file dialog is asked for.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum FileRequest {
+    /// A glTF file to open.
+    Open,
+    /// Where to save the scene.
+    Save,
+}
+
+/// Asks the person for a file: the native dialog ([`native_file_picker`]), or a stand-in in
+/// tests. `None`: nothing chosen. Called on a worker thread, so a dialog never stops the drawing.
+pub type FilePicker = Arc<dyn Fn(FileRequest) -> Option<PathBuf> + Send + Sync>;
+
+/// The desktop's file dialog (rfd: the XDG desktop portal, else zenity; GTK is not needed),
+/// filtered to glTF files.
+pub fn native_file_picker() -> FilePicker {
+    Arc::new(|request| {
+        let dialog = rfd::FileDialog::new().add_filter("glTF 2.0 scene", &["gltf", "glb"]);
+        match request {
+            FileRequest::Open => dialog.set_title("Open a scene").pick_file(),
+            FileRequest::Save => dialog.set_title("Save the scene").set_file_name("scene.gltf").save_file(),
+        }
+    })
+}
+
 /// The viewer's state; `pub` so that tests can drive it through egui_kittest.
 pub struct Viewer {
     scene_name: String,
@@ -128,6 +153,10 @@ pub struct Viewer {
     difference: DifferenceView,
     /// The panel's file path field (open / save scene).
     pub file_field: String,
+    /// How "open…" and "save as…" ask for a file.
+    pub file_picker: FilePicker,
+    /// A dialog on show: what it is for, and where its answer arrives.
+    picking: Option<(FileRequest, std::sync::mpsc::Receiver<Option<PathBuf>>)>,
 }
 
 impl Viewer {
@@ -172,6 +201,8 @@ impl Viewer {
             show_live_numbers: true,
             difference: DifferenceView::default(),
             file_field: String::new(),
+            file_picker: native_file_picker(),
+            picking: None,
         })
     }
 
@@ -282,6 +313,54 @@ impl Viewer {
             Ok(()) => (format!("saved {}", path.display()), false),
             Err(e) => (e.to_string(), true),
         });
+    }
+
+    /// Show a file dialog on a worker thread (one at a time); its answer is taken by
+    /// [`Self::poll_file_dialog`].
+    fn ask_for_file(&mut self, request: FileRequest) {
+        if self.picking.is_some() {
+            return;
+        }
+        let (tx, rx) = std::sync::mpsc::channel();
+        let picker = self.file_picker.clone();
+        std::thread::spawn(move || {
+            // A send fails only if the viewer is gone: nothing to do then.
+            let _ = tx.send(picker(request));
+        });
+        self.picking = Some((request, rx));
+    }
+
+    /// Act on a file dialog's answer when it has come: open or save the chosen file.
+    fn poll_file_dialog(&mut self, ctx: &egui::Context) {
+        let Some((request, rx)) = &self.picking else { return };
+        let answer = match rx.try_recv() {
+            Ok(answer) => answer,
+            Err(std::sync::mpsc::TryRecvError::Empty) => {
+                // Look again soon: the answer comes from outside egui's events.
+                ctx.request_repaint_after(std::time::Duration::from_millis(100));
+                return;
+            }
+            Err(std::sync::mpsc::TryRecvError::Disconnected) => None,
+        };
+        let request = *request;
+        self.picking = None;
+        match answer {
+            Some(path) => {
+                self.file_field = path.display().to_string();
+                match request {
+                    FileRequest::Open => self.open_file(&path),
+                    FileRequest::Save => self.save_scene(&path),
+                }
+            }
+            None => {
+                self.message = Some((
+                    "no file chosen (the dialog was closed, or this desktop has no file dialog: type a path \
+                     or drop a file on the window)"
+                        .into(),
+                    false,
+                ))
+            }
+        }
     }
 
     /// Files dropped on the window are opened (the last one, if several).
@@ -406,12 +485,12 @@ impl Viewer {
             self.difference.overlay(&painter, rect, &mode, self.frame_ms, self.show_live_numbers);
             return; // the light markers would hide the error map
         }
-        // Where the lights are: a marker at each point light, and at the far point a directional
-        // light comes from.
+        // Where the lights are: a marker at each point or spot light, and at the far point a
+        // directional light comes from.
         let vp = self.scene.camera.projection(w as f64 / h as f64) * self.scene.camera.view();
         for (i, l) in self.scene.lights.iter().enumerate() {
             let p = match l.kind {
-                LightKind::Point => l.position,
+                LightKind::Point | LightKind::Spot => l.position,
                 LightKind::Directional => self.orbit.target - l.direction * 4.0,
             };
             let clip = vp * p.extend(1.0);
@@ -432,7 +511,10 @@ impl Viewer {
             } else {
                 painter.circle_stroke(at, 6.0, egui::Stroke::new(2.5, color));
             }
-            let kind = if l.kind == LightKind::Point { "point" } else { "dir." };
+            let kind = match l.kind {
+                LightKind::Directional => "dir.",
+                k => k.name(),
+            };
             let label = format!("L{} {kind}{}", i + 1, if on_view { "" } else { " (off view)" });
             let right_half = at.x > rect.center().x;
             let (align, offset) = if right_half {
@@ -464,7 +546,7 @@ impl Viewer {
                 egui::TextEdit::singleline(&mut self.file_field).desired_width(170.0).hint_text("scene.gltf / .glb"),
             )
             .on_hover_text("a glTF 2.0 file to open (or drop a file on the window)");
-            if ui.button("open").clicked() {
+            if ui.button("open").on_hover_text("open the file named in the field").clicked() {
                 let p = PathBuf::from(self.file_field.trim());
                 self.open_file(&p);
             }
@@ -472,6 +554,26 @@ impl Viewer {
                 let name = self.file_field.trim();
                 let p = if name.is_empty() { PathBuf::from("shadelab-scene.gltf") } else { PathBuf::from(name) };
                 self.save_scene(&p);
+            }
+        });
+        ui.horizontal(|ui| {
+            let idle = self.picking.is_none();
+            if ui
+                .add_enabled(idle, egui::Button::new("open…"))
+                .on_hover_text("choose a glTF file in a dialog")
+                .clicked()
+            {
+                self.ask_for_file(FileRequest::Open);
+            }
+            if ui
+                .add_enabled(idle, egui::Button::new("save as…"))
+                .on_hover_text("choose where to save the scene as shown (.gltf or .glb)")
+                .clicked()
+            {
+                self.ask_for_file(FileRequest::Save);
+            }
+            if !idle {
+                ui.spinner();
             }
         });
         ui.horizontal(|ui| {
@@ -594,19 +696,19 @@ impl Viewer {
                     let mut kind = l.kind;
                     ui.selectable_value(&mut kind, LightKind::Directional, "directional");
                     ui.selectable_value(&mut kind, LightKind::Point, "point");
+                    ui.selectable_value(&mut kind, LightKind::Spot, "spot")
+                        .on_hover_text("a point light that lights only a cone (glTF's spot light)");
                     l.set_kind(kind);
                     if ui.button("remove").clicked() {
                         remove = Some(i);
                     }
                 });
-                let v = if l.kind == LightKind::Point { &mut l.position } else { &mut l.direction };
-                ui.horizontal(|ui| {
-                    ui.label(if l.kind == LightKind::Point { "position" } else { "direction" });
-                    for c in [&mut v.x, &mut v.y, &mut v.z] {
-                        ui.add(egui::DragValue::new(c).speed(0.05).range(-50.0..=50.0));
-                    }
-                });
-                if l.kind == LightKind::Directional {
+                let positional = l.kind != LightKind::Directional;
+                if positional {
+                    vec3_row(ui, "position", &mut l.position);
+                }
+                if l.kind != LightKind::Point {
+                    vec3_row(ui, if positional { "axis" } else { "direction" }, &mut l.direction);
                     l.direction = l.direction.normalize_or(DVec3::NEG_Y);
                 }
                 ui.horizontal(|ui| {
@@ -616,7 +718,7 @@ impl Viewer {
                     }
                     slider(ui, &mut l.intensity, &params::INTENSITY, true);
                 });
-                if l.kind == LightKind::Point {
+                if positional {
                     ui.horizontal(|ui| {
                         ui.selectable_value(&mut l.falloff_form, FalloffForm::Quadratic, "1/(1+αd²)");
                         ui.selectable_value(&mut l.falloff_form, FalloffForm::Linear, "1/(d+d0)");
@@ -625,6 +727,28 @@ impl Viewer {
                         FalloffForm::Quadratic => slider(ui, &mut l.falloff_alpha, &params::FALLOFF, true),
                         FalloffForm::Linear => slider(ui, &mut l.d0, &params::D0, true),
                     };
+                    ui.horizontal(|ui| {
+                        let mut ends = l.range.is_some();
+                        ui.checkbox(&mut ends, "range")
+                            .on_hover_text("the light ends at this distance, fading as glTF's 1 − (d/range)⁴");
+                        let mut r = l.range.unwrap_or(10.0);
+                        if ends {
+                            ui.add(egui::Slider::new(&mut r, 0.1..=100.0).logarithmic(true))
+                                .on_hover_text(tooltip(&params::RANGE));
+                        }
+                        l.range = ends.then_some(r);
+                    });
+                }
+                if l.kind == LightKind::Spot {
+                    // Degrees on the panel, radians in the model; the inner cone stays inside the outer.
+                    let mut outer = l.outer_cone.to_degrees();
+                    let mut inner = l.inner_cone.to_degrees();
+                    ui.add(egui::Slider::new(&mut outer, 0.5..=90.0).text("outer cone °"))
+                        .on_hover_text("half-angle beyond which the spot gives no light");
+                    ui.add(egui::Slider::new(&mut inner, 0.0..=outer - 0.5).text("inner cone °"))
+                        .on_hover_text("half-angle within which the spot gives its full light");
+                    l.outer_cone = outer.to_radians();
+                    l.inner_cone = inner.min(outer - 0.5).max(0.0).to_radians();
                 }
             });
         }
@@ -727,6 +851,7 @@ impl eframe::App for Viewer {
         }
         self.keyboard(&ctx);
         self.dropped_files(&ctx);
+        self.poll_file_dialog(&ctx);
         egui::Panel::right("parameters").resizable(true).default_size(340.0).show(ui, |ui| {
             egui::ScrollArea::vertical().show(ui, |ui| self.panel(ui));
         });
@@ -737,6 +862,16 @@ impl eframe::App for Viewer {
             ctx.request_repaint();
         }
     }
+}
+
+/// A row of three drag values for a vector (a light's position or direction).
+fn vec3_row(ui: &mut egui::Ui, label: &str, v: &mut DVec3) {
+    ui.horizontal(|ui| {
+        ui.label(label);
+        for c in [&mut v.x, &mut v.y, &mut v.z] {
+            ui.add(egui::DragValue::new(c).speed(0.05).range(-50.0..=50.0));
+        }
+    });
 }
 
 fn tooltip(r: &ParamRange) -> String {

@@ -181,3 +181,58 @@ fn open_and_save_scene_files() {
     assert_eq!(saved.scene.materials, board.materials);
     assert_eq!(saved.scene.lights, board.lights);
 }
+
+/// "open…" and "save as…" ask the file picker (the native dialog in the real viewer, a stand-in
+/// here) on a worker thread, then open or save what it answers; no answer changes nothing.
+#[test]
+fn file_dialog_buttons_open_and_save_the_chosen_file() {
+    use shadelab::viewer::FileRequest;
+    use std::sync::{Arc, Mutex};
+    let mut h = harness();
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
+    let out = std::path::PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("viewer-dialog-saved.glb");
+    let _ = std::fs::remove_file(&out);
+    let asked: Arc<Mutex<Vec<FileRequest>>> = Arc::default();
+    let answer: Arc<Mutex<Option<std::path::PathBuf>>> = Arc::default();
+    let (a, b) = (asked.clone(), answer.clone());
+    h.state_mut().file_picker = Arc::new(move |req| {
+        a.lock().unwrap().push(req);
+        b.lock().unwrap().clone()
+    });
+    // Frames until the panel's message changes (the picker answers on a worker thread).
+    let wait = |h: &mut Harness<'static, Viewer>| {
+        let before = h.state().message().cloned();
+        for _ in 0..100 {
+            h.run_steps(1);
+            if h.state().message().cloned() != before {
+                return;
+            }
+            std::thread::sleep(std::time::Duration::from_millis(20));
+        }
+    };
+    // Closing the dialog: nothing changes, and the panel says so.
+    let before = h.state_mut().scene_mut().clone();
+    h.get_by_label("open…").click();
+    wait(&mut h);
+    let (msg, is_error) = h.state().message().cloned().expect("a message");
+    assert!(!is_error && msg.contains("no file chosen"), "{msg}");
+    assert_eq!(*h.state_mut().scene_mut(), before);
+    // Choosing a file opens it.
+    *answer.lock().unwrap() = Some(root.join("assets/figure-7-3-pyramid.gltf"));
+    h.get_by_label("open…").click();
+    wait(&mut h);
+    let (msg, is_error) = h.state().message().cloned().expect("a message");
+    assert!(!is_error && msg.contains("opened") && msg.contains("figure-7-3-pyramid.gltf"), "{msg}");
+    let pyramid = h.state_mut().scene_mut().clone();
+    assert_ne!(pyramid, before);
+    assert!(h.state().file_field.ends_with("figure-7-3-pyramid.gltf"));
+    // "save as…" writes where the dialog says.
+    *answer.lock().unwrap() = Some(out.clone());
+    h.get_by_label("save as…").click();
+    wait(&mut h);
+    let (msg, is_error) = h.state().message().cloned().expect("a message");
+    assert!(!is_error && msg.starts_with("saved"), "{msg}");
+    let saved = shadelab_model::gltf_io::load_scene(&out).expect("the saved scene loads");
+    assert_eq!(saved.scene.objects, pyramid.objects);
+    assert_eq!(*asked.lock().unwrap(), [FileRequest::Open, FileRequest::Open, FileRequest::Save]);
+}

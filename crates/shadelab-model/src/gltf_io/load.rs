@@ -899,18 +899,24 @@ impl<'a> Reader<'a> {
         let kind = match l.type_ {
             Checked::Valid(Type::Directional) => LightKind::Directional,
             Checked::Valid(Type::Point) => LightKind::Point,
-            Checked::Valid(Type::Spot) => {
-                self.cx.warn(format!("{what}: spot cone not rendered, treated as point light"));
-                LightKind::Point
-            }
+            Checked::Valid(Type::Spot) => LightKind::Spot,
             Checked::Invalid => return Err(self.cx.invalid(format!("{what}: unknown light type"))),
         };
-        if kind == LightKind::Point && l.range.is_some() {
-            self.cx.warn(format!(
-                "{what}: range {} not modelled: the falloff 1/(1 + αd²) has no cut-off",
-                l.range.unwrap_or_default()
-            ));
-        }
+        let (inner_cone, outer_cone) = match (&l.spot, kind) {
+            (Some(s), LightKind::Spot) => (s.inner_cone_angle as f64, s.outer_cone_angle as f64),
+            (None, LightKind::Spot) => return Err(self.cx.invalid(format!("{what}: a spot light without `spot`"))),
+            _ => (0.0, crate::scene::SPOT_OUTER_CONE_DEFAULT),
+        };
+        let range = match l.range {
+            Some(r) if kind == LightKind::Directional => {
+                self.cx.warn(format!("{what}: range {r} ignored: a directional light has no distance"));
+                None
+            }
+            Some(r) => Some(params::RANGE.check(r as f64).map_err(|_| {
+                self.cx.invalid(format!("{what}: range {r} is not in [{}, {}]", params::RANGE.min, params::RANGE.max))
+            })?),
+            None => None,
+        };
         let mut light = Light {
             kind,
             position,
@@ -918,8 +924,11 @@ impl<'a> Reader<'a> {
             color,
             intensity: i_l,
             falloff_form: FalloffForm::Quadratic,
-            falloff_alpha: if kind == LightKind::Point { POINT_FALLOFF_ALPHA } else { 0.0 },
+            falloff_alpha: if kind == LightKind::Directional { 0.0 } else { POINT_FALLOFF_ALPHA },
             d0: 1.0,
+            inner_cone,
+            outer_cone,
+            range,
         };
         if let Some(ex) = shadelab_extras(&self.cx, &l.extras, &what)? {
             let e = Extras { cx: &self.cx, what: &what, ex: &ex };
@@ -948,7 +957,26 @@ impl<'a> Reader<'a> {
             {
                 light.direction = d;
             }
+            if let Some(v) = e.num("inner_cone", &params::CONE_ANGLE_F32)? {
+                light.inner_cone = v;
+            }
+            if let Some(v) = e.num("outer_cone", &params::CONE_ANGLE_F32)? {
+                light.outer_cone = v;
+            }
+            if let Some(v) = e.num("range", &params::RANGE)? {
+                light.range = Some(v);
+            }
         }
+        // glTF's f32 π/2 is a little above f64's: the cones are held to [0, π/2] after the check.
+        let (inner, outer) = (light.inner_cone, light.outer_cone);
+        let span = params::CONE_ANGLE_F32;
+        if kind == LightKind::Spot && !(span.min <= inner && inner < outer && outer <= span.max) {
+            return Err(self.cx.invalid(format!(
+                "{what}: spot cone angles inner {inner}, outer {outer} must be 0 ≤ inner < outer ≤ π/2 (radians)"
+            )));
+        }
+        light.inner_cone = inner.min(params::CONE_ANGLE.max);
+        light.outer_cone = outer.min(params::CONE_ANGLE.max);
         Ok(light)
     }
 

@@ -323,12 +323,13 @@ fn light(l: &Light) -> Value {
     let pi = std::f64::consts::PI;
     let (kind, intensity) = match l.kind {
         LightKind::Directional => ("directional", l.intensity * pi),
-        LightKind::Point if l.falloff_form == FalloffForm::Quadratic && l.falloff_alpha > 0.0 => {
-            ("point", l.intensity * pi / l.falloff_alpha)
+        LightKind::Point | LightKind::Spot => {
+            let far =
+                if l.falloff_form == FalloffForm::Quadratic && l.falloff_alpha > 0.0 { l.falloff_alpha } else { 1.0 };
+            (l.kind.name(), l.intensity * pi / far)
         }
-        LightKind::Point => ("point", l.intensity * pi),
     };
-    json!({
+    let mut v = json!({
         "type": kind,
         "color": rgb(l.color),
         "intensity": num(intensity),
@@ -342,5 +343,15 @@ fn light(l: &Light) -> Value {
             "position": vec3(l.position),
             "direction": vec3(l.direction),
         } },
-    })
+    });
+    if l.kind == LightKind::Spot {
+        v["spot"] = json!({ "innerConeAngle": num(l.inner_cone), "outerConeAngle": num(l.outer_cone) });
+        v["extras"]["shadelab"]["inner_cone"] = num(l.inner_cone);
+        v["extras"]["shadelab"]["outer_cone"] = num(l.outer_cone);
+    }
+    if let Some(r) = l.range.filter(|_| l.kind != LightKind::Directional) {
+        v["range"] = num(r);
+        v["extras"]["shadelab"]["range"] = num(r);
+    }
+    v
 }

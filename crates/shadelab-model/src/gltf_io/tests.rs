@@ -56,6 +56,7 @@ pub(crate) fn assert_same_scene(a: &Scene, b: &Scene) {
             (x.kind, x.color, x.intensity, x.falloff_form, x.falloff_alpha, x.d0),
             (y.kind, y.color, y.intensity, y.falloff_form, y.falloff_alpha, y.d0)
         );
+        assert_eq!((x.inner_cone, x.outer_cone, x.range), (y.inner_cone, y.outer_cone, y.range));
         near(x.position, y.position, "light position");
         near(x.direction, y.direction, "light direction");
     }
@@ -283,11 +284,13 @@ fn lights_spot_range_limit_and_default() {
     let p = &s.scene.lights[1];
     assert_eq!((p.kind, p.falloff_form, p.falloff_alpha), (LightKind::Point, FalloffForm::Quadratic, 1.0));
     near(p.position, DVec3::new(0.0, 2.0, 0.0), "position");
-    assert_eq!(s.scene.lights[2].kind, LightKind::Point);
+    assert_eq!(p.range, Some(4.0));
+    let spot = &s.scene.lights[2];
+    assert_eq!((spot.kind, spot.inner_cone, spot.outer_cone), (LightKind::Spot, 0.0, 0.5f32 as f64));
+    near(spot.direction, DVec3::NEG_Y, "spot axis");
     let w = s.warnings.join("\n");
-    for part in ["spot cone not rendered, treated as point light", "range 4 not modelled", "first 8 are kept"] {
-        assert!(w.contains(part), "{w}");
-    }
+    assert!(w.contains("first 8 are kept"), "{w}");
+    assert!(!w.contains("spot") && !w.contains("range"), "spot and range are read, not warned about: {w}");
     // No light at all: a default one, said so.
     let s = load(&triangle(json!({})));
     assert_eq!(s.scene.lights.len(), 1);
@@ -478,9 +481,64 @@ fn light_kinds_and_falloff_round_trip() {
         },
         Light::point(DVec3::new(-1.0, 2.0, 3.0), [1.0; 3], 2.0, 0.25),
         Light::directional(DVec3::new(0.0, 0.0, 1.0), [1.0, 0.5, 0.0], 0.5),
+        Light { range: Some(7.5), ..Light::point(DVec3::new(0.0, 3.0, 0.0), [1.0; 3], 2.0, 0.5) },
+        Light {
+            range: Some(12.0),
+            ..Light::spot(DVec3::new(2.0, 4.0, 1.0), DVec3::new(-0.3, -1.0, 0.1), [1.0; 3], 5.0, 0.1, (0.2, 0.45))
+        },
     ];
     let back = load(&scene_to_glb(&scene, &SceneSettings::default())).scene;
     assert_same_scene(&scene, &back);
+    assert_eq!(back.lights[4].kind, LightKind::Spot);
+}
+
+#[test]
+fn spot_lights_and_range_are_read_from_khr_lights_punctual() {
+    let light = |l: Value| {
+        triangle(json!({
+            "extensionsUsed": ["KHR_lights_punctual"],
+            "extensions": { "KHR_lights_punctual": { "lights": [l] } },
+            "scenes": [{ "nodes": [0, 1] }],
+            "nodes": [
+                { "mesh": 0 },
+                // Rotated 90° about x: the light's −Z points down −Y.
+                { "translation": [0.0, 3.0, 0.0], "rotation": [-0.70710677, 0.0, 0.0, 0.70710677],
+                  "extensions": { "KHR_lights_punctual": { "light": 0 } } },
+            ],
+        }))
+    };
+    let s = load_scene_from_slice(&light(json!({
+        "type": "spot", "intensity": 10.0, "range": 5.0, "spot": { "innerConeAngle": 0.1, "outerConeAngle": 0.6 }
+    })))
+    .unwrap();
+    let l = &s.scene.lights[0];
+    assert_eq!(l.kind, LightKind::Spot);
+    assert_eq!((l.inner_cone, l.outer_cone, l.range), (0.1f32 as f64, 0.6f32 as f64, Some(5.0)));
+    near(l.direction, DVec3::NEG_Y, "spot axis");
+    assert!(s.warnings.iter().all(|w| !w.contains("spot") && !w.contains("range")), "{:?}", s.warnings);
+    // glTF's default cones, and an outer cone of exactly π/2 as f32.
+    let s = load_scene_from_slice(&light(json!({ "type": "spot", "spot": {} }))).unwrap();
+    assert_eq!((s.scene.lights[0].inner_cone, s.scene.lights[0].outer_cone), (0.0, std::f32::consts::FRAC_PI_4 as f64));
+    let s = load_scene_from_slice(&light(
+        json!({ "type": "spot", "spot": { "outerConeAngle": std::f32::consts::FRAC_PI_2 } }),
+    ))
+    .unwrap();
+    assert_eq!(s.scene.lights[0].outer_cone, std::f64::consts::FRAC_PI_2);
+    for (bad, says) in [
+        (
+            json!({ "type": "spot", "spot": { "innerConeAngle": 0.5, "outerConeAngle": 0.5 } }),
+            "must be 0 ≤ inner < outer ≤ π/2",
+        ),
+        (json!({ "type": "spot", "spot": { "outerConeAngle": 2.0 } }), "must be 0 ≤ inner < outer ≤ π/2"),
+        (json!({ "type": "spot" }), "a spot light without `spot`"),
+        (json!({ "type": "point", "range": 0.0 }), "range 0 is not in [0.000001, 1000000000]"),
+    ] {
+        let e = load_scene_from_slice(&light(bad)).unwrap_err().to_string();
+        assert!(e.contains(says), "{e}");
+    }
+    let s = load_scene_from_slice(&light(json!({ "type": "directional", "range": 3.0 }))).unwrap();
+    assert_eq!(s.scene.lights[0].range, None);
+    assert!(s.warnings.iter().any(|w| w.contains("range 3 ignored")), "{:?}", s.warnings);
 }
 
 /// A GLB around a document and its BIN chunk.

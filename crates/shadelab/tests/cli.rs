@@ -329,3 +329,50 @@ fn explain_and_bench_effects() {
         }
     }
 }
+
+/// `bench mesh` generates the spheres, runs `bench load` on each in its own process and reports a
+/// row per size with the phases and the peak memory; `bench load` alone prints its phases.
+#[test]
+fn bench_mesh_and_bench_load_report_phases_and_peak_memory() {
+    let dir = out_dir().join("bench-mesh");
+    let _ = std::fs::remove_dir_all(&dir);
+    let args = ["bench", "mesh", "--triangles", "2000,30000", "--width", "64", "--height", "36"];
+    let o = shadelab(&[&args[..], &["--out", dir.to_str().unwrap()]].concat());
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let text = String::from_utf8_lossy(&o.stdout);
+    // A row per size: triangles, file MiB, 4 phases in s, next frame ms, peak MiB, bytes/triangle.
+    let rows: Vec<Vec<&str>> = text
+        .lines()
+        .filter(|l| l.starts_with("| ") && !l.starts_with("| triangles"))
+        .map(|l| l.trim_matches('|').split('|').map(str::trim).collect())
+        .collect();
+    assert_eq!(rows.len(), 2, "{text}");
+    for (row, asked) in rows.iter().zip([2000usize, 30000]) {
+        let n: usize = row[0].parse().unwrap();
+        // The sphere closest above the asked count: s·(s − 2) triangles for an even s.
+        assert!(n >= asked && n < asked + 4 * (asked as f64).sqrt() as usize + 16, "{n} for {asked}: {text}");
+        let peak: f64 = row[7].parse().unwrap_or(f64::NAN);
+        assert!(peak > 10.0, "peak MiB {peak}: {text}");
+        for phase in &row[2..7] {
+            assert!(phase.parse::<f64>().is_ok_and(|v| v >= 0.0), "{phase}: {text}");
+        }
+        assert!(dir.join(format!("sphere-{n}.glb")).is_file());
+    }
+    let board = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../assets/material-board.gltf");
+    let o = shadelab(&["bench", "load", "--scene", board.to_str().unwrap(), "--width", "64", "--height", "36"]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let text = String::from_utf8_lossy(&o.stdout);
+    for key in ["triangles ", "load_ms ", "upload_ms ", "first_frame_ms ", "next_frame_ms ", "peak_rss_mib "] {
+        assert!(text.lines().any(|l| l.starts_with(key)), "no {key}in:\n{text}");
+    }
+    for (bad, says) in [
+        ("0", "--triangles: 0 is out of range"),
+        ("20000000", "--triangles: 20000000 is out of range"),
+        ("1e6", "--triangles: '1e6' is not a number"),
+    ] {
+        let o = shadelab(&["bench", "mesh", "--triangles", bad, "--out", dir.to_str().unwrap()]);
+        assert_eq!(o.status.code(), Some(2), "{bad}");
+        let lines = error_lines(&o);
+        assert!(lines.len() == 1 && lines[0].contains(says), "{bad}: {lines:?}");
+    }
+}

@@ -3,7 +3,7 @@
 
 use crate::Failure;
 use clap::{Args, Parser, Subcommand};
-use shadelab_model::gltf_io::{self, SceneSettings};
+use shadelab_model::gltf_io::{self, LoadedScene, SceneSettings};
 use shadelab_model::params::{self, NamedValue, ParamError};
 use shadelab_model::{FalloffForm, LightKind, Overrides, Scene, ShadingMode, SpecularModel};
 use shadelab_render::RenderSettings;
@@ -25,12 +25,21 @@ pub struct Cli {
     /// Viewer: render this many frames, then exit 0.
     #[arg(long, value_name = "N")]
     pub exit_after_frames: Option<String>,
-    /// Viewer: start in this shading mode (flat | gouraud | phong).
-    #[arg(long, default_value = "phong")]
-    pub shading: String,
-    /// Viewer: start with this specular model (phong | cook-torrance).
-    #[arg(long, default_value = "cook-torrance")]
-    pub specular: String,
+    /// Viewer: start on this scene, a built-in one or a glTF 2.0 file (.gltf, .glb) [default:
+    /// the built-in default scene].
+    #[arg(long, value_name = "NAME|PATH")]
+    pub scene: Option<String>,
+    /// Viewer: look through this camera of the scene file (0 = the first).
+    #[arg(long, value_name = "N")]
+    pub camera: Option<String>,
+    /// Viewer: start in this shading mode (flat | gouraud | phong) [default: the scene file's,
+    /// else phong].
+    #[arg(long)]
+    pub shading: Option<String>,
+    /// Viewer: start with this specular model (phong | cook-torrance) [default: the scene file's,
+    /// else cook-torrance].
+    #[arg(long)]
+    pub specular: Option<String>,
     /// Viewer, for developers: reload the WGSL from this folder (e.g. `shaders`) when a file
     /// changes; a shader error is shown in the panel and the previous pipelines are kept.
     #[arg(long, value_name = "DIR")]
@@ -179,6 +188,10 @@ pub struct SceneArgs {
     /// d0 of the linear falloff 1/(d + d0), in [0.001, 1000].
     #[arg(long)]
     pub d0: Option<String>,
+    /// Which of a scene file's cameras to look through: 0 (the first, the default) to the number
+    /// of cameras − 1, in the file's node order. A built-in scene has one.
+    #[arg(long, value_name = "N")]
+    pub camera: Option<String>,
     /// Make every light directional, point or spot (a spot gets glTF's default cone, 45°, aimed
     /// at the origin).
     #[arg(long, value_name = "directional|point|spot")]
@@ -249,23 +262,35 @@ pub fn scene(args: &SceneArgs) -> Result<Scene, Failure> {
     scene_and_settings(args).map(|(scene, _)| scene)
 }
 
-/// Build the scene the arguments ask for: a built-in scene, or a glTF file (a name that is not
-/// built in and ends in .gltf/.glb or names a file), with the shading mode and specular model
-/// the file asks for. A bad file is the user's mistake (exit 2); its warnings are logged.
+/// Build the scene the arguments ask for, with the shading mode and specular model a file asks
+/// for (see [`load`]).
 pub fn scene_and_settings(args: &SceneArgs) -> Result<(Scene, SceneSettings), Failure> {
+    load(args).map(|l| (l.scene, l.settings))
+}
+
+/// Build the scene the arguments ask for: a built-in scene, or a glTF file (a name that is not
+/// built in and ends in .gltf/.glb or names a file), seen through the camera `--camera` picks,
+/// with the overrides applied. A bad file is the user's mistake (exit 2); its warnings are
+/// logged. A built-in scene lists its one camera.
+pub fn load(args: &SceneArgs) -> Result<LoadedScene, Failure> {
     let name = &args.scene;
     let is_file = {
         let lower = name.to_ascii_lowercase();
         lower.ends_with(".gltf") || lower.ends_with(".glb") || std::path::Path::new(name).is_file()
     };
-    let (mut scene, settings) = match Scene::builtin(name) {
-        Some(s) => (s, SceneSettings::default()),
+    let mut loaded = match Scene::builtin(name) {
+        Some(s) => LoadedScene {
+            cameras: vec![("the scene's camera".into(), s.camera)],
+            scene: s,
+            settings: SceneSettings::default(),
+            warnings: Vec::new(),
+        },
         None if is_file && std::path::Path::new(name).exists() => {
             let loaded = gltf_io::load_scene(std::path::Path::new(name)).map_err(|e| Failure::Usage(e.to_string()))?;
             for w in &loaded.warnings {
                 log::warn!("{name}: {w}");
             }
-            (loaded.scene, loaded.settings)
+            loaded
         }
         None => {
             return Err(ParamError::Unknown {
@@ -279,8 +304,19 @@ pub fn scene_and_settings(args: &SceneArgs) -> Result<(Scene, SceneSettings), Fa
             .into());
         }
     };
-    scene.apply(&overrides(args)?);
-    Ok((scene, settings))
+    if let Some(text) = &args.camera {
+        let n = loaded.cameras.len();
+        let range = params::ParamRange {
+            flag: "--camera",
+            symbol: "N",
+            meaning: "camera number (the scene's cameras, counted from 0)",
+            min: 0.0,
+            max: (n - 1) as f64,
+        };
+        loaded.scene.camera = loaded.cameras[range.parse_u32(text)? as usize].1;
+    }
+    loaded.scene.apply(&overrides(args)?);
+    Ok(loaded)
 }
 
 /// `--shading`/`--specular`: the flag when given, else the scene file's choice, else `default`.

@@ -32,6 +32,8 @@ fn main() -> ExitCode {
             screenshot: cli.screenshot,
             exit_after_frames: cli.exit_after_frames,
             shaders: cli.shaders,
+            scene: cli.scene,
+            camera: cli.camera,
             shading: cli.shading,
             specular: cli.specular,
             difference: cli.difference,

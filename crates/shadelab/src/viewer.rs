@@ -7,6 +7,7 @@ use crate::{Failure, cli, render};
 use eframe::egui::{self, Color32, Key, PointerButton, Rect, pos2};
 use eframe::egui_wgpu;
 use glam::DVec3;
+use shadelab_model::gltf_io::LoadedScene;
 use shadelab_model::params::{self, NamedValue, ParamRange};
 use shadelab_model::presets::PRESETS;
 use shadelab_model::scene::{BUILTIN_SCENES, MAX_LIGHTS};
@@ -27,15 +28,22 @@ pub struct Options {
     pub screenshot: Option<PathBuf>,
     pub exit_after_frames: Option<String>,
     pub shaders: Option<PathBuf>,
-    pub shading: String,
-    pub specular: String,
+    pub scene: Option<String>,
+    pub camera: Option<String>,
+    pub shading: Option<String>,
+    pub specular: Option<String>,
     pub difference: bool,
 }
 
 pub fn run(options: Options) -> Result<(), Failure> {
-    let Options { screenshot, exit_after_frames, shaders, shading, specular, difference } = options;
+    let Options { screenshot, exit_after_frames, shaders, scene, camera, shading, specular, difference } = options;
     let exit_after = exit_after_frames.as_deref().map(|f| cli::FRAMES.parse_u32(f)).transpose()?;
-    let settings = cli::settings(&shading, &specular, false)?;
+    // A bad scene file, camera or flag is one line and exit 2, before any window opens.
+    let name = scene.unwrap_or_else(|| "default".into());
+    let loaded = cli::load(&cli::SceneArgs { scene: name.clone(), camera, ..Default::default() })?;
+    let shading = cli::flag_or_file(shading.as_deref(), loaded.settings.shading, ShadingMode::Phong)?;
+    let specular = cli::flag_or_file(specular.as_deref(), loaded.settings.specular, SpecularModel::CookTorrance)?;
+    let settings = cli::settings(shading.name(), specular.name(), false)?;
     if let Some(p) = &screenshot
         && render::image_kind(p)? != render::ImageKind::Png
     {
@@ -62,6 +70,9 @@ pub fn run(options: Options) -> Result<(), Failure> {
         options,
         Box::new(move |cc| {
             let mut viewer = Viewer::new(cc, screenshot, exit_after)?;
+            if name != "default" {
+                viewer.show_loaded(loaded, &name)?;
+            }
             viewer.shader_dir = shaders;
             viewer.settings = settings;
             viewer.set_difference_view(difference);
@@ -155,6 +166,10 @@ pub struct Viewer {
     pub file_field: String,
     /// How "open…" and "save as…" ask for a file.
     pub file_picker: FilePicker,
+    /// The scene's cameras (a file's, in its node order; a built-in scene's one), and the one
+    /// looked through.
+    cameras: Vec<(String, Camera)>,
+    camera_choice: usize,
     /// A dialog on show: what it is for, and where its answer arrives.
     picking: Option<(FileRequest, std::sync::mpsc::Receiver<Option<PathBuf>>)>,
 }
@@ -172,6 +187,7 @@ impl Viewer {
         // A new effect set compiles on a worker thread; the uber pipeline draws meanwhile.
         renderer.build_in_background = true;
         let scene = Scene::builtin("default").expect("built-in default scene");
+        let scene_camera = scene.camera;
         let gpu_scene = renderer.upload(&scene).map_err(|e| e.to_string())?;
         log::info!("viewer adapter: {:?}", rs.adapter.get_info());
         Ok(Viewer {
@@ -202,6 +218,8 @@ impl Viewer {
             difference: DifferenceView::default(),
             file_field: String::new(),
             file_picker: native_file_picker(),
+            cameras: vec![("the scene's camera".into(), scene_camera)],
+            camera_choice: 0,
             picking: None,
         })
     }
@@ -265,9 +283,31 @@ impl Viewer {
         }
     }
 
+    /// Show a scene loaded from a file (or a built-in one through `cli::load`), with its cameras;
+    /// its shading mode and specular model are the caller's to apply.
+    pub fn show_loaded(&mut self, loaded: LoadedScene, name: &str) -> Result<(), String> {
+        let first = loaded.scene.camera;
+        self.show_scene(loaded.scene, name)?;
+        self.cameras = loaded.cameras;
+        self.camera_choice = self.cameras.iter().position(|(_, c)| *c == first).unwrap_or(0);
+        Ok(())
+    }
+
+    /// Look through camera `i` of the scene (ignored when there is no such camera).
+    pub fn choose_camera(&mut self, i: usize) {
+        if let Some((_, c)) = self.cameras.get(i) {
+            self.camera_choice = i;
+            self.base_camera = *c;
+            self.orbit = Orbit::from_camera(c);
+            self.scene.camera = *c;
+        }
+    }
+
     /// Show a scene; one the GPU cannot hold leaves the current scene as it is.
     fn show_scene(&mut self, s: Scene, name: &str) -> Result<(), String> {
         self.gpu_scene = self.renderer.upload(&s).map_err(|e| format!("{name}: {e}"))?;
+        self.cameras = vec![("the scene's camera".into(), s.camera)];
+        self.camera_choice = 0;
         self.base_camera = s.camera;
         self.orbit = Orbit::from_camera(&s.camera);
         self.selected_material = s.objects.get(1).map_or(0, |o| o.material);
@@ -285,14 +325,15 @@ impl Viewer {
                 for w in &loaded.warnings {
                     text.push_str(&format!("\nwarning: {w}"));
                 }
-                if let Err(e) = self.show_scene(loaded.scene, &path.display().to_string()) {
+                let settings = loaded.settings;
+                if let Err(e) = self.show_loaded(loaded, &path.display().to_string()) {
                     self.message = Some((e, true));
                     return;
                 }
-                if let Some(m) = loaded.settings.shading {
+                if let Some(m) = settings.shading {
                     self.settings.shading = m;
                 }
-                if let Some(m) = loaded.settings.specular {
+                if let Some(m) = settings.specular {
                     self.settings.specular = m;
                 }
                 self.message = Some((text, false));
@@ -540,6 +581,17 @@ impl Viewer {
         });
         if scene_choice != self.scene_name {
             self.load_scene(&scene_choice);
+        }
+        if self.cameras.len() > 1 {
+            let mut choice = self.camera_choice;
+            egui::ComboBox::from_label("camera").selected_text(&self.cameras[choice].0).show_ui(ui, |ui| {
+                for (i, (name, _)) in self.cameras.iter().enumerate() {
+                    ui.selectable_value(&mut choice, i, name);
+                }
+            });
+            if choice != self.camera_choice {
+                self.choose_camera(choice);
+            }
         }
         ui.horizontal(|ui| {
             ui.add(

@@ -4,6 +4,8 @@
 use std::path::PathBuf;
 use std::process::{Command, Output};
 
+mod common;
+
 fn shadelab(args: &[&str]) -> Output {
     Command::new(env!("CARGO_BIN_EXE_shadelab"))
         .args(args)
@@ -375,4 +377,53 @@ fn bench_mesh_and_bench_load_report_phases_and_peak_memory() {
         let lines = error_lines(&o);
         assert!(lines.len() == 1 && lines[0].contains(says), "{bad}: {lines:?}");
     }
+}
+
+#[test]
+fn camera_picks_one_of_the_files_cameras() {
+    let file = common::two_camera_scene(&out_dir(), "two-cameras.gltf");
+    let render = |camera: &str| {
+        let png = out_dir().join(format!("camera-{camera}.png"));
+        let o = shadelab(&[
+            "render",
+            "--scene",
+            file.to_str().unwrap(),
+            "--camera",
+            camera,
+            "--width",
+            "96",
+            "--height",
+            "54",
+            "--output",
+            png.to_str().unwrap(),
+        ]);
+        (o, png)
+    };
+    let (o, first) = render("0");
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let (o, above) = render("1");
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let (a, b) = (image::open(&first).unwrap().to_rgb8(), image::open(&above).unwrap().to_rgb8());
+    let differ = a.pixels().zip(b.pixels()).filter(|(p, q)| p != q).count();
+    assert!(differ > (96 * 54) / 4, "a camera from above sees another picture: {differ} pixels differ");
+    for (args, says) in [
+        (vec!["render", "--scene", file.to_str().unwrap(), "--camera", "2"], "--camera: 2 is out of range"),
+        (vec!["render", "--scene", "default", "--camera", "1"], "--camera: 1 is out of range"),
+        (vec!["render", "--camera", "x"], "--camera: 'x' is not a number"),
+        // The viewer checks its scene and camera before opening a window (no display needed).
+        (vec!["--scene", "no-such-scene.glb"], "--scene: unknown value 'no-such-scene.glb'"),
+        (vec!["--camera", "3"], "--camera: 3 is out of range"),
+    ] {
+        let o = shadelab(&args);
+        assert_eq!(o.status.code(), Some(2), "{args:?}");
+        let lines = error_lines(&o);
+        assert!(lines.len() == 1 && lines[0].contains(says), "{args:?}: {lines:?}");
+    }
+    let o = shadelab(&["--scene", common::root().join("tests/gltf-corpus/truncated.glb").to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(
+        error_lines(&o).len() == 1 && error_lines(&o)[0].contains("truncated.glb: truncated GLB"),
+        "{:?}",
+        error_lines(&o)
+    );
 }

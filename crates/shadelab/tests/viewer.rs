@@ -5,6 +5,8 @@ use egui_kittest::kittest::Queryable;
 use shadelab::viewer::Viewer;
 use shadelab_model::{ShadingMode, SpecularModel};
 
+mod common;
+
 fn harness() -> Harness<'static, Viewer> {
     let mut h = Harness::builder()
         .with_size(egui::vec2(1100.0, 640.0))
@@ -235,4 +237,25 @@ fn file_dialog_buttons_open_and_save_the_chosen_file() {
     let saved = shadelab_model::gltf_io::load_scene(&out).expect("the saved scene loads");
     assert_eq!(saved.scene.objects, pyramid.objects);
     assert_eq!(*asked.lock().unwrap(), [FileRequest::Open, FileRequest::Open, FileRequest::Save]);
+}
+
+/// A file with several cameras gets a camera menu; choosing one looks through it.
+#[test]
+fn a_files_cameras_are_offered_in_a_menu() {
+    let mut h = harness();
+    let path = common::two_camera_scene(std::path::Path::new(env!("CARGO_TARGET_TMPDIR")), "viewer-two-cameras.gltf");
+    // The built-in scene has one camera: no menu.
+    assert!(h.query_by_label("from above").is_none());
+    h.state_mut().open_file(&path);
+    h.run_steps(3);
+    let before = h.render().expect("render");
+    let eye = h.state_mut().scene_mut().camera.eye;
+    h.get_by_label("camera").click();
+    h.run_steps(2);
+    h.get_by_label("from above").click();
+    h.run_steps(3);
+    let after_eye = h.state_mut().scene_mut().camera.eye;
+    assert!((after_eye - glam::DVec3::new(0.0, 8.0, 0.0)).length() < 1e-5, "{eye} -> {after_eye}");
+    let after = h.render().expect("render");
+    assert!(changed_view_pixels(&before, &after) > 5000);
 }

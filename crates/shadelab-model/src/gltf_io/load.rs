@@ -632,7 +632,7 @@ impl<'a> Reader<'a> {
             self.scene_extras(sc, &mut scene, &mut settings)?;
         }
 
-        let mut camera_node = None;
+        let mut camera_nodes = Vec::new();
         let mut light_nodes = Vec::new();
         for &(ni, world) in &instances {
             let node = &root.nodes[ni];
@@ -644,7 +644,7 @@ impl<'a> Reader<'a> {
             }
             if let Some(ci) = node.camera.map(|c| c.value()) {
                 self.get(&root.cameras, ci, "camera", &format!("node {ni}: "))?;
-                camera_node.get_or_insert((ci, world));
+                camera_nodes.push((ni, ci, world));
             }
             if let Some(li) =
                 node.extensions.as_ref().and_then(|e| e.khr_lights_punctual.as_ref()).map(|k| k.light.value())
@@ -680,14 +680,17 @@ impl<'a> Reader<'a> {
             self.cx.warn("no lights: a default directional light is added".into());
             scene.lights.push(Light::directional(DVec3::new(-0.55, -1.0, -0.7), [1.0; 3], 1.0));
         }
-        scene.camera = match camera_node {
-            Some((ci, world)) => self.camera(ci, &world, center, radius)?,
-            None => {
-                self.cx.warn("no camera: one is placed to frame the scene".into());
-                framing_camera(center, radius)
-            }
-        };
-        Ok(LoadedScene { scene, settings, warnings: self.cx.warnings })
+        let mut cameras = Vec::with_capacity(camera_nodes.len());
+        for (ni, ci, world) in camera_nodes {
+            let name = root.cameras[ci].name.clone().or_else(|| root.nodes[ni].name.clone());
+            cameras.push((name.unwrap_or_else(|| format!("camera {ci}")), self.camera(ci, &world, center, radius)?));
+        }
+        if cameras.is_empty() {
+            self.cx.warn("no camera: one is placed to frame the scene".into());
+            cameras.push(("framing the scene".into(), framing_camera(center, radius)));
+        }
+        scene.camera = cameras[0].1;
+        Ok(LoadedScene { scene, settings, warnings: self.cx.warnings, cameras })
     }
 
     /// Nodes reachable from `roots`, each with its world matrix, in depth-first order. A node

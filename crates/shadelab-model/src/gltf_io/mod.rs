@@ -58,7 +58,7 @@ pub use load::{load_scene, load_scene_from_bytes, load_scene_from_slice};
 pub use save::{save_scene, scene_to_glb, scene_to_gltf_json};
 
 use crate::params::{PhongExponent, ShadingMode, SpecularModel};
-use crate::scene::Scene;
+use crate::scene::{Camera, Scene};
 
 /// Most triangles a file may bring (every instance of a mesh counts): the memory budget of a
 /// scene. `shadelab bench mesh` measured the peak of a whole run (load, GPU buffers, first frame)
@@ -115,8 +115,12 @@ pub struct SceneSettings {
 pub struct LoadedScene {
     pub scene: Scene,
     pub settings: SceneSettings,
-    /// One line each: unsupported optional extensions, spot cones, clamped values, defaults added.
+    /// One line each: unsupported optional extensions, clamped values, defaults added.
     pub warnings: Vec<String>,
+    /// Every camera of the file, in the order of the node hierarchy (depth first), with its name
+    /// (the camera's, else its node's, else "camera N"). `scene.camera` is the first; none: the
+    /// framing camera alone.
+    pub cameras: Vec<(String, Camera)>,
 }
 
 /// A bad scene file: one line, starting with the file's name.

@@ -1,0 +1,28 @@
+//! Helpers shared by the app's test binaries.
+
+use std::path::{Path, PathBuf};
+
+/// The project's root folder.
+pub fn root() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../..")
+}
+
+/// The shipped figure 7.3 scene with a second camera, "from above", 8 units up and looking down,
+/// written as `dir/name` (its buffers are embedded, so the copy stands alone).
+pub fn two_camera_scene(dir: &Path, name: &str) -> PathBuf {
+    let text = std::fs::read_to_string(root().join("assets/figure-7-3-pyramid.gltf")).unwrap();
+    let mut doc: serde_json::Value = serde_json::from_str(&text).unwrap();
+    doc["cameras"].as_array_mut().unwrap().push(serde_json::json!({
+        "name": "from above", "type": "perspective", "perspective": { "yfov": 0.8, "znear": 0.1, "zfar": 50.0 }
+    }));
+    let camera = doc["cameras"].as_array().unwrap().len() - 1;
+    // Looking down −Y: rotated −90° about x.
+    doc["nodes"].as_array_mut().unwrap().push(serde_json::json!({
+        "camera": camera, "translation": [0.0, 8.0, 0.0], "rotation": [-0.70710677, 0.0, 0.0, 0.70710677]
+    }));
+    let node = doc["nodes"].as_array().unwrap().len() - 1;
+    doc["scenes"][0]["nodes"].as_array_mut().unwrap().push(node.into());
+    let path = dir.join(name);
+    std::fs::write(&path, serde_json::to_string(&doc).unwrap()).unwrap();
+    path
+}

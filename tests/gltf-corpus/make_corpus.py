@@ -175,6 +175,22 @@ case("light-out-of-range.gltf", "a node naming KHR_lights_punctual light 3 of 1"
      edited(lambda d: (d.update(extensionsUsed=["KHR_lights_punctual"],
                                 extensions={"KHR_lights_punctual": {"lights": [{"type": "point"}]}}),
                        d["nodes"][0].update(extensions={"KHR_lights_punctual": {"light": 3}}))))
+def with_light(light):
+    def edit(d):
+        d.update(extensionsUsed=["KHR_lights_punctual"], extensions={"KHR_lights_punctual": {"lights": [light]}})
+        d["nodes"].append({"translation": [0, 2, 0], "extensions": {"KHR_lights_punctual": {"light": 0}}})
+        d["scenes"][0]["nodes"].append(1)
+    return edited(edit)
+
+
+case("spot-cone-inverted.gltf", "a spot light whose inner cone is wider than its outer cone",
+     "light 0: spot cone angles inner 0.8, outer 0.3 must be 0 ≤ inner < outer ≤ π/2",
+     with_light({"type": "spot", "spot": {"innerConeAngle": 0.8, "outerConeAngle": 0.3}}))
+case("spot-cone-past-90.gltf", "a spot light with an outer cone of 2 radians (past a half-space)",
+     "light 0: spot cone angles inner 0, outer 2 must be 0 ≤ inner < outer ≤ π/2",
+     with_light({"type": "spot", "spot": {"outerConeAngle": 2.0}}))
+case("light-range-zero.gltf", "a point light with range 0", "light 0: range 0 is not in [0.000001, 1000000000]",
+     with_light({"type": "point", "range": 0}))
 case("camera-zero-fov.gltf", "a perspective camera with yfov 0", "camera 0: yfov 0 is not in (0, π)",
      edited(lambda d: (d.update(cameras=[{"type": "perspective", "perspective": {"yfov": 0, "znear": 0.1}}]),
                        d["nodes"].append({"camera": 0}), d["scenes"][0]["nodes"].append(1))))

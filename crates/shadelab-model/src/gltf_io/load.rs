@@ -975,7 +975,10 @@ impl<'a> Reader<'a> {
         let span = params::CONE_ANGLE_F32;
         if kind == LightKind::Spot && !(span.min <= inner && inner < outer && outer <= span.max) {
             return Err(self.cx.invalid(format!(
-                "{what}: spot cone angles inner {inner}, outer {outer} must be 0 ≤ inner < outer ≤ π/2 (radians)"
+                "{what}: spot cone angles inner {}, outer {} must be 0 ≤ inner < outer ≤ π/2 (radians)",
+                // As the file wrote them (f32), not widened to f64's digits.
+                inner as f32,
+                outer as f32
             )));
         }
         light.inner_cone = inner.min(params::CONE_ANGLE.max);

@@ -259,3 +259,23 @@ fn a_files_cameras_are_offered_in_a_menu() {
     let after = h.render().expect("render");
     assert!(changed_view_pixels(&before, &after) > 5000);
 }
+
+/// A light made a spot light in the panel lights only its cone, and the panel offers its cones.
+#[test]
+fn a_light_can_become_a_spot_light_in_the_panel() {
+    let mut h = harness();
+    let before = h.render().expect("render");
+    h.get_by_label("L2 — point").click();
+    h.run_steps(2);
+    let shown = |h: &Harness<'static, Viewer>, label: &str| h.query_all_by_label(label).next().is_some();
+    assert!(!shown(&h, "outer cone °"));
+    h.get_by_label("spot").click();
+    h.run_steps(4);
+    let l = h.state_mut().scene_mut().lights[1].clone();
+    assert_eq!(l.kind, shadelab_model::LightKind::Spot);
+    assert_eq!(l.outer_cone, shadelab_model::scene::SPOT_OUTER_CONE_DEFAULT);
+    assert!(shown(&h, "outer cone °") && shown(&h, "inner cone °"));
+    let after = h.render().expect("render");
+    // Outside its 45° cone the point light's share is gone: the ground's edges darken.
+    assert!(changed_view_pixels(&before, &after) > 2000, "{}", changed_view_pixels(&before, &after));
+}

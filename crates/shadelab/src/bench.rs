@@ -170,9 +170,8 @@ pub fn run_load(args: &cli::BenchLoadArgs) -> Result<(), Failure> {
     let start = Instant::now();
     let (scene, file) = cli::scene_and_settings(&args.scene)?;
     let load_ms = ms(start);
-    let shading = cli::flag_or_file(args.shading.as_deref(), file.shading, ShadingMode::Phong)?;
-    let specular = cli::flag_or_file(args.specular.as_deref(), file.specular, SpecularModel::CookTorrance)?;
-    let settings = cli::settings(shading.name(), specular.name(), false)?;
+    let settings = args.mode.resolve(file)?;
+    let (shading, specular) = (settings.shading, settings.specular);
 
     let t = Instant::now();
     let mut r = Renderer::new(&gpu.device, &gpu.queue);

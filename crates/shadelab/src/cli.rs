@@ -25,21 +25,12 @@ pub struct Cli {
     /// Viewer: render this many frames, then exit 0.
     #[arg(long, value_name = "N")]
     pub exit_after_frames: Option<String>,
-    /// Viewer: start on this scene, a built-in one or a glTF 2.0 file (.gltf, .glb) [default:
-    /// the built-in default scene].
-    #[arg(long, value_name = "NAME|PATH")]
-    pub scene: Option<String>,
-    /// Viewer: look through this camera of the scene file (0 = the first).
-    #[arg(long, value_name = "N")]
-    pub camera: Option<String>,
-    /// Viewer: start in this shading mode (flat | gouraud | phong) [default: the scene file's,
-    /// else phong].
-    #[arg(long)]
-    pub shading: Option<String>,
-    /// Viewer: start with this specular model (phong | cook-torrance) [default: the scene file's,
-    /// else cook-torrance].
-    #[arg(long)]
-    pub specular: Option<String>,
+    /// Viewer: the scene to start on and its overrides, as `render` takes them.
+    #[command(flatten)]
+    pub scene: SceneArgs,
+    /// Viewer: the shading mode and specular model to start in.
+    #[command(flatten)]
+    pub mode: ModeArgs,
     /// Viewer, for developers: reload the WGSL from this folder (e.g. `shaders`) when a file
     /// changes; a shader error is shown in the panel and the previous pipelines are kept.
     #[arg(long, value_name = "DIR")]
@@ -54,7 +45,8 @@ pub struct Cli {
 pub enum Command {
     /// Render a scene headless to a PNG (sRGB) or an EXR (linear float).
     Render(RenderArgs),
-    /// Measure: render time per shading mode × specular model.
+    /// Measure: frame time per shading mode × specular model, what accuracy costs, what
+    /// specialization saves, what a (large) scene file costs to open.
     #[command(subcommand)]
     Bench(BenchCommand),
     /// Evaluate every lighting term of the shipped WGSL over >10⁶ hard input combinations on the
@@ -89,12 +81,8 @@ pub enum BenchCommand {
 pub struct BenchLoadArgs {
     #[command(flatten)]
     pub scene: SceneArgs,
-    /// flat | gouraud | phong [default: the scene file's, else phong]
-    #[arg(long)]
-    pub shading: Option<String>,
-    /// phong | cook-torrance [default: the scene file's, else cook-torrance]
-    #[arg(long)]
-    pub specular: Option<String>,
+    #[command(flatten)]
+    pub mode: ModeArgs,
     /// Width in pixels, 1 to 8192.
     #[arg(long, default_value = "1280")]
     pub width: String,
@@ -179,10 +167,11 @@ pub struct SceneArgs {
     /// Normal-incidence reflectance μ of every material: R,G,B or one value, each in [0, 1].
     #[arg(long, value_name = "R,G,B")]
     pub mu: Option<String>,
-    /// Falloff factor α of every point light, I0/(1 + α d²), in [0, 1e6].
+    /// Falloff factor α of every point and spot light, I0/(1 + α d²), in [0, 1e6].
     #[arg(long, value_name = "ALPHA")]
     pub falloff: Option<String>,
-    /// Falloff form of every point light: quadratic (1/(1 + α d²)) or linear (the chapter's 1/(d + d0)).
+    /// Falloff form of every point and spot light: quadratic (1/(1 + α d²)) or linear (the
+    /// chapter's 1/(d + d0)).
     #[arg(long, value_name = "FORM")]
     pub falloff_form: Option<String>,
     /// d0 of the linear falloff 1/(d + d0), in [0.001, 1000].
@@ -201,12 +190,8 @@ pub struct SceneArgs {
 #[derive(Args, Debug)]
 #[command(allow_negative_numbers = true)]
 pub struct RenderArgs {
-    /// flat | gouraud | phong [default: the scene file's, else phong]
-    #[arg(long)]
-    pub shading: Option<String>,
-    /// phong | cook-torrance [default: the scene file's, else cook-torrance]
-    #[arg(long)]
-    pub specular: Option<String>,
+    #[command(flatten)]
+    pub mode: ModeArgs,
     #[command(flatten)]
     pub scene: SceneArgs,
     /// Also write the scene, after the overrides, as glTF 2.0 (.gltf with an embedded buffer, or
@@ -247,6 +232,28 @@ pub struct BenchRenderArgs {
     /// Warm-up frames per combination (not measured).
     #[arg(long, default_value = "3")]
     pub warmup: String,
+}
+
+/// The shading mode and specular model (`render`, `bench load`, the viewer).
+#[derive(Args, Debug, Clone, Default)]
+pub struct ModeArgs {
+    /// flat | gouraud | phong [default: the scene file's, else phong]
+    #[arg(long)]
+    pub shading: Option<String>,
+    /// phong | cook-torrance [default: the scene file's, else cook-torrance]
+    #[arg(long)]
+    pub specular: Option<String>,
+}
+
+impl ModeArgs {
+    /// Each flag when given, else what the scene file records, else Phong shading with
+    /// Cook–Torrance specular.
+    pub fn resolve(&self, file: SceneSettings) -> Result<RenderSettings, ParamError> {
+        Ok(RenderSettings::new(
+            flag_or_file(self.shading.as_deref(), file.shading, ShadingMode::Phong)?,
+            flag_or_file(self.specular.as_deref(), file.specular, SpecularModel::CookTorrance)?,
+        ))
+    }
 }
 
 /// Warm-up frames of a benchmark (at least one is always drawn, to build the pipelines).
@@ -320,11 +327,7 @@ pub fn load(args: &SceneArgs) -> Result<LoadedScene, Failure> {
 }
 
 /// `--shading`/`--specular`: the flag when given, else the scene file's choice, else `default`.
-pub fn flag_or_file<T: NamedValue + PartialEq>(
-    flag: Option<&str>,
-    file: Option<T>,
-    default: T,
-) -> Result<T, ParamError> {
+fn flag_or_file<T: NamedValue + PartialEq>(flag: Option<&str>, file: Option<T>, default: T) -> Result<T, ParamError> {
     flag.map_or(Ok(file.unwrap_or(default)), T::parse_named)
 }
 
@@ -337,15 +340,6 @@ pub fn overrides(a: &SceneArgs) -> Result<Overrides, ParamError> {
         falloff_form: a.falloff_form.as_deref().map(FalloffForm::parse_named).transpose()?,
         d0: a.d0.as_deref().map(|t| params::D0.parse(t)).transpose()?,
         light: a.light.as_deref().map(LightKind::parse_named).transpose()?,
-    })
-}
-
-pub fn settings(shading: &str, specular: &str, debug_nonfinite: bool) -> Result<RenderSettings, ParamError> {
-    Ok(RenderSettings {
-        shading: ShadingMode::parse_named(shading)?,
-        specular: SpecularModel::parse_named(specular)?,
-        debug_nonfinite,
-        ..Default::default()
     })
 }
 

@@ -33,9 +33,7 @@ fn main() -> ExitCode {
             exit_after_frames: cli.exit_after_frames,
             shaders: cli.shaders,
             scene: cli.scene,
-            camera: cli.camera,
-            shading: cli.shading,
-            specular: cli.specular,
+            mode: cli.mode,
             difference: cli.difference,
         }),
     };

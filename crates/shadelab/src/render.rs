@@ -3,9 +3,7 @@
 use crate::{Failure, cli};
 use anyhow::Context;
 use shadelab_model::gltf_io::{self, SceneSettings};
-use shadelab_model::params::NamedValue;
-use shadelab_model::{ShadingMode, SpecularModel};
-use shadelab_render::{AdapterChoice, Gpu, LinearImage};
+use shadelab_render::{AdapterChoice, Gpu, LinearImage, RenderSettings};
 use std::path::Path;
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -43,13 +41,12 @@ pub fn save_scene(scene: &shadelab_model::Scene, settings: SceneSettings, path: 
 
 pub fn run(args: &cli::RenderArgs) -> Result<(), Failure> {
     let (scene, file) = cli::scene_and_settings(&args.scene)?;
-    let shading = cli::flag_or_file(args.shading.as_deref(), file.shading, ShadingMode::Phong)?;
-    let specular = cli::flag_or_file(args.specular.as_deref(), file.specular, SpecularModel::CookTorrance)?;
-    let settings = cli::settings(shading.name(), specular.name(), args.debug_nonfinite)?;
+    let settings = RenderSettings { debug_nonfinite: args.debug_nonfinite, ..args.mode.resolve(file)? };
     let (width, height) = cli::size(&args.width, &args.height)?;
     let kind = image_kind(&args.output)?;
     if let Some(path) = &args.save_scene {
-        save_scene(&scene, SceneSettings { shading: Some(shading), specular: Some(specular) }, path)?;
+        let recorded = SceneSettings { shading: Some(settings.shading), specular: Some(settings.specular) };
+        save_scene(&scene, recorded, path)?;
     }
     if args.explain {
         print!("{}", explain(&scene, &settings));

@@ -28,22 +28,17 @@ pub struct Options {
     pub screenshot: Option<PathBuf>,
     pub exit_after_frames: Option<String>,
     pub shaders: Option<PathBuf>,
-    pub scene: Option<String>,
-    pub camera: Option<String>,
-    pub shading: Option<String>,
-    pub specular: Option<String>,
+    pub scene: cli::SceneArgs,
+    pub mode: cli::ModeArgs,
     pub difference: bool,
 }
 
 pub fn run(options: Options) -> Result<(), Failure> {
-    let Options { screenshot, exit_after_frames, shaders, scene, camera, shading, specular, difference } = options;
+    let Options { screenshot, exit_after_frames, shaders, scene, mode, difference } = options;
     let exit_after = exit_after_frames.as_deref().map(|f| cli::FRAMES.parse_u32(f)).transpose()?;
     // A bad scene file, camera or flag is one line and exit 2, before any window opens.
-    let name = scene.unwrap_or_else(|| "default".into());
-    let loaded = cli::load(&cli::SceneArgs { scene: name.clone(), camera, ..Default::default() })?;
-    let shading = cli::flag_or_file(shading.as_deref(), loaded.settings.shading, ShadingMode::Phong)?;
-    let specular = cli::flag_or_file(specular.as_deref(), loaded.settings.specular, SpecularModel::CookTorrance)?;
-    let settings = cli::settings(shading.name(), specular.name(), false)?;
+    let loaded = cli::load(&scene)?;
+    let settings = mode.resolve(loaded.settings)?;
     if let Some(p) = &screenshot
         && render::image_kind(p)? != render::ImageKind::Png
     {
@@ -70,9 +65,7 @@ pub fn run(options: Options) -> Result<(), Failure> {
         options,
         Box::new(move |cc| {
             let mut viewer = Viewer::new(cc, screenshot, exit_after)?;
-            if name != "default" {
-                viewer.show_loaded(loaded, &name)?;
-            }
+            viewer.show_loaded(loaded, &scene.scene)?;
             viewer.shader_dir = shaders;
             viewer.settings = settings;
             viewer.set_difference_view(difference);

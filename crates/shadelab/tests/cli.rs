@@ -413,6 +413,8 @@ fn camera_picks_one_of_the_files_cameras() {
         // The viewer checks its scene and camera before opening a window (no display needed).
         (vec!["--scene", "no-such-scene.glb"], "--scene: unknown value 'no-such-scene.glb'"),
         (vec!["--camera", "3"], "--camera: 3 is out of range"),
+        (vec!["--m", "5"], "--m: 5 is out of range"),
+        (vec!["--light", "laser"], "--light: unknown value 'laser'"),
     ] {
         let o = shadelab(&args);
         assert_eq!(o.status.code(), Some(2), "{args:?}");

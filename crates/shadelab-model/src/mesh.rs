@@ -604,10 +604,10 @@ mod rule_tests {
         let own = face_normal(&tris[t]);
         let mut sum = DVec3::ZERO;
         for g in tris.iter().filter(|g| g.iter().any(|q| key(*q) == key(tris[t][c]))) {
-            if let Some(ng) = face_normal(g) {
-                if own.is_none_or(|nf| nf.dot(ng) >= cos) {
-                    sum += ng;
-                }
+            if let Some(ng) = face_normal(g)
+                && own.is_none_or(|nf| nf.dot(ng) >= cos)
+            {
+                sum += ng;
             }
         }
         safe_normalize(sum, own.unwrap_or(DVec3::Y)).as_vec3().to_array()
@@ -624,11 +624,11 @@ mod rule_tests {
             assert_eq!(m.indices.len(), 3 * tris.len());
             let mut distinct = std::collections::HashSet::new();
             for (t, tri) in tris.iter().enumerate() {
-                for c in 0..3 {
+                for (c, p) in tri.iter().enumerate() {
                     let v = m.smooth_vertices[m.indices[3 * t + c] as usize];
-                    assert_eq!(v.position, tri[c].as_vec3().to_array(), "triangle {t} corner {c}");
+                    assert_eq!(v.position, p.as_vec3().to_array(), "triangle {t} corner {c}");
                     assert_eq!(v.normal, rule(&tris, t, c), "triangle {t} corner {c}");
-                    distinct.insert((key(tri[c]), v.normal.map(f32::to_bits)));
+                    distinct.insert((key(*p), v.normal.map(f32::to_bits)));
                 }
             }
             assert_eq!(m.smooth_vertices.len(), distinct.len(), "each (position, normal) once");

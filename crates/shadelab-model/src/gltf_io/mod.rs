@@ -24,15 +24,17 @@
 //! | `KHR_materials_volume` attenuation colour c, distance D, thickness | `a = −ln(c)/D`, `d` = thickness | glTF's Beer law `c^(x/D)` is the chapter's `e^(−a·x)` (spec §7); stored, not rendered |
 //! | — | `r_s = r_d = r_a = 1` | glTF's base colour is already the whole albedo; with `I_L = E/π` (below) `r_d·C·(N·L)·I_L` is glTF's Lambert `(C/π)·E·(N·L)` |
 //!
-//! Lights: `I_L = intensity/π` (lux for directional lights, candela for point lights, so a white
-//! Lambert face facing a light of π lux shows 1, as in glTF viewers). A point light's falloff is
-//! `1/(1 + α d²)` with `α = 1` (`POINT_FALLOFF_ALPHA`): glTF's inverse square beyond about one
-//! unit, yet finite at `d = 0`. glTF's `range` (a cut-off) has no counterpart in the model: it is
-//! ignored with a warning. A spot light is read as a point light at its position, with the warning
-//! "spot cone not rendered, treated as point light". More than `MAX_LIGHTS` lights: the first are
-//! kept, with a warning; none: a default directional light, with a warning. Saving runs the
-//! mapping backwards (`intensity = I_L·π`, divided by α for a quadratic point light so that the
-//! far field agrees) and writes the exact `I_L`, colour, α, falloff form and d0 in the light's
+//! Lights: `I_L = intensity/π` (lux for directional lights, candela for point and spot lights,
+//! so a white Lambert face facing a light of π lux shows 1, as in glTF viewers). A point or spot
+//! light's falloff is `1/(1 + α d²)` with `α = 1` (`POINT_FALLOFF_ALPHA`): glTF's inverse square
+//! beyond about one unit, yet finite at `d = 0`. A spot light keeps its cones (`innerConeAngle`,
+//! `outerConeAngle`, `0 ≤ inner < outer ≤ π/2`, else an error) and shines along its node's −Z;
+//! glTF's `range` ends a point or spot light with the extension's window `1 − (d/range)⁴`
+//! (`brdf::window_range`; the chapter's falloffs have no end), and is ignored with a warning on a
+//! directional light. More than `MAX_LIGHTS` lights: the first are kept, with a warning; none: a
+//! default directional light, with a warning. Saving runs the mapping backwards
+//! (`intensity = I_L·π`, divided by α for a quadratic point or spot light so that the far field
+//! agrees) and writes the exact `I_L`, colour, α, falloff form, d0, cones and range in the light's
 //! `extras.shadelab`.
 //!
 //! ## `extras.shadelab`
@@ -40,7 +42,7 @@
 //! | where | keys |
 //! |---|---|
 //! | material | `C`, `m`, `h` (number or `"mirror"`), `mu`, `r_s`, `r_d`, `r_a`, `t`, `a`, `d` |
-//! | `KHR_lights_punctual` light | `I_L`, `color`, `alpha`, `falloff_form` (`quadratic`/`linear`), `d0`, `position`, `direction` |
+//! | `KHR_lights_punctual` light | `I_L`, `color`, `alpha`, `falloff_form` (`quadratic`/`linear`), `d0`, `position`, `direction`, `inner_cone`, `outer_cone`, `range` |
 //! | scene | `ambient` (`I_amb`), `shading`, `specular` |
 //! | mesh | `shape`, `tessellation` (an analytic shape; loaded back as it when the triangles still match) |
 //! | node | `translation`, `rotation_y`, `scale` (exact f64 transform) |

@@ -54,12 +54,8 @@ pub fn scene_to_glb(scene: &Scene, settings: &SceneSettings) -> Vec<u8> {
 pub(crate) fn glb_container(mut root: Value, mut bin: Vec<u8>) -> Vec<u8> {
     root["buffers"] = json!([{ "byteLength": bin.len() }]);
     let mut json = serde_json::to_vec(&root).expect("a JSON value serializes");
-    while json.len() % 4 != 0 {
-        json.push(b' ');
-    }
-    while bin.len() % 4 != 0 {
-        bin.push(0);
-    }
+    json.resize(json.len().next_multiple_of(4), b' ');
+    bin.resize(bin.len().next_multiple_of(4), 0);
     let total = 12 + 8 + json.len() + 8 + bin.len();
     let mut out = Vec::with_capacity(total);
     out.extend_from_slice(b"glTF");

@@ -18,6 +18,16 @@ use rustc_hash::FxHashMap as HashMap;
 /// 8 or more segments (45° between neighbours).
 pub const CREASE_ANGLE_DEG: f64 = 60.0;
 
+/// Most faces around one vertex for which the crease-angle rule is evaluated pair by pair (each
+/// corner's face against every other face there: work quadratic in the count). A vertex whose
+/// faces all lie within half the crease angle of their mean (a smooth vertex, such as a sphere's
+/// pole of thousands of faces) needs no pairs and has no limit. Beyond it, at a crease, each
+/// corner keeps its own face's normal. Real meshes meet at a crease with a few faces (a cube's
+/// corner: 3 to 6, a 64-segment cone's apex: 64); a hostile file can put millions on one vertex,
+/// which would take hours pair by pair. With the limit the work is at most
+/// `3·triangles·CREASE_VALENCE_MAX` steps.
+pub const CREASE_VALENCE_MAX: usize = 64;
+
 /// A vertex of the smooth (indexed) mesh: Gouraud and Phong shading.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
@@ -74,7 +84,8 @@ fn key(p: DVec3) -> [u32; 3] {
 /// Corners that round to the same f32 position are one vertex; the faces around each vertex are
 /// kept as compressed rows (one array for all vertices, no list per vertex), and a vertex's
 /// corners with the same smooth normal share one smooth vertex. At 10⁷ triangles this is a few
-/// flat arrays instead of millions of small allocations.
+/// flat arrays instead of millions of small allocations. The work is linear in the triangles
+/// (see `CREASE_VALENCE_MAX`).
 pub fn build_mesh(triangles: &[[DVec3; 3]], crease_angle_deg: f64) -> Result<MeshData, MeshError> {
     check_finite(triangles)?;
     let cos_crease = crease_angle_deg.to_radians().cos();
@@ -121,27 +132,46 @@ pub fn build_mesh(triangles: &[[DVec3; 3]], crease_angle_deg: f64) -> Result<Mes
     };
     // Per vertex: each of its corners' smooth normal; corners with the same normal (as f32, what
     // the GPU sees) share a smooth vertex.
+    let cos_half_crease = (crease_angle_deg.to_radians() * 0.5).cos();
     let mut made: Vec<([u32; 3], u32)> = Vec::new();
     for v in 0..vertices {
         let around = &faces[start[v]..start[v + 1]];
+        let face_normals = || around.iter().filter_map(|&g| normals[g as usize]);
+        // When every face here is within half the crease angle of their mean, every pair is within
+        // the crease angle, so every corner sums all of them: once for the vertex, in the same
+        // order as the pairwise sum below (the same bits), instead of once per corner.
+        let all = face_normals().fold(DVec3::ZERO, |s, n| s + n);
+        let mean = safe_normalize(all, DVec3::Y);
+        let one_surface = face_normals().all(|n| n.dot(mean) >= cos_half_crease);
+        let pairwise = !one_surface && around.len() <= CREASE_VALENCE_MAX;
         made.clear();
         for &t in around {
             let t = t as usize;
             let own = normals[t];
             let fallback = own.unwrap_or(DVec3::Y);
             for c in (0..3).filter(|&c| corner_vertex[3 * t + c] as usize == v) {
-                let mut sum = DVec3::ZERO;
-                for &g in around {
-                    if let Some(ng) = normals[g as usize] {
-                        // A zero-area face has no surface of its own: it takes every neighbour.
-                        if own.is_none_or(|nf| nf.dot(ng) >= cos_crease) {
-                            sum += ng;
+                let sum = if one_surface {
+                    all
+                } else if pairwise {
+                    let mut sum = DVec3::ZERO;
+                    for &g in around {
+                        if let Some(ng) = normals[g as usize] {
+                            // A zero-area face has no surface of its own: it takes every neighbour.
+                            if own.is_none_or(|nf| nf.dot(ng) >= cos_crease) {
+                                sum += ng;
+                            }
                         }
                     }
-                }
+                    sum
+                } else {
+                    // More faces than CREASE_VALENCE_MAX meeting at a crease: the corner keeps its
+                    // own face's normal, and its own vertex (no search among the others).
+                    fallback
+                };
                 let n = safe_normalize(sum, fallback).as_vec3().to_array();
                 let bits = n.map(f32::to_bits);
-                let idx = match made.iter().find(|(b, _)| *b == bits) {
+                let found = if one_surface || pairwise { made.iter().find(|(b, _)| *b == bits) } else { None };
+                let idx = match found {
                     Some(&(_, i)) => i,
                     None => {
                         let position = triangles[t][c].as_vec3().to_array();
@@ -634,5 +664,39 @@ mod rule_tests {
             assert_eq!(m.smooth_vertices.len(), distinct.len(), "each (position, normal) once");
             assert_eq!(m.flat_vertices.len(), 3 * tris.len());
         }
+    }
+
+    #[test]
+    fn many_faces_at_one_vertex_take_linear_work() {
+        // A sphere's pole: 200 faces, all on one surface, so the rule holds exactly beyond
+        // CREASE_VALENCE_MAX.
+        let tris = triangles(Shape::Sphere, 200);
+        let m = build_mesh(&tris, CREASE_ANGLE_DEG).unwrap();
+        let mut pole = 0;
+        for (t, tri) in tris.iter().enumerate() {
+            for (c, p) in tri.iter().enumerate().filter(|(_, p)| p.y > 1.0 - 1e-12) {
+                assert_eq!(m.smooth_vertices[m.indices[3 * t + c] as usize].normal, rule(&tris, t, c), "{p}");
+                pole += 1;
+            }
+        }
+        assert!(pole >= 200, "{pole} corners at the pole");
+        // A cone's apex: 100 faces 45° off the axis, opposite ones 90° apart (a crease), more than
+        // CREASE_VALENCE_MAX: each corner keeps its own face's normal.
+        let n = 100;
+        assert!(n > CREASE_VALENCE_MAX);
+        let rim = |k: usize| {
+            let a = std::f64::consts::TAU * k as f64 / n as f64;
+            DVec3::new(a.cos(), 0.0, -a.sin())
+        };
+        let cone: Vec<[DVec3; 3]> = (0..n).map(|k| [DVec3::Y, rim(k), rim(k + 1)]).collect();
+        let m = build_mesh(&cone, CREASE_ANGLE_DEG).unwrap();
+        for (t, tri) in cone.iter().enumerate() {
+            let own = face_normal(tri).unwrap().as_vec3().to_array();
+            assert_eq!(m.smooth_vertices[m.indices[3 * t] as usize].normal, own, "apex corner of face {t}");
+        }
+        // A hostile file's million zero-area triangles on one vertex: no surface, one vertex.
+        let degenerate = vec![[DVec3::ZERO; 3]; 1_000_000];
+        let m = build_mesh(&degenerate, CREASE_ANGLE_DEG).unwrap();
+        assert_eq!((m.smooth_vertices.len(), m.indices.len()), (1, 3_000_000));
     }
 }

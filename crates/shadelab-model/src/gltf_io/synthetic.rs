@@ -8,10 +8,16 @@ use glam::{DQuat, DVec3};
 use serde_json::json;
 
 /// Segments around the sphere for about `triangles` triangles: a sphere of `s` segments and
-/// `s/2` rings has `s·(s − 2)` triangles (`mesh::triangle_count`), so `s ≈ 1 + √(1 + N)`, even.
+/// `s/2` rings has `s·(s − 2)` triangles (`mesh::triangle_count`), so `s ≈ 1 + √(1 + N)`, even:
+/// the smallest sphere with at least `triangles`, unless that one is past `MAX_TRIANGLES` (then
+/// the largest the loader takes).
 pub fn sphere_segments(triangles: usize) -> u32 {
     let s = (1.0 + (1.0 + triangles as f64).sqrt()).ceil() as u32;
-    (s + s % 2).max(4)
+    let mut s = (s + s % 2).max(4);
+    while s > 4 && sphere_triangles(s) > super::MAX_TRIANGLES {
+        s -= 2;
+    }
+    s
 }
 
 /// Triangles of the generated sphere with `segments` segments (the two pole rings are fans).
@@ -106,4 +112,26 @@ pub fn sphere_glb(triangles: usize, with_normals: bool) -> (Vec<u8>, usize) {
         ]
     });
     (glb_container(root, bin), count)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::gltf_io::{MAX_TRIANGLES, load_scene_from_slice};
+
+    #[test]
+    fn generated_spheres_load_as_described_and_stay_within_the_limit() {
+        for (asked, with_normals) in [(5000, true), (5000, false), (1, true)] {
+            let (glb, count) = sphere_glb(asked, with_normals);
+            assert!(count >= asked && count == sphere_triangles(sphere_segments(asked)));
+            let loaded = load_scene_from_slice(&glb).unwrap();
+            assert!(loaded.warnings.is_empty(), "{:?}", loaded.warnings);
+            assert_eq!(loaded.scene.triangle_count(), count);
+            assert_eq!(loaded.scene.meshes[0].normals.is_some(), with_normals);
+            assert_eq!(loaded.cameras.len(), 1);
+        }
+        // At the limit: the largest sphere the loader takes, not the next one up.
+        let s = sphere_segments(MAX_TRIANGLES);
+        assert!(sphere_triangles(s) <= MAX_TRIANGLES && sphere_triangles(s + 2) > MAX_TRIANGLES);
+    }
 }

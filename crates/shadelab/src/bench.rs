@@ -8,7 +8,7 @@ use shadelab_render::timing::{FrameTimer, median, quantile_sorted};
 use shadelab_render::{AdapterChoice, Gpu, RenderSettings, Renderer, Target};
 
 pub fn run_render(args: &cli::BenchRenderArgs) -> Result<(), Failure> {
-    let (width, height) = cli::size(&args.width, &args.height)?;
+    let (width, height) = args.size.parse()?;
     let frames = cli::FRAMES.parse_u32(&args.frames)? as usize;
     let warmup = cli::WARMUP.parse_u32(&args.warmup)? as usize;
     let scene = cli::scene(&args.scene)?;
@@ -87,7 +87,7 @@ pub fn run_sweep() -> Result<(), Failure> {
 /// `shadelab bench effects`: specialized vs uber vs per-effect floors, per scene and shading.
 pub fn run_effects(args: &cli::BenchEffectsArgs) -> Result<(), Failure> {
     use shadelab_render::Specialization;
-    let (width, height) = cli::size(&args.width, &args.height)?;
+    let (width, height) = args.size.parse()?;
     let frames = cli::FRAMES.parse_u32(&args.frames)? as usize;
     let warmup = cli::WARMUP.parse_u32(&args.warmup)? as usize;
     let scenes = args
@@ -162,7 +162,7 @@ fn wait(gpu: &Gpu) {
 /// start-up is not counted as the scene's.
 pub fn run_load(args: &cli::BenchLoadArgs) -> Result<(), Failure> {
     use std::time::Instant;
-    let (width, height) = cli::size(&args.width, &args.height)?;
+    let (width, height) = args.size.parse()?;
     let gpu = Gpu::headless(AdapterChoice::from_env()).context("opening a GPU adapter")?;
     let rss_device = peak_rss_kib();
     let ms = |t: Instant| t.elapsed().as_secs_f64() * 1e3;
@@ -236,9 +236,9 @@ fn run_load_process(scene: &str, args: &cli::BenchMeshArgs) -> anyhow::Result<Lo
     };
     cmd.args(["bench", "load", "--scene", scene, "--shading", &args.shading]).args([
         "--width",
-        &args.width,
+        &args.size.width,
         "--height",
-        &args.height,
+        &args.size.height,
     ]);
     let out = cmd.output().context("running shadelab bench load")?;
     let stdout = String::from_utf8_lossy(&out.stdout);
@@ -270,7 +270,7 @@ fn run_load_process(scene: &str, args: &cli::BenchMeshArgs) -> anyhow::Result<Lo
 pub fn run_mesh(args: &cli::BenchMeshArgs) -> Result<(), Failure> {
     let counts: Vec<usize> =
         args.triangles.split(',').map(|t| MESH_TRIANGLES.parse_u32(t).map(|n| n as usize)).collect::<Result<_, _>>()?;
-    cli::size(&args.width, &args.height)?;
+    args.size.parse()?;
     ShadingMode::parse_named(&args.shading)?;
     std::fs::create_dir_all(&args.out).with_context(|| format!("creating {}", args.out.display()))?;
     let has_time = std::path::Path::new(TIME_V).is_file();
@@ -286,8 +286,8 @@ pub fn run_mesh(args: &cli::BenchMeshArgs) -> Result<(), Failure> {
     println!(
         "# shadelab bench mesh — generated spheres {}, {}×{}, {} shading; one process per row",
         if args.without_normals { "without normals (crease-angle rule)" } else { "with normals" },
-        args.width,
-        args.height,
+        args.size.width,
+        args.size.height,
         args.shading
     );
     println!("# device: {}", base.device);

@@ -83,12 +83,8 @@ pub struct BenchLoadArgs {
     pub scene: SceneArgs,
     #[command(flatten)]
     pub mode: ModeArgs,
-    /// Width in pixels, 1 to 8192.
-    #[arg(long, default_value = "1280")]
-    pub width: String,
-    /// Height in pixels, 1 to 8192.
-    #[arg(long, default_value = "720")]
-    pub height: String,
+    #[command(flatten)]
+    pub size: SizeArgs,
 }
 
 #[derive(Args, Debug)]
@@ -106,12 +102,8 @@ pub struct BenchMeshArgs {
     /// flat | gouraud | phong
     #[arg(long, default_value = "phong")]
     pub shading: String,
-    /// Width in pixels, 1 to 8192.
-    #[arg(long, default_value = "1280")]
-    pub width: String,
-    /// Height in pixels, 1 to 8192.
-    #[arg(long, default_value = "720")]
-    pub height: String,
+    #[command(flatten)]
+    pub size: SizeArgs,
 }
 
 #[derive(Args, Debug)]
@@ -120,12 +112,8 @@ pub struct BenchEffectsArgs {
     /// Scenes: built-in names or glTF files (repeat the flag for several).
     #[arg(long = "scene", default_value = "default", value_name = "NAME|PATH")]
     pub scenes: Vec<String>,
-    /// Width in pixels, 1 to 8192.
-    #[arg(long, default_value = "1280")]
-    pub width: String,
-    /// Height in pixels, 1 to 8192.
-    #[arg(long, default_value = "720")]
-    pub height: String,
+    #[command(flatten)]
+    pub size: SizeArgs,
     /// Measured frames per pipeline (after warm-up).
     #[arg(long, default_value = "50")]
     pub frames: String,
@@ -198,12 +186,8 @@ pub struct RenderArgs {
     /// .glb), with the shading mode and specular model in its extras.
     #[arg(long, value_name = "PATH")]
     pub save_scene: Option<PathBuf>,
-    /// Width in pixels, 1 to 8192.
-    #[arg(long, default_value = "1280")]
-    pub width: String,
-    /// Height in pixels, 1 to 8192.
-    #[arg(long, default_value = "720")]
-    pub height: String,
+    #[command(flatten)]
+    pub size: SizeArgs,
     /// Output file: .png (8-bit sRGB) or .exr (linear 32-bit float).
     #[arg(long, default_value = "shadelab.png", value_name = "PATH")]
     pub output: PathBuf,
@@ -220,18 +204,32 @@ pub struct RenderArgs {
 pub struct BenchRenderArgs {
     #[command(flatten)]
     pub scene: SceneArgs,
-    /// Width in pixels, 1 to 8192.
-    #[arg(long, default_value = "1280")]
-    pub width: String,
-    /// Height in pixels, 1 to 8192.
-    #[arg(long, default_value = "720")]
-    pub height: String,
+    #[command(flatten)]
+    pub size: SizeArgs,
     /// Measured frames per combination (after warm-up).
     #[arg(long, default_value = "30")]
     pub frames: String,
     /// Warm-up frames per combination (not measured).
     #[arg(long, default_value = "3")]
     pub warmup: String,
+}
+
+/// The image size (`render` and every `bench`).
+#[derive(Args, Debug, Clone)]
+pub struct SizeArgs {
+    /// Width in pixels, 1 to 8192.
+    #[arg(long, default_value = "1280")]
+    pub width: String,
+    /// Height in pixels, 1 to 8192.
+    #[arg(long, default_value = "720")]
+    pub height: String,
+}
+
+impl SizeArgs {
+    /// The size, each side checked against its range.
+    pub fn parse(&self) -> Result<(u32, u32), ParamError> {
+        size(&self.width, &self.height)
+    }
 }
 
 /// The shading mode and specular model (`render`, `bench load`, the viewer).

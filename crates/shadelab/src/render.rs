@@ -42,7 +42,7 @@ pub fn save_scene(scene: &shadelab_model::Scene, settings: SceneSettings, path: 
 pub fn run(args: &cli::RenderArgs) -> Result<(), Failure> {
     let (scene, file) = cli::scene_and_settings(&args.scene)?;
     let settings = RenderSettings { debug_nonfinite: args.debug_nonfinite, ..args.mode.resolve(file)? };
-    let (width, height) = cli::size(&args.width, &args.height)?;
+    let (width, height) = args.size.parse()?;
     let kind = image_kind(&args.output)?;
     if let Some(path) = &args.save_scene {
         let recorded = SceneSettings { shading: Some(settings.shading), specular: Some(settings.specular) };

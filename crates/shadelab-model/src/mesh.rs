@@ -255,9 +255,11 @@ impl TriangleMesh {
         self.indices[k].map(|i| self.positions[i as usize])
     }
 
-    /// The file's normals at the corners of triangle `k`, if it has normals.
+    /// The file's normals at the corners of triangle `k`, if it has normals (one per vertex; a
+    /// list of another length is no normals).
     pub fn corner_normals(&self, k: usize) -> Option<[DVec3; 3]> {
-        self.normals.as_ref().map(|n| self.indices[k].map(|i| n[i as usize]))
+        let n = self.normals.as_ref().filter(|n| n.len() == self.positions.len())?;
+        Some(self.indices[k].map(|i| n[i as usize]))
     }
 
     /// Every triangle's corners.
@@ -663,6 +665,20 @@ mod rule_tests {
             }
             assert_eq!(m.smooth_vertices.len(), distinct.len(), "each (position, normal) once");
             assert_eq!(m.flat_vertices.len(), 3 * tris.len());
+        }
+    }
+
+    #[test]
+    fn normals_of_another_length_than_the_positions_are_no_normals() {
+        let tris = triangles(Shape::Cube, 1);
+        let mut m = TriangleMesh::from_soup("cube", &tris, None);
+        m.normals = Some(vec![DVec3::Y; 5]);
+        assert!(!m.has_usable_normals() && m.corner_normals(0).is_none());
+        let built = m.build().unwrap();
+        // Every corner falls back to its own face's normal.
+        for (t, tri) in tris.iter().enumerate() {
+            let own = face_normal(tri).unwrap().as_vec3().to_array();
+            assert_eq!(built.smooth_vertices[built.indices[3 * t] as usize].normal, own);
         }
     }
 

@@ -168,7 +168,7 @@ pub fn run_load(args: &cli::BenchLoadArgs) -> Result<(), Failure> {
     let ms = |t: Instant| t.elapsed().as_secs_f64() * 1e3;
 
     let start = Instant::now();
-    let (scene, file) = cli::scene_and_settings(&args.scene)?;
+    let shadelab_model::gltf_io::LoadedScene { scene, settings: file, .. } = cli::load(&args.scene)?;
     let load_ms = ms(start);
     let settings = args.mode.resolve(file)?;
     let (shading, specular) = (settings.shading, settings.specular);

@@ -264,13 +264,7 @@ pub const FRAMES: params::ParamRange =
 
 /// Build the scene the arguments ask for.
 pub fn scene(args: &SceneArgs) -> Result<Scene, Failure> {
-    scene_and_settings(args).map(|(scene, _)| scene)
-}
-
-/// Build the scene the arguments ask for, with the shading mode and specular model a file asks
-/// for (see [`load`]).
-pub fn scene_and_settings(args: &SceneArgs) -> Result<(Scene, SceneSettings), Failure> {
-    load(args).map(|l| (l.scene, l.settings))
+    load(args).map(|l| l.scene)
 }
 
 /// Build the scene the arguments ask for: a built-in scene, or a glTF file (a name that is not

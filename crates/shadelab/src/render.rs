@@ -2,7 +2,7 @@
 
 use crate::{Failure, cli};
 use anyhow::Context;
-use shadelab_model::gltf_io::{self, SceneSettings};
+use shadelab_model::gltf_io::{self, LoadedScene, SceneSettings};
 use shadelab_render::{AdapterChoice, Gpu, LinearImage, RenderSettings};
 use std::path::Path;
 
@@ -40,7 +40,7 @@ pub fn save_scene(scene: &shadelab_model::Scene, settings: SceneSettings, path: 
 }
 
 pub fn run(args: &cli::RenderArgs) -> Result<(), Failure> {
-    let (scene, file) = cli::scene_and_settings(&args.scene)?;
+    let LoadedScene { scene, settings: file, .. } = cli::load(&args.scene)?;
     let settings = RenderSettings { debug_nonfinite: args.debug_nonfinite, ..args.mode.resolve(file)? };
     let (width, height) = args.size.parse()?;
     let kind = image_kind(&args.output)?;

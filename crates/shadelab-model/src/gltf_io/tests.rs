@@ -542,20 +542,8 @@ fn spot_lights_and_range_are_read_from_khr_lights_punctual() {
 }
 
 /// A GLB around a document and its BIN chunk.
-fn glb(mut doc: Value, bin: &[u8]) -> Vec<u8> {
-    doc["buffers"] = json!([{ "byteLength": bin.len() }]);
-    let mut json = serde_json::to_vec(&doc).unwrap();
-    json.resize(json.len().next_multiple_of(4), b' ');
-    let mut out = b"glTF".to_vec();
-    out.extend(2u32.to_le_bytes());
-    out.extend(((12 + 8 + json.len() + 8 + bin.len()) as u32).to_le_bytes());
-    out.extend((json.len() as u32).to_le_bytes());
-    out.extend(b"JSON");
-    out.extend(&json);
-    out.extend((bin.len() as u32).to_le_bytes());
-    out.extend(b"BIN\0");
-    out.extend(bin);
-    out
+fn glb(doc: Value, bin: &[u8]) -> Vec<u8> {
+    super::save::glb_container(doc, bin.to_vec())
 }
 
 #[test]

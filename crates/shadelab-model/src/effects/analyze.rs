@@ -1,0 +1,275 @@
+//! The effect analysis (docs/model.md §9, "Simulating only what a scene calls for"): from the
+//! lights, the materials and the chosen specular model, one rule per declared effect decides
+//! whether the shader must contain it, and why. The effects that are on make the scene's
+//! [`EffectKey`].
+
+use super::declared::{Effect, EffectKey};
+use crate::params::{FalloffForm, LightKind, SpecularModel};
+use crate::scene::Scene;
+
+/// Absorption inside a translucent material below this `a·d` is neglected (docs/model.md §7).
+pub const ABSORPTION_NEGLECT_BELOW: f64 = 0.2;
+/// Absorption below this `a·d` is linearized, `e^(−a·d) ≈ 1 − a·d` (docs/model.md §7).
+pub const ABSORPTION_LINEAR_BELOW: f64 = 0.5;
+
+/// One decision of the analysis: the effect, whether and how it is simulated, and why.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Decision {
+    pub effect: Effect,
+    /// e.g. "on", "off", "neglected", "linear", "not simulated".
+    pub state: String,
+    pub reason: String,
+}
+
+/// The analysis of a scene: the shader's effect set and the reasons.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Analysis {
+    pub key: EffectKey,
+    pub decisions: Vec<Decision>,
+}
+
+impl Analysis {
+    /// One line per decision: `effect: state — reason`.
+    pub fn lines(&self) -> Vec<String> {
+        self.decisions.iter().map(|d| format!("{}: {} — {}", d.effect, d.state, d.reason)).collect()
+    }
+
+    /// Put a simulated effect in or leave it out; its state is "on" or "off".
+    fn decide(&mut self, effect: Effect, on: bool, reason: String) {
+        if on {
+            self.key = self.key.with(effect);
+        }
+        self.note(effect, if on { "on" } else { "off" }, reason);
+    }
+
+    /// Record the state of an effect without touching the key (effects not simulated yet).
+    fn note(&mut self, effect: Effect, state: impl Into<String>, reason: impl Into<String>) {
+        self.decisions.push(Decision { effect, state: state.into(), reason: reason.into() });
+    }
+}
+
+/// What the scene calls for with this specular model.
+pub fn analyze(scene: &Scene, specular: SpecularModel) -> Analysis {
+    let mut a = Analysis { key: EffectKey::NONE, decisions: Vec::new() };
+    let mats = &scene.materials;
+    let used: Vec<&crate::scene::Material> = scene.objects.iter().filter_map(|o| mats.get(o.material)).collect();
+    let lights = &scene.lights[..scene.lights.len().min(crate::scene::MAX_LIGHTS)];
+    let n_dir = lights.iter().filter(|l| l.kind == LightKind::Directional).count();
+    // Point and spot lights: both have a position, a distance and a falloff.
+    let points: Vec<_> = lights.iter().filter(|l| l.kind != LightKind::Directional).collect();
+    let n_spot = points.iter().filter(|l| l.kind == LightKind::Spot).count();
+    let lit = !lights.is_empty();
+
+    a.decide(Effect::DirectionalLights, n_dir > 0, format!("{n_dir} in the scene"));
+    a.decide(
+        Effect::PointLights,
+        !points.is_empty(),
+        if n_spot == 0 {
+            format!("{} in the scene", points.len())
+        } else {
+            format!(
+                "{} point and {n_spot} spot light(s) in the scene (a spot is a point light with a cone)",
+                points.len() - n_spot
+            )
+        },
+    );
+    a.decide(Effect::SpotLights, n_spot > 0, format!("{n_spot} spot light(s)"));
+    let ranged = points.iter().filter(|l| l.range.is_some()).count();
+    a.decide(
+        Effect::LightRange,
+        ranged > 0,
+        if ranged > 0 {
+            format!("{ranged} point or spot light(s) end at a range")
+        } else {
+            "no light has a range".into()
+        },
+    );
+    let quad: Vec<_> =
+        points.iter().filter(|l| l.falloff_form == FalloffForm::Quadratic && l.falloff_alpha > 0.0).collect();
+    a.decide(
+        Effect::FalloffQuadratic,
+        !quad.is_empty(),
+        if quad.is_empty() {
+            "no point or spot light with α > 0 (α = 0 is no falloff)".into()
+        } else {
+            let alphas: Vec<String> = quad.iter().map(|l| format!("{}", l.falloff_alpha)).collect();
+            format!("{} point or spot light(s) with α = {}", quad.len(), alphas.join(", "))
+        },
+    );
+    let lin = points.iter().filter(|l| l.falloff_form == FalloffForm::Linear).count();
+    a.decide(
+        Effect::FalloffLinear,
+        lin > 0,
+        if lin > 0 {
+            format!("{lin} point or spot light(s) use the chapter's form")
+        } else {
+            "no point or spot light uses it".into()
+        },
+    );
+    let max_rd = used.iter().map(|m| m.r_d * m.color.iter().cloned().fold(0.0, f64::max)).fold(0.0, f64::max);
+    a.decide(
+        Effect::Diffuse,
+        lit && max_rd > 0.0,
+        if !lit {
+            "no lights".into()
+        } else if max_rd > 0.0 {
+            "some material has r_d·C > 0".into()
+        } else {
+            "every material has r_d = 0 or C = 0".into()
+        },
+    );
+    let max_rs = used.iter().map(|m| m.r_s).fold(0.0, f64::max);
+    let spec_reason = |model: SpecularModel| -> (bool, String) {
+        if specular != model {
+            (false, format!("the specular model is {specular}"))
+        } else if !lit {
+            (false, "no lights".into())
+        } else if max_rs > 0.0 {
+            (true, format!("the specular model is {specular} and some material has r_s > 0"))
+        } else {
+            (false, "every material has r_s = 0".into())
+        }
+    };
+    let (on, why) = spec_reason(SpecularModel::Phong);
+    a.decide(Effect::SpecularPhong, on, why);
+    let (on, why) = spec_reason(SpecularModel::CookTorrance);
+    a.decide(Effect::SpecularCookTorrance, on, why);
+    let amb = scene.ambient.iter().cloned().fold(0.0, f64::max);
+    let max_ra = used.iter().map(|m| m.r_a).fold(0.0, f64::max);
+    a.decide(
+        Effect::Ambient,
+        amb > 0.0 && max_ra > 0.0,
+        if amb <= 0.0 {
+            "I_amb = 0".into()
+        } else if max_ra <= 0.0 {
+            "every material has r_a = 0".into()
+        } else {
+            format!("I_amb = {amb} and some material has r_a > 0")
+        },
+    );
+    a.note(
+        Effect::CastShadows,
+        "not simulated",
+        "the renderer has no shadow pass; own shadow (N·L ≤ 0) is part of every light's term",
+    );
+    let transmitting: Vec<_> = used.iter().filter(|m| m.transmission > 0.0).collect();
+    a.note(
+        Effect::Transmission,
+        if transmitting.is_empty() { "off" } else { "needed, not simulated yet" },
+        if transmitting.is_empty() {
+            "every material is opaque (transparency t = 1 in the chapter's terms)".into()
+        } else {
+            format!("{} material(s) transmit light; the renderer draws them opaque", transmitting.len())
+        },
+    );
+    let ad = transmitting
+        .iter()
+        .map(|m| m.absorption.iter().cloned().fold(0.0, f64::max) * m.thickness)
+        .fold(0.0f64, f64::max);
+    // The reasons name the chapter's section 7.5 (docs/model.md §7).
+    let (state, reason) = if transmitting.is_empty() {
+        ("off", "nothing transmits".to_string())
+    } else if ad < ABSORPTION_NEGLECT_BELOW {
+        ("neglected", format!("a·d = {ad:.3} < {ABSORPTION_NEGLECT_BELOW} (docs/model.md §7)"))
+    } else if ad < ABSORPTION_LINEAR_BELOW {
+        ("linear 1 − a·d", format!("a·d = {ad:.3} < {ABSORPTION_LINEAR_BELOW} (docs/model.md §7)"))
+    } else {
+        ("exact e^(−a·d)", format!("a·d = {ad:.3} ≥ {ABSORPTION_LINEAR_BELOW} (docs/model.md §7)"))
+    };
+    a.note(Effect::Absorption, state, reason);
+    a
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scene::Light;
+    use glam::DVec3;
+
+    #[test]
+    fn default_scene_needs_what_it_uses() {
+        let s = Scene::builtin("default").unwrap();
+        let a = analyze(&s, SpecularModel::CookTorrance);
+        let k = a.key;
+        assert!(
+            k.has(Effect::Diffuse)
+                && k.has(Effect::Ambient)
+                && k.has(Effect::SpecularCookTorrance)
+                && !k.has(Effect::SpecularPhong)
+        );
+        assert!(
+            k.has(Effect::DirectionalLights)
+                && k.has(Effect::PointLights)
+                && k.has(Effect::FalloffQuadratic)
+                && !k.has(Effect::FalloffLinear)
+        );
+        assert_eq!(
+            analyze(&s, SpecularModel::Phong).key,
+            k.without(Effect::SpecularCookTorrance).with(Effect::SpecularPhong)
+        );
+        assert!(a.lines().iter().any(|l| l.starts_with("cast shadows: not simulated")));
+    }
+
+    #[test]
+    fn each_parameter_switches_its_effect() {
+        let mut s = Scene::builtin("sphere").unwrap();
+        s.ambient = [0.0; 3];
+        for m in &mut s.materials {
+            m.r_s = 0.0;
+        }
+        s.lights = vec![Light::directional(DVec3::NEG_Y, [1.0; 3], 1.0)];
+        let a = analyze(&s, SpecularModel::CookTorrance);
+        assert_eq!(a.key.effects(), vec![Effect::Diffuse, Effect::DirectionalLights], "{:?}", a.lines());
+        s.lights.push(Light::point(DVec3::Y * 3.0, [1.0; 3], 1.0, 0.0));
+        assert!(!analyze(&s, SpecularModel::Phong).key.has(Effect::FalloffQuadratic), "α = 0 needs no falloff");
+        s.lights[1].falloff_form = FalloffForm::Linear;
+        let k = analyze(&s, SpecularModel::Phong).key;
+        assert!(k.has(Effect::PointLights) && k.has(Effect::FalloffLinear) && !k.has(Effect::FalloffQuadratic));
+        assert!(!k.has(Effect::SpotLights) && !k.has(Effect::LightRange));
+        s.lights[1].set_kind(LightKind::Spot);
+        let k = analyze(&s, SpecularModel::Phong).key;
+        assert!(
+            k.has(Effect::PointLights) && k.has(Effect::SpotLights) && !k.has(Effect::LightRange),
+            "a spot needs the point-light path too"
+        );
+        s.lights[1].range = Some(4.0);
+        assert!(analyze(&s, SpecularModel::Phong).key.has(Effect::LightRange));
+        s.lights.clear();
+        assert_eq!(analyze(&s, SpecularModel::Phong).key, EffectKey::NONE);
+    }
+
+    #[test]
+    fn absorption_follows_the_chapter_rule() {
+        let mut s = Scene::builtin("sphere").unwrap();
+        let state = |s: &Scene| {
+            analyze(s, SpecularModel::Phong).decisions.iter().find(|d| d.effect == Effect::Absorption).unwrap().clone()
+        };
+        assert_eq!(state(&s).state, "off");
+        let m = &mut s.materials[1];
+        m.transmission = 0.5;
+        m.thickness = 1.0;
+        for (a, expect) in [(0.12, "neglected"), (0.3, "linear 1 − a·d"), (0.9, "exact e^(−a·d)")] {
+            s.materials[1].absorption = [a, 0.0, 0.0];
+            let d = state(&s);
+            assert_eq!(d.state, expect, "{d:?}");
+            assert!(d.reason.contains(&format!("{a:.3}")), "{d:?}");
+        }
+    }
+
+    /// Every declared effect has exactly one decision, and the key is the simulated effects that
+    /// are on.
+    #[test]
+    fn every_declared_effect_is_decided_once() {
+        for name in crate::scene::BUILTIN_SCENES {
+            let s = Scene::builtin(name).unwrap();
+            for specular in SpecularModel::ALL_MODELS {
+                let a = analyze(&s, specular);
+                for d in super::super::DECLARED {
+                    assert_eq!(a.decisions.iter().filter(|x| x.effect == d.effect).count(), 1, "{name}: {}", d.effect);
+                }
+                let on: EffectKey = a.decisions.iter().filter(|d| d.state == "on").map(|d| d.effect).collect();
+                assert_eq!(on, a.key, "{name}");
+            }
+        }
+    }
+}

@@ -1,0 +1,406 @@
+//! The declared effects: one table entry per effect (its names, label, WGSL define, the WGSL
+//! functions and uniform members only it uses), and [`EffectKey`], the set of effects a shader
+//! permutation holds. Everything else about an effect (the uber and none keys, the preprocessor
+//! defines, `--explain`, the structural test) is derived from this table.
+
+use std::fmt;
+
+/// What is declared about one effect.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Declaration {
+    pub effect: Effect,
+    /// The effect as the analysis prints it (`render --explain`, the viewer's list).
+    pub explain: &'static str,
+    /// The short name `bench effects` prints in its "without …" rows.
+    pub name: &'static str,
+    /// The part of a pipeline label this effect contributes (see [`EffectKey::label`]).
+    pub label: &'static str,
+    /// The WGSL preprocessor name that holds the effect's code; `None` for an effect that is
+    /// analysed but not simulated yet (no shader code, never in an [`EffectKey`]).
+    pub define: Option<&'static str>,
+    /// The WGSL functions only this effect calls (a permutation without it reaches none).
+    pub functions: &'static [&'static str],
+    /// The `(struct, member)` uniforms only this effect reads (a permutation without it reads
+    /// none).
+    pub members: &'static [(&'static str, &'static str)],
+}
+
+/// Declares the `Effect` enum, `Effect::ALL` and [`DECLARED`] from one entry per effect, so that
+/// a variant and its declaration cannot fall out of step.
+macro_rules! declare_effects {
+    ($($(#[$doc:meta])* $effect:ident {
+        explain: $explain:expr,
+        name: $name:expr,
+        label: $label:expr,
+        define: $define:expr,
+        functions: $functions:expr,
+        members: $members:expr $(,)?
+    },)*) => {
+        /// One effect of the lighting model, simulated or only analysed.
+        #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+        pub enum Effect {
+            $($(#[$doc])* $effect,)*
+        }
+
+        /// Every declared effect, in [`Effect`]'s order (the order of pipeline labels).
+        pub const DECLARED: &[Declaration] = &[
+            $(Declaration {
+                effect: Effect::$effect,
+                explain: $explain,
+                name: $name,
+                label: $label,
+                define: $define,
+                functions: $functions,
+                members: $members,
+            },)*
+        ];
+
+        impl Effect {
+            /// Every simulated effect (those with a define), in declaration order.
+            pub const ALL: [Effect; simulated_count()] = {
+                let mut out = [Effect::Diffuse; simulated_count()];
+                let (mut i, mut n) = (0, 0);
+                while i < DECLARED.len() {
+                    if DECLARED[i].define.is_some() {
+                        out[n] = DECLARED[i].effect;
+                        n += 1;
+                    }
+                    i += 1;
+                }
+                out
+            };
+        }
+    };
+}
+
+declare_effects! {
+    /// Lambert diffuse `r_d·C·(N·L)` (docs/model.md §1).
+    Diffuse {
+        explain: "diffuse (Lambert)",
+        name: "diffuse",
+        label: "diffuse",
+        define: Some("EFFECT_DIFFUSE"),
+        functions: &["diffuse_lambert"],
+        // r_d is passed to light_contribution in every permutation (unused there without the
+        // effect): its function is the proof.
+        members: &[],
+    },
+    /// Phong specular `(V·R)^h` (docs/model.md §3).
+    SpecularPhong {
+        explain: "Phong specular (V·R)^h",
+        name: "Phong specular",
+        label: "phong",
+        define: Some("EFFECT_SPECULAR_PHONG"),
+        functions: &["specular_phong"],
+        // h and mirror are passed in every permutation, as r_d is.
+        members: &[],
+    },
+    /// Cook–Torrance specular `F·D·G/(N·V)` and the Fresnel index from μ (docs/model.md §5).
+    SpecularCookTorrance {
+        explain: "Cook–Torrance specular",
+        name: "Cook–Torrance specular",
+        label: "cook-torrance",
+        define: Some("EFFECT_SPECULAR_COOK_TORRANCE"),
+        functions: &["specular_cook_torrance", "d_beckmann", "g_cook_torrance", "f_fresnel_exact", "fresnel_v_from_mu"],
+        members: &[("Object", "mu")],
+    },
+    /// Ambient `I_amb·r_a·C` (docs/model.md §2).
+    Ambient {
+        explain: "ambient I_amb·r_a·C",
+        name: "ambient",
+        label: "ambient",
+        define: Some("EFFECT_AMBIENT"),
+        functions: &[],
+        members: &[("Globals", "ambient")],
+    },
+    /// Directional lights (docs/model.md §6).
+    DirectionalLights {
+        explain: "directional lights",
+        name: "directional lights",
+        label: "dir",
+        define: Some("EFFECT_DIRECTIONAL_LIGHTS"),
+        functions: &[],
+        members: &[("Light", "direction")],
+    },
+    /// Point lights: distance and direction per point (docs/model.md §6).
+    PointLights {
+        explain: "point lights",
+        name: "point lights",
+        label: "point",
+        define: Some("EFFECT_POINT_LIGHTS"),
+        functions: &[],
+        members: &[("Light", "position")],
+    },
+    /// `1/(1 + α d²)` for point lights with α > 0 (docs/model.md §6).
+    FalloffQuadratic {
+        explain: "falloff 1/(1+αd²)",
+        name: "falloff 1/(1+αd²)",
+        label: "quad",
+        define: Some("EFFECT_FALLOFF_QUADRATIC"),
+        functions: &["falloff_quadratic"],
+        members: &[("Light", "falloff_alpha")],
+    },
+    /// The chapter's `1/(d + d0)` (docs/model.md §6).
+    FalloffLinear {
+        explain: "falloff 1/(d+d0)",
+        name: "falloff 1/(d+d0)",
+        label: "linear",
+        define: Some("EFFECT_FALLOFF_LINEAR"),
+        functions: &["falloff_linear"],
+        members: &[("Light", "d0")],
+    },
+    /// Spot cones, on top of point lights: a spot light is a point light with a cone
+    /// (docs/model.md §9).
+    SpotLights {
+        explain: "spot cones",
+        name: "spot cones",
+        label: "spot",
+        define: Some("EFFECT_SPOT_LIGHTS"),
+        functions: &["spot_cone"],
+        members: &[("Light", "spot_axis"), ("Light", "cos_inner"), ("Light", "cos_outer")],
+    },
+    /// glTF's range window on point and spot lights that have a range (docs/model.md §9).
+    LightRange {
+        explain: "light range",
+        name: "light range",
+        label: "range",
+        define: Some("EFFECT_LIGHT_RANGE"),
+        functions: &["window_range"],
+        members: &[("Light", "range")],
+    },
+    /// Shadows cast by other objects: analysed, not simulated (no shadow pass yet).
+    CastShadows {
+        explain: "cast shadows",
+        name: "cast shadows",
+        label: "shadows",
+        define: None,
+        functions: &[],
+        members: &[],
+    },
+    /// Light transmitted through a material: analysed, not simulated yet (docs/model.md §7).
+    Transmission {
+        explain: "transmission",
+        name: "transmission",
+        label: "transmission",
+        define: None,
+        functions: &[],
+        members: &[],
+    },
+    /// Absorption inside a transmitting material, by the chapter's `a·d` rule (docs/model.md §7):
+    /// analysed, not simulated yet.
+    Absorption {
+        explain: "absorption",
+        name: "absorption",
+        label: "absorption",
+        define: None,
+        functions: &[],
+        members: &[],
+    },
+}
+
+/// How many declared effects are simulated (have a define).
+const fn simulated_count() -> usize {
+    let (mut i, mut n) = (0, 0);
+    while i < DECLARED.len() {
+        if DECLARED[i].define.is_some() {
+            n += 1;
+        }
+        i += 1;
+    }
+    n
+}
+
+// The table is indexed by the enum, and a key holds one bit per effect.
+const _: () = {
+    let mut i = 0;
+    while i < DECLARED.len() {
+        assert!(DECLARED[i].effect as usize == i, "DECLARED is in Effect's order");
+        i += 1;
+    }
+    assert!(DECLARED.len() <= u32::BITS as usize, "an EffectKey holds one bit per effect");
+};
+
+impl Effect {
+    /// The effect's entry in [`DECLARED`].
+    pub const fn declaration(self) -> &'static Declaration {
+        &DECLARED[self as usize]
+    }
+
+    /// Whether the shader has code for the effect (it has a define).
+    pub const fn is_simulated(self) -> bool {
+        self.declaration().define.is_some()
+    }
+
+    /// The WGSL preprocessor name of the effect; `None` when it is not simulated.
+    pub const fn define(self) -> Option<&'static str> {
+        self.declaration().define
+    }
+
+    /// The short name (`bench effects`: "without …").
+    pub const fn name(self) -> &'static str {
+        self.declaration().name
+    }
+
+    /// The part of a pipeline label this effect contributes.
+    pub const fn label(self) -> &'static str {
+        self.declaration().label
+    }
+
+    /// The WGSL functions only this effect calls.
+    pub const fn functions(self) -> &'static [&'static str] {
+        self.declaration().functions
+    }
+
+    /// The `(struct, member)` uniforms only this effect reads.
+    pub const fn members(self) -> &'static [(&'static str, &'static str)] {
+        self.declaration().members
+    }
+
+    const fn bit(self) -> u32 {
+        1 << self as u32
+    }
+}
+
+/// The effect as the analysis prints it.
+impl fmt::Display for Effect {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.declaration().explain)
+    }
+}
+
+/// The simulated effects a shader permutation contains: one bit per declared effect. Plain
+/// `Copy + Hash`: pipelines are cached by it. An effect that is not simulated is never in a key.
+#[derive(Clone, Copy, PartialEq, Eq, Hash)]
+pub struct EffectKey(u32);
+
+impl EffectKey {
+    /// Every simulated effect present (the "uber" shader: what is not needed is switched off at
+    /// run time by the uniforms, e.g. r_s = 0 or α = 0).
+    pub const UBER: EffectKey = {
+        let mut key = EffectKey::NONE;
+        let mut i = 0;
+        while i < Effect::ALL.len() {
+            key = key.with(Effect::ALL[i]);
+            i += 1;
+        }
+        key
+    };
+    /// No effect: the shader outputs black (the floor of every effect).
+    pub const NONE: EffectKey = EffectKey(0);
+
+    pub const fn has(&self, e: Effect) -> bool {
+        self.0 & e.bit() != 0
+    }
+
+    /// The key with one effect put in; an effect that is not simulated leaves it as it is.
+    pub const fn with(self, e: Effect) -> EffectKey {
+        if e.is_simulated() { EffectKey(self.0 | e.bit()) } else { self }
+    }
+
+    /// The key with one effect taken out.
+    pub const fn without(self, e: Effect) -> EffectKey {
+        EffectKey(self.0 & !e.bit())
+    }
+
+    /// The effects present, in declaration order.
+    pub fn effects(&self) -> Vec<Effect> {
+        Effect::ALL.into_iter().filter(|e| self.has(*e)).collect()
+    }
+
+    /// The preprocessor names defined for this permutation.
+    pub fn defines(&self) -> Vec<&'static str> {
+        self.effects().into_iter().filter_map(Effect::define).collect()
+    }
+
+    /// A short label, e.g. `diffuse+cook-torrance+ambient+dir+point+quad`; `uber` and `none` for
+    /// those two keys.
+    pub fn label(&self) -> String {
+        if *self == EffectKey::UBER {
+            return "uber".into();
+        }
+        let v: Vec<&str> = self.effects().into_iter().map(Effect::label).collect();
+        if v.is_empty() { "none".into() } else { v.join("+") }
+    }
+}
+
+impl FromIterator<Effect> for EffectKey {
+    fn from_iter<I: IntoIterator<Item = Effect>>(iter: I) -> EffectKey {
+        iter.into_iter().fold(EffectKey::NONE, EffectKey::with)
+    }
+}
+
+/// The label, e.g. `EffectKey(diffuse+dir)`.
+impl fmt::Debug for EffectKey {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "EffectKey({})", self.label())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn keys_and_defines() {
+        assert_eq!(EffectKey::UBER.defines().len(), Effect::ALL.len());
+        assert!(EffectKey::NONE.defines().is_empty());
+        for e in Effect::ALL {
+            assert!(!EffectKey::UBER.without(e).has(e));
+            assert_eq!(EffectKey::UBER.without(e).effects().len(), Effect::ALL.len() - 1);
+            assert_eq!(EffectKey::UBER.without(e).with(e), EffectKey::UBER);
+            assert_eq!(EffectKey::NONE.with(e).effects(), vec![e]);
+        }
+    }
+
+    #[test]
+    fn uber_holds_every_simulated_effect_and_nothing_else() {
+        for d in DECLARED {
+            assert_eq!(EffectKey::UBER.has(d.effect), d.define.is_some(), "{}", d.effect);
+            assert_eq!(Effect::ALL.contains(&d.effect), d.define.is_some(), "{}", d.effect);
+        }
+        // An effect that is not simulated cannot enter a key.
+        for e in [Effect::CastShadows, Effect::Transmission, Effect::Absorption] {
+            assert!(!e.is_simulated());
+            assert_eq!(EffectKey::NONE.with(e), EffectKey::NONE);
+        }
+        assert_eq!(Effect::ALL.into_iter().collect::<EffectKey>(), EffectKey::UBER);
+    }
+
+    #[test]
+    fn names_labels_and_defines_are_unique() {
+        for (i, a) in DECLARED.iter().enumerate() {
+            for b in &DECLARED[i + 1..] {
+                assert_ne!(a.label, b.label);
+                assert_ne!(a.name, b.name);
+                assert_ne!(a.explain, b.explain);
+                if a.define.is_some() {
+                    assert_ne!(a.define, b.define);
+                }
+            }
+            // A label joins with '+' and must not read as a whole key's label.
+            assert!(!a.label.contains('+') && a.label != "uber" && a.label != "none", "{}", a.label);
+            if let Some(d) = a.define {
+                assert!(d.starts_with("EFFECT_") && !d.contains(char::is_whitespace), "{d}");
+            }
+            if a.define.is_none() {
+                assert!(a.functions.is_empty() && a.members.is_empty(), "{}: no code, so no functions", a.effect);
+            }
+        }
+    }
+
+    #[test]
+    fn labels_are_those_pipelines_print() {
+        assert_eq!(EffectKey::UBER.label(), "uber");
+        assert_eq!(EffectKey::NONE.label(), "none");
+        let k: EffectKey = [Effect::LightRange, Effect::Diffuse, Effect::SpecularCookTorrance, Effect::PointLights]
+            .into_iter()
+            .collect();
+        assert_eq!(k.label(), "diffuse+cook-torrance+point+range");
+        assert_eq!(format!("{k:?}"), "EffectKey(diffuse+cook-torrance+point+range)");
+        assert_eq!(
+            EffectKey::UBER.without(Effect::Ambient).label(),
+            "diffuse+phong+cook-torrance+dir+point+quad+linear+spot+range"
+        );
+        assert_eq!(Effect::SpecularPhong.to_string(), "Phong specular (V·R)^h");
+    }
+}

@@ -1,0 +1,10 @@
+//! Effects: what a shader permutation may contain and what a scene calls for. Each effect is
+//! declared once ([`DECLARED`], in `declared.rs`); the analysis (`analyze.rs`) decides, per
+//! scene, which of them the shader must hold, each with its reason. The renderer builds one
+//! pipeline per set ([`EffectKey`]), whose shader holds only those effects.
+
+mod analyze;
+mod declared;
+
+pub use analyze::{ABSORPTION_LINEAR_BELOW, ABSORPTION_NEGLECT_BELOW, Analysis, Decision, analyze};
+pub use declared::{DECLARED, Declaration, Effect, EffectKey};

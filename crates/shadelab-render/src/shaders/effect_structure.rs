@@ -1,0 +1,148 @@
+//! Tests that the WGSL holds the declared effects (`shadelab_model::effects::DECLARED`) and only
+//! them: every define is a block in the WGSL and back, every permutation validates, and a
+//! permutation without an effect has none of the functions or uniform members declared for it.
+
+use super::tests::parse;
+use super::*;
+use naga::valid::{Capabilities, ValidationFlags, Validator};
+use shadelab_model::effects::{DECLARED, Effect};
+use shadelab_model::{ShadingMode, SpecularModel};
+use std::collections::{BTreeSet, HashSet};
+
+fn validate(m: &naga::Module) -> naga::valid::ModuleInfo {
+    Validator::new(ValidationFlags::all(), Capabilities::default()).validate(m).unwrap_or_else(|e| panic!("{e:?}"))
+}
+
+/// Every simulated effect's define opens a block (`#if EFFECT_…`) in the WGSL, and every block
+/// the WGSL opens is a declared define.
+#[test]
+fn wgsl_blocks_are_the_declared_defines() {
+    let raw = raw_lighting_source();
+    let in_wgsl: BTreeSet<&str> = raw.lines().filter_map(|l| l.trim().strip_prefix("#if ")).map(str::trim).collect();
+    let declared: BTreeSet<&str> = DECLARED.iter().filter_map(|d| d.define).collect();
+    assert_eq!(in_wgsl, declared, "the WGSL's #if names against the declared defines");
+    for d in DECLARED {
+        assert_eq!(d.define.is_some(), Effect::ALL.contains(&d.effect), "{}", d.effect);
+    }
+    // The sweep's kernel is appended after preprocessing: it holds no blocks.
+    assert!(SWEEP_KERNEL.lines().all(|l| !l.trim_start().starts_with('#')));
+}
+
+/// Every effect permutation (2^n of the n simulated effects) × every entry point validates in naga.
+#[test]
+fn every_permutation_validates_in_naga() {
+    let raw = raw_lighting_source();
+    for bits in 0..(1u32 << Effect::ALL.len()) {
+        let key: EffectKey =
+            Effect::ALL.into_iter().enumerate().filter(|(i, _)| bits & (1 << i) != 0).map(|(_, e)| e).collect();
+        let src = lighting_source_for(&raw, key).unwrap();
+        let module = naga::front::wgsl::parse_str(&src)
+            .unwrap_or_else(|e| panic!("{}: {}", key.label(), e.emit_to_string(&src)));
+        validate(&module);
+        let mut eps: Vec<(&str, &str)> = ShadingMode::ALL_MODES.into_iter().map(entry_points).collect();
+        eps.push(BASELINE_ENTRY_POINTS);
+        for (vs, fs) in eps {
+            assert!(
+                module.entry_points.iter().any(|e| e.name == vs) && module.entry_points.iter().any(|e| e.name == fs)
+            );
+        }
+    }
+    // The terms alone, and the sweep's compute module, are valid too.
+    validate(&parse(&terms_source()));
+    validate(&parse(&sweep_source()));
+}
+
+/// Functions reachable by calls from an entry point.
+fn reachable(module: &naga::Module, ep: &str) -> HashSet<naga::Handle<naga::Function>> {
+    fn walk(block: &naga::Block, out: &mut Vec<naga::Handle<naga::Function>>) {
+        for st in block.iter() {
+            match st {
+                naga::Statement::Call { function, .. } => out.push(*function),
+                naga::Statement::Block(b) => walk(b, out),
+                naga::Statement::If { accept, reject, .. } => {
+                    walk(accept, out);
+                    walk(reject, out);
+                }
+                naga::Statement::Loop { body, continuing, .. } => {
+                    walk(body, out);
+                    walk(continuing, out);
+                }
+                naga::Statement::Switch { cases, .. } => cases.iter().for_each(|c| walk(&c.body, out)),
+                _ => {}
+            }
+        }
+    }
+    let entry = module.entry_points.iter().find(|e| e.name == ep).unwrap();
+    let mut todo = Vec::new();
+    walk(&entry.function.body, &mut todo);
+    let mut seen = HashSet::new();
+    while let Some(f) = todo.pop() {
+        if seen.insert(f) {
+            walk(&module.functions[f].body, &mut todo);
+        }
+    }
+    seen
+}
+
+/// `(struct, member)` pairs read by the entry point or a function it reaches.
+fn members_read(module: &naga::Module, info: &naga::valid::ModuleInfo, ep: &str) -> Vec<(String, String)> {
+    let mut out = Vec::new();
+    let mut visit = |f: &naga::Function, fi: &naga::valid::FunctionInfo| {
+        for (_, e) in f.expressions.iter() {
+            if let naga::Expression::AccessIndex { base, index } = *e {
+                let mut ty = fi[base].ty.inner_with(&module.types);
+                if let naga::TypeInner::Pointer { base, .. } = ty {
+                    ty = &module.types[*base].inner;
+                }
+                if let naga::TypeInner::Struct { members, .. } = ty {
+                    let name = module.types.iter().find(|(_, t)| &t.inner == ty).and_then(|(_, t)| t.name.clone());
+                    if let (Some(n), Some(m)) = (name, members.get(index as usize).and_then(|m| m.name.clone())) {
+                        out.push((n, m));
+                    }
+                }
+            }
+        }
+    };
+    let (i, entry) = module.entry_points.iter().enumerate().find(|(_, e)| e.name == ep).unwrap();
+    visit(&entry.function, info.get_entry_point(i));
+    for f in reachable(module, ep) {
+        visit(&module.functions[f], &info[f]);
+    }
+    out
+}
+
+/// The structural proof: in the module of a permutation without an effect, as naga sees it
+/// after specialization, no shading entry point reaches the functions declared for the effect or
+/// reads the uniform members declared for it; with the effect, they do (so the check can fail).
+#[test]
+fn a_permutation_without_an_effect_has_no_code_for_it() {
+    let raw = raw_lighting_source();
+    let scene = shadelab_model::Scene::builtin("default").unwrap();
+    let specialized = shadelab_model::effects::analyze(&scene, SpecularModel::Phong).key;
+    for e in Effect::ALL {
+        let mut keys = vec![(EffectKey::UBER, true), (EffectKey::UBER.without(e), false)];
+        if specialized.has(e) {
+            keys.push((specialized.without(e), false));
+        }
+        for (key, present) in keys {
+            let src = lighting_source_for(&raw, key).unwrap();
+            let module = parse(&src);
+            let info = validate(&module);
+            for shading in ShadingMode::ALL_MODES {
+                let (vs, fs) = entry_points(shading);
+                // Flat and Gouraud light in the vertex stage, Phong in the fragment stage.
+                let ep = if shading == ShadingMode::Phong { fs } else { vs };
+                let called: Vec<String> =
+                    reachable(&module, ep).into_iter().filter_map(|f| module.functions[f].name.clone()).collect();
+                for f in e.functions() {
+                    assert_eq!(called.iter().any(|c| c == f), present, "{} {ep}: call to {f}", key.label());
+                }
+                let read = members_read(&module, &info, ep);
+                for (st, m) in e.members() {
+                    let found = read.iter().any(|(a, b)| a == st && b == m);
+                    assert_eq!(found, present, "{} {ep}: {st}.{m} read = {found}", key.label());
+                }
+            }
+        }
+    }
+}

@@ -1,0 +1,62 @@
+//! Plain unit tests of the WGSL sources (no GPU): the preprocessor, the uniform structs' layouts
+//! and the WGSL compiles (the guards and codes shared with Rust: `twins.rs`).
+
+use super::*;
+use crate::uniforms::{GlobalsUniform, LightUniform, ObjectUniform};
+use std::mem::offset_of;
+
+pub(crate) fn parse(src: &str) -> naga::Module {
+    naga::front::wgsl::parse_str(src).unwrap_or_else(|e| panic!("{}", e.emit_to_string(src)))
+}
+
+#[test]
+fn preprocessor_keeps_and_cuts_blocks() {
+    let src = "a\n#if X\nb\n#if Y\nc\n#else\nd\n#endif\n#else\ne\n#endif\nf";
+    let lines = |defs: &[&str]| -> Vec<String> {
+        preprocess(src, defs).unwrap().lines().filter(|l| !l.is_empty()).map(String::from).collect()
+    };
+    assert_eq!(lines(&[]), ["a", "e", "f"]);
+    assert_eq!(lines(&["X"]), ["a", "b", "d", "f"]);
+    assert_eq!(lines(&["X", "Y"]), ["a", "b", "c", "f"]);
+    assert_eq!(lines(&["Y"]), ["a", "e", "f"]);
+    // Line numbers are kept.
+    assert_eq!(preprocess(src, &[]).unwrap().lines().count(), src.lines().count());
+    assert!(preprocess("#if X\n", &[]).unwrap_err().contains("line 1: #if without #endif"));
+    assert!(preprocess("#endif\n", &[]).unwrap_err().contains("#endif without #if"));
+    assert!(preprocess("#else\n", &[]).unwrap_err().contains("#else without #if"));
+    assert!(preprocess("#ifdef X\n#endif", &[]).unwrap_err().contains("unknown directive"));
+}
+
+/// (size, [(field, offset)]) of a WGSL struct as naga lays it out.
+fn wgsl_layout(module: &naga::Module, name: &str) -> (u32, Vec<(String, u32)>) {
+    let ty = module.types.iter().find(|(_, t)| t.name.as_deref() == Some(name)).unwrap_or_else(|| panic!("{name}"));
+    match &ty.1.inner {
+        naga::TypeInner::Struct { members, span } => {
+            (*span, members.iter().map(|m| (m.name.clone().unwrap(), m.offset)).collect())
+        }
+        _ => panic!("{name} is not a struct"),
+    }
+}
+
+macro_rules! rust_layout {
+    ($t:ty: $($f:ident),*) => {
+        (size_of::<$t>() as u32, vec![$((stringify!($f).to_string(), offset_of!($t, $f) as u32)),*])
+    };
+}
+
+#[test]
+fn uniform_layouts_match_wgsl() {
+    let module = parse(&lighting_source());
+    assert_eq!(
+        wgsl_layout(&module, "Light"),
+        rust_layout!(LightUniform: position, direction, radiance, kind, falloff_form, falloff_alpha, d0, spot_axis, cos_inner, cos_outer, range, _pad)
+    );
+    assert_eq!(
+        wgsl_layout(&module, "Globals"),
+        rust_layout!(GlobalsUniform: view_proj, camera_pos, ambient, light_count, flags, specular_model, _pad1, lights)
+    );
+    assert_eq!(
+        wgsl_layout(&module, "Object"),
+        rust_layout!(ObjectUniform: model, normal_matrix, color, mu, r_s, r_d, r_a, m, h, mirror, _pad0, _pad1)
+    );
+}

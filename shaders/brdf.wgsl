@@ -1,31 +1,33 @@
-// The terms of the chapter's illumination model, one function each, named as in the f64
-// reference (crates/shadelab-model/src/brdf.rs). Sections refer to shared/spec/lighting-model.md.
+// The terms of the chapter's illumination model, one function each, and the specular models;
+// named as in the f64 twin, crates/shadelab-model/src/lighting/brdf.rs. Sections (§n) are those
+// of docs/model.md.
 
-// Spec §1, §3: Lambert's cosine with the oriented angle; N·L ≤ 0 is the face's own shadow.
+// docs/model.md §1, §3: Lambert's cosine with the oriented angle; N·L ≤ 0 is the face's own shadow.
 fn diffuse_lambert(n_dot_l: f32) -> f32 {
     return max(n_dot_l, 0.0);
 }
 
-// Spec §1: the Lambert rule I' = R·I·cos α + R·(1 − I); the seed's garbled R(I − I) is read as
-// the ambient fill R(1 − I) (erratum, see the spec).
+// docs/model.md §1: the Lambert rule I' = R·I·cos α + R·(1 − I); the chapter's garbled R(I − I) is read as
+// the ambient fill R(1 − I) (erratum, docs/model.md §1).
 fn lambert_rule(r_in: f32, i_in: f32, cos_alpha: f32) -> f32 {
     let r = clamp(r_in, 0.0, 1.0);
     let i = clamp(i_in, 0.0, 1.0);
     return r * i * diffuse_lambert(cos_alpha) + r * (1.0 - i);
 }
 
-// Spec §3: Phong specular (V·R)^h, evaluated as exp2(h·log2(V·R)); `mirror` is h = ∞
-// (guard MIRROR_V_DOT_R_MIN), otherwise h is clamped to [1, H_MAX].
+// docs/model.md §3: Phong specular (V·R)^h, evaluated as exp2(h·log2(V·R)) with the argument of
+// log2 at least PHONG_LOG2_ARG_MIN; `mirror` is h = ∞ (guard MIRROR_V_DOT_R_MIN), otherwise h is
+// clamped to [1, H_MAX].
 fn specular_phong(v_dot_r: f32, h_in: f32, mirror: bool) -> f32 {
     let x = clamp(v_dot_r, 0.0, 1.0);
     if (mirror) {
         return select(0.0, 1.0, x >= MIRROR_V_DOT_R_MIN);
     }
     let h = clamp(h_in, 1.0, H_MAX);
-    return select(0.0, exp2(h * log2(max(x, 1e-38))), x > 0.0);
+    return select(0.0, exp2(h * log2(max(x, PHONG_LOG2_ARG_MIN))), x > 0.0);
 }
 
-// Spec §5: Beckmann facet distribution in the seed's form
+// docs/model.md §5: Beckmann facet distribution in the chapter's form
 // D = 1/(4 m² (N·H)⁴) · exp((1 − 1/(N·H)²)/m²), which is π/4 × the normalized Beckmann D.
 // `sin2_nh` = 1 − (N·H)², passed in because computed as |N × H|² it keeps its precision at the
 // peak (Filament computes GGX's 1 − (N·H)² the same way): with m = M_MIN the peak spans only
@@ -40,24 +42,24 @@ fn d_beckmann(n_dot_h: f32, sin2_nh: f32, m_in: f32) -> f32 {
     return select(0.0, d, n_dot_h > 0.0);
 }
 
-// Spec §5: geometric attenuation G = min{1, 2(N·H)(N·V)/(V·H), 2(N·H)(N·L)/(V·H)}, written so
-// that a zero V·H never divides.
+// docs/model.md §5: geometric attenuation G = min{1, 2(N·H)(N·V)/(V·H), 2(N·H)(N·L)/(V·H)}, written so
+// that a zero V·H never divides (guard G_V_DOT_H_MIN).
 fn g_cook_torrance(n_dot_h: f32, n_dot_v: f32, n_dot_l: f32, v_dot_h: f32) -> f32 {
     let nh = max(n_dot_h, 0.0);
     let vh = max(v_dot_h, 0.0);
     let num = min(2.0 * nh * max(n_dot_v, 0.0), 2.0 * nh * max(n_dot_l, 0.0));
-    return select(num / max(vh, 1e-30), 1.0, num >= vh);
+    return select(num / max(vh, G_V_DOT_H_MIN), 1.0, num >= vh);
 }
 
-// Spec §5: refractive index from the normal-incidence reflectance, v = (1 + √μ)/(1 − √μ), with
+// docs/model.md §5: refractive index from the normal-incidence reflectance, v = (1 + √μ)/(1 − √μ), with
 // √μ capped at FRESNEL_SQRT_MU_MAX; per colour channel.
 fn fresnel_v_from_mu(mu: vec3<f32>) -> vec3<f32> {
     let s = min(sqrt(clamp(mu, vec3(0.0), vec3(1.0))), vec3(FRESNEL_SQRT_MU_MAX));
     return (1.0 + s) / (1.0 - s);
 }
 
-// Spec §5: the exact unpolarized Fresnel factor, c = L·H, g = √(v² + c² − 1).
-// F(c = 1) = μ and F(c = 0) = 1; the seed's "μ at c = 0" is an erratum.
+// docs/model.md §5: the exact unpolarized Fresnel factor, c = L·H, g = √(v² + c² − 1).
+// F(c = 1) = μ and F(c = 0) = 1; the chapter's "μ at c = 0" is an erratum.
 fn f_fresnel_exact(c_in: f32, v_in: vec3<f32>) -> vec3<f32> {
     let c = clamp(c_in, 0.0, 1.0);
     let v = max(v_in, vec3(1.0));
@@ -69,7 +71,7 @@ fn f_fresnel_exact(c_in: f32, v_in: vec3<f32>) -> vec3<f32> {
     return 0.5 * a * a * (1.0 + b * b);
 }
 
-// Spec §5: the Cook–Torrance term as it enters the sum, π·ρ_s·(N·L) = F·D·G/(N·V) with the
+// docs/model.md §5: the Cook–Torrance term as it enters the sum, π·ρ_s·(N·L) = F·D·G/(N·V) with the
 // seed's D; π keeps it on the scale of the chapter's diffuse term r_d·C·(N·L).
 fn specular_cook_torrance(n: vec3<f32>, v: vec3<f32>, l: vec3<f32>, m: f32, v_index: vec3<f32>) -> vec3<f32> {
     let n_dot_l = dot(n, l);
@@ -83,4 +85,41 @@ fn specular_cook_torrance(n: vec3<f32>, v: vec3<f32>, l: vec3<f32>, m: f32, v_in
     let k = d * g / max(n_dot_v, N_DOT_V_MIN);
     let lit = n_dot_l > 0.0 && n_dot_v > 0.0;
     return select(vec3(0.0), f_fresnel_exact(v_dot_h, v_index) * k, lit);
+}
+
+// What one light adds to the Phong illumination model (docs/model.md §3) at a point with unit
+// normal `n` and unit view vector `v`, for the light's sample `l`, `radiance` (light_sample in
+// lights.wgsl): I_L · (r_d·C·max(N·L, 0) + r_s·S), zero in the point's own shadow.
+// `specular_model` is SPECULAR_PHONG or SPECULAR_COOK_TORRANCE; `v_index` is per channel.
+fn light_contribution(
+    l: vec3<f32>,
+    radiance: vec3<f32>,
+    n: vec3<f32>,
+    v: vec3<f32>,
+    color: vec3<f32>,
+    r_s: f32,
+    r_d: f32,
+    m: f32,
+    h: f32,
+    mirror: bool,
+    v_index: vec3<f32>,
+    specular_model: u32,
+) -> vec3<f32> {
+    let n_dot_l = dot(n, l);
+    var lit = vec3(0.0);
+#if EFFECT_DIFFUSE
+    lit += r_d * color * diffuse_lambert(n_dot_l);
+#endif
+#if EFFECT_SPECULAR_COOK_TORRANCE
+    if (specular_model == SPECULAR_COOK_TORRANCE) {
+        lit += r_s * specular_cook_torrance(n, v, l, m, v_index);
+    }
+#endif
+#if EFFECT_SPECULAR_PHONG
+    if (specular_model == SPECULAR_PHONG) {
+        let r = 2.0 * n_dot_l * n - l;
+        lit += r_s * vec3(select(0.0, specular_phong(dot(v, r), h, mirror), dot(n, v) > 0.0));
+    }
+#endif
+    return select(vec3(0.0), radiance * lit, n_dot_l > 0.0);
 }

@@ -1,4 +1,5 @@
-// Shared constants and helpers of the shadelab lighting model.
+// Shared constants and helpers of the shadelab lighting model; the f64 twin is
+// crates/shadelab-model/src/lighting/common.rs.
 //
 // The guards below are twins of crates/shadelab-model/src/guards.rs, where each value's reason
 // is given; the test `wgsl_guards_equal_rust_guards` holds the two equal. They clamp inputs:
@@ -9,7 +10,9 @@ const N_DOT_V_MIN: f32 = 1e-4;
 const N_DOT_H_MIN: f32 = 1e-4;
 const M_MIN: f32 = 1e-3;
 const H_MAX: f32 = 1e9;
+const PHONG_LOG2_ARG_MIN: f32 = 1e-38;
 const MIRROR_V_DOT_R_MIN: f32 = 0.999999;
+const G_V_DOT_H_MIN: f32 = 1e-30;
 const FRESNEL_SQRT_MU_MAX: f32 = 0.9999;
 const FRESNEL_G_PLUS_C_MIN: f32 = 1e-6;
 const LIGHT_DIST_MIN: f32 = 1e-4;
@@ -19,6 +22,8 @@ const SPOT_COS_SPAN_MIN: f32 = 1e-3;
 // Light slots in the scene uniform (scene::MAX_LIGHTS).
 const MAX_LIGHTS: u32 = 8u;
 
+// Codes Rust writes into the uniforms: LightKind::code, FalloffForm::code and SpecularModel::code
+// (crates/shadelab-model/src/lighting/), held equal by the test `wgsl_codes_equal_rust_codes`.
 const LIGHT_DIRECTIONAL: u32 = 0u;
 const LIGHT_POINT: u32 = 1u;
 const LIGHT_SPOT: u32 = 2u;

@@ -1,4 +1,5 @@
-// Light sources and distance falloff (spec §2, §6).
+// Light sources and distance falloff (docs/model.md §2, §6); the f64 twin is
+// crates/shadelab-model/src/lighting/lights.rs, which also declares the light kinds and parameters.
 
 struct Light {
     // xyz: position of a point or spot light.
@@ -22,12 +23,12 @@ struct Light {
     _pad: f32,
 }
 
-// Spec §6: I(d) = I0/(1 + α d²); in (0, 1] for α ≥ 0.
+// docs/model.md §6: I(d) = I0/(1 + α d²); in (0, 1] for α ≥ 0.
 fn falloff_quadratic(d: f32, alpha: f32) -> f32 {
     return 1.0 / (1.0 + max(alpha, 0.0) * d * d);
 }
 
-// Spec §2: the chapter's 1/(d + d0), d0 kept at or above D0_MIN.
+// docs/model.md §2: the chapter's 1/(d + d0), d0 kept at or above D0_MIN.
 fn falloff_linear(d: f32, d0: f32) -> f32 {
     return 1.0 / (max(d, 0.0) + max(d0, D0_MIN));
 }
@@ -59,7 +60,7 @@ struct LightSample {
 // Direction and intensity of one light at surface point `p` with normal `n`. A point or spot light
 // closer than LIGHT_DIST_MIN touches the surface: its direction is undefined, so L = N.
 // The `#if EFFECT_…` blocks are kept only in permutations whose scene calls for the effect
-// (crates/shadelab-model/src/effects.rs decides; crates/shadelab-render/src/shaders.rs cuts).
+// (crates/shadelab-model/src/effects/declared.rs decides; crates/shadelab-render/src/shaders.rs cuts).
 fn light_sample(light: Light, p: vec3<f32>, n: vec3<f32>) -> LightSample {
     var s: LightSample;
 #if EFFECT_POINT_LIGHTS
@@ -96,39 +97,4 @@ fn light_sample(light: Light, p: vec3<f32>, n: vec3<f32>) -> LightSample {
     s.radiance = light.radiance.rgb;
 #endif
     return s;
-}
-
-// What one light adds to the Phong illumination model (spec §3) at a point with unit normal `n`
-// and unit view vector `v`: I_L · (r_d·C·max(N·L, 0) + r_s·S), zero in the point's own shadow.
-// `specular_model` is SPECULAR_PHONG or SPECULAR_COOK_TORRANCE; `v_index` is per channel.
-fn light_contribution(
-    s: LightSample,
-    n: vec3<f32>,
-    v: vec3<f32>,
-    color: vec3<f32>,
-    r_s: f32,
-    r_d: f32,
-    m: f32,
-    h: f32,
-    mirror: bool,
-    v_index: vec3<f32>,
-    specular_model: u32,
-) -> vec3<f32> {
-    let n_dot_l = dot(n, s.l);
-    var lit = vec3(0.0);
-#if EFFECT_DIFFUSE
-    lit += r_d * color * diffuse_lambert(n_dot_l);
-#endif
-#if EFFECT_SPECULAR_COOK_TORRANCE
-    if (specular_model == SPECULAR_COOK_TORRANCE) {
-        lit += r_s * specular_cook_torrance(n, v, s.l, m, v_index);
-    }
-#endif
-#if EFFECT_SPECULAR_PHONG
-    if (specular_model == SPECULAR_PHONG) {
-        let r = 2.0 * n_dot_l * n - s.l;
-        lit += r_s * vec3(select(0.0, specular_phong(dot(v, r), h, mirror), dot(n, v) > 0.0));
-    }
-#endif
-    return select(vec3(0.0), s.radiance * lit, n_dot_l > 0.0);
 }

@@ -1,10 +1,11 @@
-// The three shading modes (spec §8) over the Phong illumination model (spec §3):
-// I = I_a + Σ_lights I_L · (r_d·C·(N·L) + r_s·S), S = Phong or Cook–Torrance specular.
+// The three shading modes (docs/model.md §8) over the Phong illumination model (docs/model.md §3):
+// I = I_a + Σ_lights I_L · (r_d·C·(N·L) + r_s·S), S = Phong or Cook–Torrance specular; the f64
+// twin of `shade` is crates/shadelab-model/src/lighting/shading.rs.
 // Flat: lit once per face at its centroid. Gouraud: lit at the vertices, colour interpolated.
 // Phong: normals interpolated, renormalized, lit per pixel.
 
 // Each pipeline's module holds only the effects its scene calls for: the `#if EFFECT_…` blocks
-// (see crates/shadelab-model/src/effects.rs). The "uber" permutation keeps them all and leaves
+// (see crates/shadelab-model/src/effects/declared.rs). The "uber" permutation keeps them all and leaves
 // the choice to the uniforms (globals.specular_model, r_s, α, …).
 
 struct Globals {
@@ -65,8 +66,8 @@ fn shade(p: vec3<f32>, n_in: vec3<f32>) -> vec3<f32> {
     for (var i = 0u; i < min(globals.light_count, MAX_LIGHTS); i++) {
         let s = light_sample(globals.lights[i], p, n);
         total += light_contribution(
-            s, n, v, c, object.r_s, object.r_d, object.m, object.h, object.mirror != 0u, v_index,
-            globals.specular_model,
+            s.l, s.radiance, n, v, c, object.r_s, object.r_d, object.m, object.h, object.mirror != 0u,
+            v_index, globals.specular_model,
         );
     }
     return total;

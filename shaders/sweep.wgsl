@@ -1,6 +1,8 @@
 // The stability sweep's kernel. It evaluates the lighting terms of brdf.wgsl and lights.wgsl —
 // the files the renderer uses, concatenated before this one — for one combination of inputs per
-// invocation, so that the sweep tests exactly what ships.
+// invocation, so that the sweep tests exactly what ships. Its output columns (SWEEP_OUTPUTS,
+// COL_…) and the inputs it shares with the f64 side are generated from
+// crates/shadelab-render/src/sweep/columns.rs and put before it.
 
 struct SweepCounts {
     geometry: u32,
@@ -14,13 +16,10 @@ struct SweepCounts {
     m_offset: u32,
 }
 
-// Material used for the per-light contribution.
-const SWEEP_COLOR: vec3<f32> = vec3(0.8, 0.5, 0.2);
-// Floats written per combination.
-const SWEEP_OUTPUTS: u32 = 20u;
-// Spot cones: the outer half-angle is m·SWEEP_CONE_PER_M (m in [0, 1] spans 0 to 90°), the inner
-// one the share min(α, 1) of it (α ≥ 1: inner = outer, the SPOT_COS_SPAN_MIN guard's case).
-const SWEEP_CONE_PER_M: f32 = 1.5707964;
+// SWEEP_COLOR, the material's colour in the per-light contribution, and SWEEP_CONE_PER_M come
+// with the columns. Spot cones: the outer half-angle is m·SWEEP_CONE_PER_M (m in [0, 1] spans 0 to
+// 90°), the inner one the share min(α, 1) of it (α ≥ 1: inner = outer, the SPOT_COS_SPAN_MIN
+// guard's case).
 
 @group(0) @binding(0) var<uniform> counts: SweepCounts;
 // Rows: geometry (n, v, l) × count, then m (x), h (x = h, y = 1 for mirror), μ (xyz), d (x),
@@ -76,32 +75,36 @@ fn sweep(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workgroups)
 
     let f = f_fresnel_exact(dot(v, half), v_index);
     let ct = specular_cook_torrance(n, v, l, m, v_index);
-    let c_phong = light_contribution(quadratic, n, v, SWEEP_COLOR, 1.0, 1.0, m, h_row.x, mirror, v_index, SPECULAR_PHONG);
-    let c_ct = light_contribution(linear, n, v, SWEEP_COLOR, 1.0, 1.0, m, h_row.x, mirror, v_index, SPECULAR_COOK_TORRANCE);
+    let c_phong = light_contribution(
+        quadratic.l, quadratic.radiance, n, v, SWEEP_COLOR, 1.0, 1.0, m, h_row.x, mirror, v_index, SPECULAR_PHONG,
+    );
+    let c_ct = light_contribution(
+        linear.l, linear.radiance, n, v, SWEEP_COLOR, 1.0, 1.0, m, h_row.x, mirror, v_index,
+        SPECULAR_COOK_TORRANCE,
+    );
 
     let base = idx * SWEEP_OUTPUTS;
-    outputs[base + 0u] = diffuse_lambert(dot(n, l));
-    outputs[base + 1u] = specular_phong(dot(v, r), h_row.x, mirror);
+    outputs[base + COL_DIFFUSE_LAMBERT] = diffuse_lambert(dot(n, l));
+    outputs[base + COL_SPECULAR_PHONG] = specular_phong(dot(v, r), h_row.x, mirror);
     let n_x_h = cross(n, half);
-    outputs[base + 2u] = d_beckmann(dot(n, half), dot(n_x_h, n_x_h), m);
-    outputs[base + 3u] = g_cook_torrance(dot(n, half), dot(n, v), dot(n, l), dot(v, half));
-    outputs[base + 4u] = f.x;
-    outputs[base + 5u] = f.y;
-    outputs[base + 6u] = f.z;
-    outputs[base + 7u] = ct.x;
-    outputs[base + 8u] = ct.y;
-    outputs[base + 9u] = ct.z;
-    outputs[base + 10u] = falloff_quadratic(d, a_row.x);
-    outputs[base + 11u] = falloff_linear(d, a_row.y);
-    outputs[base + 12u] = c_phong.x;
-    outputs[base + 13u] = c_phong.y;
-    outputs[base + 14u] = c_phong.z;
-    outputs[base + 15u] = c_ct.x;
-    outputs[base + 16u] = c_ct.y;
-    outputs[base + 17u] = c_ct.z;
+    outputs[base + COL_D_BECKMANN] = d_beckmann(dot(n, half), dot(n_x_h, n_x_h), m);
+    outputs[base + COL_G_COOK_TORRANCE] = g_cook_torrance(dot(n, half), dot(n, v), dot(n, l), dot(v, half));
+    put_rgb(base + COL_F_FRESNEL_EXACT, f);
+    put_rgb(base + COL_SPECULAR_COOK_TORRANCE, ct);
+    outputs[base + COL_FALLOFF_QUADRATIC] = falloff_quadratic(d, a_row.x);
+    outputs[base + COL_FALLOFF_LINEAR] = falloff_linear(d, a_row.y);
+    put_rgb(base + COL_CONTRIBUTION_PHONG, c_phong);
+    put_rgb(base + COL_CONTRIBUTION_COOK_TORRANCE, c_ct);
     // The spot cone at the angle between V and L; the range window at distance d with range d0.
     let outer = m * SWEEP_CONE_PER_M;
     let inner = outer * min(a_row.x, 1.0);
-    outputs[base + 18u] = spot_cone(dot(v, l), cos(inner), cos(outer));
-    outputs[base + 19u] = window_range(d, a_row.y);
+    outputs[base + COL_SPOT_CONE] = spot_cone(dot(v, l), cos(inner), cos(outer));
+    outputs[base + COL_WINDOW_RANGE] = window_range(d, a_row.y);
+}
+
+// A colour's three channels into consecutive outputs from `at`.
+fn put_rgb(at: u32, c: vec3<f32>) {
+    outputs[at] = c.x;
+    outputs[at + 1u] = c.y;
+    outputs[at + 2u] = c.z;
 }

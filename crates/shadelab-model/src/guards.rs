@@ -1,8 +1,8 @@
 //! Named numerical guards of the lighting model.
 //!
 //! Every constant here has a twin of the same name in `shaders/common.wgsl`; the test
-//! `wgsl_guards_equal_rust_guards` (in `shadelab-render`) parses the WGSL with naga and holds the
-//! two equal. The guards clamp *inputs* (cosines, roughness, refractive index, distances): WGSL
+//! `wgsl_guards_equal_rust_guards` (in `shadelab-render`, `twins.rs`) parses the WGSL with naga
+//! and holds the two equal. The guards clamp *inputs* (cosines, roughness, refractive index, distances): WGSL
 //! lets an implementation assume there is no NaN or infinity, so filtering bad values afterwards
 //! does not work.
 
@@ -30,10 +30,22 @@ pub const M_MIN: f64 = 1e-3;
 /// `V·R` in (0, 1] and `h ≤ 1e9` is at least `exp2(-1.5e11)` = 0: finite, no overflow.
 pub const H_MAX: f64 = 1e9;
 
+/// Smallest argument of `log2` in the Phong term `exp2(h·log2(V·R))`. At `V·R = 0` the term is 0
+/// by a test, but both sides of that test are evaluated, and `log2(0) = −∞` times `h` is an
+/// infinity WGSL may assume away. At this floor `log2` is about −126 and `h·log2 ≥ −1.3e11`: finite,
+/// and `exp2` of it is 0. (In f32, 1e-38 lies just under the smallest normal number, 1.18e-38.)
+pub const PHONG_LOG2_ARG_MIN: f64 = 1e-38;
+
 /// The "mirror" Phong setting (`h = ∞`): light is reflected only where `V·R` is at least this,
 /// i.e. within 0.08° of the mirror direction. A true Dirac lobe would never cover a pixel centre;
 /// 1 − 1e-6 is 16 f32 ulps below 1, so the test is still meaningful in f32.
 pub const MIRROR_V_DOT_R_MIN: f64 = 1.0 - 1e-6;
+
+/// Smallest `V·H` the geometric attenuation divides by. The quotient `num/(V·H)` is used only
+/// where `num < V·H`, so `V·H > 0` there; but both sides of that test are evaluated, and
+/// `V·H = num = 0` would be 0/0. Any floor below every `V·H` a lit point has works: 1e-30 is a
+/// normal f32, and its reciprocal is finite.
+pub const G_V_DOT_H_MIN: f64 = 1e-30;
 
 /// Largest `√μ` used to derive the refractive index `v = (1 + √μ)/(1 − √μ)`. `μ = 1` would make
 /// `v` infinite; at this cap `v ≈ 2e4` and `F(c = 1) = 0.9998`, within 2e-4 of the perfect
@@ -66,7 +78,9 @@ pub const ALL: &[(&str, f64)] = &[
     ("N_DOT_H_MIN", N_DOT_H_MIN),
     ("M_MIN", M_MIN),
     ("H_MAX", H_MAX),
+    ("PHONG_LOG2_ARG_MIN", PHONG_LOG2_ARG_MIN),
     ("MIRROR_V_DOT_R_MIN", MIRROR_V_DOT_R_MIN),
+    ("G_V_DOT_H_MIN", G_V_DOT_H_MIN),
     ("FRESNEL_SQRT_MU_MAX", FRESNEL_SQRT_MU_MAX),
     ("FRESNEL_G_PLUS_C_MIN", FRESNEL_G_PLUS_C_MIN),
     ("LIGHT_DIST_MIN", LIGHT_DIST_MIN),

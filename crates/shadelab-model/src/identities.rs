@@ -1,7 +1,7 @@
-//! The model's identities (spec §5, §9) as tests: physics, not pictures.
+//! The model's identities (docs/model.md §5, §9) as tests: physics, not pictures.
 
-use crate::brdf::*;
 use crate::guards::*;
+use crate::lighting::brdf::*;
 use glam::DVec3;
 use std::f64::consts::PI;
 
@@ -12,7 +12,7 @@ fn dir(theta: f64, phi: f64) -> DVec3 {
 
 #[test]
 fn fresnel_is_mu_at_normal_incidence_and_one_at_grazing() {
-    // The seed says μ is F "at c = 0"; normal incidence is c = cos 0 = 1 (erratum, spec §5).
+    // The chapter says μ is F "at c = 0"; normal incidence is c = cos 0 = 1 (erratum, docs/model.md §5).
     for i in 0..=1000 {
         let mu = 0.9998 * i as f64 / 1000.0; // below the √μ cap (FRESNEL_SQRT_MU_MAX)
         let v = fresnel_v_from_mu(mu);
@@ -39,7 +39,7 @@ fn fresnel_is_mu_at_normal_incidence_and_one_at_grazing() {
 }
 
 #[test]
-fn seed_beckmann_is_pi_over_4_times_normalized_and_normalized_integrates_to_one() {
+fn chapter_beckmann_is_pi_over_4_times_normalized_and_normalized_integrates_to_one() {
     for m in [0.05, 0.1, 0.2, 0.5, 0.8, 1.0] {
         for i in 1..=200 {
             let c = i as f64 / 200.0;
@@ -61,7 +61,7 @@ fn seed_beckmann_is_pi_over_4_times_normalized_and_normalized_integrates_to_one(
 }
 
 #[test]
-fn seed_rho_s_equals_the_modern_microfacet_form() {
+fn chapter_rho_s_equals_the_modern_microfacet_form() {
     let n = DVec3::Y;
     for m in [0.1, 0.3, 0.7] {
         for mu in [0.02, 0.04, 0.5, 0.95] {

@@ -1,13 +1,18 @@
 //! Parameter kinds, their allowed ranges and validation.
 //!
-//! Every range a user can set lives here once: the CLI validates with it, the viewer builds its
+//! Every range a user can set is declared once: the CLI validates with it, the viewer builds its
 //! sliders from it, and error messages quote it. A user's mistake gets one line naming the flag,
-//! the allowed range and the value given.
+//! the allowed range and the value given. The ranges and kinds of lights and the specular models
+//! are declared with their f64 terms (`lighting/lights.rs`, `lighting/brdf.rs`) and re-exported
+//! here.
 
 use std::fmt;
 use std::str::FromStr;
 
-/// How lighting is distributed over a face (spec §8).
+pub use crate::lighting::brdf::SpecularModel;
+pub use crate::lighting::lights::{CONE_ANGLE, CONE_ANGLE_F32, D0, FALLOFF, FalloffForm, INTENSITY, LightKind, RANGE};
+
+/// How lighting is distributed over a face (docs/model.md §8).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub enum ShadingMode {
     /// One normal and one colour per face, lit at the face's centroid.
@@ -16,36 +21,6 @@ pub enum ShadingMode {
     Gouraud,
     /// Normals interpolated and renormalized, lighting per pixel.
     Phong,
-}
-
-/// Which specular term the illumination model uses (spec §3, §5).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
-pub enum SpecularModel {
-    /// `(V·R)^h`.
-    Phong,
-    /// Beckmann D, min() G and exact Fresnel F.
-    CookTorrance,
-}
-
-/// Light source kind (spec §6).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum LightKind {
-    /// Parallel light from a source at infinity.
-    Directional,
-    /// A point source with distance falloff.
-    Point,
-    /// A point source that lights only a cone (glTF's spot light): fully inside the inner cone,
-    /// not at all outside the outer one, a smooth ramp between.
-    Spot,
-}
-
-/// Which distance falloff a point light uses.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum FalloffForm {
-    /// `I0/(1 + α d²)` (spec §6).
-    Quadratic,
-    /// The chapter's `I0/(d + d0)` (spec §2).
-    Linear,
 }
 
 /// The Phong exponent `h`: a finite sharpness in `[1, H_MAX]`, or the perfect mirror (`h = ∞`).
@@ -66,6 +41,25 @@ impl PhongExponent {
     }
     pub fn is_mirror(self) -> bool {
         matches!(self, PhongExponent::Mirror)
+    }
+
+    /// The one rule tying the Phong exponent to Beckmann roughness, h = 2/m² − 2 (the exponent
+    /// whose lobe has the width of roughness m; docs/model.md §5): m ≤ 0 is the mirror, and h is
+    /// kept in [1, H_MAX], the range the shader accepts.
+    pub fn from_m(m: f64) -> PhongExponent {
+        if m <= 0.0 {
+            return PhongExponent::Mirror;
+        }
+        PhongExponent::Finite((2.0 / (m * m) - 2.0).clamp(1.0, crate::guards::H_MAX))
+    }
+
+    /// The same exponent rounded to a whole number (the built-in scenes show whole exponents in
+    /// the panel); the mirror stays the mirror.
+    pub fn rounded(self) -> PhongExponent {
+        match self {
+            PhongExponent::Finite(h) => PhongExponent::Finite(h.round()),
+            PhongExponent::Mirror => PhongExponent::Mirror,
+        }
     }
 }
 
@@ -144,11 +138,11 @@ impl ParamRange {
     }
 }
 
-/// Beckmann roughness `m` (spec §5). 0 is allowed (clamped to `M_MIN` inside the model); above 1
+/// Beckmann roughness `m` (docs/model.md §5). 0 is allowed (clamped to `M_MIN` inside the model); above 1
 /// the lobe is so wide the highlight has gone, and the white-furnace check covers [0.05, 1].
 pub const M: ParamRange =
     ParamRange { flag: "--m", symbol: "m", meaning: "roughness m (Beckmann facet slope)", min: 0.0, max: 1.0 };
-/// Phong exponent `h` (spec §3); "mirror" is accepted besides the numbers.
+/// Phong exponent `h` (docs/model.md §3); "mirror" is accepted besides the numbers.
 pub const H: ParamRange = ParamRange {
     flag: "--h",
     symbol: "h",
@@ -156,7 +150,7 @@ pub const H: ParamRange = ParamRange {
     min: 1.0,
     max: crate::guards::H_MAX,
 };
-/// Reflectance at normal incidence `μ`, per colour channel (spec §5).
+/// Reflectance at normal incidence `μ`, per colour channel (docs/model.md §5).
 pub const MU: ParamRange = ParamRange {
     flag: "--mu",
     symbol: "μ",
@@ -164,31 +158,6 @@ pub const MU: ParamRange = ParamRange {
     min: 0.0,
     max: 1.0,
 };
-/// Falloff factor `α` of `I0/(1 + α d²)` (spec §6).
-pub const FALLOFF: ParamRange =
-    ParamRange { flag: "--falloff", symbol: "α", meaning: "falloff factor α", min: 0.0, max: 1e6 };
-/// Minimum distance `d0` of the chapter's `1/(d + d0)` (spec §2); at least `D0_MIN`.
-pub const D0: ParamRange = ParamRange {
-    flag: "--d0",
-    symbol: "d0",
-    meaning: "minimum distance d0 of 1/(d + d0)",
-    min: crate::guards::D0_MIN,
-    max: 1e3,
-};
-/// Half-angle of a spot light's cone, radians (glTF `innerConeAngle`, `outerConeAngle`): from
-/// the axis (0) to a half-space (π/2).
-pub const CONE_ANGLE: ParamRange = ParamRange {
-    flag: "cone angle",
-    symbol: "θ",
-    meaning: "spot cone half-angle in radians",
-    min: 0.0,
-    max: std::f64::consts::FRAC_PI_2,
-};
-/// [`CONE_ANGLE`] with π/2 rounded up to f32, as glTF files store it.
-pub const CONE_ANGLE_F32: ParamRange = ParamRange { max: std::f32::consts::FRAC_PI_2 as f64, ..CONE_ANGLE };
-/// Distance at which a point or spot light ends (glTF `range`).
-pub const RANGE: ParamRange =
-    ParamRange { flag: "range", symbol: "r", meaning: "light range (where its light ends)", min: 1e-6, max: 1e9 };
 /// Image width in pixels.
 pub const WIDTH: ParamRange =
     ParamRange { flag: "--width", symbol: "w", meaning: "image width in pixels", min: 1.0, max: 8192.0 };
@@ -205,10 +174,6 @@ pub const TESSELLATION: ParamRange = ParamRange {
 };
 /// Colour channels, shares r_s, r_d, r_a and intensities in [0, 1].
 pub const UNIT: ParamRange = ParamRange { flag: "value", symbol: "", meaning: "a share or colour", min: 0.0, max: 1.0 };
-/// Light intensity `I_L` (an HDR multiplier of the light's colour).
-pub const INTENSITY: ParamRange =
-    ParamRange { flag: "intensity", symbol: "I_L", meaning: "light intensity I_L", min: 0.0, max: 1e3 };
-
 /// Parse the Phong exponent: a number in `H`'s range, or `mirror`.
 pub fn parse_h(text: &str) -> Result<PhongExponent, ParamError> {
     if text.trim().eq_ignore_ascii_case("mirror") {
@@ -270,22 +235,6 @@ impl NamedValue for ShadingMode {
     const ALL: &'static [(&'static str, Self)] =
         &[("flat", ShadingMode::Flat), ("gouraud", ShadingMode::Gouraud), ("phong", ShadingMode::Phong)];
 }
-impl NamedValue for SpecularModel {
-    const FLAG: &'static str = "--specular";
-    const ALL: &'static [(&'static str, Self)] =
-        &[("phong", SpecularModel::Phong), ("cook-torrance", SpecularModel::CookTorrance)];
-}
-impl NamedValue for LightKind {
-    const FLAG: &'static str = "--light";
-    const ALL: &'static [(&'static str, Self)] =
-        &[("directional", LightKind::Directional), ("point", LightKind::Point), ("spot", LightKind::Spot)];
-}
-impl NamedValue for FalloffForm {
-    const FLAG: &'static str = "--falloff-form";
-    const ALL: &'static [(&'static str, Self)] =
-        &[("quadratic", FalloffForm::Quadratic), ("linear", FalloffForm::Linear)];
-}
-
 macro_rules! from_str_named {
     ($($t:ty),*) => {$(
         impl FromStr for $t {
@@ -302,10 +251,6 @@ from_str_named!(ShadingMode, SpecularModel, LightKind, FalloffForm);
 impl ShadingMode {
     pub const ALL_MODES: [ShadingMode; 3] = [ShadingMode::Flat, ShadingMode::Gouraud, ShadingMode::Phong];
 }
-impl SpecularModel {
-    pub const ALL_MODELS: [SpecularModel; 2] = [SpecularModel::Phong, SpecularModel::CookTorrance];
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -18,7 +18,7 @@ pub struct MaterialPreset {
 
 const FILAMENT: &str = "Filament, PBR in Filament §4.8.3.2";
 
-/// μ of a dielectric with refractive index `n` (spec §5, the inverse of v(μ)).
+/// μ of a dielectric with refractive index `n` (docs/model.md §5, the inverse of v(μ)).
 pub fn mu_from_ior(n: f64) -> f64 {
     ((n - 1.0) / (n + 1.0)).powi(2)
 }
@@ -76,7 +76,7 @@ mod tests {
             let n: f64 = p.source.trim_start_matches("n ≈ ").trim_start_matches("n = ").parse().unwrap();
             assert!((p.mu[0] - mu_from_ior(n)).abs() < 1e-3, "{}", p.name);
             // and v(μ) gives the index back
-            assert!((crate::brdf::fresnel_v_from_mu(mu_from_ior(n)) - n).abs() < 1e-9);
+            assert!((crate::lighting::brdf::fresnel_v_from_mu(mu_from_ior(n)) - n).abs() < 1e-9);
         }
     }
 }

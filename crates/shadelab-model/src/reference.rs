@@ -2,7 +2,8 @@
 //! the *analytic* shapes (exact normals, no tessellation), shaded by the f64 model. The ground
 //! truth for tests and for the accuracy study.
 
-use crate::brdf::{safe_normalize, shade};
+use crate::lighting::common::safe_normalize;
+use crate::lighting::shading::shade;
 use crate::mesh::{TriangleMesh, face_normal};
 use crate::params::SpecularModel;
 use crate::scene::{BACKGROUND, Object, Scene, Shape};
@@ -31,6 +32,11 @@ impl ReferenceImage {
 /// camera is outside every shape.
 const RAY_T_MIN: f64 = 1e-9;
 
+/// A ray counts as parallel to a plane, or to a triangle's plane, when the dot product deciding
+/// the hit is smaller than this: only an exactly parallel ray gets there, and the division by it
+/// would overflow.
+const PARALLEL_DENOM_MIN: f64 = 1e-300;
+
 /// A hit: ray parameter and object-space unit normal.
 type Hit = (f64, DVec3);
 
@@ -40,7 +46,7 @@ fn convex(o: DVec3, dir: DVec3, planes: &[(DVec3, f64)]) -> Option<Hit> {
     for &(n, d) in planes {
         let denom = n.dot(dir);
         let dist = d - n.dot(o);
-        if denom.abs() < 1e-300 {
+        if denom.abs() < PARALLEL_DENOM_MIN {
             if dist < 0.0 {
                 return None;
             }
@@ -71,7 +77,7 @@ fn solve_quadratic(a: f64, b: f64, c: f64) -> Option<(f64, f64)> {
 
 /// Intersect a ray (object space, `dir` not necessarily unit) with a unit shape. A
 /// `Shape::Mesh` has no analytic form and is not hit here: [`trace`] intersects its triangles.
-pub fn intersect_shape(shape: Shape, o: DVec3, dir: DVec3) -> Option<Hit> {
+fn intersect_shape(shape: Shape, o: DVec3, dir: DVec3) -> Option<Hit> {
     match shape {
         Shape::Mesh(_) => None,
         Shape::Sphere => {
@@ -145,14 +151,14 @@ pub fn intersect_shape(shape: Shape, o: DVec3, dir: DVec3) -> Option<Hit> {
 /// every triangle: fine for the small meshes the reference is used on). The normal is the
 /// file's corner normals interpolated, or the face normal; it faces the ray's origin side as the
 /// face's winding says (no flipping).
-pub fn intersect_mesh(mesh: &TriangleMesh, o: DVec3, dir: DVec3) -> Option<Hit> {
+fn intersect_mesh(mesh: &TriangleMesh, o: DVec3, dir: DVec3) -> Option<Hit> {
     let mut best: Option<Hit> = None;
     for k in 0..mesh.triangle_count() {
         let t = &mesh.triangle(k);
         let (e1, e2) = (t[1] - t[0], t[2] - t[0]);
         let p = dir.cross(e2);
         let det = e1.dot(p);
-        if det.abs() < 1e-300 {
+        if det.abs() < PARALLEL_DENOM_MIN {
             continue;
         }
         let s = o - t[0];
@@ -175,7 +181,7 @@ pub fn intersect_mesh(mesh: &TriangleMesh, o: DVec3, dir: DVec3) -> Option<Hit> 
 
 /// The nearest hit of a world ray among the scene's objects: (object index, world point, world
 /// unit normal).
-pub fn trace(scene: &Scene, inverses: &[DMat4], o: DVec3, dir: DVec3) -> Option<(usize, DVec3, DVec3)> {
+fn trace(scene: &Scene, inverses: &[DMat4], o: DVec3, dir: DVec3) -> Option<(usize, DVec3, DVec3)> {
     let mut best: Option<(f64, usize, DVec3)> = None;
     for (i, (obj, inv)) in scene.objects.iter().zip(inverses).enumerate() {
         let (lo, ld) = (inv.transform_point3(o), inv.transform_vector3(dir));

@@ -1,11 +1,11 @@
-//! CPU twins of the WGSL uniform structs (`#[repr(C)]` + bytemuck). The test
-//! `uniform_layouts_match_wgsl` holds every size and field offset equal to naga's layout.
+//! CPU twins of the WGSL uniform structs (`#[repr(C)]` + bytemuck), and their packing from the
+//! scene. The test `uniform_layouts_match_wgsl` holds every size and field offset equal to naga's
+//! layout. A light is packed in one place, [`LightUniform::new`], from the values the model
+//! derives for the GPU and the f64 reference alike (`lighting/lights.rs`).
 
 use bytemuck::{Pod, Zeroable};
-use glam::DVec3;
-use shadelab_model::brdf::safe_normalize;
 use shadelab_model::scene::MAX_LIGHTS;
-use shadelab_model::{FalloffForm, LightKind, Material, Object, Scene};
+use shadelab_model::{Light, Material, Object, Scene, SpecularModel};
 
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Pod, Zeroable)]
@@ -33,7 +33,7 @@ pub struct GlobalsUniform {
     pub ambient: [f32; 4],
     pub light_count: u32,
     pub flags: u32,
-    /// SPECULAR_PHONG (0) or SPECULAR_COOK_TORRANCE (1).
+    /// `SpecularModel::code`: SPECULAR_PHONG or SPECULAR_COOK_TORRANCE.
     pub specular_model: u32,
     pub _pad1: u32,
     pub lights: [LightUniform; MAX_LIGHTS],
@@ -63,31 +63,32 @@ fn rgb(c: [f64; 3], w: f32) -> [f32; 4] {
     [c[0] as f32, c[1] as f32, c[2] as f32, w]
 }
 
+impl LightUniform {
+    /// One light as `lights.wgsl`'s `Light` reads it.
+    pub fn new(l: &Light) -> Self {
+        let (cos_inner, cos_outer) = l.cone_cosines();
+        LightUniform {
+            position: l.position.as_vec3().extend(1.0).to_array(),
+            direction: l.direction.as_vec3().extend(0.0).to_array(),
+            radiance: rgb(l.radiance(), 1.0),
+            kind: l.kind.code(),
+            falloff_form: l.falloff_form.code(),
+            falloff_alpha: l.falloff_alpha as f32,
+            d0: l.d0 as f32,
+            spot_axis: l.spot_axis().as_vec3().extend(0.0).to_array(),
+            cos_inner: cos_inner as f32,
+            cos_outer: cos_outer as f32,
+            range: l.range.unwrap_or(0.0) as f32,
+            _pad: 0.0,
+        }
+    }
+}
+
 impl GlobalsUniform {
-    pub fn new(scene: &Scene, width: u32, height: u32, flags: u32, specular: shadelab_model::SpecularModel) -> Self {
+    pub fn new(scene: &Scene, width: u32, height: u32, flags: u32, specular: SpecularModel) -> Self {
         let mut lights = [LightUniform::zeroed(); MAX_LIGHTS];
         for (slot, l) in lights.iter_mut().zip(&scene.lights) {
-            *slot = LightUniform {
-                position: l.position.as_vec3().extend(1.0).to_array(),
-                direction: l.direction.as_vec3().extend(0.0).to_array(),
-                radiance: rgb(l.color.map(|c| c * l.intensity), 1.0),
-                kind: match l.kind {
-                    LightKind::Directional => 0,
-                    LightKind::Point => 1,
-                    LightKind::Spot => 2,
-                },
-                falloff_form: match l.falloff_form {
-                    FalloffForm::Quadratic => 0,
-                    FalloffForm::Linear => 1,
-                },
-                falloff_alpha: l.falloff_alpha as f32,
-                d0: l.d0 as f32,
-                spot_axis: safe_normalize(l.direction, DVec3::NEG_Y).as_vec3().extend(0.0).to_array(),
-                cos_inner: l.inner_cone.cos() as f32,
-                cos_outer: l.outer_cone.cos() as f32,
-                range: l.range.unwrap_or(0.0) as f32,
-                _pad: 0.0,
-            };
+            *slot = LightUniform::new(l);
         }
         GlobalsUniform {
             view_proj: scene.camera.view_proj(width, height).to_cols_array_2d(),
@@ -95,7 +96,7 @@ impl GlobalsUniform {
             ambient: rgb(scene.ambient, 1.0),
             light_count: scene.lights.len().min(MAX_LIGHTS) as u32,
             flags,
-            specular_model: crate::shaders::specular_constant(specular),
+            specular_model: specular.code(),
             _pad1: 0,
             lights,
         }

@@ -1,0 +1,265 @@
+//! The twin of `shaders/lights.wgsl`: light sources. A light kind is declared here once: its
+//! kind and WGSL code, the `Light` parameters and their ranges, the values derived from them for
+//! both the GPU and the f64 reference, and its f64 terms.
+
+use super::common::safe_normalize;
+use crate::guards::*;
+use crate::params::{NamedValue, ParamRange};
+use glam::DVec3;
+
+/// Light source kind (docs/model.md §6).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum LightKind {
+    /// Parallel light from a source at infinity.
+    Directional,
+    /// A point source with distance falloff.
+    Point,
+    /// A point source that lights only a cone (glTF's spot light): fully inside the inner cone,
+    /// not at all outside the outer one, a smooth ramp between.
+    Spot,
+}
+
+impl LightKind {
+    /// The value of `Light.kind` in WGSL: `LIGHT_<NAME>` of `shaders/common.wgsl`.
+    pub fn code(self) -> u32 {
+        match self {
+            LightKind::Directional => 0,
+            LightKind::Point => 1,
+            LightKind::Spot => 2,
+        }
+    }
+}
+
+impl NamedValue for LightKind {
+    const FLAG: &'static str = "--light";
+    const ALL: &'static [(&'static str, Self)] =
+        &[("directional", LightKind::Directional), ("point", LightKind::Point), ("spot", LightKind::Spot)];
+}
+
+/// Which distance falloff a point light uses.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum FalloffForm {
+    /// `I0/(1 + α d²)` (docs/model.md §6).
+    Quadratic,
+    /// The chapter's `I0/(d + d0)` (docs/model.md §2).
+    Linear,
+}
+
+impl FalloffForm {
+    /// The value of `Light.falloff_form` in WGSL: `FALLOFF_<NAME>` of `shaders/common.wgsl`.
+    pub fn code(self) -> u32 {
+        match self {
+            FalloffForm::Quadratic => 0,
+            FalloffForm::Linear => 1,
+        }
+    }
+}
+
+impl NamedValue for FalloffForm {
+    const FLAG: &'static str = "--falloff-form";
+    const ALL: &'static [(&'static str, Self)] =
+        &[("quadratic", FalloffForm::Quadratic), ("linear", FalloffForm::Linear)];
+}
+
+/// Most lights a scene may hold (the GPU uniform has this many slots; `MAX_LIGHTS` in WGSL).
+pub const MAX_LIGHTS: usize = 8;
+
+/// glTF's default outer cone of a spot light (π/4), also the cone a light gets when it is made
+/// a spot light.
+pub const SPOT_OUTER_CONE_DEFAULT: f64 = std::f64::consts::FRAC_PI_4;
+
+/// How far from the origin a directional light is placed when it becomes a point light: twice as
+/// far as any built-in object but the ground (all within 3 of the origin), so it lights them from
+/// about the same direction as before.
+pub const LIGHT_STAND_OFF: f64 = 6.0;
+
+/// Falloff factor `α` of `I0/(1 + α d²)` (docs/model.md §6).
+pub const FALLOFF: ParamRange =
+    ParamRange { flag: "--falloff", symbol: "α", meaning: "falloff factor α", min: 0.0, max: 1e6 };
+/// Minimum distance `d0` of the chapter's `1/(d + d0)` (docs/model.md §2); at least `D0_MIN`.
+pub const D0: ParamRange =
+    ParamRange { flag: "--d0", symbol: "d0", meaning: "minimum distance d0 of 1/(d + d0)", min: D0_MIN, max: 1e3 };
+/// Half-angle of a spot light's cone, radians (glTF `innerConeAngle`, `outerConeAngle`): from
+/// the axis (0) to a half-space (π/2).
+pub const CONE_ANGLE: ParamRange = ParamRange {
+    flag: "cone angle",
+    symbol: "θ",
+    meaning: "spot cone half-angle in radians",
+    min: 0.0,
+    max: std::f64::consts::FRAC_PI_2,
+};
+/// [`CONE_ANGLE`] with π/2 rounded up to f32, as glTF files store it.
+pub const CONE_ANGLE_F32: ParamRange = ParamRange { max: std::f32::consts::FRAC_PI_2 as f64, ..CONE_ANGLE };
+/// Distance at which a point or spot light ends (glTF `range`).
+pub const RANGE: ParamRange =
+    ParamRange { flag: "range", symbol: "r", meaning: "light range (where its light ends)", min: 1e-6, max: 1e9 };
+/// Light intensity `I_L` (an HDR multiplier of the light's colour).
+pub const INTENSITY: ParamRange =
+    ParamRange { flag: "intensity", symbol: "I_L", meaning: "light intensity I_L", min: 0.0, max: 1e3 };
+
+/// A light source (docs/model.md §6).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Light {
+    pub kind: LightKind,
+    /// Position (point lights).
+    pub position: DVec3,
+    /// Direction the light travels (directional lights); `L = −direction`.
+    pub direction: DVec3,
+    /// Linear RGB colour.
+    pub color: [f64; 3],
+    /// Intensity `I_L` (multiplies the colour).
+    pub intensity: f64,
+    /// Falloff form of point lights.
+    pub falloff_form: FalloffForm,
+    /// `α` of `1/(1 + α d²)`.
+    pub falloff_alpha: f64,
+    /// `d0` of `1/(d + d0)`.
+    pub d0: f64,
+    /// Spot lights: half-angles of the inner cone (full light) and of the outer cone (no light
+    /// beyond), radians, `0 ≤ inner < outer ≤ π/2` (glTF `innerConeAngle`, `outerConeAngle`).
+    /// The axis is `direction`.
+    pub inner_cone: f64,
+    pub outer_cone: f64,
+    /// Point and spot lights: the distance at which the light ends (glTF `range`), reached
+    /// smoothly by [`window_range`]; `None`: it never ends.
+    pub range: Option<f64>,
+}
+
+impl Light {
+    pub fn directional(direction: DVec3, color: [f64; 3], intensity: f64) -> Self {
+        Light {
+            kind: LightKind::Directional,
+            position: -direction.normalize() * LIGHT_STAND_OFF,
+            direction: direction.normalize(),
+            color,
+            intensity,
+            falloff_form: FalloffForm::Quadratic,
+            falloff_alpha: 0.0,
+            d0: 1.0,
+            inner_cone: 0.0,
+            outer_cone: SPOT_OUTER_CONE_DEFAULT,
+            range: None,
+        }
+    }
+    pub fn point(position: DVec3, color: [f64; 3], intensity: f64, falloff_alpha: f64) -> Self {
+        Light {
+            kind: LightKind::Point,
+            position,
+            direction: (-position).normalize_or(DVec3::NEG_Y),
+            color,
+            intensity,
+            falloff_form: FalloffForm::Quadratic,
+            falloff_alpha,
+            d0: 1.0,
+            inner_cone: 0.0,
+            outer_cone: SPOT_OUTER_CONE_DEFAULT,
+            range: None,
+        }
+    }
+    /// A spot light at `position` shining along `direction`, with cones `inner < outer` (radians).
+    pub fn spot(
+        position: DVec3,
+        direction: DVec3,
+        color: [f64; 3],
+        intensity: f64,
+        falloff_alpha: f64,
+        (inner_cone, outer_cone): (f64, f64),
+    ) -> Self {
+        Light {
+            kind: LightKind::Spot,
+            direction: direction.normalize_or(DVec3::NEG_Y),
+            inner_cone,
+            outer_cone,
+            ..Light::point(position, color, intensity, falloff_alpha)
+        }
+    }
+
+    /// Turn the light into another kind, keeping where it shines from: a directional light
+    /// becomes a point or spot light `LIGHT_STAND_OFF` units back along its direction from the
+    /// origin (a spot keeps the direction as its axis); a point light becomes a directional light
+    /// or a spot light along the line from it to the origin; a spot light keeps its position
+    /// (point) or its axis (directional).
+    pub fn set_kind(&mut self, kind: LightKind) {
+        use LightKind::*;
+        match (self.kind, kind) {
+            (Directional, Point | Spot) => self.position = -self.direction * LIGHT_STAND_OFF,
+            (Point, Directional | Spot) => self.direction = (-self.position).normalize_or(DVec3::NEG_Y),
+            _ => {}
+        }
+        self.kind = kind;
+    }
+
+    /// The incident intensity `I_L` per channel before falloff: colour × intensity (WGSL
+    /// `Light.radiance`).
+    pub fn radiance(&self) -> [f64; 3] {
+        self.color.map(|c| c * self.intensity)
+    }
+
+    /// The unit axis a spot light shines along (WGSL `Light.spot_axis`); straight down for a
+    /// zero direction.
+    pub fn spot_axis(&self) -> DVec3 {
+        safe_normalize(self.direction, DVec3::NEG_Y)
+    }
+
+    /// Cosines of the spot's inner and outer half-angles (WGSL `Light.cos_inner`, `cos_outer`).
+    pub fn cone_cosines(&self) -> (f64, f64) {
+        (self.inner_cone.cos(), self.outer_cone.cos())
+    }
+}
+
+/// docs/model.md §6: falloff `1/(1 + α d²)`; in (0, 1] for α ≥ 0.
+pub fn falloff_quadratic(d: f64, alpha: f64) -> f64 {
+    1.0 / (1.0 + alpha.max(0.0) * d * d)
+}
+
+/// docs/model.md §2: the chapter's `1/(d + d0)` falloff, `d0` kept at or above `D0_MIN`.
+pub fn falloff_linear(d: f64, d0: f64) -> f64 {
+    1.0 / (d.max(0.0) + d0.max(D0_MIN))
+}
+
+/// KHR_lights_punctual's spot cone (the extension's recommended form): 1 inside the inner cone,
+/// 0 outside the outer one, between them the square of a ramp linear in the cosine. `cos_angle`
+/// is the cosine between the spot's axis and the direction from the light to the point; the
+/// span `cos_inner − cos_outer` is kept at or above `SPOT_COS_SPAN_MIN`.
+pub fn spot_cone(cos_angle: f64, cos_inner: f64, cos_outer: f64) -> f64 {
+    let t = ((cos_angle - cos_outer) / (cos_inner - cos_outer).max(SPOT_COS_SPAN_MIN)).clamp(0.0, 1.0);
+    t * t
+}
+
+/// KHR_lights_punctual's range window (the extension's recommended form)
+/// `clamp(1 − (d/range)⁴, 0, 1)`: the light fades to exactly 0 at `d = range`, with hardly any
+/// change near the light. A range of 0 or less is none (1 everywhere).
+pub fn window_range(d: f64, range: f64) -> f64 {
+    if range <= 0.0 {
+        return 1.0;
+    }
+    let x = (d.max(0.0) / range).min(1.0);
+    let x2 = x * x;
+    1.0 - x2 * x2
+}
+
+/// Direction to a light (unit) and its incident intensity `I_L` per channel at point `p` with
+/// normal `n`. A point or spot light closer than `LIGHT_DIST_MIN` touches the surface: `L = N`.
+pub fn light_sample(light: &Light, p: DVec3, n: DVec3) -> (DVec3, [f64; 3]) {
+    let radiance = light.radiance();
+    match light.kind {
+        LightKind::Point | LightKind::Spot => {
+            let to_light = light.position - p;
+            let d = to_light.length();
+            let l = if d > LIGHT_DIST_MIN { to_light / d } else { n };
+            let mut f = match light.falloff_form {
+                FalloffForm::Quadratic => falloff_quadratic(d, light.falloff_alpha),
+                FalloffForm::Linear => falloff_linear(d, light.d0),
+            };
+            if let Some(range) = light.range {
+                f *= window_range(d, range);
+            }
+            if light.kind == LightKind::Spot {
+                let (cos_inner, cos_outer) = light.cone_cosines();
+                f *= spot_cone((-l).dot(light.spot_axis()), cos_inner, cos_outer);
+            }
+            (l, radiance.map(|r| r * f))
+        }
+        LightKind::Directional => (safe_normalize(-light.direction, n), radiance),
+    }
+}

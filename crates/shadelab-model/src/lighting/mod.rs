@@ -1,0 +1,14 @@
+//! The lighting model in f64: the reference the GPU is tested against, one file per WGSL file
+//! under `shaders/` with the same function names and the same guards ([`crate::guards`]).
+//!
+//! - [`common`] ↔ `common.wgsl`: the shared helpers.
+//! - [`brdf`] ↔ `brdf.wgsl`: the terms of the illumination model and the specular models.
+//! - [`lights`] ↔ `lights.wgsl`: the light sources, their parameters and falloffs.
+//! - [`shading`] ↔ `shading.wgsl`: the sum over the lights at one point.
+//!
+//! The test `every_wgsl_function_has_a_rust_twin` (in `shadelab-render`) holds the pairing.
+
+pub mod brdf;
+pub mod common;
+pub mod lights;
+pub mod shading;

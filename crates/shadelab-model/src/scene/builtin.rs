@@ -1,0 +1,185 @@
+//! The scenes compiled into the binary: the default scene and the single-shape scenes the f64
+//! reference knows exactly, with their camera, lights and materials.
+
+use super::{Camera, Light, Material, Object, Scene, Shape, Transform};
+use crate::params::PhongExponent;
+use glam::DVec3;
+
+/// Names of the scenes compiled into the binary.
+pub const BUILTIN_SCENES: &[&str] = &["default", "sphere", "cylinder", "pyramid", "cube"];
+
+impl Scene {
+    /// A built-in scene by name (see [`BUILTIN_SCENES`]).
+    pub fn builtin(name: &str) -> Option<Scene> {
+        match name {
+            "default" => Some(default_scene()),
+            "sphere" => Some(single_shape_scene("sphere", Shape::Sphere, 16)),
+            "cylinder" => Some(single_shape_scene("cylinder", Shape::Cylinder, 16)),
+            "pyramid" => Some(single_shape_scene("pyramid", Shape::Pyramid, 1)),
+            "cube" => Some(single_shape_scene("cube", Shape::Cube, 1)),
+            _ => None,
+        }
+    }
+}
+
+/// The Phong exponent that gives a lobe about as wide as Beckmann roughness `m`
+/// (`h = 2/m² − 2`, the usual Beckmann–Phong correspondence), rounded.
+fn h_like_m(m: f64) -> PhongExponent {
+    PhongExponent::from_m(m).rounded()
+}
+
+pub(super) fn default_camera() -> Camera {
+    Camera {
+        eye: DVec3::new(0.0, 2.1, 5.2),
+        target: DVec3::new(0.0, 0.35, -0.4),
+        up: DVec3::Y,
+        fov_y_deg: 40.0,
+        near: 0.1,
+        far: 50.0,
+    }
+}
+
+fn default_lights() -> Vec<Light> {
+    vec![
+        Light::directional(DVec3::new(-0.55, -1.0, -0.7), [1.0, 0.97, 0.92], 0.75),
+        Light::point(DVec3::new(-2.2, 2.4, 2.4), [0.92, 0.96, 1.0], 1.1, 0.06),
+    ]
+}
+
+fn ground() -> (Object, Material) {
+    (
+        Object {
+            name: "ground".into(),
+            shape: Shape::Plane,
+            tessellation: 16,
+            transform: Transform::new(DVec3::ZERO, DVec3::new(5.0, 1.0, 3.6)),
+            material: 0,
+        },
+        Material {
+            name: "ground".into(),
+            color: [0.32, 0.32, 0.3],
+            r_s: 0.25,
+            r_d: 0.8,
+            r_a: 0.8,
+            m: 0.5,
+            h: PhongExponent::Finite(6.0),
+            mu: [0.04; 3],
+            ..Material::default()
+        },
+    )
+}
+
+/// The default scene: a row of red plastic spheres going from sharp to rough (m increasing, h
+/// decreasing alike), a gold cylinder and a stone pyramid on a ground plane, with a directional
+/// key light and a point light.
+pub fn default_scene() -> Scene {
+    let (ground_obj, ground_mat) = ground();
+    let mut objects = vec![ground_obj];
+    let mut materials = vec![ground_mat];
+    for (i, m) in [0.08, 0.15, 0.25, 0.4, 0.7].into_iter().enumerate() {
+        materials.push(Material {
+            name: format!("plastic m={m}"),
+            color: [0.75, 0.12, 0.08],
+            r_s: 1.0,
+            r_d: 0.8,
+            r_a: 0.8,
+            m,
+            h: h_like_m(m),
+            mu: [0.04; 3],
+            ..Material::default()
+        });
+        objects.push(Object {
+            name: format!("sphere {}", i + 1),
+            shape: Shape::Sphere,
+            tessellation: 16,
+            transform: Transform::new(DVec3::new(-2.0 + i as f64, 0.42, 0.7), DVec3::splat(0.42)),
+            material: materials.len() - 1,
+        });
+    }
+    materials.push(Material {
+        name: "gold".into(),
+        color: [1.0, 0.766, 0.336],
+        r_s: 1.0,
+        r_d: 0.25,
+        r_a: 0.5,
+        m: 0.2,
+        h: h_like_m(0.2),
+        // Gold's reflectance at normal incidence (linear sRGB), Filament's material table.
+        mu: [1.0, 0.766, 0.336],
+        ..Material::default()
+    });
+    objects.push(Object {
+        name: "cylinder".into(),
+        shape: Shape::Cylinder,
+        tessellation: 16,
+        transform: Transform::new(DVec3::new(-1.5, 0.7, -1.1), DVec3::new(0.45, 0.7, 0.45)),
+        material: materials.len() - 1,
+    });
+    materials.push(Material {
+        name: "stone".into(),
+        color: [0.82, 0.8, 0.74],
+        r_s: 0.4,
+        r_d: 0.85,
+        r_a: 0.8,
+        m: 0.3,
+        h: h_like_m(0.3),
+        mu: [0.05; 3],
+        ..Material::default()
+    });
+    objects.push(Object {
+        name: "pyramid".into(),
+        shape: Shape::Pyramid,
+        tessellation: 1,
+        transform: Transform {
+            translation: DVec3::new(1.5, 0.65, -1.1),
+            rotation_y: 30f64.to_radians(),
+            scale: DVec3::splat(0.65),
+        },
+        material: materials.len() - 1,
+    });
+    Scene {
+        name: "default".into(),
+        objects,
+        materials,
+        lights: default_lights(),
+        ambient: [0.12; 3],
+        camera: default_camera(),
+        meshes: Vec::new(),
+    }
+}
+
+/// One shape on the ground, lit by the default lights: the scenes the reference knows exactly.
+pub fn single_shape_scene(name: &str, shape: Shape, tessellation: u32) -> Scene {
+    let (ground_obj, ground_mat) = ground();
+    let material = Material {
+        name: "blue plastic".into(),
+        color: [0.15, 0.3, 0.8],
+        m: 0.2,
+        h: h_like_m(0.2),
+        ..Material::default()
+    };
+    let (translation, scale, rotation_y) = match shape {
+        Shape::Cylinder => (DVec3::new(0.0, 0.9, 0.0), DVec3::new(0.7, 0.9, 0.7), 0.0),
+        Shape::Pyramid => (DVec3::new(0.0, 0.9, 0.0), DVec3::splat(0.9), 30f64.to_radians()),
+        Shape::Cube => (DVec3::new(0.0, 0.7, 0.0), DVec3::splat(0.7), 30f64.to_radians()),
+        _ => (DVec3::new(0.0, 1.0, 0.0), DVec3::splat(1.0), 0.0),
+    };
+    Scene {
+        name: name.into(),
+        objects: vec![
+            ground_obj,
+            Object {
+                name: name.into(),
+                shape,
+                tessellation,
+                transform: Transform { translation, rotation_y, scale },
+                material: 1,
+            },
+        ],
+        materials: vec![ground_mat, material],
+        lights: default_lights(),
+        ambient: [0.12; 3],
+        camera: Camera { eye: DVec3::new(0.0, 2.2, 4.6), target: DVec3::new(0.0, 0.8, 0.0), ..default_camera() },
+        meshes: Vec::new(),
+    }
+}

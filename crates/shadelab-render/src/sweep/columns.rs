@@ -1,0 +1,222 @@
+//! The sweep kernel's output columns, declared once: their names, widths and bounds. The kernel's
+//! `COL_…` and `SWEEP_OUTPUTS` constants are generated from this list ([`wgsl_columns`]) and put
+//! before `shaders/sweep.wgsl`, and the f64 reference of a combination ([`reference`]) writes the
+//! same columns by name, so the GPU and the f64 side cannot disagree on positions.
+
+use glam::DVec3;
+use shadelab_model::guards::{D0_MIN, M_MIN, N_DOT_V_MIN};
+use shadelab_model::lighting::{brdf, common, lights};
+use shadelab_model::{FalloffForm, Light, LightKind, Material, PhongExponent, SpecularModel};
+
+/// One term the kernel writes per combination: `channels` consecutive floats.
+#[derive(Clone, Copy, Debug)]
+pub struct Column {
+    /// The term's name in the report.
+    pub name: &'static str,
+    /// The WGSL constant `COL_<wgsl>` holding the column's first index.
+    pub wgsl: &'static str,
+    /// 1, or 3 for a colour.
+    pub channels: usize,
+    /// The largest value the guards allow.
+    pub bound: f64,
+    pub why_bound: &'static str,
+}
+
+/// The peak of the chapter's Beckmann D, `1/(4 m²)` at `m = M_MIN`.
+const D_MAX: f64 = 1.0 / (4.0 * M_MIN * M_MIN);
+
+/// Every column in the order the kernel writes them (and the report lists them).
+pub const COLUMNS: [Column; 12] = [
+    col("diffuse_lambert", "DIFFUSE_LAMBERT", 1, 1.0, "N·L of unit vectors"),
+    col("specular_phong", "SPECULAR_PHONG", 1, 1.0, "(V·R)^h with V·R clamped to [0, 1]"),
+    col("d_beckmann", "D_BECKMANN", 1, D_MAX, "peak 1/(4 m²) at m = M_MIN"),
+    col("g_cook_torrance", "G_COOK_TORRANCE", 1, 1.0, "min{1, …}"),
+    col("f_fresnel_exact", "F_FRESNEL_EXACT", 3, 1.0, "a reflectance"),
+    col(
+        "specular_cook_torrance",
+        "SPECULAR_COOK_TORRANCE",
+        3,
+        D_MAX / N_DOT_V_MIN,
+        "F·D·G/(N·V) ≤ 1 · 1/(4 M_MIN²) · 1 / N_DOT_V_MIN",
+    ),
+    col("falloff_quadratic", "FALLOFF_QUADRATIC", 1, 1.0, "1/(1 + α d²), α ≥ 0"),
+    col("falloff_linear", "FALLOFF_LINEAR", 1, 1.0 / D0_MIN, "1/(d + d0), d0 ≥ D0_MIN"),
+    col("light_contribution (Phong)", "CONTRIBUTION_PHONG", 3, 0.8 + 1.0, "I_L (r_d C + r_s), falloff ≤ 1"),
+    col(
+        "light_contribution (Cook–Torrance, 1/(d+d0))",
+        "CONTRIBUTION_COOK_TORRANCE",
+        3,
+        (0.8 + D_MAX / N_DOT_V_MIN) / D0_MIN,
+        "(r_d C + r_s S_max) / D0_MIN",
+    ),
+    col("spot_cone", "SPOT_CONE", 1, 1.0, "a ramp clamped to [0, 1], squared"),
+    col("window_range", "WINDOW_RANGE", 1, 1.0, "1 − x⁴, x clamped to [0, 1]"),
+];
+
+const fn col(name: &'static str, wgsl: &'static str, channels: usize, bound: f64, why_bound: &'static str) -> Column {
+    Column { name, wgsl, channels, bound, why_bound }
+}
+
+/// Floats the kernel writes per combination (`SWEEP_OUTPUTS` in WGSL).
+pub const OUTPUTS: usize = {
+    let (mut n, mut i) = (0, 0);
+    while i < COLUMNS.len() {
+        n += COLUMNS[i].channels;
+        i += 1;
+    }
+    n
+};
+
+/// The first index of the column named `wgsl` (a name not in [`COLUMNS`] fails to compile where
+/// used in a constant).
+pub const fn offset(wgsl: &str) -> usize {
+    let (mut at, mut i) = (0, 0);
+    while i < COLUMNS.len() {
+        if same(COLUMNS[i].wgsl, wgsl) {
+            return at;
+        }
+        at += COLUMNS[i].channels;
+        i += 1;
+    }
+    panic!("no such sweep column")
+}
+
+const fn same(a: &str, b: &str) -> bool {
+    let (a, b) = (a.as_bytes(), b.as_bytes());
+    if a.len() != b.len() {
+        return false;
+    }
+    let mut i = 0;
+    while i < a.len() {
+        if a[i] != b[i] {
+            return false;
+        }
+        i += 1;
+    }
+    true
+}
+
+/// The columns' index ranges, in the order of [`COLUMNS`].
+pub fn ranges() -> impl Iterator<Item = (Column, std::ops::Range<usize>)> {
+    COLUMNS.iter().scan(0, |at, c| {
+        let r = *at..*at + c.channels;
+        *at = r.end;
+        Some((*c, r))
+    })
+}
+
+/// The WGSL the kernel is compiled with: `SWEEP_OUTPUTS`, one `COL_…` per column, and the
+/// constants the kernel shares with [`reference`] (as f32, the values the f64 side reads).
+pub fn wgsl_columns() -> String {
+    let mut s = String::from("// Generated from crates/shadelab-render/src/sweep/columns.rs.\n");
+    let c = SWEEP_COLOR.map(|x| x as f32);
+    s += &format!("const SWEEP_COLOR: vec3<f32> = vec3({:?}, {:?}, {:?});\n", c[0], c[1], c[2]);
+    s += &format!("const SWEEP_CONE_PER_M: f32 = {:?};\n", SWEEP_CONE_PER_M as f32);
+    s += &format!("const SWEEP_OUTPUTS: u32 = {OUTPUTS}u;\n");
+    for (c, r) in ranges() {
+        s += &format!("const COL_{}: u32 = {}u;\n", c.wgsl, r.start);
+    }
+    s
+}
+
+/// Colour of the material in the per-light contribution (`SWEEP_COLOR` in the kernel).
+const SWEEP_COLOR: [f64; 3] = [0.8, 0.5, 0.2];
+/// Outer spot cone per unit of m (`SWEEP_CONE_PER_M` in the kernel): π/2 as an f32, the value
+/// the GPU multiplies by.
+const SWEEP_CONE_PER_M: f64 = std::f32::consts::FRAC_PI_2 as f64;
+
+const DIFFUSE_LAMBERT: usize = offset("DIFFUSE_LAMBERT");
+const SPECULAR_PHONG: usize = offset("SPECULAR_PHONG");
+const D_BECKMANN: usize = offset("D_BECKMANN");
+const G_COOK_TORRANCE: usize = offset("G_COOK_TORRANCE");
+const F_FRESNEL_EXACT: usize = offset("F_FRESNEL_EXACT");
+const SPECULAR_COOK_TORRANCE: usize = offset("SPECULAR_COOK_TORRANCE");
+const FALLOFF_QUADRATIC: usize = offset("FALLOFF_QUADRATIC");
+const FALLOFF_LINEAR: usize = offset("FALLOFF_LINEAR");
+const CONTRIBUTION_PHONG: usize = offset("CONTRIBUTION_PHONG");
+const CONTRIBUTION_COOK_TORRANCE: usize = offset("CONTRIBUTION_COOK_TORRANCE");
+const SPOT_CONE: usize = offset("SPOT_CONE");
+const WINDOW_RANGE: usize = offset("WINDOW_RANGE");
+
+/// The f64 reference of the kernel's outputs for one combination's inputs.
+///
+/// `l_len` scales the light direction a point light's sample gives, and the spot cone's cosines
+/// (1 for the exact model): the GPU's `to_light / d` is a unit vector, and its `cos` of a cone
+/// angle exact, only to a few f32 ulps. (Near 1 an f32 cosine is good to 6e-8, so a cone under a
+/// degree, where `1 − cos` is ~1e-4 or less, is decided by that rounding.)
+pub(super) fn reference(
+    n_raw: DVec3,
+    v: DVec3,
+    l: DVec3,
+    (m, h, mirror): (f64, f64, bool),
+    mu: [f64; 3],
+    (d, alpha, d0): (f64, f64, f64),
+    l_len: f64,
+) -> [f64; OUTPUTS] {
+    let n = common::safe_normalize(n_raw, v);
+    let half = common::safe_normalize(l + v, n);
+    let r = 2.0 * n.dot(l) * n - l;
+    let v_index = mu.map(brdf::fresnel_v_from_mu);
+    let mut light = Light {
+        kind: LightKind::Point,
+        position: l * d,
+        direction: -l,
+        color: [1.0; 3],
+        intensity: 1.0,
+        falloff_form: FalloffForm::Quadratic,
+        falloff_alpha: alpha,
+        d0,
+        ..Light::point(DVec3::ZERO, [1.0; 3], 1.0, 0.0)
+    };
+    let quadratic = lights::light_sample(&light, DVec3::ZERO, n);
+    light.falloff_form = FalloffForm::Linear;
+    let linear = lights::light_sample(&light, DVec3::ZERO, n);
+    let (quadratic, linear) = ((quadratic.0 * l_len, quadratic.1), (linear.0 * l_len, linear.1));
+    let mat = Material {
+        color: SWEEP_COLOR,
+        r_s: 1.0,
+        r_d: 1.0,
+        m,
+        h: if mirror { PhongExponent::Mirror } else { PhongExponent::Finite(h) },
+        mu,
+        ..Material::default()
+    };
+    let outer = m * SWEEP_CONE_PER_M;
+    let inner = outer * alpha.min(1.0);
+    // NaN marks a column not written (a test checks there is none).
+    let mut out = [f64::NAN; OUTPUTS];
+    let rgb = |out: &mut [f64; OUTPUTS], at: usize, c: [f64; 3]| out[at..at + 3].copy_from_slice(&c);
+    out[DIFFUSE_LAMBERT] = brdf::diffuse_lambert(n.dot(l));
+    out[SPECULAR_PHONG] = brdf::specular_phong(v.dot(r), h, mirror);
+    out[D_BECKMANN] = brdf::d_beckmann(n.dot(half), n.cross(half).length_squared(), m);
+    out[G_COOK_TORRANCE] = brdf::g_cook_torrance(n.dot(half), n.dot(v), n.dot(l), v.dot(half));
+    rgb(&mut out, F_FRESNEL_EXACT, v_index.map(|vi| brdf::f_fresnel_exact(v.dot(half), vi)));
+    rgb(&mut out, SPECULAR_COOK_TORRANCE, brdf::specular_cook_torrance(n, v, l, m, v_index));
+    out[FALLOFF_QUADRATIC] = lights::falloff_quadratic(d, alpha);
+    out[FALLOFF_LINEAR] = lights::falloff_linear(d, d0);
+    let cp = brdf::light_contribution(quadratic.0, quadratic.1, n, v, &mat, v_index, SpecularModel::Phong);
+    rgb(&mut out, CONTRIBUTION_PHONG, cp);
+    let cc = brdf::light_contribution(linear.0, linear.1, n, v, &mat, v_index, SpecularModel::CookTorrance);
+    rgb(&mut out, CONTRIBUTION_COOK_TORRANCE, cc);
+    out[SPOT_CONE] = lights::spot_cone(v.dot(l), inner.cos() * l_len, outer.cos() * l_len);
+    out[WINDOW_RANGE] = lights::window_range(d, d0);
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The f64 reference writes every column, and the kernel names every column it is given.
+    #[test]
+    fn every_column_is_written_on_both_sides() {
+        let y = DVec3::Y;
+        let out = reference(y, y, y, (0.2, 20.0, false), [0.04; 3], (1.0, 0.1, 1.0), 1.0);
+        assert!(out.iter().all(|x| !x.is_nan()), "{out:?}");
+        for c in COLUMNS {
+            let name = format!("COL_{}", c.wgsl);
+            assert!(crate::shaders::SWEEP_KERNEL.contains(&name), "sweep.wgsl does not write {name}");
+        }
+        assert_eq!(ranges().last().map(|(_, r)| r.end), Some(OUTPUTS));
+    }
+}

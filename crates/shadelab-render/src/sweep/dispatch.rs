@@ -1,0 +1,85 @@
+//! The sweep on the GPU: the compute module (the shipped terms, the generated columns and the
+//! kernel), its buffers, one dispatch and the readback.
+
+use super::columns::OUTPUTS;
+use super::inputs::SweepInputs;
+use crate::gpu::Gpu;
+use crate::shaders;
+use wgpu::util::DeviceExt;
+
+/// Run the kernel over every combination and read its outputs back (`OUTPUTS` floats each).
+pub(super) fn dispatch(gpu: &Gpu, inputs: &SweepInputs, total: usize) -> Vec<f32> {
+    let device = &gpu.device;
+    let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
+        label: Some("sweep"),
+        source: wgpu::ShaderSource::Wgsl(shaders::sweep_source().into()),
+    });
+    let counts: [u32; 8] = [
+        inputs.geometry.len() as u32,
+        inputs.m.len() as u32,
+        inputs.h.len() as u32,
+        inputs.mu.len() as u32,
+        inputs.d.len() as u32,
+        inputs.alpha.len() as u32,
+        total as u32,
+        (inputs.geometry.len() * 3) as u32,
+    ];
+    let counts_buf = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+        label: Some("sweep counts"),
+        contents: bytemuck::cast_slice(&counts),
+        usage: wgpu::BufferUsages::UNIFORM,
+    });
+    let table_buf = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+        label: Some("sweep table"),
+        contents: bytemuck::cast_slice(&inputs.table()),
+        usage: wgpu::BufferUsages::STORAGE,
+    });
+    let out_size = (total * OUTPUTS * 4) as u64;
+    let out_buf = device.create_buffer(&wgpu::BufferDescriptor {
+        label: Some("sweep outputs"),
+        size: out_size,
+        usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_SRC,
+        mapped_at_creation: false,
+    });
+    let read_buf = device.create_buffer(&wgpu::BufferDescriptor {
+        label: Some("sweep readback"),
+        size: out_size,
+        usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
+        mapped_at_creation: false,
+    });
+    let pipeline = device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
+        label: Some("sweep"),
+        layout: None,
+        module: &module,
+        entry_point: Some("sweep"),
+        compilation_options: Default::default(),
+        cache: None,
+    });
+    let bind = device.create_bind_group(&wgpu::BindGroupDescriptor {
+        label: Some("sweep"),
+        layout: &pipeline.get_bind_group_layout(0),
+        entries: &[
+            wgpu::BindGroupEntry { binding: 0, resource: counts_buf.as_entire_binding() },
+            wgpu::BindGroupEntry { binding: 1, resource: table_buf.as_entire_binding() },
+            wgpu::BindGroupEntry { binding: 2, resource: out_buf.as_entire_binding() },
+        ],
+    });
+    let groups = total.div_ceil(64) as u32;
+    let max = device.limits().max_compute_workgroups_per_dimension;
+    let (gx, gy) = if groups <= max { (groups, 1) } else { (max, groups.div_ceil(max)) };
+    let mut enc = device.create_command_encoder(&Default::default());
+    {
+        let mut pass = enc.begin_compute_pass(&Default::default());
+        pass.set_pipeline(&pipeline);
+        pass.set_bind_group(0, &bind, &[]);
+        pass.dispatch_workgroups(gx, gy, 1);
+    }
+    enc.copy_buffer_to_buffer(&out_buf, 0, &read_buf, 0, out_size);
+    gpu.queue.submit([enc.finish()]);
+    let slice = read_buf.slice(..);
+    slice.map_async(wgpu::MapMode::Read, |r| r.expect("map sweep outputs"));
+    device.poll(wgpu::PollType::wait_indefinitely()).expect("poll");
+    let data = slice.get_mapped_range().expect("mapped").to_vec();
+    read_buf.unmap();
+    bytemuck::cast_slice(&data).to_vec()
+}

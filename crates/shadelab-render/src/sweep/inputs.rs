@@ -1,0 +1,171 @@
+//! The sweep's inputs: its axes (geometries, m, h, μ, d, α), their full product and the table
+//! the kernel reads them from.
+
+use glam::DVec3;
+use shadelab_model::guards::{D0_MIN, H_MAX};
+
+/// One geometry: a (possibly zero or non-unit) normal, and unit view and light vectors, in f32
+/// as the GPU gets them.
+#[derive(Clone, Copy, Debug)]
+pub struct Geometry {
+    pub n: [f32; 3],
+    pub v: [f32; 3],
+    pub l: [f32; 3],
+    pub label: &'static str,
+}
+
+/// The sweep's axes; the combinations are their full product.
+pub struct SweepInputs {
+    pub geometry: Vec<Geometry>,
+    pub m: Vec<f32>,
+    /// (h, mirror)
+    pub h: Vec<(f32, bool)>,
+    pub mu: Vec<[f32; 3]>,
+    pub d: Vec<f32>,
+    /// (α of the quadratic falloff, d0 of the linear one)
+    pub alpha: Vec<(f32, f32)>,
+}
+
+fn unit(v: DVec3) -> [f32; 3] {
+    v.normalize().as_vec3().to_array()
+}
+
+fn dir(theta_deg: f64, phi_deg: f64) -> DVec3 {
+    let (t, p) = (theta_deg.to_radians(), phi_deg.to_radians());
+    DVec3::new(t.sin() * p.cos(), t.cos(), t.sin() * p.sin())
+}
+
+impl SweepInputs {
+    /// The hard cases of docs/model.md §9 plus a deterministic spread of ordinary directions.
+    pub fn standard() -> SweepInputs {
+        let y = [0.0f32, 1.0, 0.0];
+        let mut g = vec![
+            Geometry { n: y, v: y, l: y, label: "normal incidence" },
+            Geometry { n: y, v: unit(dir(30.0, 0.0)), l: [1.0, 0.0, 0.0], label: "light exactly at 90°" },
+            Geometry { n: y, v: [1.0, 0.0, 0.0], l: unit(dir(30.0, 180.0)), label: "view exactly at 90°" },
+            Geometry { n: y, v: [0.0, 0.0, 1.0], l: [1.0, 0.0, 0.0], label: "light and view at 90°" },
+            Geometry { n: y, v: [-1.0, 0.0, 0.0], l: [1.0, 0.0, 0.0], label: "L = −V at 90°" },
+            Geometry { n: y, v: unit(dir(40.0, 180.0) * -1.0), l: unit(dir(40.0, 180.0)), label: "L = −V" },
+            Geometry { n: y, v: unit(dir(120.0, 0.0)), l: unit(dir(30.0, 180.0)), label: "back-facing view" },
+            Geometry { n: y, v: unit(dir(30.0, 0.0)), l: unit(dir(120.0, 180.0)), label: "light below horizon" },
+            Geometry { n: [0.0; 3], v: unit(dir(30.0, 0.0)), l: unit(dir(30.0, 180.0)), label: "zero normal" },
+            Geometry { n: [0.0, 1e-3, 0.0], v: unit(dir(30.0, 0.0)), l: unit(dir(30.0, 180.0)), label: "short normal" },
+            Geometry { n: [0.0, 1e-12, 0.0], v: unit(dir(30.0, 0.0)), l: unit(dir(30.0, 180.0)), label: "tiny normal" },
+            Geometry { n: [0.0, 1e3, 0.0], v: unit(dir(30.0, 0.0)), l: unit(dir(30.0, 180.0)), label: "long normal" },
+            Geometry {
+                n: [0.3, 2.0, -0.5],
+                v: unit(dir(10.0, 45.0)),
+                l: unit(dir(50.0, 200.0)),
+                label: "non-unit normal",
+            },
+        ];
+        // Grazing light and view at angles approaching 90° from both sides.
+        for (k, eps) in [1e-7f64, 1e-5, 1e-3, -1e-7, -1e-5].into_iter().enumerate() {
+            let t = 90.0 - eps.to_degrees();
+            let labels = [
+                "grazing light +1e-7",
+                "grazing light +1e-5",
+                "grazing light +1e-3",
+                "grazing light −1e-7",
+                "grazing light −1e-5",
+            ];
+            g.push(Geometry { n: y, v: unit(dir(20.0, 0.0)), l: unit(dir(t, 180.0)), label: labels[k] });
+            let labels = [
+                "grazing view +1e-7",
+                "grazing view +1e-5",
+                "grazing view +1e-3",
+                "grazing view −1e-7",
+                "grazing view −1e-5",
+            ];
+            g.push(Geometry { n: y, v: unit(dir(t, 0.0)), l: unit(dir(20.0, 180.0)), label: labels[k] });
+            g.push(Geometry { n: y, v: unit(dir(t, 0.0)), l: unit(dir(t, 180.0)), label: "both grazing, mirror" });
+        }
+        // Exactly and nearly in the mirror direction.
+        for theta in [0.5, 10.0, 45.0, 80.0, 89.9] {
+            g.push(Geometry { n: y, v: unit(dir(theta, 0.0)), l: unit(dir(theta, 180.0)), label: "mirror direction" });
+            for off in [1e-4, 1e-3, 0.08, 1.0] {
+                g.push(Geometry {
+                    n: y,
+                    v: unit(dir(theta + off, 0.0)),
+                    l: unit(dir(theta, 180.0)),
+                    label: "near mirror direction",
+                });
+            }
+        }
+        // A deterministic spread over the sphere (normals tilted too).
+        let mut state = 0x2545_f491_4f6c_dd1du64;
+        let mut rnd = move || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            (state >> 11) as f64 / (1u64 << 53) as f64
+        };
+        while g.len() < 150 {
+            let n = dir(rnd() * 60.0, rnd() * 360.0);
+            let v = dir(rnd() * 180.0, rnd() * 360.0);
+            let l = dir(rnd() * 180.0, rnd() * 360.0);
+            g.push(Geometry { n: unit(n), v: unit(v), l: unit(l), label: "spread" });
+        }
+        SweepInputs {
+            geometry: g,
+            m: vec![0.0, 1e-6, 1e-3, 0.01, 0.05, 0.2, 0.5, 1.0],
+            h: vec![
+                (1.0, false),
+                (2.0, false),
+                (20.0, false),
+                (1e3, false),
+                (1e6, false),
+                (1e9, false),
+                (H_MAX as f32, true),
+            ],
+            mu: vec![[0.0; 3], [1e-6, 0.02, 0.04], [0.5; 3], [1.0, 0.766, 0.336], [1.0; 3]],
+            d: vec![0.0, 1e-6, 1e-4, 0.01, 1.0, 100.0, 1e4],
+            alpha: vec![(0.0, D0_MIN as f32), (1e-3, 0.01), (1.0, 1.0), (1e3, 10.0), (1e6, 1e3)],
+        }
+    }
+
+    pub fn combinations(&self) -> usize {
+        self.geometry.len() * self.m.len() * self.h.len() * self.mu.len() * self.d.len() * self.alpha.len()
+    }
+
+    /// The axes' indices of a combination (the kernel's decomposition).
+    pub(super) fn split(&self, idx: usize) -> [usize; 6] {
+        let mut r = idx;
+        let ai = r % self.alpha.len();
+        r /= self.alpha.len();
+        let di = r % self.d.len();
+        r /= self.d.len();
+        let ui = r % self.mu.len();
+        r /= self.mu.len();
+        let hi = r % self.h.len();
+        r /= self.h.len();
+        let mi = r % self.m.len();
+        [r / self.m.len(), mi, hi, ui, di, ai]
+    }
+
+    /// A combination's inputs in words.
+    pub fn describe(&self, idx: usize) -> String {
+        let [gi, mi, hi, ui, di, ai] = self.split(idx);
+        let g = &self.geometry[gi];
+        let h = if self.h[hi].1 { "mirror".to_string() } else { format!("{:e}", self.h[hi].0) };
+        format!(
+            "{}: n={:?} v={:?} l={:?} m={:e} h={} μ={:?} d={:e} α={:e} d0={:e}",
+            g.label, g.n, g.v, g.l, self.m[mi], h, self.mu[ui], self.d[di], self.alpha[ai].0, self.alpha[ai].1
+        )
+    }
+
+    pub(super) fn table(&self) -> Vec<[f32; 4]> {
+        let mut t = Vec::new();
+        for g in &self.geometry {
+            for v in [g.n, g.v, g.l] {
+                t.push([v[0], v[1], v[2], 0.0]);
+            }
+        }
+        t.extend(self.m.iter().map(|&m| [m, 0.0, 0.0, 0.0]));
+        t.extend(self.h.iter().map(|&(h, mirror)| [h, mirror as u32 as f32, 0.0, 0.0]));
+        t.extend(self.mu.iter().map(|mu| [mu[0], mu[1], mu[2], 0.0]));
+        t.extend(self.d.iter().map(|&d| [d, 0.0, 0.0, 0.0]));
+        t.extend(self.alpha.iter().map(|&(a, d0)| [a, d0, 0.0, 0.0]));
+        t
+    }
+}

@@ -1,0 +1,170 @@
+//! Tests that hold the WGSL and its f64 twin (`shadelab_model::lighting`) together: every WGSL
+//! function has a Rust twin of the same name in the matching file, the guards are equal, and the
+//! codes Rust writes into the uniforms are the WGSL's constants.
+#![cfg(test)]
+
+use crate::shaders::tests::parse;
+use crate::shaders::{FILES, lighting_source, terms_source};
+use shadelab_model::params::NamedValue;
+use shadelab_model::{FalloffForm, LightKind, SpecularModel};
+
+/// Each WGSL file and the source of its f64 twin.
+const TWINS: [(&str, &str); 4] = [
+    ("common.wgsl", include_str!("../../shadelab-model/src/lighting/common.rs")),
+    ("brdf.wgsl", include_str!("../../shadelab-model/src/lighting/brdf.rs")),
+    ("lights.wgsl", include_str!("../../shadelab-model/src/lighting/lights.rs")),
+    ("shading.wgsl", include_str!("../../shadelab-model/src/lighting/shading.rs")),
+];
+
+/// WGSL functions with no f64 twin, by file, and why. (Entry points are left out by naga's list:
+/// they are the GPU's stages, whose f64 counterpart is `reference::render_reference`.)
+const NO_TWIN: [(&str, &str, &str); 5] = [
+    ("common.wgsl", "is_nonfinite", "the NaN/∞ test on f32 bits; f64 code uses f64::is_finite"),
+    ("common.wgsl", "any_nonfinite", "the debug view's test of a colour, built on is_nonfinite"),
+    ("shading.wgsl", "finish", "the debug view that paints non-finite pixels; the reference has none"),
+    ("shading.wgsl", "to_world", "the object transform; its f64 side is scene::Transform::matrix"),
+    ("shading.wgsl", "normal_to_world", "the normal transform; its f64 side is Transform::normal_matrix"),
+];
+
+/// Names of the functions a WGSL (or Rust) source declares: `fn name(` at the start of a line,
+/// after any `pub`, `pub(crate)` or attribute-free indentation.
+fn declared(src: &str) -> Vec<String> {
+    src.lines()
+        .filter_map(|line| {
+            let t = line.trim_start();
+            let t = t.strip_prefix("pub(crate) ").or_else(|| t.strip_prefix("pub ")).unwrap_or(t);
+            let rest = t.strip_prefix("fn ")?;
+            let name: String = rest.chars().take_while(|c| c.is_alphanumeric() || *c == '_').collect();
+            (!name.is_empty()).then_some(name)
+        })
+        .collect()
+}
+
+fn wgsl_file(name: &str) -> &'static str {
+    FILES.iter().find(|(n, _)| *n == name).unwrap_or_else(|| panic!("{name} is not among shaders::FILES")).1
+}
+
+#[test]
+fn every_wgsl_function_has_a_rust_twin() {
+    let module = parse(&lighting_source());
+    let entry_points: Vec<&str> = module.entry_points.iter().map(|e| e.name.as_str()).collect();
+    let functions: Vec<String> = module.functions.iter().filter_map(|(_, f)| f.name.clone()).collect();
+    // The line scan finds exactly the functions naga sees, so no function escapes the check.
+    let mut scanned: Vec<String> = TWINS.iter().flat_map(|(w, _)| declared(wgsl_file(w))).collect();
+    scanned.retain(|f| !entry_points.contains(&f.as_str()));
+    let (mut a, mut b) = (scanned.clone(), functions.clone());
+    a.sort();
+    b.sort();
+    assert_eq!(a, b, "functions found by the line scan vs naga's");
+    assert_eq!(TWINS.map(|t| t.0), FILES.map(|f| f.0), "one twin per shipped WGSL file");
+
+    let mut missing = Vec::new();
+    for (wgsl, rust) in TWINS {
+        let rust_fns = declared(rust);
+        for f in declared(wgsl_file(wgsl)) {
+            if entry_points.contains(&f.as_str()) || NO_TWIN.iter().any(|(w, n, _)| *w == wgsl && *n == f) {
+                continue;
+            }
+            if !rust_fns.contains(&f) {
+                missing.push(format!("{wgsl}: fn {f} has no twin in lighting/{}", wgsl.replace(".wgsl", ".rs")));
+            }
+        }
+    }
+    assert!(missing.is_empty(), "{}", missing.join("\n"));
+    // The exceptions name real functions of their files (the list does not go stale).
+    for (wgsl, f, why) in NO_TWIN {
+        assert!(declared(wgsl_file(wgsl)).iter().any(|d| d == f), "{wgsl} has no fn {f} (listed: {why})");
+    }
+}
+
+/// The value of a named `const` in the module, as f64.
+fn wgsl_constant(module: &naga::Module, name: &str) -> Option<f64> {
+    let (_, c) = module.constants.iter().find(|(_, c)| c.name.as_deref() == Some(name))?;
+    match module.global_expressions[c.init] {
+        naga::Expression::Literal(naga::Literal::F32(v)) => Some(v as f64),
+        naga::Expression::Literal(naga::Literal::U32(v)) => Some(v as f64),
+        naga::Expression::Literal(naga::Literal::AbstractFloat(v)) => Some(v),
+        ref e => panic!("{name}: unexpected initializer {e:?}"),
+    }
+}
+
+/// `(name, type)` of the `const` declarations of a WGSL source, by a line scan.
+fn wgsl_consts(src: &str) -> Vec<(String, String)> {
+    src.lines()
+        .filter_map(|line| {
+            let rest = line.strip_prefix("const ")?;
+            let (name, rest) = rest.split_once(':')?;
+            let ty = rest.split('=').next()?.trim();
+            Some((name.trim().to_string(), ty.to_string()))
+        })
+        .collect()
+}
+
+#[test]
+fn wgsl_guards_equal_rust_guards() {
+    let module = parse(&terms_source());
+    for (name, value) in shadelab_model::guards::ALL {
+        let w = wgsl_constant(&module, name).unwrap_or_else(|| panic!("{name} missing from common.wgsl"));
+        assert_eq!(w as f32, *value as f32, "{name}: WGSL {w} vs Rust {value}");
+    }
+    // Every f32 constant of common.wgsl is a guard with its reason in guards.rs.
+    for (name, ty) in wgsl_consts(wgsl_file("common.wgsl")) {
+        if ty == "f32" {
+            assert!(shadelab_model::guards::ALL.iter().any(|(g, _)| *g == name), "{name} is not in guards::ALL");
+        }
+    }
+    assert_eq!(wgsl_constant(&module, "MAX_LIGHTS"), Some(shadelab_model::scene::MAX_LIGHTS as f64));
+}
+
+/// `PREFIX_NAME` for a named value: `cook-torrance` → `SPECULAR_COOK_TORRANCE`.
+fn code_name(prefix: &str, name: &str) -> String {
+    format!("{prefix}_{}", name.to_ascii_uppercase().replace('-', "_"))
+}
+
+#[test]
+fn wgsl_codes_equal_rust_codes() {
+    let module = parse(&terms_source());
+    let mut rust: Vec<(String, u32)> = Vec::new();
+    rust.extend(LightKind::ALL.iter().map(|(n, k)| (code_name("LIGHT", n), k.code())));
+    rust.extend(FalloffForm::ALL.iter().map(|(n, f)| (code_name("FALLOFF", n), f.code())));
+    rust.extend(SpecularModel::ALL.iter().map(|(n, s)| (code_name("SPECULAR", n), s.code())));
+    for (name, code) in &rust {
+        assert_eq!(wgsl_constant(&module, name), Some(*code as f64), "{name}: WGSL vs Rust code()");
+    }
+    // Every u32 code of common.wgsl with one of these prefixes has its Rust value.
+    for (name, ty) in wgsl_consts(wgsl_file("common.wgsl")) {
+        let coded = ["LIGHT_", "FALLOFF_", "SPECULAR_"].iter().any(|p| name.starts_with(p));
+        if ty == "u32" && coded {
+            assert!(rust.iter().any(|(n, _)| *n == name), "{name} has no Rust code()");
+        }
+    }
+    // Codes are distinct within a kind.
+    for prefix in ["LIGHT_", "FALLOFF_", "SPECULAR_"] {
+        let mut codes: Vec<u32> = rust.iter().filter(|(n, _)| n.starts_with(prefix)).map(|(_, c)| *c).collect();
+        let len = codes.len();
+        codes.sort();
+        codes.dedup();
+        assert_eq!(codes.len(), len, "{prefix}* codes repeat");
+    }
+}
+
+/// The uniform carries the values the model derives for both sides (cone cosines, spot axis,
+/// radiance), not a second computation of them.
+#[test]
+fn a_light_is_packed_from_the_models_derived_values() {
+    use glam::DVec3;
+    let l = shadelab_model::Light::spot(
+        DVec3::new(1.0, 3.0, 0.5),
+        DVec3::new(0.2, -2.0, 0.1),
+        [1.0, 0.5, 0.25],
+        2.0,
+        0.1,
+        (0.3, 0.6),
+    );
+    let u = crate::uniforms::LightUniform::new(&l);
+    let (ci, co) = l.cone_cosines();
+    assert_eq!((u.cos_inner, u.cos_outer), (ci as f32, co as f32));
+    assert_eq!(u.spot_axis, l.spot_axis().as_vec3().extend(0.0).to_array());
+    assert_eq!(u.radiance, [2.0, 1.0, 0.5, 1.0]);
+    assert_eq!((u.kind, u.falloff_form), (LightKind::Spot.code(), FalloffForm::Quadratic.code()));
+}

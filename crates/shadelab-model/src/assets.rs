@@ -2,8 +2,8 @@
 //! checked: `UPDATE_ASSETS=1 cargo test --release -p shadelab-model shipped_assets` writes them,
 //! and a normal test loads each file and compares it with its constructor.
 
-use crate::gltf_io::{SceneSettings, h_from_m};
-use crate::params::{ShadingMode, SpecularModel};
+use crate::gltf_io::SceneSettings;
+use crate::params::{PhongExponent, ShadingMode, SpecularModel};
 use crate::presets::PRESETS;
 use crate::scene::{Camera, Light, Material, Object, Scene, Shape, Transform};
 use glam::DVec3;
@@ -55,7 +55,7 @@ fn ground(tessellation: u32, color: [f64; 3]) -> (Object, Material) {
             r_d: 0.8,
             r_a: 0.8,
             m: 0.5,
-            h: h_from_m(0.5),
+            h: PhongExponent::from_m(0.5),
             mu: [0.04; 3],
             ..Material::default()
         },
@@ -92,7 +92,7 @@ pub fn figure_7_3_pyramid() -> Scene {
                 r_d: 0.9,
                 r_a: 0.8,
                 m: 0.35,
-                h: h_from_m(0.35),
+                h: PhongExponent::from_m(0.35),
                 mu: [0.05; 3],
                 ..Material::default()
             },
@@ -115,7 +115,7 @@ pub fn gouraud_vs_phong() -> Scene {
         r_d: 0.8,
         r_a: 0.8,
         m: 0.12,
-        h: h_from_m(0.12),
+        h: PhongExponent::from_m(0.12),
         mu: [0.04; 3],
         ..Material::default()
     };
@@ -180,7 +180,7 @@ pub fn material_board() -> Scene {
             r_d: 0.25,
             r_a: 0.5,
             m: 0.2,
-            h: h_from_m(0.2),
+            h: PhongExponent::from_m(0.2),
             mu: p.mu,
             ..Material::default()
         };
@@ -188,7 +188,7 @@ pub fn material_board() -> Scene {
     }
     let dielectrics: Vec<_> = PRESETS.iter().filter(|p| !p.metal).collect();
     for (i, p) in dielectrics.iter().enumerate() {
-        // Transmission t and absorption a per unit length (spec §7): clear glass barely absorbs;
+        // Transmission t and absorption a per unit length (docs/model.md §7): clear glass barely absorbs;
         // water absorbs red most (about 0.45 per metre, here per unit).
         let (transmission, absorption) = match p.name {
             "glass" => (0.9, [0.02, 0.01, 0.015]),
@@ -202,7 +202,7 @@ pub fn material_board() -> Scene {
             r_d: 0.8,
             r_a: 0.8,
             m: 0.15,
-            h: h_from_m(0.15),
+            h: PhongExponent::from_m(0.15),
             mu: p.mu,
             transmission,
             absorption,
@@ -219,7 +219,7 @@ pub fn material_board() -> Scene {
             r_d: 0.8,
             r_a: 0.8,
             m,
-            h: h_from_m(m),
+            h: PhongExponent::from_m(m),
             mu: [0.04; 3],
             ..Material::default()
         };

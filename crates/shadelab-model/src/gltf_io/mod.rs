@@ -16,12 +16,12 @@
 //!
 //! | glTF | model | why |
 //! |---|---|---|
-//! | `roughnessFactor` r | `m = r²` | glTF's perceptual roughness squared is the facet-slope RMS α (glTF 2.0 Appendix B), which Beckmann's `m` is too (spec §5) |
-//! | — | `h = 2/m² − 2`, clamped to [1, `H_MAX`]; `m = 0` is the mirror | the usual Beckmann ↔ Phong lobe match (Walter et al. 2007, "Microfacet models for refraction", the Phong distribution), as the built-in scenes use |
+//! | `roughnessFactor` r | `m = r²` | glTF's perceptual roughness squared is the facet-slope RMS α (glTF 2.0 Appendix B), which Beckmann's `m` is too (docs/model.md §5) |
+//! | — | `h = 2/m² − 2`, clamped to [1, `H_MAX`]; `m = 0` is the mirror (`PhongExponent::from_m`, the one h-from-m rule) | the usual Beckmann ↔ Phong lobe match (Walter et al. 2007, "Microfacet models for refraction", the Phong distribution), as the built-in scenes use |
 //! | `baseColorFactor`, `metallicFactor` M | `C = baseColor·(1 − M)` | metals have no diffuse part (glTF 2.0 Appendix B, `c_diff = lerp(baseColor, 0, M)`) |
-//! | the same, `KHR_materials_ior` v, `KHR_materials_specular` | `μ = lerp(F0, baseColor, M)`, `F0 = min(((v−1)/(v+1))²·specularColor, 1)·specular` | glTF's `F0` (Appendix B and the two extensions' specs); μ is the chapter's reflectance at normal incidence (spec §5), per channel |
-//! | `KHR_materials_transmission` | `t` | the chapter's transparency (spec §2); stored, not rendered |
-//! | `KHR_materials_volume` attenuation colour c, distance D, thickness | `a = −ln(c)/D`, `d` = thickness | glTF's Beer law `c^(x/D)` is the chapter's `e^(−a·x)` (spec §7); stored, not rendered |
+//! | the same, `KHR_materials_ior` v, `KHR_materials_specular` | `μ = lerp(F0, baseColor, M)`, `F0 = min(((v−1)/(v+1))²·specularColor, 1)·specular` | glTF's `F0` (Appendix B and the two extensions' specs); μ is the chapter's reflectance at normal incidence (docs/model.md §5), per channel |
+//! | `KHR_materials_transmission` | `t` | the chapter's transparency (docs/model.md §2); stored, not rendered |
+//! | `KHR_materials_volume` attenuation colour c, distance D, thickness | `a = −ln(c)/D`, `d` = thickness | glTF's Beer law `c^(x/D)` is the chapter's `e^(−a·x)` (docs/model.md §7); stored, not rendered |
 //! | — | `r_s = r_d = r_a = 1` | glTF's base colour is already the whole albedo; with `I_L = E/π` (below) `r_d·C·(N·L)·I_L` is glTF's Lambert `(C/π)·E·(N·L)` |
 //!
 //! Lights: `I_L = intensity/π` (lux for directional lights, candela for point and spot lights,
@@ -51,15 +51,36 @@
 //! Every key is optional and range-checked like the command line's flags; a value out of range is
 //! an error. Placement values (node, light position/direction, camera) are used only when they
 //! agree with the file's own f32 fields within 1e-5 (an edited file keeps its edit).
+//!
+//! ## Where each concept lives
+//!
+//! Each file holds one concept of the format, its reading and its writing side by side:
+//! `scene_file.rs` the entry points ([`load_scene`], [`save_scene`], …), the glTF scene's own
+//! fields and the order in which the others run; `container.rs` the GLB container, buffers
+//! (BIN chunk, `data:` URIs, external files) and buffer views; `accessors.rs` typed element
+//! arrays; `meshes.rs` primitives (lists, strips, fans) and analytic shapes; `nodes.rs` the node
+//! hierarchy, world transforms and the objects placed on it; `materials.rs`, `lights.rs` and
+//! `cameras.rs` those objects of the file; `extras.rs` the field types of `extras.shadelab` and
+//! their checked decoding (each concept declares its own `extras.shadelab` object as a serde
+//! type, one field per key of the table above); `synthetic.rs` the generated benchmark meshes.
 
-mod load;
-mod save;
+mod accessors;
+mod cameras;
+mod container;
+mod extras;
+mod lights;
+mod materials;
+mod meshes;
+mod nodes;
+mod scene_file;
 pub mod synthetic;
 
-pub use load::{load_scene, load_scene_from_bytes, load_scene_from_slice};
-pub use save::{save_scene, scene_to_glb, scene_to_gltf_json};
+pub(crate) use container::glb_container;
+pub use scene_file::{
+    load_scene, load_scene_from_bytes, load_scene_from_slice, save_scene, scene_to_glb, scene_to_gltf_json,
+};
 
-use crate::params::{PhongExponent, ShadingMode, SpecularModel};
+use crate::params::{ShadingMode, SpecularModel};
 use crate::scene::{Camera, Scene};
 
 /// Most triangles a file may bring (every instance of a mesh counts): the memory budget of a
@@ -152,15 +173,6 @@ pub enum GltfError {
 /// The chapter's `m` from glTF's perceptual roughness (see the module's table).
 pub fn m_from_roughness(roughness: f64) -> f64 {
     (roughness.clamp(0.0, 1.0)).powi(2)
-}
-
-/// The Phong exponent with a lobe about as wide as Beckmann `m`: `h = 2/m² − 2`, clamped to
-/// [1, `H_MAX`]; `m = 0` (a perfect mirror of facets) is the mirror `h = ∞`.
-pub fn h_from_m(m: f64) -> PhongExponent {
-    if m <= 0.0 {
-        return PhongExponent::Mirror;
-    }
-    PhongExponent::Finite((2.0 / (m * m) - 2.0).clamp(1.0, crate::guards::H_MAX))
 }
 
 /// glTF's dielectric `F0` (`KHR_materials_ior` v, `KHR_materials_specular` factor and colour).

@@ -3,7 +3,10 @@
 //! write it (one indexed primitive, `u32` indices, positions and normals, a camera and a light),
 //! without going through the model's f64 triangle soup, so generating a file costs only the file.
 
-use super::save::{ARRAY_BUFFER, ELEMENT_ARRAY_BUFFER, FLOAT, TRIANGLES, UNSIGNED_INT, glb_container};
+use super::accessors::{FLOAT, UNSIGNED_INT};
+use super::container::{ARRAY_BUFFER, ELEMENT_ARRAY_BUFFER};
+use super::glb_container;
+use super::meshes::TRIANGLES;
 use glam::{DQuat, DVec3};
 use serde_json::json;
 

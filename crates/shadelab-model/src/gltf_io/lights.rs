@@ -1,0 +1,217 @@
+//! Lights: `KHR_lights_punctual` directional, point and spot lights, placed by their nodes (a
+//! light shines along its node's −Z), mapped to the chapter's light sources (`I_L = E/π`, the
+//! falloff `1/(1 + α d²)`, the spot's cones, glTF's `range`) and back, with the exact parameters
+//! in `extras.shadelab`; at most `MAX_LIGHTS` are kept, and a file without lights gets a
+//! default one.
+
+use super::extras::{self, Cone, D0, Falloff, Intensity, LightRange, Named, Num, Rgb, Unit, Vec3, agrees};
+use super::scene_file::{Reader, num, quat, rgb, vec3};
+use super::{GltfError, POINT_FALLOFF_ALPHA};
+use crate::brdf::safe_normalize;
+use crate::params::{self, FalloffForm, LightKind, NamedValue};
+use crate::scene::{Light, MAX_LIGHTS, Scene};
+use glam::{DMat4, DQuat, DVec3};
+use gltf::json;
+use gltf::json::extensions::scene::khr_lights_punctual as khr;
+use gltf::json::validation::Checked;
+use serde::{Deserialize, Serialize};
+use serde_json::{Value, json};
+
+/// `extras.shadelab` of a light: the chapter's parameters exactly, and the exact placement (the
+/// node's fields are read as f32), used when it agrees (fields in the order they are checked).
+#[derive(Default, Serialize, Deserialize)]
+#[serde(default)]
+struct LightExtras {
+    #[serde(rename = "I_L")]
+    intensity: Option<Num<Intensity>>,
+    color: Option<Rgb<Unit>>,
+    /// Falloff α.
+    alpha: Option<Num<Falloff>>,
+    d0: Option<Num<D0>>,
+    falloff_form: Option<Named<FalloffForm>>,
+    position: Option<Vec3>,
+    direction: Option<Vec3>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    inner_cone: Option<Num<Cone>>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    outer_cone: Option<Num<Cone>>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    range: Option<Num<LightRange>>,
+}
+
+impl Reader<'_> {
+    /// The lights of `light_nodes` (node, light, world matrix) into the scene: at most
+    /// `MAX_LIGHTS` (a warning past it), a default directional light when there are none.
+    pub(super) fn lights(
+        &mut self,
+        light_nodes: Vec<(usize, usize, DMat4)>,
+        scene: &mut Scene,
+    ) -> Result<(), GltfError> {
+        let all = file_lights(self.root);
+        for (ni, li, world) in light_nodes {
+            let light = self.get(all, li, "light", &format!("node {ni}: "))?;
+            let l = self.light(li, light, &world)?;
+            scene.lights.push(l);
+        }
+        if scene.lights.len() > MAX_LIGHTS {
+            self.cx.warn(format!(
+                "{} lights: the first {MAX_LIGHTS} are kept (MAX_LIGHTS, the GPU's light slots)",
+                scene.lights.len()
+            ));
+            scene.lights.truncate(MAX_LIGHTS);
+        }
+        if scene.lights.is_empty() {
+            log::info!("{}: no lights; a default directional light is added", self.cx.file);
+            self.cx.warn("no lights: a default directional light is added".into());
+            scene.lights.push(Light::directional(DVec3::new(-0.55, -1.0, -0.7), [1.0; 3], 1.0));
+        }
+        Ok(())
+    }
+
+    fn light(&mut self, li: usize, l: &khr::Light, world: &DMat4) -> Result<Light, GltfError> {
+        let what = format!("light {li}");
+        let intensity = l.intensity as f64;
+        if !intensity.is_finite() || intensity < 0.0 || !l.color.iter().all(|c| c.is_finite()) {
+            return Err(self
+                .cx
+                .invalid(format!("{what}: intensity {intensity} or colour {:?} is not finite and ≥ 0", l.color)));
+        }
+        let position = world.transform_point3(DVec3::ZERO);
+        let direction = safe_normalize(world.transform_vector3(DVec3::NEG_Z), DVec3::NEG_Y);
+        let color = l.color.map(|c| (c as f64).clamp(0.0, 1.0));
+        // glTF: lux (directional) or candela (point, spot); `I_L = E/π` (see the module's docs).
+        let mut i_l = intensity / std::f64::consts::PI;
+        if i_l > params::INTENSITY.max {
+            self.cx.warn(format!("{what}: I_L = intensity/π = {i_l} is clamped to {}", params::INTENSITY.max));
+            i_l = params::INTENSITY.max;
+        }
+        let kind = match l.type_ {
+            Checked::Valid(khr::Type::Directional) => LightKind::Directional,
+            Checked::Valid(khr::Type::Point) => LightKind::Point,
+            Checked::Valid(khr::Type::Spot) => LightKind::Spot,
+            Checked::Invalid => return Err(self.cx.invalid(format!("{what}: unknown light type"))),
+        };
+        let (inner_cone, outer_cone) = match (&l.spot, kind) {
+            (Some(s), LightKind::Spot) => (s.inner_cone_angle as f64, s.outer_cone_angle as f64),
+            (None, LightKind::Spot) => return Err(self.cx.invalid(format!("{what}: a spot light without `spot`"))),
+            _ => (0.0, crate::scene::SPOT_OUTER_CONE_DEFAULT),
+        };
+        let range = match l.range {
+            Some(r) if kind == LightKind::Directional => {
+                self.cx.warn(format!("{what}: range {r} ignored: a directional light has no distance"));
+                None
+            }
+            Some(r) => Some(params::RANGE.check(r as f64).map_err(|_| {
+                self.cx.invalid(format!("{what}: range {r} is not in [{}, {}]", params::RANGE.min, params::RANGE.max))
+            })?),
+            None => None,
+        };
+        let mut light = Light {
+            kind,
+            position,
+            direction,
+            color,
+            intensity: i_l,
+            falloff_form: FalloffForm::Quadratic,
+            falloff_alpha: if kind == LightKind::Directional { 0.0 } else { POINT_FALLOFF_ALPHA },
+            d0: 1.0,
+            inner_cone,
+            outer_cone,
+            range,
+        };
+        let ex: LightExtras = extras::read(&self.cx, &l.extras, &what)?;
+        let set = |field: &mut f64, v: Option<f64>| {
+            if let Some(v) = v {
+                *field = v;
+            }
+        };
+        set(&mut light.intensity, ex.intensity.map(|v| v.0));
+        if let Some(c) = ex.color {
+            light.color = c.0;
+        }
+        set(&mut light.falloff_alpha, ex.alpha.map(|v| v.0));
+        set(&mut light.d0, ex.d0.map(|v| v.0));
+        if let Some(f) = ex.falloff_form {
+            light.falloff_form = f.0;
+        }
+        if let Some(p) = ex.position.filter(|p| agrees(p.0, light.position)) {
+            light.position = p.0;
+        }
+        if let Some(d) = ex.direction.filter(|d| agrees(d.0, light.direction)) {
+            light.direction = d.0;
+        }
+        set(&mut light.inner_cone, ex.inner_cone.map(|v| v.0));
+        set(&mut light.outer_cone, ex.outer_cone.map(|v| v.0));
+        if let Some(v) = ex.range {
+            light.range = Some(v.0);
+        }
+        // glTF's f32 π/2 is a little above f64's: the cones are held to [0, π/2] after the check.
+        let (inner, outer) = (light.inner_cone, light.outer_cone);
+        let span = params::CONE_ANGLE_F32;
+        if kind == LightKind::Spot && !(span.min <= inner && inner < outer && outer <= span.max) {
+            return Err(self.cx.invalid(format!(
+                "{what}: spot cone angles inner {}, outer {} must be 0 ≤ inner < outer ≤ π/2 (radians)",
+                // As the file wrote them (f32), not widened to f64's digits.
+                inner as f32,
+                outer as f32
+            )));
+        }
+        light.inner_cone = inner.min(params::CONE_ANGLE.max);
+        light.outer_cone = outer.min(params::CONE_ANGLE.max);
+        Ok(light)
+    }
+}
+
+/// Light `i` as a `KHR_lights_punctual` light and the node that places it (its −Z along the
+/// light's direction). `intensity = I_L·π` (the loader's `I_L = E/π` backwards); a quadratic
+/// point or spot light's is divided by α, so that `I_L/(1 + αd²)` and glTF's `intensity/(π d²)`
+/// agree far from the light. The exact parameters go in `extras.shadelab`.
+pub(super) fn write_light(i: usize, l: &Light) -> (Value, Value) {
+    let pi = std::f64::consts::PI;
+    let (kind, intensity) = match l.kind {
+        LightKind::Directional => ("directional", l.intensity * pi),
+        LightKind::Point | LightKind::Spot => {
+            let far =
+                if l.falloff_form == FalloffForm::Quadratic && l.falloff_alpha > 0.0 { l.falloff_alpha } else { 1.0 };
+            (l.kind.name(), l.intensity * pi / far)
+        }
+    };
+    let spot = l.kind == LightKind::Spot;
+    let range = l.range.filter(|_| l.kind != LightKind::Directional);
+    let ex = LightExtras {
+        intensity: Some(l.intensity.into()),
+        color: Some(l.color.into()),
+        alpha: Some(l.falloff_alpha.into()),
+        d0: Some(l.d0.into()),
+        falloff_form: Some(Named(l.falloff_form)),
+        position: Some(Vec3(l.position)),
+        direction: Some(Vec3(l.direction)),
+        inner_cone: spot.then(|| l.inner_cone.into()),
+        outer_cone: spot.then(|| l.outer_cone.into()),
+        range: range.map(Num::from),
+    };
+    let mut light = json!({
+        "type": kind,
+        "color": rgb(l.color),
+        "intensity": num(intensity),
+        "extras": extras::shadelab(&ex),
+    });
+    if spot {
+        light["spot"] = json!({ "innerConeAngle": num(l.inner_cone), "outerConeAngle": num(l.outer_cone) });
+    }
+    if let Some(r) = range {
+        light["range"] = num(r);
+    }
+    let node = json!({
+        "name": format!("light {i}"),
+        "translation": vec3(l.position),
+        "rotation": quat(DQuat::from_rotation_arc(DVec3::NEG_Z, l.direction.normalize_or(DVec3::NEG_Y))),
+        "extensions": { "KHR_lights_punctual": { "light": i } },
+    });
+    (light, node)
+}
+
+/// The `KHR_lights_punctual` lights of a parsed file (none without the extension).
+fn file_lights(root: &json::Root) -> &[khr::Light] {
+    root.extensions.as_ref().and_then(|e| e.khr_lights_punctual.as_ref()).map_or(&[][..], |l| &l.lights[..])
+}

@@ -1,0 +1,226 @@
+//! Materials: glTF's metallic–roughness fields and the `KHR_materials_ior`, `_specular`,
+//! `_transmission` and `_volume` extensions mapped to the chapter's material (the table in the
+//! module's parent), and back; the exact parameters travel in `extras.shadelab`.
+
+use super::extras::{self, Absorption, Mu, Num, Phong, Rgb, Roughness, Thickness, Unit};
+use super::scene_file::{Reader, num, rgb};
+use super::{ATTENUATION_COLOR_MIN, DEFAULT_IOR, DIELECTRIC_MU_MAX, GltfError, dielectric_f0, m_from_roughness};
+use crate::params::{ParamRange, PhongExponent};
+use crate::scene::{Material, Scene};
+use gltf::json;
+use serde::{Deserialize, Serialize};
+use serde_json::{Value, json};
+
+/// Absorption coefficient `a` read from extras (per unit length): `e^(−a·d)` is 0 in f64 long
+/// before 1e6.
+pub(super) const ABSORPTION: ParamRange =
+    ParamRange { flag: "a", symbol: "a", meaning: "absorption coefficient a", min: 0.0, max: 1e6 };
+/// Thickness `d` read from extras.
+pub(super) const THICKNESS: ParamRange =
+    ParamRange { flag: "d", symbol: "d", meaning: "thickness d", min: 0.0, max: 1e6 };
+
+/// An index of refraction this close to glTF's default is not written (`KHR_materials_ior`
+/// left out).
+const IOR_DEFAULT_TOLERANCE: f64 = 1e-9;
+/// μ channels this close are one grey μ (no `KHR_materials_specular` colour written).
+const MU_GREY_TOLERANCE: f64 = 1e-12;
+
+/// `extras.shadelab` of a material: every parameter of the chapter's material, exactly (fields in
+/// the order they are checked).
+#[derive(Default, Serialize, Deserialize)]
+#[serde(default)]
+struct MaterialExtras {
+    /// Diffuse colour C.
+    #[serde(rename = "C")]
+    color: Option<Rgb<Unit>>,
+    m: Option<Num<Roughness>>,
+    h: Option<Phong>,
+    mu: Option<Rgb<Mu>>,
+    r_s: Option<Num<Unit>>,
+    r_d: Option<Num<Unit>>,
+    r_a: Option<Num<Unit>>,
+    /// Transmission t.
+    t: Option<Num<Unit>>,
+    /// Absorption a per channel.
+    a: Option<Rgb<Absorption>>,
+    /// Thickness d.
+    d: Option<Num<Thickness>>,
+}
+
+impl Reader<'_> {
+    /// Every material of the file, in order (a base colour texture is a warning: only the factor
+    /// is used).
+    pub(super) fn materials(&mut self, scene: &mut Scene) -> Result<(), GltfError> {
+        let mut textured = 0;
+        for (i, m) in self.root.materials.iter().enumerate() {
+            textured += usize::from(m.pbr_metallic_roughness.base_color_texture.is_some());
+            scene.materials.push(self.material(i, m)?);
+        }
+        if textured > 0 {
+            self.cx.warn(format!("{textured} material(s) have a base colour texture: only the factor is used"));
+        }
+        Ok(())
+    }
+
+    fn material(&self, i: usize, m: &json::Material) -> Result<Material, GltfError> {
+        let what = format!("material {i}");
+        let pbr = &m.pbr_metallic_roughness;
+        let finite = pbr.base_color_factor.0.iter().all(|c| c.is_finite())
+            && pbr.metallic_factor.0.is_finite()
+            && pbr.roughness_factor.0.is_finite();
+        if !finite {
+            return Err(self.cx.invalid(format!("{what}: a pbrMetallicRoughness factor is not finite")));
+        }
+        let mut mat = pbr_material(m);
+        mat.name = m.name.clone().unwrap_or(what.clone());
+        let ex: MaterialExtras = extras::read(&self.cx, &m.extras, &what)?;
+        let set = |field: &mut f64, v: Option<Num<Unit>>| {
+            if let Some(v) = v {
+                *field = v.0;
+            }
+        };
+        if let Some(c) = ex.color {
+            mat.color = c.0;
+        }
+        if let Some(v) = ex.m {
+            mat.m = v.0;
+        }
+        if let Some(h) = ex.h {
+            mat.h = h.0;
+        }
+        if let Some(v) = ex.mu {
+            mat.mu = v.0;
+        }
+        set(&mut mat.r_s, ex.r_s);
+        set(&mut mat.r_d, ex.r_d);
+        set(&mut mat.r_a, ex.r_a);
+        set(&mut mat.transmission, ex.t);
+        if let Some(v) = ex.a {
+            mat.absorption = v.0;
+        }
+        if let Some(v) = ex.d {
+            mat.thickness = v.0;
+        }
+        Ok(mat)
+    }
+}
+
+/// glTF's default material: every property at its default (glTF 2.0 §3.9.6).
+pub(super) fn json_default_material() -> json::Material {
+    json::deserialize::from_str("{}").expect("every material property has a default")
+}
+
+/// The model's material from glTF's metallic–roughness fields and extensions (the mapping and
+/// its reasons: the module's parent).
+pub(super) fn pbr_material(m: &json::Material) -> Material {
+    let pbr = &m.pbr_metallic_roughness;
+    let base = [0, 1, 2].map(|c| (pbr.base_color_factor.0[c] as f64).clamp(0.0, 1.0));
+    let metallic = (pbr.metallic_factor.0 as f64).clamp(0.0, 1.0);
+    let roughness = (pbr.roughness_factor.0 as f64).clamp(0.0, 1.0);
+    let ext = m.extensions.as_ref();
+    let ior = ext.and_then(|e| e.ior.as_ref()).map_or(DEFAULT_IOR, |i| i.ior.0 as f64);
+    // KHR_materials_ior: ior ≥ 1, or 0 (F0 = 1); anything else is read as the default.
+    let ior = if ior == 0.0 || (ior >= 1.0 && ior.is_finite()) { ior } else { DEFAULT_IOR };
+    let (spec, spec_color) = ext
+        .and_then(|e| e.specular.as_ref())
+        .map_or((1.0, [1.0; 3]), |s| (s.specular_factor.0 as f64, s.specular_color_factor.0.map(f64::from)));
+    let sane = |x: f64| if x.is_finite() { x.max(0.0) } else { 1.0 };
+    let f0 = dielectric_f0(ior, sane(spec), spec_color.map(sane));
+    let mu = [0, 1, 2].map(|c| (f0[c] * (1.0 - metallic) + base[c] * metallic).clamp(0.0, 1.0));
+    let m_rough = m_from_roughness(roughness);
+    let transmission =
+        ext.and_then(|e| e.transmission.as_ref()).map_or(0.0, |t| (t.transmission_factor.0 as f64).clamp(0.0, 1.0));
+    let (absorption, thickness) = ext.and_then(|e| e.volume.as_ref()).map_or(([0.0; 3], 0.0), |v| {
+        let dist = v.attenuation_distance.0 as f64;
+        let a = v.attenuation_color.0.map(|c| {
+            let c = (c as f64).clamp(ATTENUATION_COLOR_MIN, 1.0);
+            // Beer's law: c^(x/D) = e^(−a·x) with a = −ln(c)/D (docs/model.md §7); D = ∞ (the
+            // default): none.
+            if dist > 0.0 && dist.is_finite() { (-c.ln() / dist).min(ABSORPTION.max) } else { 0.0 }
+        });
+        let d = v.thickness_factor.0 as f64;
+        (a, if d.is_finite() { d.clamp(0.0, THICKNESS.max) } else { 0.0 })
+    });
+    Material {
+        name: String::new(),
+        color: base.map(|c| c * (1.0 - metallic)),
+        r_s: 1.0,
+        r_d: 1.0,
+        r_a: 1.0,
+        m: m_rough,
+        h: PhongExponent::from_m(m_rough),
+        mu,
+        transmission,
+        absorption,
+        thickness,
+    }
+}
+
+/// A material: PBR fields that approximate the model (the loader's mapping run backwards), and
+/// the model's exact parameters in `extras.shadelab`; the extensions it uses are added to
+/// `extensions_used`.
+pub(super) fn write_material(m: &Material, extensions_used: &mut Vec<&'static str>) -> Value {
+    let mu_max = m.mu.iter().fold(0.0f64, |a, b| a.max(*b));
+    let mut ext = serde_json::Map::new();
+    let (base, metallic) = if mu_max <= DIELECTRIC_MU_MAX {
+        // A dielectric: μ through the index of refraction v = (1 + √μ)/(1 − √μ) (docs/model.md
+        // §5) of its largest channel, the others by KHR_materials_specular's colour.
+        let v = crate::brdf::fresnel_v_from_mu(mu_max);
+        if (v - DEFAULT_IOR).abs() > IOR_DEFAULT_TOLERANCE {
+            ext.insert("KHR_materials_ior".into(), json!({ "ior": num(v) }));
+            extensions_used.push("KHR_materials_ior");
+        }
+        if m.mu.iter().any(|c| (c - mu_max).abs() > MU_GREY_TOLERANCE) && mu_max > 0.0 {
+            ext.insert(
+                "KHR_materials_specular".into(),
+                json!({ "specularColorFactor": rgb(m.mu.map(|c| c / mu_max)) }),
+            );
+            extensions_used.push("KHR_materials_specular");
+        }
+        (m.color, 0.0)
+    } else {
+        // A metal: glTF's F0 is the base colour.
+        (m.mu, 1.0)
+    };
+    if m.transmission > 0.0 {
+        ext.insert("KHR_materials_transmission".into(), json!({ "transmissionFactor": num(m.transmission) }));
+        extensions_used.push("KHR_materials_transmission");
+    }
+    if m.thickness > 0.0 || m.absorption.iter().any(|a| *a > 0.0) {
+        // e^(−a·x) = c^(x/D) with D = 1: c = e^(−a) (docs/model.md §7).
+        ext.insert(
+            "KHR_materials_volume".into(),
+            json!({
+                "thicknessFactor": num(m.thickness),
+                "attenuationDistance": 1.0,
+                "attenuationColor": rgb(m.absorption.map(|a| (-a).exp())),
+            }),
+        );
+        extensions_used.push("KHR_materials_volume");
+    }
+    let ex = MaterialExtras {
+        color: Some(m.color.into()),
+        m: Some(m.m.into()),
+        h: Some(Phong(m.h)),
+        mu: Some(m.mu.into()),
+        r_s: Some(m.r_s.into()),
+        r_d: Some(m.r_d.into()),
+        r_a: Some(m.r_a.into()),
+        t: Some(m.transmission.into()),
+        a: Some(m.absorption.into()),
+        d: Some(m.thickness.into()),
+    };
+    let mut out = json!({
+        "name": m.name,
+        "pbrMetallicRoughness": {
+            "baseColorFactor": [num(base[0]), num(base[1]), num(base[2]), 1.0],
+            "metallicFactor": metallic,
+            "roughnessFactor": num(m.m.clamp(0.0, 1.0).sqrt()),
+        },
+        "extras": extras::shadelab(&ex),
+    });
+    if !ext.is_empty() {
+        out["extensions"] = Value::Object(ext);
+    }
+    out
+}

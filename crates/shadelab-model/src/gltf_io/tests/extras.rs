@@ -1,0 +1,71 @@
+//! Tests of `extras.shadelab`: bad values are one error line naming the key.
+
+use super::*;
+
+#[test]
+fn extras_out_of_range_are_one_line_errors() {
+    let bad = triangle(json!({
+        "materials": [{ "name": "x", "extras": { "shadelab": { "m": 5 } } }],
+        "meshes": [{ "primitives": [{ "attributes": { "POSITION": 0 }, "material": 0 }] }],
+    }));
+    let e = load_scene_from_slice(&bad).unwrap_err().to_string();
+    assert!(e.starts_with("<memory>: material 0: extras.shadelab.m = 5 is not a number in [0, 1]"), "{e}");
+    assert!(!e.contains('\n'));
+    let bad = triangle(json!({ "scenes": [{ "nodes": [0], "extras": { "shadelab": { "shading": "toon" } } }] }));
+    let e = load_scene_from_slice(&bad).unwrap_err().to_string();
+    assert!(e.contains("scene: extras.shadelab.shading = \"toon\" is not one of flat, gouraud, phong"), "{e}");
+}
+
+#[test]
+fn extras_null_values_and_several_bad_keys() {
+    let material = |extras: Value| {
+        triangle(json!({
+            "materials": [{ "extras": extras }],
+            "meshes": [{ "primitives": [{ "attributes": { "POSITION": 0 }, "material": 0 }] }],
+        }))
+    };
+    let error = |extras: Value| load_scene_from_slice(&material(extras)).unwrap_err().to_string();
+    // A key that is there with null is a bad value, not an absent one.
+    let e = error(json!({ "shadelab": { "r_d": null } }));
+    assert!(e.contains("material 0: extras.shadelab.r_d = null is not a number in [0, 1] (a share or colour)"), "{e}");
+    // Several bad keys: the first in the order they are checked (C, m, h, mu, …, a, d).
+    let e = error(json!({ "shadelab": { "d": -1, "a": [1, 2], "m": "rough" } }));
+    assert!(e.contains("extras.shadelab.m = \"rough\" is not a number in [0, 1]"), "{e}");
+    let e = error(json!({ "shadelab": { "a": [1, 2] } }));
+    assert!(e.contains("extras.shadelab.a = [1,2] is not 3 numbers in [0, 1000000] (absorption coefficient a)"), "{e}");
+    assert!(error(json!({ "shadelab": 3 })).contains("material 0: extras.shadelab is not an object"));
+    // Keys shadelab does not write are ignored; so are extras without `shadelab`.
+    let s = load(&material(json!({ "shadelab": { "unknown": true, "m": 0.5 }, "other": 1 })));
+    assert_eq!(s.scene.materials[0].m, 0.5);
+    assert_eq!(s.scene.materials[0].h, PhongExponent::from_m(1.0), "h stays glTF's, from m = r²");
+    let s = load(&material(json!({ "other": { "m": 5 } })));
+    assert_eq!(s.scene.materials[0].m, 1.0);
+}
+
+#[test]
+fn extras_are_written_and_read_by_the_same_types() {
+    // Every key of the module's `extras.shadelab` table is written, and read back exactly.
+    let mut scene = Scene::builtin("sphere").unwrap();
+    scene.lights[0] = Light {
+        range: Some(9.0),
+        ..Light::spot(DVec3::new(0.5, 3.0, 1.0), DVec3::new(0.1, -1.0, 0.2), [1.0, 0.9, 0.8], 4.0, 0.3, (0.1, 0.4))
+    };
+    scene.materials[1].h = PhongExponent::Mirror;
+    let settings = SceneSettings { shading: Some(ShadingMode::Flat), specular: Some(SpecularModel::CookTorrance) };
+    let doc: Value = serde_json::from_str(&scene_to_gltf_json(&scene, &settings)).unwrap();
+    let keys = |v: &Value| v["extras"]["shadelab"].as_object().unwrap().keys().cloned().collect::<Vec<_>>().join(" ");
+    assert_eq!(keys(&doc["materials"][0]), "C a d h m mu r_a r_d r_s t");
+    assert_eq!(doc["materials"][1]["extras"]["shadelab"]["h"], json!("mirror"));
+    assert_eq!(
+        keys(&doc["extensions"]["KHR_lights_punctual"]["lights"][0]),
+        "I_L alpha color d0 direction falloff_form inner_cone outer_cone position range"
+    );
+    assert_eq!(keys(&doc["scenes"][0]), "ambient shading specular");
+    assert_eq!(keys(&doc["cameras"][0]), "eye far fov_y_deg near target up");
+    assert_eq!(keys(&doc["nodes"][0]), "rotation_y scale translation");
+    let mesh = doc["meshes"].as_array().unwrap().iter().find(|m| m.get("extras").is_some()).unwrap();
+    assert_eq!(keys(mesh), "shape tessellation");
+    let back = load(&serde_json::to_vec(&doc).unwrap());
+    assert_eq!(back.scene, scene);
+    assert_eq!(back.settings, settings);
+}

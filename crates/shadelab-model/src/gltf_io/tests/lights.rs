@@ -1,0 +1,115 @@
+//! Tests of lights: `KHR_lights_punctual` kinds, cones, range, the light limit and the default
+//! light, and their round trip.
+
+use super::*;
+
+#[test]
+fn lights_spot_range_limit_and_default() {
+    let light = |t: &str| json!({ "type": t, "intensity": std::f64::consts::PI, "color": [1, 0.5, 0.25] });
+    let mut lights = vec![light("directional"), json!({ "type": "point", "range": 4.0, "intensity": 1.0 })];
+    lights.push(json!({ "type": "spot", "spot": { "outerConeAngle": 0.5 } }));
+    lights.extend((0..8).map(|_| light("point")));
+    let mut nodes = vec![json!({ "mesh": 0 })];
+    nodes.extend((0..lights.len()).map(|i| {
+        json!({ "translation": [0, 2, 0], "rotation": [-FRAC_1_SQRT_2, 0, 0, FRAC_1_SQRT_2],
+                "extensions": { "KHR_lights_punctual": { "light": i } } })
+    }));
+    let s = load(&triangle(json!({
+        "extensionsUsed": ["KHR_lights_punctual"],
+        "extensions": { "KHR_lights_punctual": { "lights": lights } },
+        "nodes": nodes,
+        "scenes": [{ "nodes": (0..12).collect::<Vec<_>>() }],
+    })));
+    assert_eq!(s.scene.lights.len(), MAX_LIGHTS);
+    let l = &s.scene.lights[0];
+    // I_L = E/π; the node's −z, rotated −90° about x, points down.
+    assert_eq!((l.kind, l.color), (LightKind::Directional, [1.0, 0.5, 0.25]));
+    assert!((l.intensity - 1.0).abs() < 1e-6);
+    near(l.direction, DVec3::NEG_Y, "direction");
+    let p = &s.scene.lights[1];
+    assert_eq!((p.kind, p.falloff_form, p.falloff_alpha), (LightKind::Point, FalloffForm::Quadratic, 1.0));
+    near(p.position, DVec3::new(0.0, 2.0, 0.0), "position");
+    assert_eq!(p.range, Some(4.0));
+    let spot = &s.scene.lights[2];
+    assert_eq!((spot.kind, spot.inner_cone, spot.outer_cone), (LightKind::Spot, 0.0, 0.5f32 as f64));
+    near(spot.direction, DVec3::NEG_Y, "spot axis");
+    let w = s.warnings.join("\n");
+    assert!(w.contains("first 8 are kept"), "{w}");
+    assert!(!w.contains("spot") && !w.contains("range"), "spot and range are read, not warned about: {w}");
+    // No light at all: a default one, said so.
+    let s = load(&triangle(json!({})));
+    assert_eq!(s.scene.lights.len(), 1);
+    assert!(s.warnings.iter().any(|w| w.contains("no lights")), "{:?}", s.warnings);
+    assert!(s.warnings.iter().any(|w| w.contains("no camera")), "{:?}", s.warnings);
+}
+
+#[test]
+fn light_kinds_and_falloff_round_trip() {
+    let mut scene = Scene::builtin("sphere").unwrap();
+    scene.lights = vec![
+        Light {
+            falloff_form: FalloffForm::Linear,
+            d0: 0.5,
+            ..Light::point(DVec3::new(1.0, 2.0, 3.0), [0.5; 3], 3.0, 0.0)
+        },
+        Light::point(DVec3::new(-1.0, 2.0, 3.0), [1.0; 3], 2.0, 0.25),
+        Light::directional(DVec3::new(0.0, 0.0, 1.0), [1.0, 0.5, 0.0], 0.5),
+        Light { range: Some(7.5), ..Light::point(DVec3::new(0.0, 3.0, 0.0), [1.0; 3], 2.0, 0.5) },
+        Light {
+            range: Some(12.0),
+            ..Light::spot(DVec3::new(2.0, 4.0, 1.0), DVec3::new(-0.3, -1.0, 0.1), [1.0; 3], 5.0, 0.1, (0.2, 0.45))
+        },
+    ];
+    let back = load(&scene_to_glb(&scene, &SceneSettings::default())).scene;
+    assert_same_scene(&scene, &back);
+    assert_eq!(back.lights[4].kind, LightKind::Spot);
+}
+
+#[test]
+fn spot_lights_and_range_are_read_from_khr_lights_punctual() {
+    let light = |l: Value| {
+        triangle(json!({
+            "extensionsUsed": ["KHR_lights_punctual"],
+            "extensions": { "KHR_lights_punctual": { "lights": [l] } },
+            "scenes": [{ "nodes": [0, 1] }],
+            "nodes": [
+                { "mesh": 0 },
+                // Rotated 90° about x: the light's −Z points down −Y.
+                { "translation": [0.0, 3.0, 0.0], "rotation": [-0.70710677, 0.0, 0.0, 0.70710677],
+                  "extensions": { "KHR_lights_punctual": { "light": 0 } } },
+            ],
+        }))
+    };
+    let s = load_scene_from_slice(&light(json!({
+        "type": "spot", "intensity": 10.0, "range": 5.0, "spot": { "innerConeAngle": 0.1, "outerConeAngle": 0.6 }
+    })))
+    .unwrap();
+    let l = &s.scene.lights[0];
+    assert_eq!(l.kind, LightKind::Spot);
+    assert_eq!((l.inner_cone, l.outer_cone, l.range), (0.1f32 as f64, 0.6f32 as f64, Some(5.0)));
+    near(l.direction, DVec3::NEG_Y, "spot axis");
+    assert!(s.warnings.iter().all(|w| !w.contains("spot") && !w.contains("range")), "{:?}", s.warnings);
+    // glTF's default cones, and an outer cone of exactly π/2 as f32.
+    let s = load_scene_from_slice(&light(json!({ "type": "spot", "spot": {} }))).unwrap();
+    assert_eq!((s.scene.lights[0].inner_cone, s.scene.lights[0].outer_cone), (0.0, std::f32::consts::FRAC_PI_4 as f64));
+    let s = load_scene_from_slice(&light(
+        json!({ "type": "spot", "spot": { "outerConeAngle": std::f32::consts::FRAC_PI_2 } }),
+    ))
+    .unwrap();
+    assert_eq!(s.scene.lights[0].outer_cone, std::f64::consts::FRAC_PI_2);
+    for (bad, says) in [
+        (
+            json!({ "type": "spot", "spot": { "innerConeAngle": 0.5, "outerConeAngle": 0.5 } }),
+            "must be 0 ≤ inner < outer ≤ π/2",
+        ),
+        (json!({ "type": "spot", "spot": { "outerConeAngle": 2.0 } }), "must be 0 ≤ inner < outer ≤ π/2"),
+        (json!({ "type": "spot" }), "a spot light without `spot`"),
+        (json!({ "type": "point", "range": 0.0 }), "range 0 is not in [0.000001, 1000000000]"),
+    ] {
+        let e = load_scene_from_slice(&light(bad)).unwrap_err().to_string();
+        assert!(e.contains(says), "{e}");
+    }
+    let s = load_scene_from_slice(&light(json!({ "type": "directional", "range": 3.0 }))).unwrap();
+    assert_eq!(s.scene.lights[0].range, None);
+    assert!(s.warnings.iter().any(|w| w.contains("range 3 ignored")), "{:?}", s.warnings);
+}

@@ -1,7 +1,7 @@
 //! Render targets and readback: an offscreen colour + depth target of any size, and a linear
 //! float image read back from it (rows padded to 256 bytes on the GPU side).
 
-use crate::renderer::DEPTH_FORMAT;
+use crate::pipelines::DEPTH_FORMAT;
 
 /// A colour texture with its depth buffer: what the renderer draws into. The viewer and
 /// `shadelab render` both draw into one of these.

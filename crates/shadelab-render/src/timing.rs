@@ -1,8 +1,10 @@
 //! GPU time of a render pass from timestamp queries at the pass boundaries, or CPU time around
 //! submit + wait where the device has no timestamps (the result says which).
 
-use crate::renderer::{RenderSettings, Renderer, SceneGpu};
+use crate::program::{Program, RenderSettings};
+use crate::renderer::Renderer;
 use crate::target::Target;
+use crate::upload::SceneGpu;
 use std::time::Instant;
 
 /// Where a frame time came from.
@@ -58,13 +60,14 @@ impl FrameTimer {
         if self.queries.is_some() { TimeSource::GpuTimestamps } else { TimeSource::CpuSubmitWait }
     }
 
-    /// Render one frame, wait for it, and return its time in milliseconds.
-    pub fn frame(&self, r: &mut Renderer, gpu_scene: &SceneGpu, target: &Target, settings: &RenderSettings) -> f64 {
+    /// Draw one frame of `program` with the uniforms last written, wait for it, and return its
+    /// time in milliseconds.
+    pub fn frame(&self, r: &mut Renderer, gpu_scene: &SceneGpu, target: &Target, program: Program) -> f64 {
         let mut enc = r.device.create_command_encoder(&Default::default());
         let start = Instant::now();
         match &self.queries {
             Some((set, resolve, read)) => {
-                r.encode(&mut enc, gpu_scene, target, settings, Some((set, 0)));
+                r.encode(&mut enc, gpu_scene, target, program, Some((set, 0)));
                 enc.resolve_query_set(set, 0..2, resolve, 0);
                 enc.copy_buffer_to_buffer(resolve, 0, read, 0, 16);
                 r.queue.submit([enc.finish()]);
@@ -76,7 +79,7 @@ impl FrameTimer {
                 t[1].saturating_sub(t[0]) as f64 * self.period_ns * 1e-6
             }
             None => {
-                r.encode(&mut enc, gpu_scene, target, settings, None);
+                r.encode(&mut enc, gpu_scene, target, program, None);
                 r.queue.submit([enc.finish()]);
                 r.device.poll(wgpu::PollType::wait_indefinitely()).expect("poll");
                 start.elapsed().as_secs_f64() * 1e3
@@ -86,9 +89,10 @@ impl FrameTimer {
 }
 
 impl FrameTimer {
-    /// Time several programs side by side: each is warmed up (at least one frame, which builds
-    /// its pipeline), then `frames` rounds draw every program once, so the machine's noise spreads
-    /// evenly over them. Returns each program's frame times in milliseconds.
+    /// Time several programs side by side, each with the settings its uniforms are written with:
+    /// each is warmed up (at least one frame, which builds its pipeline), then `frames` rounds
+    /// draw every program once, so the machine's noise spreads evenly over them. Returns each
+    /// program's frame times in milliseconds.
     #[allow(clippy::too_many_arguments)]
     pub fn interleaved(
         &self,
@@ -96,21 +100,21 @@ impl FrameTimer {
         gpu_scene: &SceneGpu,
         scene: &shadelab_model::Scene,
         target: &Target,
-        programs: &[RenderSettings],
+        programs: &[(Program, RenderSettings)],
         frames: usize,
         warmup: usize,
     ) -> Vec<Vec<f64>> {
-        for s in programs {
+        for (p, s) in programs {
             r.write_uniforms(gpu_scene, scene, target, s);
             for _ in 0..warmup.max(1) {
-                self.frame(r, gpu_scene, target, s);
+                self.frame(r, gpu_scene, target, *p);
             }
         }
         let mut samples = vec![Vec::with_capacity(frames); programs.len()];
         for _ in 0..frames {
-            for (i, s) in programs.iter().enumerate() {
+            for (i, (p, s)) in programs.iter().enumerate() {
                 r.write_uniforms(gpu_scene, scene, target, s);
-                samples[i].push(self.frame(r, gpu_scene, target, s));
+                samples[i].push(self.frame(r, gpu_scene, target, *p));
             }
         }
         samples

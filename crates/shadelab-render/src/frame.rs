@@ -1,0 +1,97 @@
+//! One frame: the scene's parameters written into its uniforms, and the scene pass recorded
+//! with the pipeline of a given [`Program`] into a target (offscreen image or the viewer's
+//! texture).
+
+use crate::pipelines::PipelineKey;
+use crate::program::{Program, RenderSettings};
+use crate::renderer::Renderer;
+use crate::target::Target;
+use crate::uniforms::{GlobalsUniform, ObjectUniform};
+use crate::upload::SceneGpu;
+use shadelab_model::Scene;
+
+/// The scene's background (`scene::BACKGROUND`), the same as the f64 reference's.
+pub const CLEAR_COLOR: wgpu::Color = wgpu::Color {
+    r: shadelab_model::scene::BACKGROUND[0],
+    g: shadelab_model::scene::BACKGROUND[1],
+    b: shadelab_model::scene::BACKGROUND[2],
+    a: 1.0,
+};
+
+impl Renderer {
+    /// Write a scene's parameters (materials, lights, camera) into its uniforms. Cheap: the
+    /// viewer calls it whenever a parameter changes; geometry stays.
+    pub fn write_uniforms(&self, gpu_scene: &SceneGpu, scene: &Scene, target: &Target, settings: &RenderSettings) {
+        let flags = if settings.debug_nonfinite { crate::uniforms::FLAG_DEBUG_NONFINITE } else { 0 };
+        let g = GlobalsUniform::new(scene, target.width, target.height, flags, settings.specular);
+        self.queue.write_buffer(&gpu_scene.globals, 0, bytemuck::bytes_of(&g));
+        let mut bytes = vec![0u8; (gpu_scene.object_stride as usize) * scene.objects.len()];
+        for (i, o) in scene.objects.iter().enumerate() {
+            let u = ObjectUniform::new(o, &scene.materials[o.material]);
+            let at = i * gpu_scene.object_stride as usize;
+            bytes[at..at + size_of::<ObjectUniform>()].copy_from_slice(bytemuck::bytes_of(&u));
+        }
+        self.queue.write_buffer(&gpu_scene.objects_buf, 0, &bytes);
+    }
+
+    /// Record the scene pass of `program` into `encoder`, drawing into `target` with the uniforms
+    /// last written. With background builds on, a program whose pipeline is not built yet draws
+    /// with the uber pipeline of its shading meanwhile. `timestamps` (a query set and the index
+    /// of its first of two slots) brackets the pass when the device has them.
+    pub fn encode(
+        &mut self,
+        encoder: &mut wgpu::CommandEncoder,
+        gpu_scene: &SceneGpu,
+        target: &Target,
+        program: Program,
+        timestamps: Option<(&wgpu::QuerySet, u32)>,
+    ) {
+        let key = self.pipelines.ready_key(PipelineKey { program, color_format: target.format });
+        let pipeline = self.pipelines.pipeline(key);
+        let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+            label: Some("shadelab scene"),
+            color_attachments: &[Some(wgpu::RenderPassColorAttachment {
+                view: &target.color_view,
+                depth_slice: None,
+                resolve_target: None,
+                ops: wgpu::Operations { load: wgpu::LoadOp::Clear(CLEAR_COLOR), store: wgpu::StoreOp::Store },
+            })],
+            depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
+                view: &target.depth_view,
+                depth_ops: Some(wgpu::Operations { load: wgpu::LoadOp::Clear(1.0), store: wgpu::StoreOp::Discard }),
+                stencil_ops: None,
+            }),
+            timestamp_writes: timestamps.map(|(qs, i)| wgpu::RenderPassTimestampWrites {
+                query_set: qs,
+                beginning_of_pass_write_index: Some(i),
+                end_of_pass_write_index: Some(i + 1),
+            }),
+            occlusion_query_set: None,
+            multiview_mask: None,
+        });
+        pass.set_pipeline(pipeline);
+        pass.set_bind_group(0, &gpu_scene.globals_bind, &[]);
+        for (i, k) in gpu_scene.objects.iter().enumerate() {
+            let mesh = &gpu_scene.meshes[k];
+            pass.set_bind_group(1, &gpu_scene.objects_bind, &[(i as u64 * gpu_scene.object_stride) as u32]);
+            if key.program.draws_flat_mesh() {
+                pass.set_vertex_buffer(0, mesh.flat.slice(..));
+                pass.draw(0..mesh.flat_count, 0..1);
+            } else {
+                pass.set_vertex_buffer(0, mesh.smooth.slice(..));
+                pass.set_index_buffer(mesh.indices.slice(..), wgpu::IndexFormat::Uint32);
+                pass.draw_indexed(0..mesh.index_count, 0, 0..1);
+            }
+        }
+    }
+
+    /// Draw the scene into `target` with `settings` and submit: the program is the one
+    /// [`Program::for_scene`] resolves.
+    pub fn render(&mut self, gpu_scene: &SceneGpu, scene: &Scene, target: &Target, settings: &RenderSettings) {
+        let program = Program::for_scene(scene, settings);
+        self.write_uniforms(gpu_scene, scene, target, settings);
+        let mut encoder = self.device.create_command_encoder(&Default::default());
+        self.encode(&mut encoder, gpu_scene, target, program, None);
+        self.queue.submit([encoder.finish()]);
+    }
+}

@@ -1,0 +1,196 @@
+//! The pipeline cache: one shader module per effect set and one render pipeline per
+//! [`PipelineKey`] (program + colour format), built on first use, or on a worker thread while the
+//! uber pipeline draws (the viewer). Hot-reloaded WGSL replaces them all.
+
+use crate::program::Program;
+use crate::shaders;
+use crate::vertex::{FlatVertex, SmoothVertex};
+use shadelab_model::effects::EffectKey;
+use std::collections::HashMap;
+use std::time::{Duration, Instant};
+
+pub const DEPTH_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Depth32Float;
+
+/// Everything that selects a distinct pipeline. Plain `Copy + Hash`: pipelines are cached by it
+/// and never rebuilt per frame.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct PipelineKey {
+    pub program: Program,
+    pub color_format: wgpu::TextureFormat,
+}
+
+/// A pipeline being built on a worker thread (the viewer keeps drawing meanwhile).
+struct PendingBuild {
+    started: Instant,
+    rx: std::sync::mpsc::Receiver<wgpu::RenderPipeline>,
+}
+
+/// The shader modules and pipelines of one device, by key.
+pub struct PipelineCache {
+    device: wgpu::Device,
+    /// The WGSL before preprocessing (shipped, or hot-reloaded).
+    raw_source: String,
+    modules: HashMap<EffectKey, wgpu::ShaderModule>,
+    layout: wgpu::PipelineLayout,
+    pipelines: HashMap<PipelineKey, wgpu::RenderPipeline>,
+    pending: HashMap<PipelineKey, PendingBuild>,
+    /// Build missing pipelines on a worker thread and draw with the uber pipeline meanwhile
+    /// (the viewer); off, a missing pipeline is built before the draw (renders, tests, benches).
+    pub build_in_background: bool,
+    /// How many pipelines have been built (the viewer shows it: it must not grow per frame).
+    pub pipeline_builds: u32,
+    /// The last pipeline built and how long it took (module + pipeline creation).
+    pub last_build: Option<(PipelineKey, Duration)>,
+}
+
+impl PipelineCache {
+    /// An empty cache whose pipelines use `layout` (the renderer's bind groups).
+    pub fn new(device: &wgpu::Device, layout: wgpu::PipelineLayout) -> PipelineCache {
+        PipelineCache {
+            device: device.clone(),
+            raw_source: shaders::raw_lighting_source(),
+            modules: HashMap::new(),
+            layout,
+            pipelines: HashMap::new(),
+            pending: HashMap::new(),
+            build_in_background: false,
+            pipeline_builds: 0,
+            last_build: None,
+        }
+    }
+
+    /// Replace the shader source (hot reload). The source is preprocessed and validated by naga
+    /// first: on an error nothing changes (the old modules and pipelines stay) and the message is
+    /// returned; on success the cached modules and pipelines are dropped and rebuilt on next use.
+    pub fn reload_shaders(&mut self, raw_source: &str) -> Result<(), String> {
+        shaders::validate_raw(raw_source)?;
+        self.raw_source = raw_source.to_owned();
+        self.modules.clear();
+        self.pipelines.clear();
+        self.pending.clear();
+        Ok(())
+    }
+
+    fn module(&mut self, effects: EffectKey) -> wgpu::ShaderModule {
+        let (device, raw) = (&self.device, &self.raw_source);
+        self.modules
+            .entry(effects)
+            .or_insert_with(|| {
+                let src = shaders::lighting_source_for(raw, effects).expect("validated when loaded");
+                device.create_shader_module(wgpu::ShaderModuleDescriptor {
+                    label: Some(&format!("shadelab lighting [{}]", effects.label())),
+                    source: wgpu::ShaderSource::Wgsl(src.into()),
+                })
+            })
+            .clone()
+    }
+
+    /// The pipeline for a key, built on first use and cached.
+    pub fn pipeline(&mut self, key: PipelineKey) -> &wgpu::RenderPipeline {
+        if !self.pipelines.contains_key(&key) {
+            let start = Instant::now();
+            let module = self.module(key.program.effects());
+            let p = build_pipeline(&self.device, &self.layout, &module, key);
+            self.finish_build(key, p, start.elapsed());
+        }
+        &self.pipelines[&key]
+    }
+
+    fn finish_build(&mut self, key: PipelineKey, p: wgpu::RenderPipeline, took: Duration) {
+        self.pipeline_builds += 1;
+        self.last_build = Some((key, took));
+        log::info!("pipeline {} built in {:.1} ms", key.program.label(), took.as_secs_f64() * 1e3);
+        self.pipelines.insert(key, p);
+    }
+
+    /// Move pipelines finished on worker threads into the cache.
+    pub fn poll_builds(&mut self) {
+        let done: Vec<(PipelineKey, wgpu::RenderPipeline, Duration)> = self
+            .pending
+            .iter()
+            .filter_map(|(k, b)| b.rx.try_recv().ok().map(|p| (*k, p, b.started.elapsed())))
+            .collect();
+        for (k, p, took) in done {
+            self.pending.remove(&k);
+            self.finish_build(k, p, took);
+        }
+    }
+
+    /// Whether pipelines are being built in the background.
+    pub fn building(&self) -> bool {
+        !self.pending.is_empty()
+    }
+
+    /// The key to draw with now: `key` if its pipeline is ready; with `build_in_background`, the
+    /// uber pipeline of the same shading while `key` is built on a worker thread. The baseline
+    /// is always built before the draw.
+    pub fn ready_key(&mut self, key: PipelineKey) -> PipelineKey {
+        self.poll_builds();
+        if !self.build_in_background || self.pipelines.contains_key(&key) || key.program == Program::NullBaseline {
+            return key;
+        }
+        if !self.pending.contains_key(&key) {
+            let (tx, rx) = std::sync::mpsc::channel();
+            let (device, layout) = (self.device.clone(), self.layout.clone());
+            let module = self.module(key.program.effects());
+            std::thread::spawn(move || {
+                // A send fails only if the renderer is gone: nothing to do then.
+                let _ = tx.send(build_pipeline(&device, &layout, &module, key));
+            });
+            self.pending.insert(key, PendingBuild { started: Instant::now(), rx });
+        }
+        PipelineKey { program: key.program.uber(), ..key }
+    }
+}
+
+/// Build the pipeline of a key from its module (free, so worker threads can run it).
+fn build_pipeline(
+    device: &wgpu::Device,
+    layout: &wgpu::PipelineLayout,
+    module: &wgpu::ShaderModule,
+    key: PipelineKey,
+) -> wgpu::RenderPipeline {
+    let (vs, fs) = match key.program {
+        Program::Lit { shading, .. } => shaders::entry_points(shading),
+        Program::NullBaseline => shaders::BASELINE_ENTRY_POINTS,
+    };
+    let options = wgpu::PipelineCompilationOptions::default();
+    let buffers = [Some(if key.program.draws_flat_mesh() { FlatVertex::LAYOUT } else { SmoothVertex::LAYOUT })];
+    device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+        label: Some(&key.program.label()),
+        layout: Some(layout),
+        vertex: wgpu::VertexState {
+            module,
+            entry_point: Some(vs),
+            compilation_options: options.clone(),
+            buffers: &buffers,
+        },
+        primitive: wgpu::PrimitiveState {
+            topology: wgpu::PrimitiveTopology::TriangleList,
+            // Every mesh is closed or seen from its front, but no culling keeps a wrong
+            // winding from making geometry vanish.
+            cull_mode: None,
+            ..Default::default()
+        },
+        depth_stencil: Some(wgpu::DepthStencilState {
+            format: DEPTH_FORMAT,
+            depth_write_enabled: Some(true),
+            depth_compare: Some(wgpu::CompareFunction::Less),
+            stencil: Default::default(),
+            bias: Default::default(),
+        }),
+        multisample: Default::default(),
+        fragment: Some(wgpu::FragmentState {
+            module,
+            entry_point: Some(fs),
+            compilation_options: options,
+            targets: &[Some(wgpu::ColorTargetState {
+                format: key.color_format,
+                blend: None,
+                write_mask: wgpu::ColorWrites::ALL,
+            })],
+        }),
+        multiview_mask: None,
+        cache: None,
+    })
+}

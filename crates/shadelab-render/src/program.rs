@@ -1,0 +1,99 @@
+//! What a draw runs: the per-frame render settings, and the [`Program`] they resolve to for a
+//! scene (the lit shader of one shading mode and effect set, or the null-shader baseline).
+
+use shadelab_model::effects::{self, EffectKey};
+use shadelab_model::{Scene, ShadingMode, SpecularModel};
+
+/// Which effect permutation draws a scene (resolved by [`Program::for_scene`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum Specialization {
+    /// Only the effects the scene calls for (`effects::analyze`).
+    #[default]
+    Specialized,
+    /// Every effect present, the unneeded ones switched off at run time by the uniforms.
+    Uber,
+    /// A given set (the benchmark's floors: the specialized set less one effect).
+    Fixed(EffectKey),
+}
+
+/// Per-frame choices that do not change the geometry.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct RenderSettings {
+    pub shading: ShadingMode,
+    pub specular: SpecularModel,
+    /// Paint pixels whose colour is NaN or infinite magenta.
+    pub debug_nonfinite: bool,
+    pub specialization: Specialization,
+}
+
+impl RenderSettings {
+    pub fn new(shading: ShadingMode, specular: SpecularModel) -> RenderSettings {
+        RenderSettings { shading, specular, ..Default::default() }
+    }
+}
+
+impl Default for RenderSettings {
+    fn default() -> Self {
+        RenderSettings {
+            shading: ShadingMode::Phong,
+            specular: SpecularModel::CookTorrance,
+            debug_nonfinite: false,
+            specialization: Specialization::Specialized,
+        }
+    }
+}
+
+/// The shader program a draw runs. Plain `Copy + Hash`: with the target's colour format it is
+/// the pipeline cache's key.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Program {
+    /// The lighting shader of one shading mode, containing `effects` (the specular model is one
+    /// of them).
+    Lit { shading: ShadingMode, effects: EffectKey },
+    /// The null-shader baseline: the same geometry (the smooth mesh), constant colour, no
+    /// lighting. What rasterizing the scene costs, the denominator of the cost study.
+    NullBaseline,
+}
+
+impl Program {
+    /// The program that draws `scene` with `settings`: the shading mode, and the effects that
+    /// `settings.specialization` picks (the scene's analysis, all of them, or a given set).
+    pub fn for_scene(scene: &Scene, settings: &RenderSettings) -> Program {
+        let effects = match settings.specialization {
+            Specialization::Specialized => effects::analyze(scene, settings.specular).key,
+            Specialization::Uber => EffectKey::UBER,
+            Specialization::Fixed(k) => k,
+        };
+        Program::Lit { shading: settings.shading, effects }
+    }
+
+    /// The effects the shader module contains (none for the baseline).
+    pub fn effects(self) -> EffectKey {
+        match self {
+            Program::Lit { effects, .. } => effects,
+            Program::NullBaseline => EffectKey::NONE,
+        }
+    }
+
+    /// The uber program of the same shading mode: what the viewer draws while this one builds.
+    /// The baseline has no stand-in (it is itself).
+    pub fn uber(self) -> Program {
+        match self {
+            Program::Lit { shading, .. } => Program::Lit { shading, effects: EffectKey::UBER },
+            Program::NullBaseline => Program::NullBaseline,
+        }
+    }
+
+    /// Whether it draws the flat (unindexed, per-face) mesh rather than the smooth one.
+    pub fn draws_flat_mesh(self) -> bool {
+        matches!(self, Program::Lit { shading: ShadingMode::Flat, .. })
+    }
+
+    /// A short name for logs and labels.
+    pub fn label(self) -> String {
+        match self {
+            Program::Lit { shading, effects } => format!("{shading:?} [{}]", effects.label()),
+            Program::NullBaseline => "null baseline".into(),
+        }
+    }
+}

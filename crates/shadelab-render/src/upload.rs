@@ -1,0 +1,227 @@
+//! A scene on the GPU: each shape's smooth and flat meshes (written in bounded staging batches),
+//! the globals and per-object uniform buffers, and the error for a scene the device cannot hold.
+
+use crate::renderer::Renderer;
+use crate::uniforms::{GlobalsUniform, ObjectUniform};
+use crate::vertex::{FlatVertex, SmoothVertex};
+use shadelab_model::{Scene, Shape};
+use std::collections::HashMap;
+
+/// A shape's meshes on the GPU.
+pub struct MeshGpu {
+    pub smooth: wgpu::Buffer,
+    pub indices: wgpu::Buffer,
+    pub index_count: u32,
+    pub flat: wgpu::Buffer,
+    pub flat_count: u32,
+}
+
+/// A scene uploaded to the GPU: meshes (shared between objects of the same shape and
+/// tessellation), the globals and the per-object uniforms.
+pub struct SceneGpu {
+    pub(crate) meshes: HashMap<(Shape, u32), MeshGpu>,
+    /// Each object's mesh, in the scene's object order.
+    pub(crate) objects: Vec<(Shape, u32)>,
+    pub(crate) globals: wgpu::Buffer,
+    pub(crate) globals_bind: wgpu::BindGroup,
+    pub(crate) objects_buf: wgpu::Buffer,
+    pub(crate) objects_bind: wgpu::BindGroup,
+    /// Bytes between two objects' uniforms (`ObjectUniform` rounded up to the device's offset
+    /// alignment).
+    pub(crate) object_stride: u64,
+    pub triangle_count: usize,
+}
+
+/// A scene the device cannot hold.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum UploadError {
+    #[error(
+        "object '{object}': its {what} need {bytes} bytes, more than this device's largest buffer ({limit} bytes, max_buffer_size)"
+    )]
+    BufferTooLarge { object: String, what: &'static str, bytes: u64, limit: u64 },
+}
+
+impl Renderer {
+    /// Upload a scene's meshes and uniforms. A mesh whose vertex or index buffer would be larger
+    /// than the device allows (`max_buffer_size`) is an error, not a GPU validation failure.
+    pub fn upload(&self, scene: &Scene) -> Result<SceneGpu, UploadError> {
+        let device = &self.device;
+        let mut meshes = HashMap::new();
+        let mut objects = Vec::new();
+        for o in &scene.objects {
+            let k = (o.shape, o.tessellation);
+            // `Shape::Mesh(i)` keys by its index: each file mesh is built once (its normals, else
+            // the crease-angle rule), shared by every object that shows it.
+            if let std::collections::hash_map::Entry::Vacant(e) = meshes.entry(k) {
+                let file_mesh = match o.shape {
+                    Shape::Mesh(i) => scene.meshes.get(i),
+                    _ => None,
+                };
+                let mesh = match file_mesh {
+                    // The file's vertices as they are: written to the GPU piece by piece.
+                    Some(m) if m.has_usable_normals() && m.check_finite().is_ok() => MeshGpu::new(
+                        device,
+                        &self.queue,
+                        &o.name,
+                        [m.positions.len(), 3 * m.triangle_count(), 3 * m.triangle_count()],
+                        |r, out| out.extend(r.map(|i| SmoothVertex::from(&m.smooth_vertex(i)))),
+                        |r, out| out.extend(m.indices[r.start / 3..r.end / 3].iter().flatten()),
+                        |r, out| {
+                            out.extend(
+                                (r.start / 3..r.end / 3).flat_map(|k| m.flat_corners(k).map(|c| FlatVertex::from(&c))),
+                            )
+                        },
+                    )?,
+                    _ => {
+                        let d = scene.mesh_data(o);
+                        MeshGpu::new(
+                            device,
+                            &self.queue,
+                            &o.name,
+                            [d.smooth_vertices.len(), d.indices.len(), d.flat_vertices.len()],
+                            |r, out| out.extend(d.smooth_vertices[r].iter().map(SmoothVertex::from)),
+                            |r, out| out.extend_from_slice(&d.indices[r]),
+                            |r, out| out.extend(d.flat_vertices[r].iter().map(FlatVertex::from)),
+                        )?
+                    }
+                };
+                e.insert(mesh);
+            }
+            objects.push(k);
+        }
+        let triangle_count = scene.triangle_count();
+        let globals = device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("globals"),
+            size: size_of::<GlobalsUniform>() as u64,
+            usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
+            mapped_at_creation: false,
+        });
+        let align = device.limits().min_uniform_buffer_offset_alignment as u64;
+        let object_stride = (size_of::<ObjectUniform>() as u64).div_ceil(align) * align;
+        let objects_buf = device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("objects"),
+            size: object_stride * scene.objects.len().max(1) as u64,
+            usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
+            mapped_at_creation: false,
+        });
+        let globals_bind = device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some("globals"),
+            layout: &self.globals_layout,
+            entries: &[wgpu::BindGroupEntry { binding: 0, resource: globals.as_entire_binding() }],
+        });
+        let objects_bind = device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some("objects"),
+            layout: &self.object_layout,
+            entries: &[wgpu::BindGroupEntry {
+                binding: 0,
+                resource: wgpu::BindingResource::Buffer(wgpu::BufferBinding {
+                    buffer: &objects_buf,
+                    offset: 0,
+                    size: wgpu::BufferSize::new(size_of::<ObjectUniform>() as u64),
+                }),
+            }],
+        });
+        Ok(SceneGpu {
+            meshes,
+            objects,
+            globals,
+            globals_bind,
+            objects_buf,
+            objects_bind,
+            object_stride,
+            triangle_count,
+        })
+    }
+}
+
+/// Elements written per piece by [`buffer_from_pieces`]: 2¹⁶ flat vertices are 2.25 MiB, small
+/// beside any mesh worth writing in pieces, large enough that the per-piece cost vanishes.
+const PIECE_ELEMENTS: usize = 1 << 16;
+
+/// Most staging memory one upload holds at a time: pieces are written into batches of this
+/// size, and each batch's submission is waited for before the next is mapped, so a 10⁷-triangle
+/// mesh never has a second whole copy of its 1.3 GB of vertex data in staging memory.
+pub const STAGING_BATCH_BYTES: u64 = 64 << 20;
+
+impl MeshGpu {
+    /// A mesh's three GPU buffers, each of `counts` elements (smooth vertices, indices, flat
+    /// vertices) made by its `fill(range, out)`, which appends the elements of `range`. A range
+    /// of indices always covers whole triangles (it starts and ends at multiples of 3).
+    #[allow(clippy::too_many_arguments)]
+    fn new(
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        object: &str,
+        counts: [usize; 3],
+        smooth: impl Fn(std::ops::Range<usize>, &mut Vec<SmoothVertex>),
+        indices: impl Fn(std::ops::Range<usize>, &mut Vec<u32>),
+        flat: impl Fn(std::ops::Range<usize>, &mut Vec<FlatVertex>),
+    ) -> Result<MeshGpu, UploadError> {
+        let limit = device.limits().max_buffer_size;
+        let sizes = [size_of::<SmoothVertex>(), size_of::<u32>(), size_of::<FlatVertex>()];
+        for ((what, count), size) in ["smooth vertices", "indices", "flat vertices"].into_iter().zip(counts).zip(sizes)
+        {
+            let bytes = (count as u64).saturating_mul(size as u64);
+            if bytes > limit {
+                return Err(UploadError::BufferTooLarge { object: object.into(), what, bytes, limit });
+            }
+        }
+        let vertex = wgpu::BufferUsages::VERTEX;
+        Ok(MeshGpu {
+            smooth: buffer_from_pieces(device, queue, "smooth vertices", vertex, counts[0], smooth),
+            indices: buffer_from_pieces(device, queue, "indices", wgpu::BufferUsages::INDEX, counts[1], indices),
+            index_count: counts[1] as u32,
+            flat: buffer_from_pieces(device, queue, "flat vertices", vertex, counts[2], flat),
+            flat_count: counts[2] as u32,
+        })
+    }
+}
+
+/// A GPU buffer of `count` elements, made `PIECE_ELEMENTS` at a time by `fill` straight into the
+/// queue's staging memory: the whole array never exists on the CPU beside it. (Also not
+/// `create_buffer_init`: it maps the buffer at creation, which wgpu zero-fills before the data is
+/// copied in, a second pass over more than a gigabyte at 10⁷ triangles. A queue write marks the
+/// buffer initialized, so nothing is cleared.)
+fn buffer_from_pieces<T: bytemuck::Pod>(
+    device: &wgpu::Device,
+    queue: &wgpu::Queue,
+    label: &str,
+    usage: wgpu::BufferUsages,
+    count: usize,
+    fill: impl Fn(std::ops::Range<usize>, &mut Vec<T>),
+) -> wgpu::Buffer {
+    let bytes = (count * size_of::<T>()) as u64;
+    // wgpu buffers are at least COPY_BUFFER_ALIGNMENT (4) bytes; every element here is a multiple
+    // of 4 bytes already, so only an empty mesh needs the minimum.
+    let buffer = device.create_buffer(&wgpu::BufferDescriptor {
+        label: Some(label),
+        size: bytes.max(wgpu::COPY_BUFFER_ALIGNMENT),
+        usage: usage | wgpu::BufferUsages::COPY_DST,
+        mapped_at_creation: false,
+    });
+    // Whole triangles per piece when T is an index (3 per triangle) or a flat corner, and whole
+    // pieces per batch.
+    let step = PIECE_ELEMENTS - PIECE_ELEMENTS % 3;
+    let batch = (STAGING_BATCH_BYTES as usize / size_of::<T>() / step).max(1) * step;
+    let mut piece = Vec::with_capacity(step);
+    for first in (0..count).step_by(batch) {
+        let last = (first + batch).min(count);
+        let offset = (first * size_of::<T>()) as u64;
+        let size = wgpu::BufferSize::new(((last - first) * size_of::<T>()) as u64).expect("a batch is not empty");
+        let mut view = queue.write_buffer_with(&buffer, offset, size).expect("a write inside the buffer just made");
+        for start in (first..last).step_by(step) {
+            piece.clear();
+            fill(start..(start + step).min(last), &mut piece);
+            let at = (start - first) * size_of::<T>();
+            let b: &[u8] = bytemuck::cast_slice(&piece);
+            view.slice(at..at + b.len()).copy_from_slice(b);
+        }
+        drop(view);
+        if last < count {
+            // Let this batch's copy run and its staging memory go before the next is mapped.
+            queue.submit([]);
+            let _ = device.poll(wgpu::PollType::wait_indefinitely());
+        }
+    }
+    buffer
+}

@@ -8,12 +8,13 @@ pub mod gltf_io;
 pub mod guards;
 #[cfg(test)]
 mod identities;
+pub mod lighting;
 pub mod mesh;
 pub mod params;
 pub mod presets;
 pub mod reference;
 pub mod scene;
-pub mod study;
+pub mod scene_variants;
 
 pub use params::{FalloffForm, LightKind, PhongExponent, ShadingMode, SpecularModel};
 pub use scene::{Camera, Light, Material, Object, Overrides, Scene, Shape, Transform};

@@ -2,21 +2,31 @@
 //! pipeline per permutation (cached), capture to a linear float image, GPU timing. Knows nothing
 //! of egui.
 
-pub mod accuracy;
+pub mod frame;
 pub mod gpu;
+pub mod image_error;
+pub mod pipelines;
+pub mod program;
 pub mod renderer;
 pub mod shaders;
 pub mod sweep;
 pub mod target;
 pub mod timing;
+mod twins;
 pub mod uniforms;
+pub mod upload;
+pub mod vertex;
 
 pub use gpu::{AdapterChoice, Gpu};
-pub use renderer::{PipelineKey, RenderSettings, Renderer, SceneGpu, Specialization, UploadError};
+pub use pipelines::{PipelineCache, PipelineKey};
+pub use program::{Program, RenderSettings, Specialization};
+pub use renderer::Renderer;
 pub use target::{LinearImage, Target};
+pub use upload::{SceneGpu, UploadError};
 
-/// Render a scene offscreen to a linear float image: the path `shadelab render` and the image
-/// tests share. Fails only for a scene the device cannot hold ([`UploadError`]).
+/// Render a scene offscreen to a linear float image with the program `settings` resolve for it
+/// ([`Program::for_scene`]): the path `shadelab render` and the image tests share. Fails only for
+/// a scene the device cannot hold ([`UploadError`]).
 pub fn render_image(
     gpu: &Gpu,
     scene: &shadelab_model::Scene,

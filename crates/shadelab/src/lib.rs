@@ -1,12 +1,11 @@
 //! The `shadelab` application: the viewer (eframe), `render`, `bench` and `sweep`. The binary
 //! is a thin `main`; the modules live here so that tests can drive the viewer.
 
-pub mod accuracy;
 pub mod bench;
 pub mod cli;
-pub mod difference;
 pub mod plots;
 pub mod render;
+pub mod sweep;
 pub mod viewer;
 
 /// Exit code for a user's mistake (bad flag, out-of-range value, bad file).

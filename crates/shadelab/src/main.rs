@@ -1,7 +1,7 @@
 //! `shadelab`: the viewer (no subcommand), `render`, `bench` and `sweep`.
 
 use clap::Parser;
-use shadelab::{EXIT_USAGE, Failure, accuracy, bench, cli, render, viewer};
+use shadelab::{EXIT_USAGE, Failure, bench, cli, render, sweep, viewer};
 use std::process::ExitCode;
 
 fn main() -> ExitCode {
@@ -14,20 +14,18 @@ fn main() -> ExitCode {
                 let _ = e.print();
                 return ExitCode::SUCCESS;
             }
-            // One line: clap's first line names the flag and what is wrong.
-            let text = e.render().to_string();
-            eprintln!("{}", text.lines().next().unwrap_or("error: bad arguments"));
+            eprintln!("{}", cli::one_line(&e));
             return ExitCode::from(EXIT_USAGE);
         }
     };
     let result = match cli.command {
         Some(cli::Command::Render(args)) => render::run(&args),
-        Some(cli::Command::Bench(cli::BenchCommand::Render(args))) => bench::run_render(&args),
-        Some(cli::Command::Bench(cli::BenchCommand::Accuracy(args))) => accuracy::run(&args),
-        Some(cli::Command::Bench(cli::BenchCommand::Effects(args))) => bench::run_effects(&args),
-        Some(cli::Command::Bench(cli::BenchCommand::Load(args))) => bench::run_load(&args),
-        Some(cli::Command::Bench(cli::BenchCommand::Mesh(args))) => bench::run_mesh(&args),
-        Some(cli::Command::Sweep) => bench::run_sweep(),
+        Some(cli::Command::Bench(cli::BenchCommand::Render(args))) => bench::render::run(&args),
+        Some(cli::Command::Bench(cli::BenchCommand::Accuracy(args))) => bench::accuracy::run(&args),
+        Some(cli::Command::Bench(cli::BenchCommand::Effects(args))) => bench::effects::run(&args),
+        Some(cli::Command::Bench(cli::BenchCommand::Load(args))) => bench::load::run(&args),
+        Some(cli::Command::Bench(cli::BenchCommand::Mesh(args))) => bench::mesh::run(&args),
+        Some(cli::Command::Sweep) => sweep::run(),
         None => viewer::run(viewer::Options {
             screenshot: cli.screenshot,
             exit_after_frames: cli.exit_after_frames,

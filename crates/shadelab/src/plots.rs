@@ -1,7 +1,7 @@
 //! The accuracy study's plots (plotters, drawn into a buffer and saved as PNG): error against
 //! time with the Pareto front, and how time grows with lights and pixels.
 
-use crate::accuracy::{Report, Row, Study};
+use crate::bench::accuracy::{Report, Row, Study};
 use plotters::coord::combinators::{BindKeyPoints, LogCoord, WithKeyPoints};
 use plotters::prelude::*;
 use shadelab_model::{ShadingMode, SpecularModel};
@@ -34,9 +34,9 @@ pub fn program_color(shading: Option<ShadingMode>, specular: Option<SpecularMode
 
 /// The study's programs as (shading, specular), `None` for the baseline.
 fn programs() -> Vec<(Option<ShadingMode>, Option<SpecularModel>)> {
-    crate::accuracy::programs()
+    crate::bench::accuracy::programs()
         .into_iter()
-        .map(|s| if s.null_baseline { (None, None) } else { (Some(s.shading), Some(s.specular)) })
+        .map(|s| s.map_or((None, None), |s| (Some(s.shading), Some(s.specular))))
         .collect()
 }
 

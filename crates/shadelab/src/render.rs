@@ -41,8 +41,8 @@ pub fn save_scene(scene: &shadelab_model::Scene, settings: SceneSettings, path: 
 
 pub fn run(args: &cli::RenderArgs) -> Result<(), Failure> {
     let LoadedScene { scene, settings: file, .. } = cli::load(&args.scene)?;
-    let settings = RenderSettings { debug_nonfinite: args.debug_nonfinite, ..args.mode.resolve(file)? };
-    let (width, height) = args.size.parse()?;
+    let settings = RenderSettings { debug_nonfinite: args.debug_nonfinite, ..args.mode.resolve(file) };
+    let (width, height) = args.size.pixels();
     let kind = image_kind(&args.output)?;
     if let Some(path) = &args.save_scene {
         let recorded = SceneSettings { shading: Some(settings.shading), specular: Some(settings.specular) };

@@ -229,7 +229,7 @@ fn bench_accuracy_quick_is_well_formed_and_orders_the_modes() {
     let csv = std::fs::read_to_string(dir.join("accuracy.csv")).unwrap();
     let mut lines = csv.lines();
     let header: Vec<&str> = lines.next().unwrap().split(',').collect();
-    assert_eq!(header.join(","), shadelab::accuracy::CSV_HEADER);
+    assert_eq!(header.join(","), shadelab::bench::accuracy::CSV_HEADER);
     let col = |name: &str| header.iter().position(|h| *h == name).unwrap_or_else(|| panic!("no column {name}"));
     let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
     // 2 scenes × 3 levels × 2 sizes + 4 light counts + 3 sizes, 7 programs each.

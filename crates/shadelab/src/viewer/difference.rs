@@ -2,12 +2,13 @@
 //! reference of the exact surface, as a FLIP error map (magma colour scale) with its numbers,
 //! beside the mode's GPU time. The reference is ray-cast on a worker thread, so the viewer keeps
 //! drawing while it is computed; it is computed again only when the scene, the camera, the
-//! specular model or the size changes (a change of shading mode reuses it).
+//! specular model or the size changes (a change of shading mode reuses it). Its legend is drawn
+//! with the other overlays.
 
-use eframe::egui::{self, Color32, Rect, pos2, vec2};
+use eframe::egui;
 use shadelab_model::reference::{ReferenceImage, render_reference};
 use shadelab_model::{Scene, ShadingMode, SpecularModel};
-use shadelab_render::accuracy::{self, ErrorStats};
+use shadelab_render::image_error::{self, ErrorStats};
 use shadelab_render::{RenderSettings, Renderer, SceneGpu, Target, target};
 use std::sync::Arc;
 use std::sync::mpsc::{Receiver, channel};
@@ -107,52 +108,13 @@ impl DifferenceView {
         let target = Target::new(&renderer.device, size.0, size.1, target::HDR_FORMAT);
         renderer.render(gpu_scene, scene, &target, settings);
         let image = target::read_back(&renderer.device, &renderer.queue, &target);
-        let cmp = accuracy::compare(&image, &reference);
+        let cmp = image_error::compare(&image, &reference);
         let color = egui::ColorImage::from_rgb([size.0 as usize, size.1 as usize], &cmp.flip_map_rgb8);
         let tex = ctx.load_texture("difference from reference", color, egui::TextureOptions::LINEAR);
         let id = tex.id();
         self.shown = Some((key, settings.shading, tex, cmp.stats));
         self.current = true;
         Some(id)
-    }
-
-    /// Draw the magma scale and the numbers over the view.
-    pub fn overlay(&self, painter: &egui::Painter, rect: Rect, mode: &str, gpu_ms: Option<f64>, live: bool) {
-        let bar = Rect::from_min_size(pos2(rect.left() + 12.0, rect.bottom() - 34.0), vec2(256.0, 12.0));
-        let scale = accuracy::magma_scale();
-        for (i, c) in scale.iter().enumerate() {
-            let x = bar.left() + i as f32 * bar.width() / scale.len() as f32;
-            let r =
-                Rect::from_min_max(pos2(x, bar.top()), pos2(x + bar.width() / scale.len() as f32 + 0.5, bar.bottom()));
-            painter.rect_filled(r, 0.0, Color32::from_rgb(c[0], c[1], c[2]));
-        }
-        let font = egui::FontId::proportional(12.0);
-        painter.text(bar.left_bottom() + vec2(0.0, 2.0), egui::Align2::LEFT_TOP, "0", font.clone(), Color32::WHITE);
-        painter.text(
-            bar.right_bottom() + vec2(0.0, 2.0),
-            egui::Align2::RIGHT_TOP,
-            "1  FLIP error",
-            font.clone(),
-            Color32::WHITE,
-        );
-        let text = match (self.stats(), self.computing()) {
-            (Some(s), _) => {
-                let time = match gpu_ms {
-                    Some(ms) if live => format!(" · {ms:.2} ms GPU"),
-                    _ => String::new(),
-                };
-                format!(
-                    "{mode}{time}\nagainst the f64 reference of the exact surface: FLIP mean {:.4} · RMSE {:.2e} · max {:.3} · {:.1} % of pixels off by > 1/255",
-                    s.flip_mean,
-                    s.rmse,
-                    s.max_abs,
-                    s.share_off * 100.0
-                )
-            }
-            (None, true) => "computing the f64 reference…".into(),
-            (None, false) => String::new(),
-        };
-        painter.text(rect.left_top() + vec2(10.0, 8.0), egui::Align2::LEFT_TOP, text, font, Color32::WHITE);
     }
 }
 

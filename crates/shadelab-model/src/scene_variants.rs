@@ -1,5 +1,6 @@
-//! Scenes for the accuracy–cost study (`shadelab bench accuracy`): the analytic scenes the f64
-//! reference knows exactly, at one level of detail, and with a chosen number of lights.
+//! Scene variants for the accuracy study (`shadelab bench accuracy`) and the viewer's difference
+//! view: which scenes the f64 reference knows exactly, and a scene remade at one level of detail
+//! or with a chosen number of lights.
 
 use crate::scene::{Light, MAX_LIGHTS, Scene, Shape};
 use glam::DVec3;

@@ -1,5 +1,6 @@
-//! How far a rendered image is from the f64 reference of the exact surface: the error measures
-//! of the accuracy–cost study and the viewer's "difference from reference" view.
+//! The image-error metric: how far a rendered image is from the f64 reference of the exact
+//! surface (RMSE, largest error, FLIP, share of pixels visibly off), for the accuracy study and
+//! the viewer's "difference from reference" view.
 
 use crate::target::{LinearImage, linear_to_srgb};
 use shadelab_model::reference::ReferenceImage;

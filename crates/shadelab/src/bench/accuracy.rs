@@ -1,16 +1,18 @@
-//! `shadelab bench accuracy`: what accuracy costs in time. Every shading mode × specular model ×
-//! level of detail × resolution of the analytic scenes is timed on the GPU (beside a null-shader
-//! baseline) and compared with the f64 reference of the exact surface; then the cost of each
-//! added light and of each resolution step. Writes a CSV, a Markdown report and two plots.
+//! The accuracy study's benchmark driver (`shadelab bench accuracy`): what accuracy costs in
+//! time. Every shading mode × specular model × level of detail × resolution of the analytic
+//! scenes (the scene variants of `shadelab_model::scene_variants`) is timed on the GPU beside a
+//! null-shader baseline and measured against the f64 reference of the exact surface (the image
+//! error of `shadelab_render::image_error`); then the cost of each added light and of each
+//! resolution step. Writes a CSV, a Markdown report and two plots.
 
 use crate::{Failure, cli, plots};
 use anyhow::Context;
 use shadelab_model::reference::{ReferenceImage, render_reference};
-use shadelab_model::study::{self, ANALYTIC_SCENES};
+use shadelab_model::scene_variants::{self, ANALYTIC_SCENES};
 use shadelab_model::{Scene, ShadingMode, SpecularModel};
-use shadelab_render::accuracy::{self, ErrorStats};
+use shadelab_render::image_error::{self, ErrorStats};
 use shadelab_render::timing::{FrameTimer, TimeSource, median, quantile_sorted};
-use shadelab_render::{Gpu, RenderSettings, Renderer, Target, target};
+use shadelab_render::{Gpu, Program, RenderSettings, Renderer, Target, target};
 use std::collections::HashMap;
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
@@ -19,7 +21,7 @@ use std::path::{Path, PathBuf};
 #[derive(Clone, Debug)]
 pub struct Plan {
     pub scenes: Vec<&'static str>,
-    /// Levels of detail: segments around spheres and cylinders (see `study::at_level`).
+    /// Levels of detail: segments around spheres and cylinders (see `scene_variants::at_level`).
     pub levels: Vec<u32>,
     pub resolutions: Vec<(u32, u32)>,
     /// Cost per light: this scene, level and resolution with 1, 2, 4, 8 point lights.
@@ -137,12 +139,12 @@ struct Group {
     size: (u32, u32),
 }
 
-/// The baseline, then every shading mode × specular model.
-pub fn programs() -> Vec<RenderSettings> {
-    let mut v = vec![RenderSettings::baseline()];
+/// The baseline (`None`: `Program::NullBaseline`), then every shading mode × specular model.
+pub fn programs() -> Vec<Option<RenderSettings>> {
+    let mut v = vec![None];
     for shading in ShadingMode::ALL_MODES {
         for specular in SpecularModel::ALL_MODELS {
-            v.push(RenderSettings::new(shading, specular));
+            v.push(Some(RenderSettings::new(shading, specular)));
         }
     }
     v
@@ -154,18 +156,30 @@ fn groups(plan: &Plan) -> Vec<Group> {
     for &name in &plan.scenes {
         for &level in &plan.levels {
             for &size in &plan.resolutions {
-                out.push(Group { study: Study::Modes, name, scene: study::at_level(&base(name), level), level, size });
+                out.push(Group {
+                    study: Study::Modes,
+                    name,
+                    scene: scene_variants::at_level(&base(name), level),
+                    level,
+                    size,
+                });
             }
         }
     }
     let (name, level, size) = plan.light_study;
     for &n in &plan.light_counts {
-        let scene = study::with_point_lights(&study::at_level(&base(name), level), n);
+        let scene = scene_variants::with_point_lights(&scene_variants::at_level(&base(name), level), n);
         out.push(Group { study: Study::Lights, name, scene, level, size });
     }
     let (name, level) = plan.resolution_study;
     for &size in &plan.study_resolutions {
-        out.push(Group { study: Study::Resolution, name, scene: study::at_level(&base(name), level), level, size });
+        out.push(Group {
+            study: Study::Resolution,
+            name,
+            scene: scene_variants::at_level(&base(name), level),
+            level,
+            size,
+        });
     }
     out
 }
@@ -184,15 +198,22 @@ pub fn run_plan(gpu: &Gpu, plan: &Plan, command: &str, mut progress: impl FnMut(
         let (w, h) = g.size;
         let gs = r.upload(&g.scene).expect("the study scenes are analytic shapes, far below any buffer limit");
         let target = Target::new(&gpu.device, w, h, target::HDR_FORMAT);
-        let mut samples = timer.interleaved(&mut r, &gs, &g.scene, &target, &programs, plan.frames, plan.warmup);
+        let draws: Vec<(Program, RenderSettings)> = programs
+            .iter()
+            .map(|s| match s {
+                Some(s) => (Program::for_scene(&g.scene, s), *s),
+                None => (Program::NullBaseline, RenderSettings::default()),
+            })
+            .collect();
+        let mut samples = timer.interleaved(&mut r, &gs, &g.scene, &target, &draws, plan.frames, plan.warmup);
         let baseline_ms = median(&mut samples[0]);
         for (i, s) in programs.iter().enumerate() {
-            let error = (!s.null_baseline).then(|| {
-                r.render(&gs, &g.scene, &target, s);
+            let error = s.map(|s| {
+                r.render(&gs, &g.scene, &target, &s);
                 let image = target::read_back(&gpu.device, &gpu.queue, &target);
                 let key = (g.name.to_string(), g.scene.lights.len(), g.size, s.specular);
                 let reference = references.entry(key).or_insert_with(|| render_reference(&g.scene, s.specular, w, h));
-                accuracy::compare(&image, reference).stats
+                image_error::compare(&image, reference).stats
             });
             let m = median(&mut samples[i]);
             rows.push(Row {
@@ -203,8 +224,8 @@ pub fn run_plan(gpu: &Gpu, plan: &Plan, command: &str, mut progress: impl FnMut(
                 width: w,
                 height: h,
                 lights: g.scene.lights.len(),
-                shading: (!s.null_baseline).then_some(s.shading),
-                specular: (!s.null_baseline).then_some(s.specular),
+                shading: s.map(|s| s.shading),
+                specular: s.map(|s| s.specular),
                 frames: plan.frames,
                 median_ms: m,
                 p10_ms: quantile_sorted(&samples[i], 0.1),
@@ -454,11 +475,11 @@ pub fn write_outputs(report: &Report, dir: &Path) -> anyhow::Result<Vec<PathBuf>
 
 pub fn run(args: &cli::BenchAccuracyArgs) -> Result<(), Failure> {
     let mut plan = if args.quick { Plan::quick() } else { Plan::full() };
-    if let Some(f) = &args.frames {
-        plan.frames = cli::FRAMES.parse_u32(f)? as usize;
+    if let Some(f) = args.frames {
+        plan.frames = f as usize;
     }
-    if let Some(w) = &args.warmup {
-        plan.warmup = cli::WARMUP.parse_u32(w)? as usize;
+    if let Some(w) = args.warmup {
+        plan.warmup = w as usize;
     }
     // A folder that cannot be made is the user's to fix, and is found before minutes of work.
     std::fs::create_dir_all(&args.out)

@@ -1,0 +1,8 @@
+//! `shadelab bench …`: measurements, one file per bench command, each reported with the device
+//! and the command; never asserted.
+
+pub mod accuracy;
+pub mod effects;
+pub mod load;
+pub mod mesh;
+pub mod render;

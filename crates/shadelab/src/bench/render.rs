@@ -1,0 +1,59 @@
+//! `shadelab bench render`: the frame time of one scene for each shading mode × specular model,
+//! interleaved in one run.
+
+use crate::{Failure, cli};
+use anyhow::Context;
+use shadelab_model::{ShadingMode, SpecularModel};
+use shadelab_render::timing::{FrameTimer, median, quantile_sorted};
+use shadelab_render::{AdapterChoice, Gpu, RenderSettings, Renderer, Target};
+
+/// `shadelab bench render`: one table row per shading × specular combination.
+pub fn run(args: &cli::BenchRenderArgs) -> Result<(), Failure> {
+    let (width, height) = args.size.pixels();
+    let (frames, warmup) = (args.frames as usize, args.warmup as usize);
+    let scene = cli::scene(&args.scene)?;
+    let gpu = Gpu::headless(AdapterChoice::from_env()).context("opening a GPU adapter")?;
+    let mut r = Renderer::new(&gpu.device, &gpu.queue);
+    let gs = r.upload(&scene).map_err(|e| Failure::Usage(format!("{}: {e}", args.scene.scene)))?;
+    let target = Target::new(&gpu.device, width, height, shadelab_render::target::HDR_FORMAT);
+    let timer = FrameTimer::new(&gpu.device, &gpu.queue);
+    let combos: Vec<RenderSettings> = ShadingMode::ALL_MODES
+        .into_iter()
+        .flat_map(|shading| {
+            SpecularModel::ALL_MODELS.into_iter().map(move |specular| RenderSettings::new(shading, specular))
+        })
+        .collect();
+    let programs: Vec<_> = combos.iter().map(|s| (shadelab_render::Program::for_scene(&scene, s), *s)).collect();
+    let mut samples = timer.interleaved(&mut r, &gs, &scene, &target, &programs, frames, warmup);
+    println!(
+        "# shadelab bench render — scene '{}', {}×{}, {} triangles, {} lights",
+        scene.name,
+        width,
+        height,
+        scene.triangle_count(),
+        scene.lights.len()
+    );
+    println!(
+        "# device: {}; time: {}; {} frames per row after {} warm-up",
+        gpu.describe(),
+        timer.source().label(),
+        frames,
+        warmup
+    );
+    println!("| shading | specular | median ms | p10 ms | p90 ms | ratio to fastest |");
+    println!("|---|---|---:|---:|---:|---:|");
+    let medians: Vec<f64> = samples.iter_mut().map(|s| median(s)).collect();
+    let fastest = medians.iter().copied().fold(f64::INFINITY, f64::min);
+    for (i, s) in combos.iter().enumerate() {
+        println!(
+            "| {} | {} | {:.3} | {:.3} | {:.3} | {:.2} |",
+            s.shading,
+            s.specular,
+            medians[i],
+            quantile_sorted(&samples[i], 0.1),
+            quantile_sorted(&samples[i], 0.9),
+            medians[i] / fastest
+        );
+    }
+    Ok(())
+}

@@ -1,0 +1,78 @@
+//! The scene the flags ask for: a built-in scene or a glTF file, seen through the chosen camera,
+//! with the flags' overrides applied.
+
+use super::SceneArgs;
+use crate::Failure;
+use shadelab_model::gltf_io::{self, LoadedScene, SceneSettings};
+use shadelab_model::params::{self, ParamError};
+use shadelab_model::{Overrides, Scene};
+
+/// Build the scene the arguments ask for.
+pub fn scene(args: &SceneArgs) -> Result<Scene, Failure> {
+    load(args).map(|l| l.scene)
+}
+
+/// Build the scene the arguments ask for: a built-in scene, or a glTF file (a name that is not
+/// built in and ends in .gltf/.glb or names a file), seen through the camera `--camera` picks,
+/// with the overrides applied. A bad file is the user's mistake (exit 2); its warnings are
+/// logged. A built-in scene lists its one camera.
+pub fn load(args: &SceneArgs) -> Result<LoadedScene, Failure> {
+    let name = &args.scene;
+    let is_file = {
+        let lower = name.to_ascii_lowercase();
+        lower.ends_with(".gltf") || lower.ends_with(".glb") || std::path::Path::new(name).is_file()
+    };
+    let mut loaded = match Scene::builtin(name) {
+        Some(s) => LoadedScene {
+            cameras: vec![("the scene's camera".into(), s.camera)],
+            scene: s,
+            settings: SceneSettings::default(),
+            warnings: Vec::new(),
+        },
+        None if is_file && std::path::Path::new(name).exists() => {
+            let loaded = gltf_io::load_scene(std::path::Path::new(name)).map_err(|e| Failure::Usage(e.to_string()))?;
+            for w in &loaded.warnings {
+                log::warn!("{name}: {w}");
+            }
+            loaded
+        }
+        None => {
+            return Err(ParamError::Unknown {
+                flag: "--scene".into(),
+                value: name.clone(),
+                allowed: format!(
+                    "{}, or an existing .gltf/.glb file",
+                    shadelab_model::scene::BUILTIN_SCENES.join(", ")
+                ),
+            }
+            .into());
+        }
+    };
+    // The camera's range is the file's camera count, known only now (so not a clap parser).
+    if let Some(text) = &args.camera {
+        let n = loaded.cameras.len();
+        let range = params::ParamRange {
+            flag: "--camera",
+            symbol: "N",
+            meaning: "camera number (the scene's cameras, counted from 0)",
+            min: 0.0,
+            max: (n - 1) as f64,
+        };
+        loaded.scene.camera = loaded.cameras[range.parse_u32(text)? as usize].1;
+    }
+    loaded.scene.apply(&overrides(args));
+    Ok(loaded)
+}
+
+/// The parameters the flags override (each checked by its value parser).
+pub fn overrides(a: &SceneArgs) -> Overrides {
+    Overrides {
+        m: a.m,
+        h: a.h,
+        mu: a.mu,
+        falloff_alpha: a.falloff,
+        falloff_form: a.falloff_form,
+        d0: a.d0,
+        light: a.light,
+    }
+}

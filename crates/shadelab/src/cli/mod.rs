@@ -1,0 +1,267 @@
+//! Command-line arguments: the subcommands and their flags. Every numeric and named flag goes
+//! through a value parser built from the model's declared ranges and names ([`values`]), so
+//! `--help` shows what each allows and a mistake is one line naming the flag (exit code 2). The
+//! scene the flags ask for is built in [`load`].
+
+mod load;
+pub mod values;
+
+pub use load::{load, overrides, scene};
+pub use values::{FRAMES, MESH_TRIANGLES, WARMUP, one_line, within};
+
+use clap::{Args, Parser, Subcommand};
+use shadelab_model::gltf_io::SceneSettings;
+use shadelab_model::params::{self, PhongExponent};
+use shadelab_model::scene::BUILTIN_SCENES;
+use shadelab_model::{FalloffForm, LightKind, ShadingMode, SpecularModel};
+use shadelab_render::RenderSettings;
+use std::path::PathBuf;
+
+#[derive(Parser, Debug)]
+#[command(
+    name = "shadelab",
+    version,
+    about = "Flat, Gouraud and Phong shading with Phong or Cook–Torrance specular: a viewer, headless renders and benchmarks."
+)]
+pub struct Cli {
+    #[command(subcommand)]
+    pub command: Option<Command>,
+    /// Viewer: save the window's content (panel included) to this PNG, then exit (with
+    /// --exit-after-frames).
+    #[arg(long, value_name = "PATH")]
+    pub screenshot: Option<PathBuf>,
+    /// Viewer: render this many frames, then exit 0.
+    #[arg(long, value_name = "N", value_parser = values::count(FRAMES))]
+    pub exit_after_frames: Option<u32>,
+    /// Viewer: the scene to start on and its overrides, as `render` takes them.
+    #[command(flatten)]
+    pub scene: SceneArgs,
+    /// Viewer: the shading mode and specular model to start in.
+    #[command(flatten)]
+    pub mode: ModeArgs,
+    /// Viewer, for developers: reload the WGSL from this folder (e.g. `shaders`) when a file
+    /// changes; a shader error is shown in the panel and the previous pipelines are kept.
+    #[arg(long, value_name = "DIR")]
+    pub shaders: Option<std::path::PathBuf>,
+    /// Viewer: start with the "difference from reference" view on (FLIP error map of the mode
+    /// against the f64 reference, with its numbers and the GPU time).
+    #[arg(long)]
+    pub difference: bool,
+}
+
+#[derive(Subcommand, Debug)]
+pub enum Command {
+    /// Render a scene headless to a PNG (sRGB) or an EXR (linear float).
+    Render(RenderArgs),
+    /// Measure: frame time per shading mode × specular model, what accuracy costs, what
+    /// specialization saves, what a (large) scene file costs to open.
+    #[command(subcommand)]
+    Bench(BenchCommand),
+    /// Evaluate every lighting term of the shipped WGSL over >10⁶ hard input combinations on the
+    /// GPU and compare with the f64 reference: non-finite values, bounds, relative errors.
+    Sweep,
+}
+
+#[derive(Subcommand, Debug)]
+pub enum BenchCommand {
+    /// Frame time of a scene for each shading × specular combination, interleaved in one run.
+    Render(BenchRenderArgs),
+    /// What accuracy costs in time: every shading mode × specular model × level of detail ×
+    /// resolution of the analytic scenes, timed against a null-shader baseline and compared
+    /// with the f64 reference; also the cost per light and per resolution. Writes a CSV, a
+    /// Markdown report and plots.
+    Accuracy(BenchAccuracyArgs),
+    /// What specialization saves: each scene drawn by its specialized pipeline (only the effects
+    /// it calls for), by the uber pipeline (every effect, switched off at run time) and, per
+    /// effect, by the specialized pipeline without it (the floor), interleaved in one run.
+    Effects(BenchEffectsArgs),
+    /// What a scene file costs to open: load (read, check, triangles), build + upload (normals,
+    /// GPU buffers), first frame (pipeline + draw), the next frame, and the process's peak
+    /// memory. One scene per process, so the peak is this scene's.
+    Load(BenchLoadArgs),
+    /// Large meshes: generate spheres of about the given triangle counts as .glb and run
+    /// `bench load` on each in a fresh process (under /usr/bin/time -v when installed).
+    Mesh(BenchMeshArgs),
+}
+
+#[derive(Args, Debug)]
+#[command(allow_negative_numbers = true)]
+pub struct BenchLoadArgs {
+    #[command(flatten)]
+    pub scene: SceneArgs,
+    #[command(flatten)]
+    pub mode: ModeArgs,
+    #[command(flatten)]
+    pub size: SizeArgs,
+}
+
+#[derive(Args, Debug)]
+#[command(allow_negative_numbers = true)]
+pub struct BenchMeshArgs {
+    #[arg(
+        long,
+        default_value = "1000000,10000000",
+        value_name = "N,N,...",
+        value_delimiter = ',',
+        value_parser = values::count(MESH_TRIANGLES),
+        help = format!("Triangle counts, comma-separated, each in [{}, {}]", MESH_TRIANGLES.min, MESH_TRIANGLES.max)
+    )]
+    pub triangles: Vec<u32>,
+    /// Leave NORMAL out of the files: the loader makes normals by the crease-angle rule.
+    #[arg(long)]
+    pub without_normals: bool,
+    /// Folder for the generated .glb files (kept, so that they can be opened in the viewer).
+    #[arg(long, default_value = "bench-mesh", value_name = "DIR")]
+    pub out: PathBuf,
+    /// The shading mode.
+    #[arg(long, default_value = "phong", value_parser = values::named::<ShadingMode>())]
+    pub shading: ShadingMode,
+    #[command(flatten)]
+    pub size: SizeArgs,
+}
+
+#[derive(Args, Debug)]
+#[command(allow_negative_numbers = true)]
+pub struct BenchEffectsArgs {
+    /// Scenes: built-in names or glTF files (repeat the flag for several).
+    #[arg(long = "scene", default_value = "default", value_name = "NAME|PATH")]
+    pub scenes: Vec<String>,
+    #[command(flatten)]
+    pub size: SizeArgs,
+    #[arg(long, default_value = "50", value_parser = values::count(FRAMES),
+          help = within("Measured frames per pipeline (after warm-up)", FRAMES))]
+    pub frames: u32,
+    #[arg(long, default_value = "3", value_parser = values::count(WARMUP),
+          help = within("Warm-up frames per pipeline (not measured)", WARMUP))]
+    pub warmup: u32,
+}
+
+#[derive(Args, Debug)]
+#[command(allow_negative_numbers = true)]
+pub struct BenchAccuracyArgs {
+    /// A small subset (2 scenes, 3 levels, small sizes, 10 frames): well under a minute.
+    #[arg(long)]
+    pub quick: bool,
+    /// Folder for accuracy.csv, accuracy.md, error-vs-time.png and scaling.png.
+    #[arg(long, default_value = "bench-accuracy", value_name = "DIR")]
+    pub out: PathBuf,
+    #[arg(long, value_name = "N", value_parser = values::count(FRAMES),
+          help = within("Measured frames per configuration (default 50; 10 with --quick)", FRAMES))]
+    pub frames: Option<u32>,
+    #[arg(long, value_name = "N", value_parser = values::count(WARMUP),
+          help = within("Warm-up frames per configuration (default 5; 2 with --quick)", WARMUP))]
+    pub warmup: Option<u32>,
+}
+
+/// The scene and the parameters that override it (shared by `render` and `bench`).
+#[derive(Args, Debug, Clone, Default)]
+#[command(allow_negative_numbers = true)]
+pub struct SceneArgs {
+    #[arg(long, default_value = "default", value_name = "NAME|PATH",
+          help = format!("A built-in scene ({}) or a glTF 2.0 file (.gltf, .glb)", BUILTIN_SCENES.join(", ")))]
+    pub scene: String,
+    #[arg(long, value_parser = values::real(params::M), help = within("Roughness m of every material", params::M))]
+    pub m: Option<f64>,
+    #[arg(long, value_parser = values::phong_exponent(),
+          help = format!("Phong exponent h of every material, in [{}, {}], or 'mirror'", params::H.min, params::H.max))]
+    pub h: Option<PhongExponent>,
+    #[arg(long, value_name = "R,G,B", value_parser = values::reflectance(),
+          help = format!("Normal-incidence reflectance μ of every material: R,G,B or one value, each in [{}, {}]", params::MU.min, params::MU.max))]
+    pub mu: Option<[f64; 3]>,
+    #[arg(long, value_name = "ALPHA", value_parser = values::real(params::FALLOFF),
+          help = within("Falloff factor α of every point and spot light, I0/(1 + α d²)", params::FALLOFF))]
+    pub falloff: Option<f64>,
+    /// Falloff form of every point and spot light: quadratic (1/(1 + α d²)) or linear (the
+    /// chapter's 1/(d + d0)).
+    #[arg(long, value_name = "FORM", value_parser = values::named::<FalloffForm>())]
+    pub falloff_form: Option<FalloffForm>,
+    #[arg(long, value_parser = values::real(params::D0), help = within("d0 of the linear falloff 1/(d + d0)", params::D0))]
+    pub d0: Option<f64>,
+    /// Which of a scene file's cameras to look through: 0 (the first, the default) to the number
+    /// of cameras − 1, in the file's node order. A built-in scene has one.
+    #[arg(long, value_name = "N")]
+    pub camera: Option<String>,
+    /// Make every light directional, point or spot (a spot gets glTF's default cone, 45°, aimed
+    /// at the origin).
+    #[arg(long, value_name = "KIND", value_parser = values::named::<LightKind>())]
+    pub light: Option<LightKind>,
+}
+
+#[derive(Args, Debug)]
+#[command(allow_negative_numbers = true)]
+pub struct RenderArgs {
+    #[command(flatten)]
+    pub mode: ModeArgs,
+    #[command(flatten)]
+    pub scene: SceneArgs,
+    /// Also write the scene, after the overrides, as glTF 2.0 (.gltf with an embedded buffer, or
+    /// .glb), with the shading mode and specular model in its extras.
+    #[arg(long, value_name = "PATH")]
+    pub save_scene: Option<PathBuf>,
+    #[command(flatten)]
+    pub size: SizeArgs,
+    /// Output file: .png (8-bit sRGB) or .exr (linear 32-bit float).
+    #[arg(long, default_value = "shadelab.png", value_name = "PATH")]
+    pub output: PathBuf,
+    /// Paint pixels whose colour is NaN or infinite magenta.
+    #[arg(long)]
+    pub debug_nonfinite: bool,
+    /// Print the effects the scene calls for (the shader holds only those), each with its reason.
+    #[arg(long)]
+    pub explain: bool,
+}
+
+#[derive(Args, Debug)]
+#[command(allow_negative_numbers = true)]
+pub struct BenchRenderArgs {
+    #[command(flatten)]
+    pub scene: SceneArgs,
+    #[command(flatten)]
+    pub size: SizeArgs,
+    #[arg(long, default_value = "30", value_parser = values::count(FRAMES),
+          help = within("Measured frames per combination (after warm-up)", FRAMES))]
+    pub frames: u32,
+    #[arg(long, default_value = "3", value_parser = values::count(WARMUP),
+          help = within("Warm-up frames per combination (not measured)", WARMUP))]
+    pub warmup: u32,
+}
+
+/// The image size (`render` and every `bench`).
+#[derive(Args, Debug, Clone)]
+pub struct SizeArgs {
+    #[arg(long, default_value = "1280", value_parser = values::count(params::WIDTH),
+          help = within("Width in pixels", params::WIDTH))]
+    pub width: u32,
+    #[arg(long, default_value = "720", value_parser = values::count(params::HEIGHT),
+          help = within("Height in pixels", params::HEIGHT))]
+    pub height: u32,
+}
+
+impl SizeArgs {
+    /// Width and height in pixels (clap has checked each against its range).
+    pub fn pixels(&self) -> (u32, u32) {
+        (self.width, self.height)
+    }
+}
+
+/// The shading mode and specular model (`render`, `bench load`, the viewer).
+#[derive(Args, Debug, Clone, Default)]
+pub struct ModeArgs {
+    /// The shading mode [default: the scene file's, else phong].
+    #[arg(long, value_parser = values::named::<ShadingMode>())]
+    pub shading: Option<ShadingMode>,
+    /// The specular model [default: the scene file's, else cook-torrance].
+    #[arg(long, value_parser = values::named::<SpecularModel>())]
+    pub specular: Option<SpecularModel>,
+}
+
+impl ModeArgs {
+    /// Each flag when given, else what the scene file records, else Phong shading with
+    /// Cook–Torrance specular.
+    pub fn resolve(&self, file: SceneSettings) -> RenderSettings {
+        RenderSettings::new(
+            self.shading.or(file.shading).unwrap_or(ShadingMode::Phong),
+            self.specular.or(file.specular).unwrap_or(SpecularModel::CookTorrance),
+        )
+    }
+}

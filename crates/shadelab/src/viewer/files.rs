@@ -1,0 +1,149 @@
+//! The viewer's files: open and save glTF scenes (the path field, the file dialog on a worker
+//! thread, files dropped on the window) and save the view as a PNG.
+
+use super::Viewer;
+use crate::render;
+use eframe::egui;
+use shadelab_render::Target;
+use std::path::PathBuf;
+use std::sync::Arc;
+
+/// What a file dialog is asked for.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum FileRequest {
+    /// A glTF file to open.
+    Open,
+    /// Where to save the scene.
+    Save,
+}
+
+/// Asks the person for a file: the native dialog ([`native_file_picker`]), or a stand-in in
+/// tests. `None`: nothing chosen. Called on a worker thread, so a dialog never stops the drawing.
+pub type FilePicker = Arc<dyn Fn(FileRequest) -> Option<PathBuf> + Send + Sync>;
+
+/// The desktop's file dialog (rfd: the XDG desktop portal, else zenity; GTK is not needed),
+/// filtered to glTF files.
+pub fn native_file_picker() -> FilePicker {
+    Arc::new(|request| {
+        let dialog = rfd::FileDialog::new().add_filter("glTF 2.0 scene", &["gltf", "glb"]);
+        match request {
+            FileRequest::Open => dialog.set_title("Open a scene").pick_file(),
+            FileRequest::Save => dialog.set_title("Save the scene").set_file_name("scene.gltf").save_file(),
+        }
+    })
+}
+
+impl Viewer {
+    /// Open a glTF 2.0 file (the path field, or a file dropped on the window). A bad file leaves
+    /// the current scene as it is and shows the loader's one-line error.
+    pub fn open_file(&mut self, path: &std::path::Path) {
+        match shadelab_model::gltf_io::load_scene(path) {
+            Ok(loaded) => {
+                let mut text = format!("opened {}", path.display());
+                for w in &loaded.warnings {
+                    text.push_str(&format!("\nwarning: {w}"));
+                }
+                let settings = loaded.settings;
+                if let Err(e) = self.show_loaded(loaded, &path.display().to_string()) {
+                    self.message = Some((e, true));
+                    return;
+                }
+                if let Some(m) = settings.shading {
+                    self.settings.shading = m;
+                }
+                if let Some(m) = settings.specular {
+                    self.settings.specular = m;
+                }
+                self.message = Some((text, false));
+            }
+            Err(e) => self.message = Some((e.to_string(), true)),
+        }
+    }
+
+    /// Write the scene as shown (parameters, camera, shading mode, specular model) to a glTF file.
+    pub fn save_scene(&mut self, path: &std::path::Path) {
+        let settings = shadelab_model::gltf_io::SceneSettings {
+            shading: Some(self.settings.shading),
+            specular: Some(self.settings.specular),
+        };
+        let mut scene = self.scene.clone();
+        scene.camera = self.orbit.camera(&self.base_camera);
+        self.message = Some(match shadelab_model::gltf_io::save_scene(&scene, &settings, path) {
+            Ok(()) => (format!("saved {}", path.display()), false),
+            Err(e) => (e.to_string(), true),
+        });
+    }
+
+    /// Show a file dialog on a worker thread (one at a time); its answer is taken by
+    /// [`Self::poll_file_dialog`].
+    pub(super) fn ask_for_file(&mut self, request: FileRequest) {
+        if self.picking.is_some() {
+            return;
+        }
+        let (tx, rx) = std::sync::mpsc::channel();
+        let picker = self.file_picker.clone();
+        std::thread::spawn(move || {
+            // A send fails only if the viewer is gone: nothing to do then.
+            let _ = tx.send(picker(request));
+        });
+        self.picking = Some((request, rx));
+    }
+
+    /// Act on a file dialog's answer when it has come: open or save the chosen file.
+    pub(super) fn poll_file_dialog(&mut self, ctx: &egui::Context) {
+        let Some((request, rx)) = &self.picking else { return };
+        let answer = match rx.try_recv() {
+            Ok(answer) => answer,
+            Err(std::sync::mpsc::TryRecvError::Empty) => {
+                // Look again soon: the answer comes from outside egui's events.
+                ctx.request_repaint_after(std::time::Duration::from_millis(100));
+                return;
+            }
+            Err(std::sync::mpsc::TryRecvError::Disconnected) => None,
+        };
+        let request = *request;
+        self.picking = None;
+        match answer {
+            Some(path) => {
+                self.file_field = path.display().to_string();
+                match request {
+                    FileRequest::Open => self.open_file(&path),
+                    FileRequest::Save => self.save_scene(&path),
+                }
+            }
+            None => {
+                self.message = Some((
+                    "no file chosen (the dialog was closed, or this desktop has no file dialog: type a path \
+                     or drop a file on the window)"
+                        .into(),
+                    false,
+                ))
+            }
+        }
+    }
+
+    /// Files dropped on the window are opened (the last one, if several).
+    pub(super) fn dropped_files(&mut self, ctx: &egui::Context) {
+        let dropped: Vec<PathBuf> = ctx.input(|i| {
+            i.raw.dropped_files.iter().map(|f| f.path().to_path_buf()).filter(|p| !p.as_os_str().is_empty()).collect()
+        });
+        if let Some(p) = dropped.last() {
+            self.open_file(p);
+        }
+    }
+
+    /// Render the current view again into a float target at the view's resolution and save it.
+    pub(super) fn save_view_png(&mut self) {
+        let Some(view) = &self.view else { return };
+        let (w, h) = (view.target.width, view.target.height);
+        let target = Target::new(&self.renderer.device, w, h, shadelab_render::target::HDR_FORMAT);
+        self.renderer.render(&self.gpu_scene, &self.scene, &target, &self.settings);
+        let image = shadelab_render::target::read_back(&self.renderer.device, &self.renderer.queue, &target);
+        self.saved_count += 1;
+        let path = PathBuf::from(format!("shadelab-screenshot-{}.png", self.saved_count));
+        self.message = Some(match render::save(&image, &path, render::ImageKind::Png) {
+            Ok(()) => (format!("saved {} ({w}×{h})", path.display()), false),
+            Err(e) => (format!("screenshot failed: {e:#}"), true),
+        });
+    }
+}

@@ -1,0 +1,306 @@
+//! The interactive viewer (eframe + egui-wgpu): the scene in the central area, drawn by the same
+//! `Renderer` as `shadelab render` into an offscreen target that egui shows; the parameter panel
+//! at the side edits the model, never wgpu objects. This file holds the viewer's state, its
+//! start from the command line, the scenes it shows and its keys; the concerns live beside it:
+//! the orbit camera (`orbit`), the view (`view`), the panel's sections (`panel/`), files
+//! (`files`), the scripted run (`scripting`), what is drawn over the view (`overlays`) and the
+//! difference view (`difference`).
+
+mod difference;
+mod files;
+mod orbit;
+mod overlays;
+mod panel;
+mod scripting;
+mod view;
+
+pub use files::{FilePicker, FileRequest, native_file_picker};
+
+use crate::{Failure, cli, render};
+use difference::DifferenceView;
+use eframe::egui::{self, Key};
+use eframe::egui_wgpu;
+use orbit::Orbit;
+use scripting::Script;
+use shadelab_model::gltf_io::LoadedScene;
+use shadelab_model::{Camera, Scene, ShadingMode, SpecularModel};
+use shadelab_render::timing::FrameTimer;
+use shadelab_render::{RenderSettings, Renderer, SceneGpu};
+use std::path::PathBuf;
+use std::sync::Arc;
+use view::View;
+
+/// The viewer's command-line options.
+#[derive(Debug, Default)]
+pub struct Options {
+    pub screenshot: Option<PathBuf>,
+    pub exit_after_frames: Option<u32>,
+    pub shaders: Option<PathBuf>,
+    pub scene: cli::SceneArgs,
+    pub mode: cli::ModeArgs,
+    pub difference: bool,
+}
+
+pub fn run(options: Options) -> Result<(), Failure> {
+    let Options { screenshot, exit_after_frames, shaders, scene, mode, difference } = options;
+    // A bad scene file, camera or flag is one line and exit 2, before any window opens.
+    let loaded = cli::load(&scene)?;
+    let settings = mode.resolve(loaded.settings);
+    if let Some(p) = &screenshot
+        && render::image_kind(p)? != render::ImageKind::Png
+    {
+        return Err(Failure::Usage(format!("--screenshot: '{}' must be a .png file", p.display())));
+    }
+    let mut wgpu_options = egui_wgpu::WgpuConfiguration::default();
+    if let egui_wgpu::WgpuSetup::CreateNew(create) = &mut wgpu_options.wgpu_setup {
+        // Timestamp queries when the adapter has them (the panel's GPU time).
+        create.device_descriptor = Arc::new(|adapter| wgpu::DeviceDescriptor {
+            label: Some("shadelab viewer"),
+            required_features: shadelab_render::gpu::wanted_features(adapter),
+            required_limits: adapter.limits(),
+            ..Default::default()
+        });
+    }
+    let options = eframe::NativeOptions {
+        viewport: egui::ViewportBuilder::default().with_inner_size([1280.0, 760.0]).with_title("shadelab"),
+        renderer: eframe::Renderer::Wgpu,
+        wgpu_options,
+        ..Default::default()
+    };
+    eframe::run_native(
+        "shadelab",
+        options,
+        Box::new(move |cc| {
+            let mut viewer = Viewer::new(cc, screenshot, exit_after_frames)?;
+            viewer.show_loaded(loaded, &scene.scene)?;
+            viewer.shader_dir = shaders;
+            viewer.settings = settings;
+            viewer.set_difference_view(difference);
+            Ok(Box::new(viewer) as Box<dyn eframe::App>)
+        }),
+    )
+    .map_err(|e| Failure::Run(anyhow::anyhow!("viewer: {e}")))
+}
+
+/// The viewer's state; `pub` so that tests can drive it through egui_kittest.
+pub struct Viewer {
+    scene_name: String,
+    scene: Scene,
+    base_camera: Camera,
+    orbit: Orbit,
+    settings: RenderSettings,
+    renderer: Renderer,
+    gpu_scene: SceneGpu,
+    egui_renderer: Arc<egui::mutex::RwLock<egui_wgpu::Renderer>>,
+    view: Option<View>,
+    timer: FrameTimer,
+    frame_ms: Option<f64>,
+    continuous: bool,
+    selected_material: usize,
+    mu_linked: bool,
+    script: Script,
+    saved_count: u32,
+    message: Option<(String, bool)>,
+    /// Developer option: reload WGSL from here when it changes.
+    pub shader_dir: Option<PathBuf>,
+    /// Show the live timing numbers (snapshot tests turn them off: they differ every run).
+    pub show_live_numbers: bool,
+    shader_stamp: Option<std::time::SystemTime>,
+    difference: DifferenceView,
+    /// The panel's file path field (open / save scene).
+    pub file_field: String,
+    /// How "open…" and "save as…" ask for a file.
+    pub file_picker: FilePicker,
+    /// The scene's cameras (a file's, in its node order; a built-in scene's one), and the one
+    /// looked through.
+    cameras: Vec<(String, Camera)>,
+    camera_choice: usize,
+    /// A dialog on show: what it is for, and where its answer arrives.
+    picking: Option<(FileRequest, std::sync::mpsc::Receiver<Option<PathBuf>>)>,
+}
+
+impl Viewer {
+    /// The viewer on the built-in default scene. `screenshot` and `exit_after` script a run (see
+    /// `--screenshot`, `--exit-after-frames`).
+    pub fn new(
+        cc: &eframe::CreationContext<'_>,
+        screenshot_path: Option<PathBuf>,
+        exit_after: Option<u32>,
+    ) -> Result<Viewer, String> {
+        let rs = cc.wgpu_render_state.as_ref().ok_or("the viewer needs eframe's wgpu renderer")?;
+        let mut renderer = Renderer::new(&rs.device, &rs.queue);
+        // A new effect set compiles on a worker thread; the uber pipeline draws meanwhile.
+        renderer.pipelines.build_in_background = true;
+        let scene = Scene::builtin("default").expect("built-in default scene");
+        let scene_camera = scene.camera;
+        let gpu_scene = renderer.upload(&scene).map_err(|e| e.to_string())?;
+        log::info!("viewer adapter: {:?}", rs.adapter.get_info());
+        Ok(Viewer {
+            scene_name: "default".into(),
+            base_camera: scene.camera,
+            orbit: Orbit::from_camera(&scene.camera),
+            selected_material: scene.objects.get(1).map_or(0, |o| o.material),
+            scene,
+            settings: RenderSettings::default(),
+            timer: FrameTimer::new(&rs.device, &rs.queue),
+            renderer,
+            gpu_scene,
+            egui_renderer: rs.renderer.clone(),
+            view: None,
+            frame_ms: None,
+            continuous: exit_after.is_some(),
+            mu_linked: true,
+            script: Script::new(screenshot_path, exit_after),
+            saved_count: 0,
+            message: None,
+            shader_dir: None,
+            shader_stamp: None,
+            show_live_numbers: true,
+            difference: DifferenceView::default(),
+            file_field: String::new(),
+            file_picker: native_file_picker(),
+            cameras: vec![("the scene's camera".into(), scene_camera)],
+            camera_choice: 0,
+            picking: None,
+        })
+    }
+
+    /// Current shading mode, specular model and debug switch.
+    pub fn settings(&self) -> RenderSettings {
+        self.settings
+    }
+
+    /// Show or hide the "difference from reference" view.
+    pub fn set_difference_view(&mut self, on: bool) {
+        self.difference.enabled = on;
+    }
+
+    /// The error of the current mode against the reference, once the map on show is current.
+    pub fn difference(&self) -> Option<shadelab_render::image_error::ErrorStats> {
+        self.difference.stats()
+    }
+
+    /// How many pipelines have been built so far (must not grow per frame).
+    pub fn pipeline_builds(&self) -> u32 {
+        self.renderer.pipelines.pipeline_builds
+    }
+
+    /// The scene being shown (parameters edited by the panel).
+    pub fn scene_mut(&mut self) -> &mut Scene {
+        &mut self.scene
+    }
+
+    /// The message line of the panel (text, is it an error).
+    pub fn message(&self) -> Option<&(String, bool)> {
+        self.message.as_ref()
+    }
+
+    /// Developer option: reload the WGSL when a file in the shader folder changed. A file that
+    /// does not validate leaves the running pipelines as they are and shows naga's message.
+    pub fn poll_shaders(&mut self) {
+        let Some(dir) = &self.shader_dir else { return };
+        let stamp = shadelab_render::shaders::newest_change(dir);
+        if stamp == self.shader_stamp {
+            return;
+        }
+        let first = self.shader_stamp.is_none();
+        self.shader_stamp = stamp;
+        let result = shadelab_render::shaders::read_lighting_source(dir)
+            .map_err(|e| format!("reading shaders from {}: {e}", dir.display()))
+            .and_then(|src| self.renderer.pipelines.reload_shaders(&src));
+        self.message = Some(match result {
+            Ok(()) if first => (format!("shaders from {} (reloaded on change)", dir.display()), false),
+            Ok(()) => (format!("shaders reloaded from {}", dir.display()), false),
+            Err(e) => (format!("shader error, previous pipelines kept:\n{e}"), true),
+        });
+    }
+
+    fn load_scene(&mut self, name: &str) {
+        match Scene::builtin(name) {
+            Some(s) => {
+                self.message = self.show_scene(s, name).err().map(|e| (e, true));
+            }
+            None => self.message = Some((format!("unknown scene '{name}'"), true)),
+        }
+    }
+
+    /// Show a scene loaded from a file (or a built-in one through `cli::load`), with its cameras;
+    /// its shading mode and specular model are the caller's to apply.
+    pub fn show_loaded(&mut self, loaded: LoadedScene, name: &str) -> Result<(), String> {
+        let first = loaded.scene.camera;
+        self.show_scene(loaded.scene, name)?;
+        self.cameras = loaded.cameras;
+        self.camera_choice = self.cameras.iter().position(|(_, c)| *c == first).unwrap_or(0);
+        Ok(())
+    }
+
+    /// Look through camera `i` of the scene (ignored when there is no such camera).
+    pub fn choose_camera(&mut self, i: usize) {
+        if let Some((_, c)) = self.cameras.get(i) {
+            self.camera_choice = i;
+            self.base_camera = *c;
+            self.orbit = Orbit::from_camera(c);
+            self.scene.camera = *c;
+        }
+    }
+
+    /// Show a scene; one the GPU cannot hold leaves the current scene as it is.
+    fn show_scene(&mut self, s: Scene, name: &str) -> Result<(), String> {
+        self.gpu_scene = self.renderer.upload(&s).map_err(|e| format!("{name}: {e}"))?;
+        self.cameras = vec![("the scene's camera".into(), s.camera)];
+        self.camera_choice = 0;
+        self.base_camera = s.camera;
+        self.orbit = Orbit::from_camera(&s.camera);
+        self.selected_material = s.objects.get(1).map_or(0, |o| o.material);
+        self.scene = s;
+        self.scene_name = name.into();
+        Ok(())
+    }
+
+    fn keyboard(&mut self, ctx: &egui::Context) {
+        if ctx.memory(|m| m.focused().is_some()) {
+            return; // typing into a field
+        }
+        ctx.input(|i| {
+            if i.key_pressed(Key::Num1) {
+                self.settings.shading = ShadingMode::Flat;
+            }
+            if i.key_pressed(Key::Num2) {
+                self.settings.shading = ShadingMode::Gouraud;
+            }
+            if i.key_pressed(Key::Num3) {
+                self.settings.shading = ShadingMode::Phong;
+            }
+            if i.key_pressed(Key::S) {
+                self.settings.specular = match self.settings.specular {
+                    SpecularModel::Phong => SpecularModel::CookTorrance,
+                    SpecularModel::CookTorrance => SpecularModel::Phong,
+                };
+            }
+        });
+        if ctx.input(|i| i.key_pressed(Key::F12)) {
+            self.save_view_png();
+        }
+    }
+}
+
+impl eframe::App for Viewer {
+    fn ui(&mut self, ui: &mut egui::Ui, _frame: &mut eframe::Frame) {
+        let ctx = ui.ctx().clone();
+        if self.shader_dir.is_some() {
+            self.poll_shaders();
+            ctx.request_repaint_after(std::time::Duration::from_millis(500));
+        }
+        self.keyboard(&ctx);
+        self.dropped_files(&ctx);
+        self.poll_file_dialog(&ctx);
+        egui::Panel::right("parameters").resizable(true).default_size(340.0).show(ui, |ui| {
+            egui::ScrollArea::vertical().show(ui, |ui| self.panel(ui));
+        });
+        egui::CentralPanel::default().show(ui, |ui| self.viewport(ui));
+        self.script.after_frame(&ctx);
+        if self.continuous {
+            ctx.request_repaint();
+        }
+    }
+}

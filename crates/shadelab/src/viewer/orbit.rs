@@ -1,0 +1,68 @@
+//! The viewer's orbit camera: yaw and pitch around a target at a distance, steered by the
+//! pointer over the view (drag orbits, right or middle drag pans, the wheel zooms, a double click
+//! goes back to the scene's camera).
+
+use eframe::egui::{self, PointerButton};
+use glam::DVec3;
+use shadelab_model::Camera;
+
+/// Radians of yaw or pitch per point dragged.
+const ORBIT_RAD_PER_POINT: f64 = 0.01;
+/// Pitch stays short of straight up or down (±π/2), where the view's up vector would be parallel
+/// to the line of sight.
+const PITCH_LIMIT: f64 = 1.5;
+/// Pan per point dragged, as a share of the distance to the target (the scene moves with the
+/// pointer at any zoom).
+const PAN_PER_POINT: f64 = 0.0015;
+/// Zoom: each point scrolled scales the distance by exp(−ZOOM_PER_POINT).
+const ZOOM_PER_POINT: f64 = 0.002;
+/// Nearest and farthest distance to the target, scene units (the built-in scenes span a few).
+const DISTANCE_MIN: f64 = 0.3;
+const DISTANCE_MAX: f64 = 60.0;
+
+/// Orbit camera around a target: yaw and pitch in radians, distance in scene units.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct Orbit {
+    pub target: DVec3,
+    yaw: f64,
+    pitch: f64,
+    distance: f64,
+}
+
+impl Orbit {
+    pub fn from_camera(c: &Camera) -> Orbit {
+        let d = c.eye - c.target;
+        let distance = d.length();
+        Orbit { target: c.target, yaw: d.x.atan2(d.z), pitch: (d.y / distance).asin(), distance }
+    }
+
+    /// The camera looking from the orbit at its target, with `base`'s lens.
+    pub fn camera(&self, base: &Camera) -> Camera {
+        let dir = DVec3::new(self.pitch.cos() * self.yaw.sin(), self.pitch.sin(), self.pitch.cos() * self.yaw.cos());
+        Camera { eye: self.target + dir * self.distance, target: self.target, ..*base }
+    }
+
+    /// Follow the pointer over the view (`response`); a double click goes back to `base`.
+    pub fn steer(&mut self, ui: &egui::Ui, response: &egui::Response, base: &Camera) {
+        let delta = response.drag_delta();
+        if response.dragged_by(PointerButton::Primary) {
+            self.yaw -= delta.x as f64 * ORBIT_RAD_PER_POINT;
+            self.pitch = (self.pitch + delta.y as f64 * ORBIT_RAD_PER_POINT).clamp(-PITCH_LIMIT, PITCH_LIMIT);
+        }
+        if response.dragged_by(PointerButton::Secondary) || response.dragged_by(PointerButton::Middle) {
+            let cam = self.camera(base);
+            let forward = (cam.target - cam.eye).normalize();
+            let right = forward.cross(cam.up).normalize();
+            let up = right.cross(forward);
+            let scale = self.distance * PAN_PER_POINT;
+            self.target += (-right * delta.x as f64 + up * delta.y as f64) * scale;
+        }
+        if response.hovered() {
+            let scroll = ui.input(|i| i.smooth_scroll_delta.y) as f64;
+            self.distance = (self.distance * (-scroll * ZOOM_PER_POINT).exp()).clamp(DISTANCE_MIN, DISTANCE_MAX);
+        }
+        if response.double_clicked() {
+            *self = Orbit::from_camera(base);
+        }
+    }
+}

@@ -1,0 +1,69 @@
+//! The panel's scene and modes: the built-in scene and the file's camera to look through, the
+//! shading mode, the specular model, and the debug and difference views.
+
+use super::shading_meaning;
+use crate::viewer::Viewer;
+use eframe::egui;
+use shadelab_model::params::NamedValue;
+use shadelab_model::scene::BUILTIN_SCENES;
+use shadelab_model::{ShadingMode, SpecularModel};
+
+impl Viewer {
+    /// The scene menu, and the camera menu when the scene has several cameras.
+    pub(super) fn scene_ui(&mut self, ui: &mut egui::Ui) {
+        let mut scene_choice = self.scene_name.clone();
+        egui::ComboBox::from_label("scene").selected_text(&scene_choice).show_ui(ui, |ui| {
+            for name in BUILTIN_SCENES {
+                ui.selectable_value(&mut scene_choice, name.to_string(), *name);
+            }
+        });
+        if scene_choice != self.scene_name {
+            self.load_scene(&scene_choice);
+        }
+        if self.cameras.len() > 1 {
+            let mut choice = self.camera_choice;
+            egui::ComboBox::from_label("camera").selected_text(&self.cameras[choice].0).show_ui(ui, |ui| {
+                for (i, (name, _)) in self.cameras.iter().enumerate() {
+                    ui.selectable_value(&mut choice, i, name);
+                }
+            });
+            if choice != self.camera_choice {
+                self.choose_camera(choice);
+            }
+        }
+    }
+
+    /// Shading mode, specular model, the non-finite debug paint and the difference view.
+    pub(super) fn modes_ui(&mut self, ui: &mut egui::Ui) {
+        ui.horizontal(|ui| {
+            ui.label("shading");
+            for (i, (name, mode)) in ShadingMode::ALL.iter().enumerate() {
+                ui.selectable_value(&mut self.settings.shading, *mode, *name).on_hover_text(format!(
+                    "{} (key {})",
+                    shading_meaning(*mode),
+                    i + 1
+                ));
+            }
+        });
+        ui.horizontal(|ui| {
+            ui.label("specular");
+            ui.selectable_value(&mut self.settings.specular, SpecularModel::Phong, "Phong (V·R)^h")
+                .on_hover_text("Phong specular: (V·R)^h, the light's colour (key S toggles)");
+            ui.selectable_value(&mut self.settings.specular, SpecularModel::CookTorrance, "Cook–Torrance")
+                .on_hover_text(
+                    "Cook–Torrance: Beckmann D(m), geometric G, exact Fresnel F(μ) per channel (key S toggles)",
+                );
+        });
+        ui.checkbox(&mut self.settings.debug_nonfinite, "paint non-finite pixels magenta");
+        let analytic = shadelab_model::scene_variants::is_analytic(&self.scene);
+        ui.add_enabled(analytic, egui::Checkbox::new(&mut self.difference.enabled, "difference from reference"))
+            .on_hover_text(format!(
+                "FLIP error map of this mode against the f64 ray-cast reference of the exact surface \
+                 (at most {} px wide), with RMSE and the GPU time; only for scenes of analytic shapes",
+                crate::viewer::difference::DIFFERENCE_MAX_WIDTH
+            ))
+            .on_disabled_hover_text(
+                "only for scenes made of analytic shapes (the reference knows their exact surface)",
+            );
+    }
+}

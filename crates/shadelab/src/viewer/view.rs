@@ -1,0 +1,75 @@
+//! The view: the scene drawn by the shared `Renderer` into an offscreen target at the central
+//! area's size, shown by egui as a texture (or the difference view's error map in its place),
+//! with the overlays on top.
+
+use super::{Viewer, overlays};
+use eframe::egui::{self, Color32, Rect, pos2};
+use shadelab_model::params;
+use shadelab_render::{Program, Target};
+
+/// Format of the view's target: egui samples it as linear colour, like its own textures.
+const VIEW_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba8UnormSrgb;
+
+/// The view's target and the egui texture that shows it.
+pub(super) struct View {
+    pub target: Target,
+    texture: egui::TextureId,
+}
+
+impl Viewer {
+    fn ensure_view(&mut self, w: u32, h: u32) {
+        if self.view.as_ref().is_some_and(|v| v.target.width == w && v.target.height == h) {
+            return;
+        }
+        let device = &self.renderer.device;
+        let target = Target::new(device, w, h, VIEW_FORMAT);
+        // egui takes a texture's values as sRGB-encoded: give it the stored bytes undecoded.
+        let shown = target.encoded_view();
+        let mut er = self.egui_renderer.write();
+        let texture = match &self.view {
+            Some(v) => {
+                er.update_egui_texture_from_wgpu_texture(device, &shown, wgpu::FilterMode::Linear, v.texture);
+                v.texture
+            }
+            None => er.register_native_texture(device, &shown, wgpu::FilterMode::Linear),
+        };
+        self.view = Some(View { target, texture });
+    }
+
+    /// The central area: steer the camera, draw the frame, show it with its overlays.
+    pub(super) fn viewport(&mut self, ui: &mut egui::Ui) {
+        let avail = ui.available_size();
+        let (rect, response) = ui.allocate_exact_size(avail, egui::Sense::click_and_drag());
+        let ppp = ui.ctx().pixels_per_point();
+        let w = ((avail.x * ppp).round().max(0.0) as u32).min(params::WIDTH.max as u32);
+        let h = ((avail.y * ppp).round().max(0.0) as u32).min(params::HEIGHT.max as u32);
+        if w == 0 || h == 0 {
+            return; // minimized or squeezed to nothing: no frame to draw
+        }
+        self.orbit.steer(ui, &response, &self.base_camera);
+        self.scene.camera = self.orbit.camera(&self.base_camera).fitted(w as f64 / h as f64);
+        self.ensure_view(w, h);
+        let view = self.view.as_ref().expect("view just made");
+        self.renderer.write_uniforms(&self.gpu_scene, &self.scene, &view.target, &self.settings);
+        let program = Program::for_scene(&self.scene, &self.settings);
+        self.frame_ms = Some(self.timer.frame(&mut self.renderer, &self.gpu_scene, &view.target, program));
+        let mut shown = view.texture;
+        let analytic = shadelab_model::scene_variants::is_analytic(&self.scene);
+        if self.difference.enabled && analytic {
+            let ctx = ui.ctx().clone();
+            if let Some(t) =
+                self.difference.update(&ctx, &mut self.renderer, &self.gpu_scene, &self.scene, &self.settings, (w, h))
+            {
+                shown = t;
+            }
+        }
+        let painter = ui.painter_at(rect);
+        painter.image(shown, rect, Rect::from_min_max(pos2(0.0, 0.0), pos2(1.0, 1.0)), Color32::WHITE);
+        if self.difference.enabled && analytic {
+            let mode = format!("{} shading, {} specular", self.settings.shading, self.settings.specular);
+            overlays::difference_legend(&painter, rect, &self.difference, &mode, self.frame_ms, self.show_live_numbers);
+            return; // the light markers would hide the error map
+        }
+        overlays::light_markers(&painter, rect, &self.scene, self.orbit.target, (w, h));
+    }
+}

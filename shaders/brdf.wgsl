@@ -2,6 +2,11 @@
 // named as in the f64 twin, crates/shadelab-model/src/lighting/brdf.rs. Sections (§n) are those
 // of docs/model.md.
 
+// Codes Rust writes into `globals.specular_model` (SpecularModel::code in
+// crates/shadelab-model/src/lighting/brdf.rs), held equal by the test `wgsl_codes_equal_rust_codes`.
+const SPECULAR_PHONG: u32 = 0u;
+const SPECULAR_COOK_TORRANCE: u32 = 1u;
+
 // docs/model.md §1, §3: Lambert's cosine with the oriented angle; N·L ≤ 0 is the face's own shadow.
 fn diffuse_lambert(n_dot_l: f32) -> f32 {
     return max(n_dot_l, 0.0);

@@ -22,16 +22,6 @@ const SPOT_COS_SPAN_MIN: f32 = 1e-3;
 // Light slots in the scene uniform (scene::MAX_LIGHTS).
 const MAX_LIGHTS: u32 = 8u;
 
-// Codes Rust writes into the uniforms: LightKind::code, FalloffForm::code and SpecularModel::code
-// (crates/shadelab-model/src/lighting/), held equal by the test `wgsl_codes_equal_rust_codes`.
-const LIGHT_DIRECTIONAL: u32 = 0u;
-const LIGHT_POINT: u32 = 1u;
-const LIGHT_SPOT: u32 = 2u;
-const FALLOFF_QUADRATIC: u32 = 0u;
-const FALLOFF_LINEAR: u32 = 1u;
-const SPECULAR_PHONG: u32 = 0u;
-const SPECULAR_COOK_TORRANCE: u32 = 1u;
-
 // Normalize `v`, or return `fallback` when `v` is (nearly) zero (guard NORMALIZE_MIN_LEN2).
 fn safe_normalize(v: vec3<f32>, fallback: vec3<f32>) -> vec3<f32> {
     let len2 = dot(v, v);

@@ -1,6 +1,15 @@
 // Light sources and distance falloff (docs/model.md §2, §6); the f64 twin is
 // crates/shadelab-model/src/lighting/lights.rs, which also declares the light kinds and parameters.
 
+// Codes Rust writes into `Light.kind` and `Light.falloff_form` (LightKind::code and
+// FalloffForm::code in crates/shadelab-model/src/lighting/lights.rs), held equal by the test
+// `wgsl_codes_equal_rust_codes`.
+const LIGHT_DIRECTIONAL: u32 = 0u;
+const LIGHT_POINT: u32 = 1u;
+const LIGHT_SPOT: u32 = 2u;
+const FALLOFF_QUADRATIC: u32 = 0u;
+const FALLOFF_LINEAR: u32 = 1u;
+
 struct Light {
     // xyz: position of a point or spot light.
     position: vec4<f32>,

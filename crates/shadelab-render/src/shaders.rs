@@ -2,7 +2,8 @@
 //! and the preprocessor that cuts one effect permutation out of them (the defines come from
 //! `shadelab_model::effects::DECLARED`).
 //!
-//! The renderer, the naga validation tests and the stability sweep all use these same files.
+//! The renderer, the naga validation tests and the stability sweep (`sweep::sweep_source`) all
+//! use these same files.
 
 use shadelab_model::effects::EffectKey;
 
@@ -62,14 +63,6 @@ fn uber_defines() -> Vec<&'static str> {
 pub fn terms_source() -> String {
     let raw = FILES[..3].iter().map(|(_, s)| *s).collect::<Vec<_>>().join("\n");
     preprocess(&raw, &uber_defines()).expect("the shipped WGSL preprocesses")
-}
-
-/// The stability sweep's kernel (`shaders/sweep.wgsl`), appended to the terms.
-pub const SWEEP_KERNEL: &str = include_str!("../../../shaders/sweep.wgsl");
-
-/// The sweep's compute module: the shipped terms followed by the kernel.
-pub fn sweep_source() -> String {
-    format!("{}\n{}\n{}", terms_source(), crate::sweep::wgsl_columns(), SWEEP_KERNEL)
 }
 
 /// The renderer's WGSL as shipped, before preprocessing.

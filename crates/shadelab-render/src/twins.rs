@@ -131,8 +131,8 @@ fn wgsl_codes_equal_rust_codes() {
     for (name, code) in &rust {
         assert_eq!(wgsl_constant(&module, name), Some(*code as f64), "{name}: WGSL vs Rust code()");
     }
-    // Every u32 code of common.wgsl with one of these prefixes has its Rust value.
-    for (name, ty) in wgsl_consts(wgsl_file("common.wgsl")) {
+    // Every u32 code of the WGSL with one of these prefixes has its Rust value.
+    for (name, ty) in FILES.iter().flat_map(|(_, src)| wgsl_consts(src)) {
         let coded = ["LIGHT_", "FALLOFF_", "SPECULAR_"].iter().any(|p| name.starts_with(p));
         if ty == "u32" && coded {
             assert!(rust.iter().any(|(n, _)| *n == name), "{name} has no Rust code()");

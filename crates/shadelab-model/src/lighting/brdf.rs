@@ -20,7 +20,7 @@ pub enum SpecularModel {
 impl SpecularModel {
     pub const ALL_MODELS: [SpecularModel; 2] = [SpecularModel::Phong, SpecularModel::CookTorrance];
 
-    /// The value of `globals.specular_model` in WGSL: `SPECULAR_<NAME>` of `shaders/common.wgsl`.
+    /// The value of `globals.specular_model` in WGSL: `SPECULAR_<NAME>` of `shaders/brdf.wgsl`.
     pub fn code(self) -> u32 {
         match self {
             SpecularModel::Phong => 0,

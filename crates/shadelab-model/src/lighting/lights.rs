@@ -20,7 +20,7 @@ pub enum LightKind {
 }
 
 impl LightKind {
-    /// The value of `Light.kind` in WGSL: `LIGHT_<NAME>` of `shaders/common.wgsl`.
+    /// The value of `Light.kind` in WGSL: `LIGHT_<NAME>` of `shaders/lights.wgsl`.
     pub fn code(self) -> u32 {
         match self {
             LightKind::Directional => 0,
@@ -46,7 +46,7 @@ pub enum FalloffForm {
 }
 
 impl FalloffForm {
-    /// The value of `Light.falloff_form` in WGSL: `FALLOFF_<NAME>` of `shaders/common.wgsl`.
+    /// The value of `Light.falloff_form` in WGSL: `FALLOFF_<NAME>` of `shaders/lights.wgsl`.
     pub fn code(self) -> u32 {
         match self {
             FalloffForm::Quadratic => 0,

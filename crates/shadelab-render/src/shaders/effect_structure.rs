@@ -4,6 +4,7 @@
 
 use super::tests::parse;
 use super::*;
+use crate::sweep::{SWEEP_KERNEL, sweep_source};
 use naga::valid::{Capabilities, ValidationFlags, Validator};
 use shadelab_model::effects::{DECLARED, Effect};
 use shadelab_model::{ShadingMode, SpecularModel};

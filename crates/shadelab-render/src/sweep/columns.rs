@@ -215,7 +215,7 @@ mod tests {
         assert!(out.iter().all(|x| !x.is_nan()), "{out:?}");
         for c in COLUMNS {
             let name = format!("COL_{}", c.wgsl);
-            assert!(crate::shaders::SWEEP_KERNEL.contains(&name), "sweep.wgsl does not write {name}");
+            assert!(crate::sweep::SWEEP_KERNEL.contains(&name), "sweep.wgsl does not write {name}");
         }
         assert_eq!(ranges().last().map(|(_, r)| r.end), Some(OUTPUTS));
     }

@@ -1,18 +1,26 @@
 //! The sweep on the GPU: the compute module (the shipped terms, the generated columns and the
 //! kernel), its buffers, one dispatch and the readback.
 
-use super::columns::OUTPUTS;
+use super::columns::{OUTPUTS, wgsl_columns};
 use super::inputs::SweepInputs;
 use crate::gpu::Gpu;
 use crate::shaders;
 use wgpu::util::DeviceExt;
+
+/// The stability sweep's kernel (`shaders/sweep.wgsl`).
+pub const SWEEP_KERNEL: &str = include_str!("../../../../shaders/sweep.wgsl");
+
+/// The sweep's compute module: the shipped terms, the generated columns, then the kernel.
+pub fn sweep_source() -> String {
+    format!("{}\n{}\n{}", shaders::terms_source(), wgsl_columns(), SWEEP_KERNEL)
+}
 
 /// Run the kernel over every combination and read its outputs back (`OUTPUTS` floats each).
 pub(super) fn dispatch(gpu: &Gpu, inputs: &SweepInputs, total: usize) -> Vec<f32> {
     let device = &gpu.device;
     let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
         label: Some("sweep"),
-        source: wgpu::ShaderSource::Wgsl(shaders::sweep_source().into()),
+        source: wgpu::ShaderSource::Wgsl(sweep_source().into()),
     });
     let counts: [u32; 8] = [
         inputs.geometry.len() as u32,

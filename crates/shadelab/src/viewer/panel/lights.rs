@@ -26,10 +26,12 @@ impl Viewer {
             egui::CollapsingHeader::new(format!("L{} — {}", i + 1, l.kind.name())).id_salt(i).show(ui, |ui| {
                 ui.horizontal(|ui| {
                     let mut kind = l.kind;
-                    ui.selectable_value(&mut kind, LightKind::Directional, "directional");
-                    ui.selectable_value(&mut kind, LightKind::Point, "point");
-                    ui.selectable_value(&mut kind, LightKind::Spot, "spot")
-                        .on_hover_text("a point light that lights only a cone (glTF's spot light)");
+                    for (name, k) in LightKind::ALL {
+                        let choice = ui.selectable_value(&mut kind, *k, *name);
+                        if *k == LightKind::Spot {
+                            choice.on_hover_text("a point light that lights only a cone (glTF's spot light)");
+                        }
+                    }
                     l.set_kind(kind);
                     if ui.button("remove").clicked() {
                         remove = Some(i);

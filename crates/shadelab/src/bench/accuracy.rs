@@ -190,9 +190,10 @@ pub fn run_plan(gpu: &Gpu, plan: &Plan, command: &str, mut progress: impl FnMut(
     let mut r = Renderer::new(&gpu.device, &gpu.queue);
     let timer = FrameTimer::new(&gpu.device, &gpu.queue);
     let programs = programs();
-    // The reference depends on the scene's lights, the size and the specular model, not on
-    // the level of detail: computed once per combination.
-    let mut references: HashMap<(String, usize, (u32, u32), SpecularModel), ReferenceImage> = HashMap::new();
+    // The reference depends on the scene's lights, the size and the specular model, not on the
+    // level of detail: computed once per combination. The lights are keyed by their exact
+    // parameters: the study's ring of n point lights and a scene's own n lights are different.
+    let mut references: HashMap<(String, String, (u32, u32), SpecularModel), ReferenceImage> = HashMap::new();
     let mut rows = Vec::new();
     for g in groups(plan) {
         let (w, h) = g.size;
@@ -211,7 +212,7 @@ pub fn run_plan(gpu: &Gpu, plan: &Plan, command: &str, mut progress: impl FnMut(
             let error = s.map(|s| {
                 r.render(&gs, &g.scene, &target, &s);
                 let image = target::read_back(&gpu.device, &gpu.queue, &target);
-                let key = (g.name.to_string(), g.scene.lights.len(), g.size, s.specular);
+                let key = (g.name.to_string(), format!("{:?}", g.scene.lights), g.size, s.specular);
                 let reference = references.entry(key).or_insert_with(|| render_reference(&g.scene, s.specular, w, h));
                 image_error::compare(&image, reference).stats
             });

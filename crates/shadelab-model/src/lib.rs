@@ -15,6 +15,7 @@ pub mod presets;
 pub mod reference;
 pub mod scene;
 pub mod scene_variants;
+pub mod shadows;
 
 pub use params::{FalloffForm, LightKind, PhongExponent, ShadingMode, SpecularModel};
 pub use scene::{Camera, Light, Material, Object, Overrides, Scene, Shape, Transform};

@@ -114,6 +114,14 @@ pub struct Overrides {
 }
 
 impl Scene {
+    /// Turn every light's cast shadows on or off (tests that compare the lighting terms alone
+    /// switch them off; `render --shadows`).
+    pub fn set_shadows(&mut self, on: bool) {
+        for l in &mut self.lights {
+            l.shadow.casts = on;
+        }
+    }
+
     /// Apply command-line or panel overrides to every material and light.
     pub fn apply(&mut self, o: &Overrides) {
         for mat in &mut self.materials {

@@ -4,6 +4,7 @@
 //! in `extras.shadelab`; at most `MAX_LIGHTS` are kept, and a file without lights gets a
 //! default one.
 
+use crate::shadows::ShadowSettings;
 use super::extras::{self, Cone, D0, Falloff, Intensity, LightRange, Named, Num, Rgb, Unit, Vec3, agrees};
 use super::scene_file::{Reader, num, quat, rgb, vec3};
 use super::{GltfError, POINT_FALLOFF_ALPHA};
@@ -118,6 +119,7 @@ impl Reader<'_> {
             inner_cone,
             outer_cone,
             range,
+            shadow: ShadowSettings::default(),
         };
         let ex: LightExtras = extras::read(&self.cx, &l.extras, &what)?;
         let set = |field: &mut f64, v: Option<f64>| {

@@ -5,6 +5,7 @@
 use super::common::safe_normalize;
 use crate::guards::*;
 use crate::params::{NamedValue, ParamRange};
+use crate::shadows::ShadowSettings;
 use glam::DVec3;
 
 /// Light source kind (docs/model.md §6).
@@ -123,6 +124,8 @@ pub struct Light {
     /// Point and spot lights: the distance at which the light ends (glTF `range`), reached
     /// smoothly by [`window_range`]; `None`: it never ends.
     pub range: Option<f64>,
+    /// Whether and how the light casts shadows (docs/model.md §0).
+    pub shadow: ShadowSettings,
 }
 
 impl Light {
@@ -139,6 +142,7 @@ impl Light {
             inner_cone: 0.0,
             outer_cone: SPOT_OUTER_CONE_DEFAULT,
             range: None,
+            shadow: ShadowSettings::default(),
         }
     }
     pub fn point(position: DVec3, color: [f64; 3], intensity: f64, falloff_alpha: f64) -> Self {
@@ -154,6 +158,7 @@ impl Light {
             inner_cone: 0.0,
             outer_cone: SPOT_OUTER_CONE_DEFAULT,
             range: None,
+            shadow: ShadowSettings::default(),
         }
     }
     /// A spot light at `position` shining along `direction`, with cones `inner < outer` (radians).

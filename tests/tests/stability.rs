@@ -76,6 +76,8 @@ fn a_spot_light_with_a_range_matches_the_f64_reference() {
         range: Some(5.0),
         ..Light::spot(DVec3::new(1.2, 3.0, 1.0), DVec3::new(-0.35, -1.0, -0.3), [1.0, 0.95, 0.9], 4.0, 0.15, (0.3, 0.5))
     }];
+    // The lighting terms alone; cast shadows have their own tests.
+    scene.set_shadows(false);
     for specular in SpecularModel::ALL_MODELS {
         let settings = RenderSettings::new(ShadingMode::Phong, specular);
         let gpu_img = render_image(gpu(), &scene, w, h, &settings).expect("upload");
@@ -132,8 +134,10 @@ fn every_light_count_from_1_to_8_matches_the_f64_reference() {
     let sphere = single_shape_scene("sphere", Shape::Sphere, 256);
     for n in 1..=MAX_LIGHTS {
         // The accuracy study's ring of n point lights, their total intensity that of the scene's.
-        let scene = scene_variants::with_point_lights(&sphere, n);
+        let mut scene = scene_variants::with_point_lights(&sphere, n);
         assert_eq!(scene.lights.len(), n);
+        // The lighting terms alone; cast shadows have their own tests.
+        scene.set_shadows(false);
         for specular in SpecularModel::ALL_MODELS {
             let settings = RenderSettings::new(ShadingMode::Phong, specular);
             let gpu_img = render_image(gpu(), &scene, w, h, &settings).expect("upload");

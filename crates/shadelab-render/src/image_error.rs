@@ -1,6 +1,7 @@
 //! The image-error metric: how far a rendered image is from the f64 reference of the exact
-//! surface (RMSE, largest error, FLIP, share of pixels visibly off), for the accuracy study and
-//! the viewer's "difference from reference" view.
+//! surface (RMSE, largest error, FLIP, share of pixels visibly off) and how far its cast shadows
+//! are from the reference's exact ones (the share of pixels whose lit/shadowed state disagrees,
+//! and a map of them), for the accuracy study and the viewer's "difference from reference" view.
 
 use crate::target::{LinearImage, linear_to_srgb};
 use shadelab_model::reference::ReferenceImage;
@@ -93,17 +94,203 @@ pub fn reference_image(reference: &ReferenceImage) -> LinearImage {
     }
 }
 
+/// A pixel is in a cast shadow where the image with shadows is darker than the same image
+/// without them by more than this many display steps ([`DISPLAY_STEP`]) in some channel, both
+/// encoded for display as 8-bit sRGB. It is the "visibly off" rule of [`ErrorStats::share_off`]:
+/// a darkening of one step cannot be seen, and it covers what else differs between the two
+/// renders (f32 rounding between two shader permutations is about 1e-7, far under a step). The
+/// same rule on both sides means a hidden light too faint to show counts on neither.
+pub const SHADOW_DARKENING_STEPS: u8 = 1;
+
+/// Which pixels are in a cast shadow: for each pixel, its colour with shadows and without
+/// (linear RGB), darker with shadows by more than [`SHADOW_DARKENING_STEPS`]. A non-finite value
+/// is displayed black (`linear_to_srgb`), so it counts as shadowed where the pixel is lit without.
+pub fn shadowed_pixels(pairs: impl Iterator<Item = ([f64; 3], [f64; 3])>) -> Vec<bool> {
+    pairs.map(|(on, off)| (0..3).any(|c| srgb8(off[c]).saturating_sub(srgb8(on[c])) > SHADOW_DARKENING_STEPS)).collect()
+}
+
+/// The GPU's lit/shadowed state: a render with shadows against the same render with them off.
+pub fn gpu_shadow_state(shadowed: &LinearImage, unshadowed: &LinearImage) -> Vec<bool> {
+    assert_eq!((shadowed.width, shadowed.height), (unshadowed.width, unshadowed.height), "image sizes differ");
+    let f = |p: &[f32; 4]| [p[0] as f64, p[1] as f64, p[2] as f64];
+    shadowed_pixels(shadowed.pixels.iter().zip(&unshadowed.pixels).map(|(a, b)| (f(a), f(b))))
+}
+
+/// The reference's lit/shadowed state, by the same rule as the GPU's: its image against its
+/// image without cast shadows (`ReferenceImage::unshadowed`, from the same rays).
+pub fn reference_shadow_state(reference: &ReferenceImage) -> Vec<bool> {
+    shadowed_pixels(reference.pixels.iter().copied().zip(reference.unshadowed.iter().copied()))
+}
+
+/// One pixel of the shadow error map.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ShadowPixel {
+    /// Lit on both sides.
+    Lit,
+    /// In a cast shadow on both sides.
+    Shadowed,
+    /// Shadowed by the GPU, lit in the reference: acne, a shadow too large or misplaced.
+    FalseShadow,
+    /// Lit by the GPU, shadowed in the reference: peter-panning, light leaking, a shadow too small.
+    MissedShadow,
+}
+
+impl ShadowPixel {
+    /// The map's colours: agreement dark (lit black, shadowed dark grey, so the shadows' shape
+    /// shows), disagreement bright (false shadow red, missed shadow cyan).
+    pub fn rgb8(self) -> [u8; 3] {
+        match self {
+            ShadowPixel::Lit => [0, 0, 0],
+            ShadowPixel::Shadowed => [64, 64, 64],
+            ShadowPixel::FalseShadow => [255, 40, 40],
+            ShadowPixel::MissedShadow => [40, 230, 255],
+        }
+    }
+}
+
+/// How far the GPU's cast shadows are from the reference's.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ShadowStats {
+    /// Share of pixels (0..=1) whose lit/shadowed state differs between the GPU and the reference.
+    pub share_disagreeing: f64,
+    /// Share of pixels shadowed by the GPU only ([`ShadowPixel::FalseShadow`]).
+    pub share_false_shadow: f64,
+    /// Share of pixels shadowed by the reference only ([`ShadowPixel::MissedShadow`]).
+    pub share_missed_shadow: f64,
+    /// Share of pixels in a cast shadow in the reference (what the disagreement is out of).
+    pub share_shadowed_reference: f64,
+}
+
+/// A shadow comparison: the statistics and the error map, one [`ShadowPixel`] per pixel, rows
+/// top to bottom.
+pub struct ShadowComparison {
+    pub stats: ShadowStats,
+    pub map: Vec<ShadowPixel>,
+}
+
+impl ShadowComparison {
+    /// The error map as RGB8 in [`ShadowPixel::rgb8`]'s colours, like [`Comparison::flip_map_rgb8`].
+    pub fn map_rgb8(&self) -> Vec<u8> {
+        self.map.iter().flat_map(|p| p.rgb8()).collect()
+    }
+}
+
+/// Compare two lit/shadowed states of the same size pixel by pixel (`true`: in a cast shadow).
+pub fn compare_shadow_states(gpu: &[bool], reference: &[bool]) -> ShadowComparison {
+    assert_eq!(gpu.len(), reference.len(), "shadow states of different sizes");
+    let map: Vec<ShadowPixel> = gpu
+        .iter()
+        .zip(reference)
+        .map(|(&g, &r)| match (g, r) {
+            (false, false) => ShadowPixel::Lit,
+            (true, true) => ShadowPixel::Shadowed,
+            (true, false) => ShadowPixel::FalseShadow,
+            (false, true) => ShadowPixel::MissedShadow,
+        })
+        .collect();
+    let n = map.len().max(1) as f64;
+    let share = |want: &[ShadowPixel]| map.iter().filter(|p| want.contains(p)).count() as f64 / n;
+    let stats = ShadowStats {
+        share_disagreeing: share(&[ShadowPixel::FalseShadow, ShadowPixel::MissedShadow]),
+        share_false_shadow: share(&[ShadowPixel::FalseShadow]),
+        share_missed_shadow: share(&[ShadowPixel::MissedShadow]),
+        share_shadowed_reference: share(&[ShadowPixel::Shadowed, ShadowPixel::MissedShadow]),
+    };
+    ShadowComparison { stats, map }
+}
+
+/// The GPU's cast shadows against the reference's: the GPU render with shadows and the same
+/// render with them off, against a reference rendered with shadows (its own unshadowed image
+/// comes with it). Both states by [`SHADOW_DARKENING_STEPS`].
+pub fn shadow_disagreement(
+    gpu_shadowed: &LinearImage,
+    gpu_unshadowed: &LinearImage,
+    reference: &ReferenceImage,
+) -> ShadowComparison {
+    assert_eq!(
+        (gpu_shadowed.width, gpu_shadowed.height),
+        (reference.width, reference.height),
+        "image and reference sizes differ"
+    );
+    compare_shadow_states(&gpu_shadow_state(gpu_shadowed, gpu_unshadowed), &reference_shadow_state(reference))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
 
     fn reference(w: u32, h: u32, v: f64) -> ReferenceImage {
-        ReferenceImage {
-            width: w,
-            height: h,
-            pixels: vec![[v; 3]; (w * h) as usize],
-            object: vec![None; (w * h) as usize],
+        ReferenceImage::uniform(w, h, [v; 3])
+    }
+
+    /// A 16 × 8 reference lit at 0.5 whose left `shadow_cols` columns are in a cast shadow (0.1).
+    fn shadowed_reference(shadow_cols: u32) -> ReferenceImage {
+        let mut r = reference(16, 8, 0.5);
+        for (i, p) in r.pixels.iter_mut().enumerate() {
+            if (i as u32 % 16) < shadow_cols {
+                *p = [0.1; 3];
+                r.hidden[i] = 1;
+            }
         }
+        r
+    }
+
+    #[test]
+    fn matching_shadows_agree() {
+        let r = shadowed_reference(4);
+        let c = shadow_disagreement(&reference_image(&r), &reference_image(&reference(16, 8, 0.5)), &r);
+        assert_eq!(c.stats.share_disagreeing, 0.0);
+        assert_eq!(c.stats.share_shadowed_reference, 0.25);
+        assert_eq!(c.map[0], ShadowPixel::Shadowed);
+        assert_eq!(c.map[15], ShadowPixel::Lit);
+        assert_eq!(c.map_rgb8().len(), 16 * 8 * 3);
+    }
+
+    #[test]
+    fn a_shadow_too_wide_and_one_too_narrow() {
+        let r = shadowed_reference(4);
+        let off = reference_image(&reference(16, 8, 0.5));
+        let wide = shadow_disagreement(&reference_image(&shadowed_reference(6)), &off, &r);
+        assert_eq!(wide.stats.share_false_shadow, 2.0 / 16.0);
+        assert_eq!(wide.stats.share_missed_shadow, 0.0);
+        assert_eq!(wide.map[5], ShadowPixel::FalseShadow);
+        let narrow = shadow_disagreement(&reference_image(&shadowed_reference(1)), &off, &r);
+        assert_eq!(narrow.stats.share_missed_shadow, 3.0 / 16.0);
+        assert_eq!(narrow.stats.share_disagreeing, 3.0 / 16.0);
+        assert_eq!(narrow.map[2], ShadowPixel::MissedShadow);
+        assert_eq!(ShadowPixel::MissedShadow.rgb8(), narrow.map_rgb8()[6..9]);
+    }
+
+    /// On a real reference the visible shadows are among the exactly hidden points, and the
+    /// default scene's contact shadows show.
+    #[test]
+    fn the_reference_state_lies_within_its_exact_visibility() {
+        use shadelab_model::{SpecularModel, scene::Scene};
+        let r = shadelab_model::reference::render_reference(
+            &Scene::builtin("default").unwrap(),
+            SpecularModel::CookTorrance,
+            160,
+            90,
+        );
+        let state = reference_shadow_state(&r);
+        assert!(state.iter().zip(&r.hidden).all(|(&s, &h)| !s || h != 0));
+        let shown = state.iter().filter(|&&s| s).count();
+        let hidden = r.hidden.iter().filter(|&&h| h != 0).count();
+        assert!(shown > 500 && shown as f64 > 0.8 * hidden as f64, "{shown} shown of {hidden} hidden");
+    }
+
+    /// A darkening of one display step or less is no shadow (f32 noise between permutations, a
+    /// light too faint to see); two steps is.
+    #[test]
+    fn darkening_below_the_threshold_is_lit() {
+        let step = |k: f64| {
+            let s = linear_to_srgb(0.5) as f64 - k / 255.0;
+            if s <= 0.04045 { s / 12.92 } else { ((s + 0.055) / 1.055).powf(2.4) }
+        };
+        let (off, on1, on2) = ([0.5; 3], [step(1.0); 3], [step(2.0); 3]);
+        assert_eq!(shadowed_pixels([(on1, off), (on2, off), (off, off)].into_iter()), [false, true, false]);
+        // Brighter with shadows (impossible, but not a shadow either), and non-finite values.
+        assert_eq!(shadowed_pixels([([0.9; 3], off), ([f64::NAN; 3], off)].into_iter()), [false, true]);
     }
 
     #[test]

@@ -1,0 +1,282 @@
+//! Ray intersection for the reference: a ray against the exact analytic shapes and a file's
+//! triangles, the nearest hit of a camera ray, and whether anything lies on a shadow ray's
+//! segment.
+
+use crate::lighting::common::safe_normalize;
+use crate::mesh::{TriangleMesh, face_normal};
+use crate::scene::{Scene, Shape};
+use glam::{DMat4, DVec3};
+
+/// Rays starting closer than this (in object-space ray parameter) do not count as hits: the
+/// camera is outside every shape.
+pub(super) const RAY_T_MIN: f64 = 1e-9;
+
+/// A ray counts as parallel to a plane, or to a triangle's plane, when the dot product deciding
+/// the hit is smaller than this: only an exactly parallel ray gets there, and the division by it
+/// would overflow.
+const PARALLEL_DENOM_MIN: f64 = 1e-300;
+
+/// A hit: ray parameter and object-space unit normal.
+type Hit = (f64, DVec3);
+
+/// The nearest surface a camera ray sees.
+pub(super) struct SurfaceHit {
+    pub object: usize,
+    pub point: DVec3,
+    /// World unit normal the surface is shaded with (a file's interpolated normals).
+    pub normal: DVec3,
+    /// World unit normal of the surface's geometry (a triangle's face normal; the exact normal of
+    /// an analytic shape): the side a shadow ray leaves from.
+    pub geometric_normal: DVec3,
+}
+
+/// The ray parameters where a ray enters and leaves a convex polyhedron
+/// `{x : n·x ≤ d for all planes}` (`t_in ≤ t_out`), and the entry plane's normal.
+fn convex_span(o: DVec3, dir: DVec3, planes: &[(DVec3, f64)]) -> Option<(f64, f64, DVec3)> {
+    let (mut t_in, mut t_out, mut n_in) = (f64::NEG_INFINITY, f64::INFINITY, DVec3::ZERO);
+    for &(n, d) in planes {
+        let denom = n.dot(dir);
+        let dist = d - n.dot(o);
+        if denom.abs() < PARALLEL_DENOM_MIN {
+            if dist < 0.0 {
+                return None;
+            }
+            continue;
+        }
+        let t = dist / denom;
+        if denom < 0.0 {
+            if t > t_in {
+                t_in = t;
+                n_in = n;
+            }
+        } else if t < t_out {
+            t_out = t;
+        }
+    }
+    (t_in <= t_out).then_some((t_in, t_out, n_in))
+}
+
+/// Intersect a ray with a convex polyhedron from outside: its entry point.
+fn convex(o: DVec3, dir: DVec3, planes: &[(DVec3, f64)]) -> Option<Hit> {
+    let (t_in, _, n_in) = convex_span(o, dir, planes)?;
+    (t_in > RAY_T_MIN).then(|| (t_in, n_in.normalize()))
+}
+
+fn solve_quadratic(a: f64, b: f64, c: f64) -> Option<(f64, f64)> {
+    let disc = b * b - 4.0 * a * c;
+    if disc < 0.0 || a == 0.0 {
+        return None;
+    }
+    let q = -0.5 * (b + b.signum() * disc.sqrt());
+    let (t0, t1) = (q / a, c / q);
+    Some((t0.min(t1), t0.max(t1)))
+}
+
+/// The bounding planes of the unit cube.
+const CUBE_PLANES: [(DVec3, f64); 6] =
+    [(DVec3::X, 1.0), (DVec3::NEG_X, 1.0), (DVec3::Y, 1.0), (DVec3::NEG_Y, 1.0), (DVec3::Z, 1.0), (DVec3::NEG_Z, 1.0)];
+
+/// The bounding planes of the unit pyramid: sides through the apex (0, 1, 0) and a base edge at
+/// e·x = 1, y = −1 (2 e·x + y ≤ 1); the base −y ≤ 1.
+fn pyramid_planes() -> [(DVec3, f64); 5] {
+    let k = 5f64.sqrt();
+    let side = |e: DVec3| ((e * 2.0 + DVec3::Y) / k, 1.0 / k);
+    [side(DVec3::X), side(DVec3::NEG_X), side(DVec3::Z), side(DVec3::NEG_Z), (DVec3::NEG_Y, 1.0)]
+}
+
+/// Intersect a ray (object space, `dir` not necessarily unit) with a unit shape. A
+/// `Shape::Mesh` has no analytic form and is not hit here: [`trace`] intersects its triangles.
+pub(super) fn intersect_shape(shape: Shape, o: DVec3, dir: DVec3) -> Option<Hit> {
+    match shape {
+        Shape::Mesh(_) => None,
+        Shape::Sphere => {
+            let (t0, t1) = solve_quadratic(dir.dot(dir), 2.0 * o.dot(dir), o.dot(o) - 1.0)?;
+            let t = if t0 > RAY_T_MIN { t0 } else { t1 };
+            (t > RAY_T_MIN).then(|| (t, (o + dir * t).normalize()))
+        }
+        Shape::Cylinder => {
+            let mut best: Option<Hit> = None;
+            let mut consider = |h: Hit| {
+                if h.0 > RAY_T_MIN && best.is_none_or(|b| h.0 < b.0) {
+                    best = Some(h);
+                }
+            };
+            let (a, b, c) =
+                (dir.x * dir.x + dir.z * dir.z, 2.0 * (o.x * dir.x + o.z * dir.z), o.x * o.x + o.z * o.z - 1.0);
+            if let Some((t0, t1)) = solve_quadratic(a, b, c) {
+                for t in [t0, t1] {
+                    let p = o + dir * t;
+                    if p.y.abs() <= 1.0 {
+                        consider((t, DVec3::new(p.x, 0.0, p.z).normalize()));
+                    }
+                }
+            }
+            if dir.y != 0.0 {
+                for y in [-1.0, 1.0] {
+                    let t = (y - o.y) / dir.y;
+                    let p = o + dir * t;
+                    if p.x * p.x + p.z * p.z <= 1.0 {
+                        consider((t, DVec3::new(0.0, y, 0.0)));
+                    }
+                }
+            }
+            best
+        }
+        Shape::Cube => convex(o, dir, &CUBE_PLANES),
+        Shape::Plane => {
+            if dir.y == 0.0 {
+                return None;
+            }
+            let t = -o.y / dir.y;
+            let p = o + dir * t;
+            (t > RAY_T_MIN && p.x.abs() <= 1.0 && p.z.abs() <= 1.0).then_some((t, DVec3::Y))
+        }
+        Shape::Pyramid => convex(o, dir, &pyramid_planes()),
+    }
+}
+
+/// The first ray parameter after `RAY_T_MIN` where a ray (object space) crosses a unit shape's
+/// surface, entering or leaving it: a shadow ray may start inside a closed shape.
+fn first_crossing(shape: Shape, o: DVec3, dir: DVec3) -> Option<f64> {
+    let convex_crossing = |planes: &[(DVec3, f64)]| {
+        let (t_in, t_out, _) = convex_span(o, dir, planes)?;
+        [t_in, t_out].into_iter().find(|&t| t > RAY_T_MIN)
+    };
+    match shape {
+        Shape::Cube => convex_crossing(&CUBE_PLANES),
+        Shape::Pyramid => convex_crossing(&pyramid_planes()),
+        // The sphere and cylinder tests take the exit when the entry is behind; the plane and
+        // meshes have one crossing per surface.
+        shape => intersect_shape(shape, o, dir).map(|h| h.0),
+    }
+}
+
+/// Möller–Trumbore: the ray parameter and barycentric `(u, v)` where a ray crosses triangle `t`
+/// from either side.
+fn intersect_triangle(t: &[DVec3; 3], o: DVec3, dir: DVec3) -> Option<(f64, f64, f64)> {
+    let (e1, e2) = (t[1] - t[0], t[2] - t[0]);
+    let p = dir.cross(e2);
+    let det = e1.dot(p);
+    if det.abs() < PARALLEL_DENOM_MIN {
+        return None;
+    }
+    let s = o - t[0];
+    let u = s.dot(p) / det;
+    let q = s.cross(e1);
+    let v = dir.dot(q) / det;
+    let tt = e2.dot(q) / det;
+    ((0.0..=1.0).contains(&u) && v >= 0.0 && u + v <= 1.0 && tt > RAY_T_MIN).then_some((tt, u, v))
+}
+
+/// Intersect a ray (object space) with a file's triangle mesh by brute force (every triangle:
+/// fine for the small meshes the reference is used on): ray parameter, shading normal (the
+/// file's corner normals interpolated, or the face normal; it faces the ray's origin side as the
+/// face's winding says, no flipping) and face normal.
+fn intersect_mesh(mesh: &TriangleMesh, o: DVec3, dir: DVec3) -> Option<(f64, DVec3, DVec3)> {
+    let mut best: Option<(f64, DVec3, DVec3)> = None;
+    for k in 0..mesh.triangle_count() {
+        let t = &mesh.triangle(k);
+        let Some((tt, u, v)) = intersect_triangle(t, o, dir) else { continue };
+        if best.is_some_and(|b| tt >= b.0) {
+            continue;
+        }
+        let face = face_normal(t).unwrap_or(DVec3::Y);
+        let n = match mesh.corner_normals(k) {
+            Some(c) => safe_normalize(c[0] * (1.0 - u - v) + c[1] * u + c[2] * v, face),
+            None => face,
+        };
+        best = Some((tt, n, face));
+    }
+    best
+}
+
+/// The nearest hit of a world ray among the scene's objects (`inverses`: each object's inverse
+/// transform).
+pub(super) fn trace(scene: &Scene, inverses: &[DMat4], o: DVec3, dir: DVec3) -> Option<SurfaceHit> {
+    let mut best: Option<(f64, usize, DVec3, DVec3)> = None;
+    for (i, (obj, inv)) in scene.objects.iter().zip(inverses).enumerate() {
+        let (lo, ld) = (inv.transform_point3(o), inv.transform_vector3(dir));
+        let hit = match obj.shape {
+            Shape::Mesh(m) => scene.meshes.get(m).and_then(|mesh| intersect_mesh(mesh, lo, ld)),
+            shape => intersect_shape(shape, lo, ld).map(|(t, n)| (t, n, n)),
+        };
+        if let Some((t, n, face)) = hit
+            && best.is_none_or(|b| t < b.0)
+        {
+            best = Some((t, i, n, face));
+        }
+    }
+    best.map(|(t, i, n, face)| {
+        let to_world = scene.objects[i].transform.normal_matrix();
+        SurfaceHit {
+            object: i,
+            point: o + dir * t,
+            normal: (to_world * n).normalize(),
+            geometric_normal: safe_normalize(to_world * face, DVec3::Y),
+        }
+    })
+}
+
+/// Whether any object's surface crosses the world ray `o + t·dir` for `t` in (`RAY_T_MIN`,
+/// `t_max`): the shadow ray's test, stopping at the first occluder found.
+pub(super) fn occluded(scene: &Scene, inverses: &[DMat4], o: DVec3, dir: DVec3, t_max: f64) -> bool {
+    scene.objects.iter().zip(inverses).any(|(obj, inv)| {
+        let (lo, ld) = (inv.transform_point3(o), inv.transform_vector3(dir));
+        match obj.shape {
+            Shape::Mesh(m) => scene.meshes.get(m).is_some_and(|mesh| {
+                mesh.triangles().any(|t| intersect_triangle(&t, lo, ld).is_some_and(|(tt, _, _)| tt < t_max))
+            }),
+            shape => first_crossing(shape, lo, ld).is_some_and(|t| t < t_max),
+        }
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::mesh::triangles;
+
+    /// Every analytic shape agrees with its own tessellation: rays that hit a fine mesh's
+    /// triangle hit the shape at nearly the same distance.
+    #[test]
+    fn analytic_shapes_match_their_tessellation() {
+        for shape in Shape::ALL {
+            let tris = triangles(shape, 64);
+            for (k, t) in tris.iter().enumerate().step_by(97) {
+                let c = (t[0] + t[1] + t[2]) / 3.0;
+                let from = c * 3.0 + DVec3::new(0.1, 2.5, 0.2) * if shape == Shape::Plane { 1.0 } else { 0.0 };
+                let dir = c - from;
+                let hit = intersect_shape(shape, from, dir);
+                let (t_hit, _) = hit.unwrap_or_else(|| panic!("{shape:?} triangle {k} missed"));
+                assert!((t_hit - 1.0).abs() < 0.01, "{shape:?} triangle {k}: t = {t_hit}");
+            }
+        }
+    }
+
+    #[test]
+    fn normals_point_out() {
+        for shape in [Shape::Sphere, Shape::Cylinder, Shape::Cube, Shape::Pyramid] {
+            for dir in [DVec3::X, DVec3::NEG_Y, DVec3::new(0.3, -0.2, -1.0)] {
+                let o = -dir * 10.0 + DVec3::new(0.0, -0.3, 0.0);
+                let (t, n) = intersect_shape(shape, o, dir).unwrap();
+                assert!(n.dot(dir) < 0.0, "{shape:?} {dir}: normal {n} at t {t}");
+            }
+        }
+    }
+
+    /// A ray from inside a closed shape crosses its surface once, on the way out; from outside
+    /// it crosses first on the way in.
+    #[test]
+    fn a_ray_from_inside_crosses_on_the_way_out() {
+        for shape in [Shape::Sphere, Shape::Cylinder, Shape::Cube, Shape::Pyramid] {
+            for dir in [DVec3::X, DVec3::NEG_Y, DVec3::Y, DVec3::new(0.3, -0.2, -1.0).normalize()] {
+                let inside = DVec3::new(0.05, -0.3, 0.02);
+                let t = first_crossing(shape, inside, dir).unwrap_or_else(|| panic!("{shape:?} {dir}: no exit"));
+                assert!(t > 0.0 && t < 3.0, "{shape:?} {dir}: exit at {t}");
+                let outside = inside - dir * 10.0;
+                let t_in = first_crossing(shape, outside, dir).unwrap();
+                assert!(t_in < 10.0, "{shape:?} {dir}: first crossing {t_in} is not the entry");
+            }
+        }
+    }
+}

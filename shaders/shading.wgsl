@@ -48,8 +48,9 @@ const NONFINITE_COLOR: vec3<f32> = vec3(1.0, 0.0, 1.0);
 @group(0) @binding(0) var<uniform> globals: Globals;
 @group(1) @binding(0) var<uniform> object: Object;
 
-// The Phong illumination model at world point `p` with (not necessarily unit) normal `n_in`.
-fn shade(p: vec3<f32>, n_in: vec3<f32>) -> vec3<f32> {
+// The Phong illumination model at world point `p` with (not necessarily unit) normal `n_in`;
+// `pixel` seeds the shadow filter's per-pixel rotation (read only with cast shadows).
+fn shade(p: vec3<f32>, n_in: vec3<f32>, pixel: vec2<f32>) -> vec3<f32> {
     let v = safe_normalize(globals.camera_pos.xyz - p, vec3(0.0, 1.0, 0.0));
     // A zero normal (e.g. interpolated between opposite vertex normals) faces the viewer.
     let n = safe_normalize(n_in, v);
@@ -65,7 +66,11 @@ fn shade(p: vec3<f32>, n_in: vec3<f32>) -> vec3<f32> {
 #endif
     for (var i = 0u; i < min(globals.light_count, MAX_LIGHTS); i++) {
         let s = light_sample(globals.lights[i], p, n);
-        total += light_contribution(
+        var visibility = 1.0;
+#if EFFECT_CAST_SHADOWS
+        visibility = shadow_visibility(i, globals.lights[i], p, n, pixel);
+#endif
+        total += visibility * light_contribution(
             s.l, s.radiance, n, v, c, object.r_s, object.r_d, object.m, object.h, object.mirror != 0u,
             v_index, globals.specular_model,
         );
@@ -86,6 +91,12 @@ fn to_world(p: vec3<f32>) -> vec3<f32> {
 
 fn normal_to_world(n: vec3<f32>) -> vec3<f32> {
     return mat3x3(object.normal_matrix[0].xyz, object.normal_matrix[1].xyz, object.normal_matrix[2].xyz) * n;
+}
+
+// The vertex stages' stand-in for a pixel position (they have none): the world position scaled to
+// vary from vertex to vertex.
+fn vertex_seed(p: vec3<f32>) -> vec2<f32> {
+    return (p.xz + p.yy) * 1024.0;
 }
 
 struct SmoothIn {
@@ -119,7 +130,8 @@ struct PhongOut {
 fn vs_flat(in: FlatIn) -> FlatOut {
     var out: FlatOut;
     out.clip = globals.view_proj * vec4(to_world(in.position), 1.0);
-    out.color = shade(to_world(in.centroid), normal_to_world(in.normal));
+    let c = to_world(in.centroid);
+    out.color = shade(c, normal_to_world(in.normal), vertex_seed(c));
     return out;
 }
 
@@ -133,7 +145,7 @@ fn vs_gouraud(in: SmoothIn) -> ColorOut {
     var out: ColorOut;
     let p = to_world(in.position);
     out.clip = globals.view_proj * vec4(p, 1.0);
-    out.color = shade(p, normal_to_world(in.normal));
+    out.color = shade(p, normal_to_world(in.normal), vertex_seed(p));
     return out;
 }
 
@@ -153,7 +165,7 @@ fn vs_phong(in: SmoothIn) -> PhongOut {
 
 @fragment
 fn fs_phong(in: PhongOut) -> @location(0) vec4<f32> {
-    return finish(shade(in.world_pos, in.world_normal));
+    return finish(shade(in.world_pos, in.world_normal, in.clip.xy));
 }
 
 // The null-shader baseline of the cost study: the same geometry, vertex fetch, transform and

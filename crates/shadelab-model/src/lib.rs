@@ -16,6 +16,7 @@ pub mod reference;
 pub mod scene;
 pub mod scene_variants;
 pub mod shadows;
+pub mod terminator;
 
 pub use params::{FalloffForm, LightKind, PhongExponent, ShadingMode, SpecularModel};
 pub use scene::{Camera, Light, Material, Object, Overrides, Scene, Shape, Transform};

@@ -2,8 +2,15 @@
 //! shadow map's resolution, the filter) with their ranges. The GPU answers "is this point seen by
 //! the light" from a shadow map (`shaders/shadows.wgsl`, `shadelab_render::shadow_pass`); the f64
 //! reference answers it exactly by tracing a ray to the light (`reference`).
+//!
+//! Also here: the biases and filter constants (twins in `shaders/shadows.wgsl`, held equal by
+//! `shadelab_render`'s twin tests), the scene's bounding sphere the maps are fitted to, and the
+//! f64 twin of the shadow projection (the light's view-projections, the cube face, the map
+//! coordinate) that the render crate packs into the uniforms.
 
-use crate::params::{NamedValue, ParamRange};
+use crate::params::{LightKind, NamedValue, ParamRange};
+use crate::scene::{Light, Scene, Shape};
+use glam::{DMat4, DVec3, DVec4};
 
 /// How the shadow map is filtered where a point is compared with it.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -17,7 +24,7 @@ pub enum ShadowFilter {
 }
 
 impl ShadowFilter {
-    /// The value of `Light.shadow_filter` in WGSL: `SHADOW_FILTER_<NAME>` of `shaders/shadows.wgsl`.
+    /// The value of `ShadowLight.shadow_filter` in WGSL: `SHADOW_FILTER_<NAME>` of `shaders/shadows.wgsl`.
     pub fn code(self) -> u32 {
         match self {
             ShadowFilter::Hard => 0,
@@ -66,5 +73,242 @@ impl ShadowSettings {
     pub fn clamped(self) -> ShadowSettings {
         let r = (self.resolution as f64).clamp(SHADOW_RESOLUTION.min, SHADOW_RESOLUTION.max) as u32;
         ShadowSettings { resolution: r, ..self }
+    }
+}
+
+/// The rasterizer's slope-scaled depth bias in the shadow pass (`DepthBiasState::slope_scale`):
+/// depth is pushed away from the light by this many times the triangle's depth slope per pixel,
+/// so a lit surface tilted towards grazing light does not shadow itself between texel centres
+/// (acne). Measured on a lit plane at 5°…90° (`shadow_pass::tests`): with it alone Hard and Pcf
+/// are clean but the Poisson taps, 2 texels out, still see the tilted plane in front of them;
+/// with the normal offset below as well every filter is clean.
+pub const SHADOW_SLOPE_BIAS: f32 = 2.0;
+/// The rasterizer's constant depth bias (`DepthBiasState::constant`, in units of the depth
+/// format's smallest step at the triangle's depth): absorbs the rounding of a face seen edge-on,
+/// whose slope term is unbounded and is clamped by [`SHADOW_DEPTH_BIAS_CLAMP`].
+pub const SHADOW_CONSTANT_BIAS: i32 = 4;
+/// The most depth bias the rasterizer may add (`DepthBiasState::clamp`, in [0, 1] depth): a face
+/// seen edge-on from the light has an unbounded slope; more than 1 % of the map's depth range
+/// would let it vanish from the map (peter-panning) rather than only stop acne.
+pub const SHADOW_DEPTH_BIAS_CLAMP: f32 = 0.01;
+/// The receiver is moved along its normal by this many texels of the light's map at that point
+/// before it is compared: a texel covers a patch of surface whose depth varies by up to one
+/// texel × tan(angle), and 1.5 texels clears the texel's diagonal (√2). Alone it cleans Hard and
+/// Pcf but not Poisson's wider taps; with the slope bias, all three (0 false pixels, 5°…90°).
+/// Larger values detach contact shadows (the shadow starts later).
+pub const SHADOW_NORMAL_OFFSET_TEXELS: f32 = 1.5;
+/// Poisson-disk taps per light (`ShadowFilter::Poisson`): 16 taps of the hardware's 2×2 compare
+/// give 64 texels of support, smooth at the default resolution without banding; each doubling
+/// doubles the filter's cost.
+pub const SHADOW_POISSON_TAPS: u32 = 16;
+/// Radius of the Poisson disk in texels: 2 texels widens the edge to about a 5-texel penumbra,
+/// visibly softer than `Pcf`, while staying inside the normal offset's margin at contact points.
+pub const SHADOW_POISSON_RADIUS_TEXELS: f32 = 2.0;
+/// Shadow-map layers: one per directional or spot light, six per point light (its cube faces),
+/// so 8 point lights fill them (`scene::MAX_LIGHTS` × 6).
+pub const MAX_SHADOW_LAYERS: u32 = crate::scene::MAX_LIGHTS as u32 * 6;
+/// Most memory all of a frame's shadow maps may take: 256 MiB. One 2D array holds every layer at
+/// one side; when the layers at the largest requested side would need more, the side is halved
+/// until they fit (8 point lights × 6 faces × 4096² × 4 bytes would be 3 GiB). 256 MiB holds a
+/// point and a directional light (7 layers) at 2048², or 4 layers at 4096².
+pub const SHADOW_MAP_BUDGET_BYTES: u64 = 256 << 20;
+/// Bytes per shadow-map texel (`Depth32Float`).
+pub const SHADOW_TEXEL_BYTES: u64 = 4;
+/// Near plane of a point or spot light's map as a share of its far plane, at least: keeps 32-bit
+/// float depth resolving the far end to about 1e-4 of the range when the light sits inside the
+/// scene's bounds (where the geometry gives no near distance).
+pub const SHADOW_NEAR_OVER_FAR_MIN: f64 = 1e-3;
+/// Widest half-angle a spot light's perspective map covers: a 90° half-angle cone has no finite
+/// frustum; beyond 85° the map would spend its texels at its border. A wider cone's rim outside
+/// the map is lit, unshadowed.
+pub const SPOT_SHADOW_HALF_ANGLE_MAX: f64 = 85.0 * std::f64::consts::PI / 180.0;
+/// Smallest radius of the scene's bounding sphere: a scene of one point or one flat plane
+/// seen edge-on still gets a map with a finite, non-zero extent.
+pub const SHADOW_BOUNDS_RADIUS_MIN: f64 = 1e-3;
+
+/// The constants `shaders/shadows.wgsl` repeats, by their WGSL name: the twin test holds them
+/// equal, and every `f32`/`u32` constant of that file (other than the filter codes) is here.
+pub const WGSL_TWINS: [(&str, f64); 4] = [
+    ("SHADOW_NORMAL_OFFSET_TEXELS", SHADOW_NORMAL_OFFSET_TEXELS as f64),
+    ("SHADOW_POISSON_TAPS", SHADOW_POISSON_TAPS as f64),
+    ("SHADOW_POISSON_RADIUS_TEXELS", SHADOW_POISSON_RADIUS_TEXELS as f64),
+    ("MAX_SHADOW_LAYERS", MAX_SHADOW_LAYERS as f64),
+];
+
+/// The bounding sphere `(centre, radius)` of every object in world space (the corners of each
+/// shape's box carried by its transform); `None` for a scene without objects.
+pub fn scene_bounds(scene: &Scene) -> Option<(DVec3, f64)> {
+    let mut lo = DVec3::splat(f64::INFINITY);
+    let mut hi = DVec3::splat(f64::NEG_INFINITY);
+    for o in &scene.objects {
+        let (a, b) = match o.shape {
+            Shape::Mesh(i) => match scene.meshes.get(i).and_then(|m| m.bounds()) {
+                Some(b) => b,
+                None => continue,
+            },
+            Shape::Plane => (DVec3::new(-1.0, 0.0, -1.0), DVec3::new(1.0, 0.0, 1.0)),
+            _ => (DVec3::splat(-1.0), DVec3::splat(1.0)),
+        };
+        let m = o.transform.matrix();
+        for k in 0..8 {
+            let c = DVec3::new(
+                if k & 1 == 0 { a.x } else { b.x },
+                if k & 2 == 0 { a.y } else { b.y },
+                if k & 4 == 0 { a.z } else { b.z },
+            );
+            let w = m.transform_point3(c);
+            if w.is_finite() {
+                lo = lo.min(w);
+                hi = hi.max(w);
+            }
+        }
+    }
+    if !(lo.is_finite() && hi.is_finite()) {
+        return None;
+    }
+    let centre = (lo + hi) * 0.5;
+    Some((centre, ((hi - lo).length() * 0.5).max(SHADOW_BOUNDS_RADIUS_MIN)))
+}
+
+/// One light's shadow projection: a view-projection per layer (1, or 6 cube faces in the order
+/// of [`shadow_face`]), and the world size of one texel (at unit distance along the view axis
+/// for a perspective map).
+#[derive(Clone, Debug, PartialEq)]
+pub struct ShadowProjection {
+    pub matrices: Vec<DMat4>,
+    pub texel_world: f64,
+    pub perspective: bool,
+}
+
+/// The faces' view directions and up vectors, in [`shadow_face`]'s order: +x, −x, +y, −y, +z, −z.
+const FACES: [(DVec3, DVec3); 6] = [
+    (DVec3::X, DVec3::NEG_Y),
+    (DVec3::NEG_X, DVec3::NEG_Y),
+    (DVec3::Y, DVec3::Z),
+    (DVec3::NEG_Y, DVec3::NEG_Z),
+    (DVec3::Z, DVec3::NEG_Y),
+    (DVec3::NEG_Z, DVec3::NEG_Y),
+];
+
+/// An up vector not parallel to `dir`.
+fn up_for(dir: DVec3) -> DVec3 {
+    if dir.y.abs() > 0.99 { DVec3::Z } else { DVec3::Y }
+}
+
+/// The shadow projection of `light` fitted to the bounding sphere `(centre, radius)` with a map
+/// `resolution` texels wide. Directional: orthographic, the sphere's silhouette square, depth
+/// across its diameter. Spot: perspective with the outer cone (at most
+/// [`SPOT_SHADOW_HALF_ANGLE_MAX`]). Point: six 90° faces. Near and far enclose the sphere.
+pub fn shadow_projection(light: &Light, centre: DVec3, radius: f64, resolution: u32) -> ShadowProjection {
+    let radius = if radius.is_finite() { radius.max(SHADOW_BOUNDS_RADIUS_MIN) } else { SHADOW_BOUNDS_RADIUS_MIN };
+    let n = resolution.max(1) as f64;
+    match light.kind {
+        LightKind::Directional => {
+            let dir = light.direction.try_normalize().unwrap_or(DVec3::NEG_Y);
+            // The eye stands a radius back from the sphere; depth spans the diameter, plus a
+            // margin so the nearest caster is not clipped at the near plane.
+            let eye = centre - dir * (radius * 2.0);
+            let view = DMat4::look_to_rh(eye, dir, up_for(dir));
+            let proj = DMat4::orthographic_rh(-radius, radius, -radius, radius, radius * 0.5, radius * 3.5);
+            ShadowProjection { matrices: vec![proj * view], texel_world: 2.0 * radius / n, perspective: false }
+        }
+        LightKind::Point | LightKind::Spot => {
+            let d = (centre - light.position).length();
+            let far = if (d + radius).is_finite() { (d + radius).max(SHADOW_BOUNDS_RADIUS_MIN) } else { radius };
+            let near = (d - radius).max(far * SHADOW_NEAR_OVER_FAR_MIN);
+            if light.kind == LightKind::Spot {
+                let axis = light.spot_axis();
+                let half = light.outer_cone.clamp(1e-3, SPOT_SHADOW_HALF_ANGLE_MAX);
+                let view = DMat4::look_to_rh(light.position, axis, up_for(axis));
+                let proj = DMat4::perspective_rh(2.0 * half, 1.0, near, far);
+                ShadowProjection { matrices: vec![proj * view], texel_world: 2.0 * half.tan() / n, perspective: true }
+            } else {
+                let proj = DMat4::perspective_rh(std::f64::consts::FRAC_PI_2, 1.0, near, far);
+                let matrices = FACES.iter().map(|(f, up)| proj * DMat4::look_to_rh(light.position, *f, *up)).collect();
+                ShadowProjection { matrices, texel_world: 2.0 / n, perspective: true }
+            }
+        }
+    }
+}
+
+/// The cube face that sees direction `d` from a point light (its largest axis; ties go to x,
+/// then y): 0 +x, 1 −x, 2 +y, 3 −y, 4 +z, 5 −z. Twin of `shadow_face` in `shaders/shadows.wgsl`.
+pub fn shadow_face(d: DVec3) -> u32 {
+    let a = d.abs();
+    if a.x >= a.y && a.x >= a.z {
+        if d.x >= 0.0 { 0 } else { 1 }
+    } else if a.y >= a.z {
+        if d.y >= 0.0 { 2 } else { 3 }
+    } else if d.z >= 0.0 {
+        4
+    } else {
+        5
+    }
+}
+
+/// Where world point `p` falls in the map of view-projection `m`: `(u, v, depth)`, u and v in
+/// [0, 1] across the map (v down, as textures are addressed), depth in [0, 1] from near to far.
+/// Twin of `shadow_map_coord` in `shaders/shadows.wgsl`.
+pub fn shadow_map_coord(m: DMat4, p: DVec3) -> DVec3 {
+    let c = m * DVec4::new(p.x, p.y, p.z, 1.0);
+    let ndc = c.truncate() / c.w;
+    DVec3::new(ndc.x * 0.5 + 0.5, 0.5 - ndc.y * 0.5, ndc.z)
+}
+
+/// The world size of one texel of a light's map at a receiver `dist` along the map's view axis:
+/// constant for an orthographic map, growing with distance for a perspective one. Twin of
+/// `shadow_texel_world` in `shaders/shadows.wgsl`.
+pub fn shadow_texel_world(texel_world: f64, perspective: bool, dist: f64) -> f64 {
+    if perspective { texel_world * dist.max(0.0) } else { texel_world }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_layer_sees_the_bounds_inside_its_depth_range() {
+        let s = Scene::builtin("default").unwrap();
+        let (c, r) = scene_bounds(&s).unwrap();
+        assert!(r > 1.0 && r.is_finite());
+        for l in &s.lights {
+            let p = shadow_projection(l, c, r, 2048);
+            assert_eq!(p.matrices.len(), if l.kind == LightKind::Point { 6 } else { 1 });
+            // The object centres fall inside the map of the face that sees them, depth in (0, 1).
+            for o in &s.objects {
+                let q = o.transform.translation;
+                let m = if l.kind == LightKind::Point {
+                    p.matrices[shadow_face(q - l.position) as usize]
+                } else {
+                    p.matrices[0]
+                };
+                let t = shadow_map_coord(m, q);
+                // A point on a face's edge (a tie of two axes) lands on 0 or 1 up to rounding.
+                let inside = |x: f64| (-1e-9..=1.0 + 1e-9).contains(&x);
+                assert!(inside(t.x) && inside(t.y), "{}: {t}", o.name);
+                assert!(t.z > 0.0 && t.z < 1.0, "{}: depth {}", o.name, t.z);
+            }
+        }
+    }
+
+    #[test]
+    fn faces_follow_the_major_axis() {
+        let dirs = [DVec3::X, DVec3::NEG_X, DVec3::Y, DVec3::NEG_Y, DVec3::Z, DVec3::NEG_Z];
+        for (i, d) in dirs.iter().enumerate() {
+            assert_eq!(shadow_face(*d + DVec3::splat(0.1)) as usize, i);
+            assert_eq!(FACES[i].0, *d);
+        }
+    }
+
+    #[test]
+    fn degenerate_inputs_give_finite_matrices() {
+        let mut l = Light::point(DVec3::ZERO, [1.0; 3], 1.0, 0.0);
+        for (c, r) in [(DVec3::ZERO, 0.0), (DVec3::ZERO, f64::INFINITY), (DVec3::splat(1e9), 1e9)] {
+            for kind in [LightKind::Point, LightKind::Spot, LightKind::Directional] {
+                l.set_kind(kind);
+                let p = shadow_projection(&l, c, r, 256);
+                assert!(p.matrices.iter().all(|m| m.is_finite()) && p.texel_world.is_finite(), "{kind:?} {c} {r}");
+            }
+        }
     }
 }

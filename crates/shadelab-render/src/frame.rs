@@ -1,6 +1,6 @@
 //! One frame: the scene's parameters written into its uniforms, and the scene pass recorded
 //! with the pipeline of a given [`Program`] into a target (offscreen image or the viewer's
-//! texture).
+//! texture), after the shadow passes when the program has cast shadows (`shadow_pass.rs`).
 
 use crate::pipelines::PipelineKey;
 use crate::program::{Program, RenderSettings};
@@ -9,6 +9,7 @@ use crate::target::Target;
 use crate::uniforms::{GlobalsUniform, ObjectUniform};
 use crate::upload::SceneGpu;
 use shadelab_model::Scene;
+use shadelab_model::effects::Effect;
 
 /// The scene's background (`scene::BACKGROUND`), the same as the f64 reference's.
 pub const CLEAR_COLOR: wgpu::Color = wgpu::Color {
@@ -32,12 +33,15 @@ impl Renderer {
             bytes[at..at + size_of::<ObjectUniform>()].copy_from_slice(bytemuck::bytes_of(&u));
         }
         self.queue.write_buffer(&gpu_scene.objects_buf, 0, &bytes);
+        let shadows = Program::for_scene(scene, settings).effects().has(Effect::CastShadows);
+        self.write_shadows(gpu_scene, scene, shadows);
     }
 
     /// Record the scene pass of `program` into `encoder`, drawing into `target` with the uniforms
     /// last written. With background builds on, a program whose pipeline is not built yet draws
     /// with the uber pipeline of its shading meanwhile. `timestamps` (a query set and the index
-    /// of its first of two slots) brackets the pass when the device has them.
+    /// of its first of two slots) brackets the passes when the device has them: the shadow passes
+    /// too, when the program has cast shadows (they are part of its cost).
     pub fn encode(
         &mut self,
         encoder: &mut wgpu::CommandEncoder,
@@ -47,6 +51,12 @@ impl Renderer {
         timestamps: Option<(&wgpu::QuerySet, u32)>,
     ) {
         let key = self.pipelines.ready_key(PipelineKey { program, color_format: target.format });
+        let shadows = key
+            .program
+            .effects()
+            .has(Effect::CastShadows)
+            .then(|| self.encode_shadow_passes(encoder, gpu_scene, timestamps));
+        let begun = shadows.as_ref().is_some_and(|s| s.1);
         let pipeline = self.pipelines.pipeline(key);
         let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
             label: Some("shadelab scene"),
@@ -58,12 +68,12 @@ impl Renderer {
             })],
             depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
                 view: &target.depth_view,
-                depth_ops: Some(wgpu::Operations { load: wgpu::LoadOp::Clear(1.0), store: wgpu::StoreOp::Discard }),
+                depth_ops: Some(wgpu::Operations { load: wgpu::LoadOp::Clear(1.0), store: wgpu::StoreOp::Store }),
                 stencil_ops: None,
             }),
             timestamp_writes: timestamps.map(|(qs, i)| wgpu::RenderPassTimestampWrites {
                 query_set: qs,
-                beginning_of_pass_write_index: Some(i),
+                beginning_of_pass_write_index: (!begun).then_some(i),
                 end_of_pass_write_index: Some(i + 1),
             }),
             occlusion_query_set: None,
@@ -71,6 +81,9 @@ impl Renderer {
         });
         pass.set_pipeline(pipeline);
         pass.set_bind_group(0, &gpu_scene.globals_bind, &[]);
+        if let Some((maps, _)) = &shadows {
+            pass.set_bind_group(2, maps, &[]);
+        }
         for (i, k) in gpu_scene.objects.iter().enumerate() {
             let mesh = &gpu_scene.meshes[k];
             pass.set_bind_group(1, &gpu_scene.objects_bind, &[(i as u64 * gpu_scene.object_stride) as u32]);

@@ -5,10 +5,12 @@
 pub mod frame;
 pub mod gpu;
 pub mod image_error;
+pub mod overlay_pass;
 pub mod pipelines;
 pub mod program;
 pub mod renderer;
 pub mod shaders;
+pub mod shadow_pass;
 pub mod sweep;
 pub mod target;
 pub mod timing;

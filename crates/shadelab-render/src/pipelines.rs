@@ -1,11 +1,13 @@
 //! The pipeline cache: one shader module per effect set and one render pipeline per
 //! [`PipelineKey`] (program + colour format), built on first use, or on a worker thread while the
-//! uber pipeline draws (the viewer). Hot-reloaded WGSL replaces them all.
+//! uber pipeline draws (the viewer), and the shadow pass's depth-only pipeline. A program with
+//! cast shadows has three bind groups (the shadow maps are @group(2)), one without has two.
+//! Hot-reloaded WGSL replaces them all.
 
 use crate::program::Program;
 use crate::shaders;
 use crate::vertex::{FlatVertex, SmoothVertex};
-use shadelab_model::effects::EffectKey;
+use shadelab_model::effects::{Effect, EffectKey};
 use std::collections::HashMap;
 use std::time::{Duration, Instant};
 
@@ -17,6 +19,24 @@ pub const DEPTH_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Depth32Float;
 pub struct PipelineKey {
     pub program: Program,
     pub color_format: wgpu::TextureFormat,
+}
+
+/// The pipeline layouts of one renderer.
+#[derive(Clone)]
+pub struct Layouts {
+    /// Globals and object: programs without cast shadows.
+    pub lit: wgpu::PipelineLayout,
+    /// Globals, object and the shadow maps: programs with cast shadows.
+    pub lit_shadows: wgpu::PipelineLayout,
+    /// The shadow pass: object (group 1) and the layers' matrices (group 3).
+    pub shadow_pass: wgpu::PipelineLayout,
+}
+
+impl Layouts {
+    /// The layout a program's pipeline uses: three bind groups with cast shadows, two without.
+    pub fn for_program(&self, program: Program) -> &wgpu::PipelineLayout {
+        if program.effects().has(Effect::CastShadows) { &self.lit_shadows } else { &self.lit }
+    }
 }
 
 /// A pipeline being built on a worker thread (the viewer keeps drawing meanwhile).
@@ -31,7 +51,9 @@ pub struct PipelineCache {
     /// The WGSL before preprocessing (shipped, or hot-reloaded).
     raw_source: String,
     modules: HashMap<EffectKey, wgpu::ShaderModule>,
-    layout: wgpu::PipelineLayout,
+    layouts: Layouts,
+    /// The shadow pass's depth-only pipeline, built on first use.
+    shadow_pipeline: Option<wgpu::RenderPipeline>,
     pipelines: HashMap<PipelineKey, wgpu::RenderPipeline>,
     pending: HashMap<PipelineKey, PendingBuild>,
     /// Build missing pipelines on a worker thread and draw with the uber pipeline meanwhile
@@ -44,13 +66,14 @@ pub struct PipelineCache {
 }
 
 impl PipelineCache {
-    /// An empty cache whose pipelines use `layout` (the renderer's bind groups).
-    pub fn new(device: &wgpu::Device, layout: wgpu::PipelineLayout) -> PipelineCache {
+    /// An empty cache whose pipelines use `layouts` (the renderer's bind groups).
+    pub fn new(device: &wgpu::Device, layouts: Layouts) -> PipelineCache {
         PipelineCache {
             device: device.clone(),
             raw_source: shaders::raw_lighting_source(),
             modules: HashMap::new(),
-            layout,
+            layouts,
+            shadow_pipeline: None,
             pipelines: HashMap::new(),
             pending: HashMap::new(),
             build_in_background: false,
@@ -67,6 +90,7 @@ impl PipelineCache {
         self.raw_source = raw_source.to_owned();
         self.modules.clear();
         self.pipelines.clear();
+        self.shadow_pipeline = None;
         self.pending.clear();
         Ok(())
     }
@@ -90,7 +114,7 @@ impl PipelineCache {
         if !self.pipelines.contains_key(&key) {
             let start = Instant::now();
             let module = self.module(key.program.effects());
-            let p = build_pipeline(&self.device, &self.layout, &module, key);
+            let p = build_pipeline(&self.device, self.layouts.for_program(key.program), &module, key);
             self.finish_build(key, p, start.elapsed());
         }
         &self.pipelines[&key]
@@ -101,6 +125,17 @@ impl PipelineCache {
         self.last_build = Some((key, took));
         log::info!("pipeline {} built in {:.1} ms", key.program.label(), took.as_secs_f64() * 1e3);
         self.pipelines.insert(key, p);
+    }
+
+    /// The shadow pass's depth-only pipeline (`vs_shadow` of the shadow permutation, with the
+    /// slope-scaled bias), built on first use and after a reload.
+    pub fn shadow_pipeline(&mut self) -> &wgpu::RenderPipeline {
+        if self.shadow_pipeline.is_none() {
+            let module = self.module(EffectKey::NONE.with(Effect::CastShadows));
+            let p = crate::shadow_pass::build_pipeline(&self.device, &self.layouts.shadow_pass, &module);
+            self.shadow_pipeline = Some(p);
+        }
+        self.shadow_pipeline.as_ref().expect("built above")
     }
 
     /// Move pipelines finished on worker threads into the cache.
@@ -131,7 +166,7 @@ impl PipelineCache {
         }
         if !self.pending.contains_key(&key) {
             let (tx, rx) = std::sync::mpsc::channel();
-            let (device, layout) = (self.device.clone(), self.layout.clone());
+            let (device, layout) = (self.device.clone(), self.layouts.for_program(key.program).clone());
             let module = self.module(key.program.effects());
             std::thread::spawn(move || {
                 // A send fails only if the renderer is gone: nothing to do then.

@@ -1,8 +1,9 @@
-//! The renderer of one device: its queue, the two bind-group layouts every pipeline shares
-//! (globals, per-object uniforms), and its pipeline cache. Uploading a scene (`upload.rs`),
-//! drawing a frame (`frame.rs`) and the cache (`pipelines.rs`) live beside it.
+//! The renderer of one device: its queue, the bind-group layouts (globals, per-object uniforms,
+//! and with cast shadows the shadow maps and the shadow pass's matrices), the shadow samplers,
+//! and its pipeline cache. Uploading a scene (`upload.rs`), drawing a frame (`frame.rs`), the
+//! shadow passes (`shadow_pass.rs`) and the cache (`pipelines.rs`) live beside it.
 
-use crate::pipelines::PipelineCache;
+use crate::pipelines::{Layouts, PipelineCache};
 use crate::uniforms::{GlobalsUniform, ObjectUniform};
 
 pub struct Renderer {
@@ -10,6 +11,12 @@ pub struct Renderer {
     pub queue: wgpu::Queue,
     pub(crate) globals_layout: wgpu::BindGroupLayout,
     pub(crate) object_layout: wgpu::BindGroupLayout,
+    /// @group(2) of the permutations with cast shadows: `Shadows`, the maps, two samplers.
+    pub(crate) shadow_layout: wgpu::BindGroupLayout,
+    /// @group(3) of the shadow pass: `ShadowCasters`.
+    pub(crate) casters_layout: wgpu::BindGroupLayout,
+    /// Comparison samplers of the maps: bilinear 2×2 (Pcf, Poisson) and nearest (Hard).
+    pub(crate) shadow_samplers: [wgpu::Sampler; 2],
     /// The shader modules and pipelines, by program and colour format.
     pub pipelines: PipelineCache,
 }
@@ -37,17 +44,33 @@ impl Renderer {
             label: Some("object"),
             entries: &[uniform_entry(true, size_of::<ObjectUniform>() as u64)],
         });
-        let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
-            label: Some("shadelab"),
-            bind_group_layouts: &[Some(&globals_layout), Some(&object_layout)],
-            immediate_size: 0,
-        });
+        let shadow_layout = crate::shadow_pass::maps_layout(device);
+        let casters_layout = crate::shadow_pass::casters_layout(device);
+        let layout = |label: &str, groups: &[Option<&wgpu::BindGroupLayout>]| {
+            device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+                label: Some(label),
+                bind_group_layouts: groups,
+                immediate_size: 0,
+            })
+        };
+        let layouts = Layouts {
+            lit: layout("shadelab", &[Some(&globals_layout), Some(&object_layout)]),
+            lit_shadows: layout(
+                "shadelab shadows",
+                &[Some(&globals_layout), Some(&object_layout), Some(&shadow_layout)],
+            ),
+            // The shadow pass reads only the object (group 1) and its layer's matrix (group 3).
+            shadow_pass: layout("shadelab shadow pass", &[None, Some(&object_layout), None, Some(&casters_layout)]),
+        };
         Renderer {
             device: device.clone(),
             queue: queue.clone(),
             globals_layout,
             object_layout,
-            pipelines: PipelineCache::new(device, pipeline_layout),
+            shadow_layout,
+            casters_layout,
+            shadow_samplers: crate::shadow_pass::samplers(device),
+            pipelines: PipelineCache::new(device, layouts),
         }
     }
 }

@@ -8,10 +8,12 @@
 use shadelab_model::effects::EffectKey;
 
 /// `(file name, source)` in the order they are concatenated.
-pub const FILES: [(&str, &str); 4] = [
+pub const FILES: [(&str, &str); 5] = [
     ("common.wgsl", include_str!("../../../shaders/common.wgsl")),
     ("brdf.wgsl", include_str!("../../../shaders/brdf.wgsl")),
     ("lights.wgsl", include_str!("../../../shaders/lights.wgsl")),
+    // Only in permutations with cast shadows (the whole file is one `#if EFFECT_CAST_SHADOWS`).
+    ("shadows.wgsl", include_str!("../../../shaders/shadows.wgsl")),
     ("shading.wgsl", include_str!("../../../shaders/shading.wgsl")),
 ];
 
@@ -59,7 +61,7 @@ fn uber_defines() -> Vec<&'static str> {
 }
 
 /// Constants, guards and the lighting terms with every effect, without bindings or entry points
-/// (for compute passes that evaluate the terms directly).
+/// (for compute passes that evaluate the terms directly): `common`, `brdf` and `lights`.
 pub fn terms_source() -> String {
     let raw = FILES[..3].iter().map(|(_, s)| *s).collect::<Vec<_>>().join("\n");
     preprocess(&raw, &uber_defines()).expect("the shipped WGSL preprocesses")

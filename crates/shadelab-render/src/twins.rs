@@ -9,21 +9,27 @@ use shadelab_model::params::NamedValue;
 use shadelab_model::{FalloffForm, LightKind, SpecularModel};
 
 /// Each WGSL file and the source of its f64 twin.
-const TWINS: [(&str, &str); 4] = [
+const TWINS: [(&str, &str); 5] = [
     ("common.wgsl", include_str!("../../shadelab-model/src/lighting/common.rs")),
     ("brdf.wgsl", include_str!("../../shadelab-model/src/lighting/brdf.rs")),
     ("lights.wgsl", include_str!("../../shadelab-model/src/lighting/lights.rs")),
+    // The projection math; the map sampling has none (the reference traces shadow rays).
+    ("shadows.wgsl", include_str!("../../shadelab-model/src/shadows.rs")),
     ("shading.wgsl", include_str!("../../shadelab-model/src/lighting/shading.rs")),
 ];
 
 /// WGSL functions with no f64 twin, by file, and why. (Entry points are left out by naga's list:
 /// they are the GPU's stages, whose f64 counterpart is `reference::render_reference`.)
-const NO_TWIN: [(&str, &str, &str); 5] = [
+const NO_TWIN: [(&str, &str, &str); 9] = [
     ("common.wgsl", "is_nonfinite", "the NaN/∞ test on f32 bits; f64 code uses f64::is_finite"),
     ("common.wgsl", "any_nonfinite", "the debug view's test of a colour, built on is_nonfinite"),
     ("shading.wgsl", "finish", "the debug view that paints non-finite pixels; the reference has none"),
     ("shading.wgsl", "to_world", "the object transform; its f64 side is scene::Transform::matrix"),
     ("shading.wgsl", "normal_to_world", "the normal transform; its f64 side is Transform::normal_matrix"),
+    ("shading.wgsl", "vertex_seed", "the shadow filter's noise seed; the reference traces exact shadow rays"),
+    ("shadows.wgsl", "shadow_rotation", "the Poisson filter's per-pixel noise; the reference has no filter"),
+    ("shadows.wgsl", "shadow_compare", "samples the shadow map; the reference traces rays instead"),
+    ("shadows.wgsl", "shadow_visibility", "looks the point up in a shadow map; the reference traces a shadow ray"),
 ];
 
 /// Names of the functions a WGSL (or Rust) source declares: `fn name(` at the start of a line,
@@ -114,6 +120,29 @@ fn wgsl_guards_equal_rust_guards() {
         }
     }
     assert_eq!(wgsl_constant(&module, "MAX_LIGHTS"), Some(shadelab_model::scene::MAX_LIGHTS as f64));
+}
+
+/// The shadow constants `shaders/shadows.wgsl` repeats equal `shadows::WGSL_TWINS`, every `f32` or
+/// `u32` constant there is one of them or a filter code, and the filter codes equal `code()`.
+#[test]
+fn wgsl_shadow_constants_equal_rust() {
+    use shadelab_model::shadows::{ShadowFilter, WGSL_TWINS};
+    let module = parse(&lighting_source());
+    for (name, value) in WGSL_TWINS {
+        let w = wgsl_constant(&module, name).unwrap_or_else(|| panic!("{name} missing from shadows.wgsl"));
+        assert_eq!(w as f32, value as f32, "{name}: WGSL {w} vs Rust {value}");
+    }
+    let codes: Vec<(String, u32)> =
+        ShadowFilter::ALL.iter().map(|(n, f)| (code_name("SHADOW_FILTER", n), f.code())).collect();
+    for (name, code) in &codes {
+        assert_eq!(wgsl_constant(&module, name), Some(*code as f64), "{name}: WGSL vs ShadowFilter::code");
+    }
+    for (name, ty) in wgsl_consts(wgsl_file("shadows.wgsl")) {
+        if ty == "f32" || ty == "u32" {
+            let known = WGSL_TWINS.iter().any(|(n, _)| *n == name) || codes.iter().any(|(n, _)| *n == name);
+            assert!(known, "{name} in shadows.wgsl is neither in shadows::WGSL_TWINS nor a filter code");
+        }
+    }
 }
 
 /// `PREFIX_NAME` for a named value: `cook-torrance` → `SPECULAR_COOK_TORRANCE`.

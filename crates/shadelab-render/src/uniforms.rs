@@ -5,6 +5,7 @@
 
 use bytemuck::{Pod, Zeroable};
 use shadelab_model::scene::MAX_LIGHTS;
+use shadelab_model::shadows::MAX_SHADOW_LAYERS;
 use shadelab_model::{Light, Material, Object, Scene, SpecularModel};
 
 #[repr(C)]
@@ -54,6 +55,32 @@ pub struct ObjectUniform {
     pub mirror: u32,
     pub _pad0: u32,
     pub _pad1: u32,
+}
+
+/// One light's shadow map as `shadows.wgsl`'s `ShadowLight` reads it (zeroed: no shadow).
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Pod, Zeroable, PartialEq)]
+pub struct ShadowLightUniform {
+    pub first_layer: u32,
+    /// 0: no shadow; 1: directional or spot; 6: a point light's faces.
+    pub layers: u32,
+    /// `ShadowFilter::code`.
+    pub shadow_filter: u32,
+    pub perspective: u32,
+    pub texel_world: f32,
+    pub uv_scale: f32,
+    pub texel_uv: f32,
+    pub _pad: f32,
+}
+
+/// `shadows.wgsl`'s `Shadows` (@group(2) @binding(0)): each layer's light view-projection and
+/// each light's map. Bound only in permutations with cast shadows; the shadow pass reads the
+/// same buffer's matrices as `ShadowCasters`.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Pod, Zeroable)]
+pub struct ShadowsUniform {
+    pub matrices: [[[f32; 4]; 4]; MAX_SHADOW_LAYERS as usize],
+    pub lights: [ShadowLightUniform; MAX_LIGHTS],
 }
 
 /// `flags` bit: paint non-finite pixels magenta.

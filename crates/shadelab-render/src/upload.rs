@@ -30,6 +30,9 @@ pub struct SceneGpu {
     /// alignment).
     pub(crate) object_stride: u64,
     pub triangle_count: usize,
+    /// The shadow maps, made by the first frame whose program has cast shadows
+    /// (`shadow_pass.rs`); behind a lock because frames are written through `&SceneGpu`.
+    pub(crate) shadows: std::sync::Mutex<Option<crate::shadow_pass::ShadowMaps>>,
 }
 
 /// A scene the device cannot hold.
@@ -130,6 +133,7 @@ impl Renderer {
             objects_bind,
             object_stride,
             triangle_count,
+            shadows: std::sync::Mutex::new(None),
         })
     }
 }

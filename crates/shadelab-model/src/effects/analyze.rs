@@ -147,11 +147,8 @@ pub fn analyze(scene: &Scene, specular: SpecularModel) -> Analysis {
             format!("I_amb = {amb} and some material has r_a > 0")
         },
     );
-    a.note(
-        Effect::CastShadows,
-        "not simulated",
-        "the renderer has no shadow pass; own shadow (N·L ≤ 0) is part of every light's term",
-    );
+    let (on, why) = cast_shadows(scene, lights);
+    a.decide(Effect::CastShadows, on, why);
     let transmitting: Vec<_> = used.iter().filter(|m| m.transmission > 0.0).collect();
     a.note(
         Effect::Transmission,
@@ -178,6 +175,33 @@ pub fn analyze(scene: &Scene, specular: SpecularModel) -> Analysis {
     };
     a.note(Effect::Absorption, state, reason);
     a
+}
+
+/// Cast shadows are on when some light casts them and some object can hide another surface from
+/// it: two or more objects, or a file mesh (which may be concave). A single convex shape (or a
+/// plane) alone needs none: the only shadow it can have is its own, the N·L term.
+fn cast_shadows(scene: &Scene, lights: &[crate::scene::Light]) -> (bool, String) {
+    let casting = lights.iter().filter(|l| l.shadow.casts).count();
+    let meshes = scene.objects.iter().filter(|o| matches!(o.shape, crate::scene::Shape::Mesh(_))).count();
+    if lights.is_empty() {
+        (false, "no lights".into())
+    } else if casting == 0 {
+        (false, "no light casts shadows (every light's shadow setting is off)".into())
+    } else if scene.objects.len() >= 2 {
+        (true, format!("{casting} light(s) cast shadows and {} objects can shadow one another", scene.objects.len()))
+    } else if meshes > 0 {
+        (true, format!("{casting} light(s) cast shadows and a file mesh can shadow itself"))
+    } else if let Some(o) = scene.objects.first() {
+        (
+            false,
+            format!(
+                "one convex object ({}) with nothing to receive its shadow: its own shadow is the N·L term",
+                o.shape.name()
+            ),
+        )
+    } else {
+        (false, "no objects".into())
+    }
 }
 
 #[cfg(test)]
@@ -207,7 +231,7 @@ mod tests {
             analyze(&s, SpecularModel::Phong).key,
             k.without(Effect::SpecularCookTorrance).with(Effect::SpecularPhong)
         );
-        assert!(a.lines().iter().any(|l| l.starts_with("cast shadows: not simulated")));
+        assert!(k.has(Effect::CastShadows), "{:?}", a.lines());
     }
 
     #[test]
@@ -219,7 +243,17 @@ mod tests {
         }
         s.lights = vec![Light::directional(DVec3::NEG_Y, [1.0; 3], 1.0)];
         let a = analyze(&s, SpecularModel::CookTorrance);
-        assert_eq!(a.key.effects(), vec![Effect::Diffuse, Effect::DirectionalLights], "{:?}", a.lines());
+        assert_eq!(
+            a.key.effects(),
+            vec![Effect::Diffuse, Effect::DirectionalLights, Effect::CastShadows],
+            "{:?}",
+            a.lines()
+        );
+        s.set_shadows(false);
+        assert_eq!(
+            analyze(&s, SpecularModel::CookTorrance).key.effects(),
+            vec![Effect::Diffuse, Effect::DirectionalLights]
+        );
         s.lights.push(Light::point(DVec3::Y * 3.0, [1.0; 3], 1.0, 0.0));
         assert!(!analyze(&s, SpecularModel::Phong).key.has(Effect::FalloffQuadratic), "α = 0 needs no falloff");
         s.lights[1].falloff_form = FalloffForm::Linear;
@@ -236,6 +270,23 @@ mod tests {
         assert!(analyze(&s, SpecularModel::Phong).key.has(Effect::LightRange));
         s.lights.clear();
         assert_eq!(analyze(&s, SpecularModel::Phong).key, EffectKey::NONE);
+    }
+
+    #[test]
+    fn cast_shadows_need_something_to_hide() {
+        let on = |s: &Scene| analyze(s, SpecularModel::Phong).key.has(Effect::CastShadows);
+        let mut s = Scene::builtin("sphere").unwrap();
+        assert!(on(&s), "a sphere on the ground casts onto it");
+        for shape in [crate::scene::Shape::Sphere, crate::scene::Shape::Cube, crate::scene::Shape::Pyramid] {
+            s.objects.retain(|o| o.name != "ground");
+            s.objects[0].shape = shape;
+            assert!(!on(&s), "{shape:?} alone shadows only itself (N·L)");
+        }
+        s.meshes.push(crate::mesh::TriangleMesh::from_soup("t", &[[DVec3::ZERO, DVec3::X, DVec3::Y]], None));
+        s.objects[0].shape = crate::scene::Shape::Mesh(0);
+        assert!(on(&s), "a file mesh may be concave");
+        s.set_shadows(false);
+        assert!(!on(&s));
     }
 
     #[test]

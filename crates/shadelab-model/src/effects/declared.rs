@@ -168,14 +168,15 @@ declare_effects! {
         functions: &["window_range"],
         members: &[("Light", "range")],
     },
-    /// Shadows cast by other objects: analysed, not simulated (no shadow pass yet).
+    /// Shadows cast by other objects, from a shadow map per light (docs/model.md §0, §6): the
+    /// shadow passes, the maps' bind group (@group(2)) and the compare code.
     CastShadows {
         explain: "cast shadows",
         name: "cast shadows",
         label: "shadows",
-        define: None,
-        functions: &[],
-        members: &[],
+        define: Some("EFFECT_CAST_SHADOWS"),
+        functions: &["shadow_visibility", "shadow_face", "shadow_map_coord", "shadow_texel_world", "shadow_compare"],
+        members: &[("Shadows", "matrices"), ("Shadows", "lights"), ("ShadowLight", "shadow_filter")],
     },
     /// Light transmitted through a material: analysed, not simulated yet (docs/model.md §7).
     Transmission {
@@ -359,7 +360,7 @@ mod tests {
             assert_eq!(Effect::ALL.contains(&d.effect), d.define.is_some(), "{}", d.effect);
         }
         // An effect that is not simulated cannot enter a key.
-        for e in [Effect::CastShadows, Effect::Transmission, Effect::Absorption] {
+        for e in [Effect::Transmission, Effect::Absorption] {
             assert!(!e.is_simulated());
             assert_eq!(EffectKey::NONE.with(e), EffectKey::NONE);
         }
@@ -399,7 +400,7 @@ mod tests {
         assert_eq!(format!("{k:?}"), "EffectKey(diffuse+cook-torrance+point+range)");
         assert_eq!(
             EffectKey::UBER.without(Effect::Ambient).label(),
-            "diffuse+phong+cook-torrance+dir+point+quad+linear+spot+range"
+            "diffuse+phong+cook-torrance+dir+point+quad+linear+spot+range+shadows"
         );
         assert_eq!(Effect::SpecularPhong.to_string(), "Phong specular (V·R)^h");
     }

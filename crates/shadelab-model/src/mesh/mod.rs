@@ -70,7 +70,7 @@ pub fn face_normal(t: &[DVec3; 3]) -> Option<DVec3> {
 
 /// The weld key of a position: positions that round to the same f32 are the same vertex on the
 /// GPU (±0 alike).
-fn key(p: DVec3) -> [u32; 3] {
+pub(crate) fn key(p: DVec3) -> [u32; 3] {
     p.as_vec3().to_array().map(|c| if c == 0.0 { 0 } else { c.to_bits() })
 }
 

@@ -147,3 +147,32 @@ fn a_permutation_without_an_effect_has_no_code_for_it() {
         }
     }
 }
+
+/// Cast shadows beyond functions and members: a permutation without them has no shadow-map
+/// binding (no global in @group(2) or @group(3), no depth texture, no comparison sampler), no
+/// depth-compare sample and no shadow-pass entry point; with them it has all of these.
+#[test]
+fn a_permutation_without_cast_shadows_has_no_shadow_bindings() {
+    let raw = raw_lighting_source();
+    for (key, present) in
+        [(EffectKey::UBER, true), (EffectKey::UBER.without(Effect::CastShadows), false), (EffectKey::NONE, false)]
+    {
+        let module = parse(&lighting_source_for(&raw, key).unwrap());
+        let groups: Vec<u32> = module.global_variables.iter().filter_map(|(_, g)| g.binding.map(|b| b.group)).collect();
+        assert_eq!(groups.iter().any(|g| *g >= 2), present, "{}: groups {groups:?}", key.label());
+        assert_eq!(groups.iter().max().copied().unwrap_or(0) <= 1, !present, "{}", key.label());
+        let depth = module.types.iter().any(|(_, t)| {
+            matches!(t.inner, naga::TypeInner::Image { class: naga::ImageClass::Depth { .. }, .. })
+                || matches!(t.inner, naga::TypeInner::Sampler { comparison: true })
+        });
+        assert_eq!(depth, present, "{}: depth texture or comparison sampler", key.label());
+        let compares = module
+            .functions
+            .iter()
+            .flat_map(|(_, f)| f.expressions.iter())
+            .chain(module.entry_points.iter().flat_map(|e| e.function.expressions.iter()))
+            .any(|(_, e)| matches!(e, naga::Expression::ImageSample { depth_ref: Some(_), .. }));
+        assert_eq!(compares, present, "{}: depth-compare samples", key.label());
+        assert_eq!(module.entry_points.iter().any(|e| e.name == "vs_shadow"), present, "{}", key.label());
+    }
+}

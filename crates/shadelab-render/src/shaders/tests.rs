@@ -2,7 +2,7 @@
 //! and the WGSL compiles (the guards and codes shared with Rust: `twins.rs`).
 
 use super::*;
-use crate::uniforms::{GlobalsUniform, LightUniform, ObjectUniform};
+use crate::uniforms::{GlobalsUniform, LightUniform, ObjectUniform, ShadowLightUniform, ShadowsUniform};
 use std::mem::offset_of;
 
 pub(crate) fn parse(src: &str) -> naga::Module {
@@ -59,4 +59,9 @@ fn uniform_layouts_match_wgsl() {
         wgsl_layout(&module, "Object"),
         rust_layout!(ObjectUniform: model, normal_matrix, color, mu, r_s, r_d, r_a, m, h, mirror, _pad0, _pad1)
     );
+    assert_eq!(
+        wgsl_layout(&module, "ShadowLight"),
+        rust_layout!(ShadowLightUniform: first_layer, layers, shadow_filter, perspective, texel_world, uv_scale, texel_uv, _pad)
+    );
+    assert_eq!(wgsl_layout(&module, "Shadows"), rust_layout!(ShadowsUniform: matrices, lights));
 }

@@ -1,0 +1,163 @@
+// Cast shadows from shadow maps (docs/model.md §0, §6): the visibility of a light from a surface
+// point, by comparing the point's depth seen from the light with the depth the light's shadow
+// pass stored (crates/shadelab-render/src/shadow_pass.rs). The projection math has f64 twins in
+// crates/shadelab-model/src/shadows.rs, with the constants' reasons; the f64 reference traces
+// exact shadow rays instead of sampling maps. Everything here exists only in the permutations
+// with EFFECT_CAST_SHADOWS, the bind group @group(2) included.
+
+#if EFFECT_CAST_SHADOWS
+// Codes Rust writes into `ShadowLight.shadow_filter` (ShadowFilter::code in
+// crates/shadelab-model/src/shadows.rs).
+const SHADOW_FILTER_HARD: u32 = 0u;
+const SHADOW_FILTER_PCF: u32 = 1u;
+const SHADOW_FILTER_POISSON: u32 = 2u;
+
+// Twins of crates/shadelab-model/src/shadows.rs (shadows::WGSL_TWINS), reasons there.
+const MAX_SHADOW_LAYERS: u32 = 48u;
+const SHADOW_NORMAL_OFFSET_TEXELS: f32 = 1.5;
+const SHADOW_POISSON_TAPS: u32 = 16u;
+const SHADOW_POISSON_RADIUS_TEXELS: f32 = 2.0;
+
+// One light's shadow map in the frame's array of maps.
+struct ShadowLight {
+    first_layer: u32,
+    // 0: the light casts no shadow; 1: a directional or spot light; 6: a point light's faces.
+    layers: u32,
+    // SHADOW_FILTER_HARD, _PCF or _POISSON.
+    shadow_filter: u32,
+    // 1: perspective (point, spot), texel_world grows with the distance along the view axis.
+    perspective: u32,
+    // World size of one texel (per unit of distance along the view axis when perspective).
+    texel_world: f32,
+    // Share of the layer's side the light's map uses (its resolution / the array's side).
+    uv_scale: f32,
+    // 1 / the array's side: one texel in layer coordinates.
+    texel_uv: f32,
+    _pad: f32,
+}
+
+struct Shadows {
+    // Each layer's light view-projection.
+    matrices: array<mat4x4<f32>, MAX_SHADOW_LAYERS>,
+    lights: array<ShadowLight, MAX_LIGHTS>,
+}
+
+// The shadow pass's view of the same buffer: only the matrices.
+struct ShadowCasters {
+    matrices: array<mat4x4<f32>, MAX_SHADOW_LAYERS>,
+}
+
+@group(2) @binding(0) var<uniform> shadows: Shadows;
+@group(2) @binding(1) var shadow_maps: texture_depth_2d_array;
+// Bilinear 2×2 compare (Pcf, Poisson) and one nearest compare (Hard).
+@group(2) @binding(2) var shadow_linear: sampler_comparison;
+@group(2) @binding(3) var shadow_nearest: sampler_comparison;
+@group(3) @binding(0) var<uniform> shadow_casters: ShadowCasters;
+
+// The cube face that sees direction `d` from a point light: its largest axis, ties to x then y;
+// 0 +x, 1 −x, 2 +y, 3 −y, 4 +z, 5 −z.
+fn shadow_face(d: vec3<f32>) -> u32 {
+    let a = abs(d);
+    if (a.x >= a.y && a.x >= a.z) {
+        return select(1u, 0u, d.x >= 0.0);
+    }
+    if (a.y >= a.z) {
+        return select(3u, 2u, d.y >= 0.0);
+    }
+    return select(5u, 4u, d.z >= 0.0);
+}
+
+// (u, v, depth) of world point `p` in the map of view-projection `m`: u, v in [0, 1], v down.
+fn shadow_map_coord(m: mat4x4<f32>, p: vec3<f32>) -> vec3<f32> {
+    let c = m * vec4(p, 1.0);
+    let ndc = c.xyz / c.w;
+    return vec3(ndc.x * 0.5 + 0.5, 0.5 - ndc.y * 0.5, ndc.z);
+}
+
+// World size of one texel at distance `dist` along the map's view axis.
+fn shadow_texel_world(texel_world: f32, perspective: bool, dist: f32) -> f32 {
+    return select(texel_world, texel_world * max(dist, 0.0), perspective);
+}
+
+// A per-pixel angle in [0, 2π) (interleaved gradient noise of the screen position): rotates the
+// Poisson disk so its pattern turns into fine noise instead of banding.
+fn shadow_rotation(pixel: vec2<f32>) -> f32 {
+    return 6.2831853 * fract(52.9829189 * fract(dot(pixel, vec2(0.06711056, 0.00583715))));
+}
+
+// 1 where the point at map coordinate `t` (layer `layer`) is lit, 0 where shadowed, between at
+// filtered edges. Outside the map's square or depth range nothing is known: lit.
+fn shadow_compare(sl: ShadowLight, layer: u32, t: vec3<f32>, pixel: vec2<f32>) -> f32 {
+    if (any(t.xy < vec2(0.0)) || any(t.xy > vec2(1.0)) || t.z < 0.0 || t.z > 1.0) {
+        return 1.0;
+    }
+    let uv = t.xy * sl.uv_scale;
+    if (sl.shadow_filter == SHADOW_FILTER_HARD) {
+        return textureSampleCompareLevel(shadow_maps, shadow_nearest, uv, layer, t.z);
+    }
+    if (sl.shadow_filter == SHADOW_FILTER_POISSON) {
+        var disk = array<vec2<f32>, SHADOW_POISSON_TAPS>(
+            vec2(-0.94201624, -0.39906216), vec2(0.94558609, -0.76890725),
+            vec2(-0.09418410, -0.92938870), vec2(0.34495938, 0.29387760),
+            vec2(-0.91588581, 0.45771432), vec2(-0.81544232, -0.87912464),
+            vec2(-0.38277543, 0.27676845), vec2(0.97484398, 0.75648379),
+            vec2(0.44323325, -0.97511554), vec2(0.53742981, -0.47373420),
+            vec2(-0.26496911, -0.41893023), vec2(0.79197514, 0.19090188),
+            vec2(-0.24188840, 0.99706507), vec2(-0.81409955, 0.91437590),
+            vec2(0.19984126, 0.78641367), vec2(0.14383161, -0.14100790),
+        );
+        let a = shadow_rotation(pixel);
+        let rot = mat2x2(cos(a), sin(a), -sin(a), cos(a)) * (SHADOW_POISSON_RADIUS_TEXELS * sl.texel_uv);
+        // The taps stay inside the light's part of the layer (the rest is another size's border).
+        let hi = vec2(sl.uv_scale - 0.5 * sl.texel_uv);
+        var sum = 0.0;
+        for (var i = 0u; i < SHADOW_POISSON_TAPS; i++) {
+            let q = clamp(uv + rot * disk[i], vec2(0.5 * sl.texel_uv), hi);
+            sum += textureSampleCompareLevel(shadow_maps, shadow_linear, q, layer, t.z);
+        }
+        return sum / f32(SHADOW_POISSON_TAPS);
+    }
+    return textureSampleCompareLevel(shadow_maps, shadow_linear, uv, layer, t.z);
+}
+
+// How much of light `i` reaches world point `p` with unit normal `n`: 1 lit, 0 in a cast shadow.
+// The receiver is first moved along its normal by SHADOW_NORMAL_OFFSET_TEXELS texels of the
+// light's map at that point (the normal offset; the slope-scaled bias is the shadow pass's).
+fn shadow_visibility(i: u32, light: Light, p: vec3<f32>, n: vec3<f32>, pixel: vec2<f32>) -> f32 {
+    let sl = shadows.lights[i];
+    if (sl.layers == 0u) {
+        return 1.0;
+    }
+    var layer = sl.first_layer;
+    var dist = 0.0;
+#if EFFECT_POINT_LIGHTS
+    // Point and spot lights only: a directional light's position is not read.
+    let to_p = p - light.position.xyz;
+    if (sl.layers == 6u) {
+        dist = max(max(abs(to_p.x), abs(to_p.y)), abs(to_p.z));
+    }
+#if EFFECT_SPOT_LIGHTS
+    if (sl.layers == 1u && sl.perspective != 0u) {
+        dist = dot(to_p, light.spot_axis.xyz);
+    }
+#endif
+#endif
+    let offset = SHADOW_NORMAL_OFFSET_TEXELS * shadow_texel_world(sl.texel_world, sl.perspective != 0u, dist);
+    let q = p + n * offset;
+#if EFFECT_POINT_LIGHTS
+    // A point light's face is chosen after the offset (the offset point may cross into the next).
+    if (sl.layers == 6u) {
+        layer += shadow_face(q - light.position.xyz);
+    }
+#endif
+    let t = shadow_map_coord(shadows.matrices[min(layer, MAX_SHADOW_LAYERS - 1u)], q);
+    return shadow_compare(sl, layer, t, pixel);
+}
+
+// The shadow pass: an object's smooth mesh drawn into one layer of the light's maps, the layer
+// being the instance index (crates/shadelab-render/src/shadow_pass.rs draws one instance).
+@vertex
+fn vs_shadow(@location(0) position: vec3<f32>, @builtin(instance_index) layer: u32) -> @builtin(position) vec4<f32> {
+    return shadow_casters.matrices[min(layer, MAX_SHADOW_LAYERS - 1u)] * vec4(to_world(position), 1.0);
+}
+#endif

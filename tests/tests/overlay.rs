@@ -1,0 +1,85 @@
+//! The self-shadow boundary drawn over a render on lavapipe (`render --overlay terminator`): the
+//! overlay changes the image only near the projected boundary edges, and an edge behind an
+//! object is hidden.
+
+use glam::DVec3;
+use shadelab_model::scene::single_shape_scene;
+use shadelab_model::terminator::scene_terminator;
+use shadelab_model::{Camera, Shape};
+use shadelab_render::overlay_pass::{TERMINATOR_COLOR, render_image_with_lines};
+use shadelab_render::{LinearImage, RenderSettings, render_image};
+use shadelab_tests::*;
+
+const W: u32 = 480;
+const H: u32 = 270;
+/// How far (pixels) a changed pixel may lie from a projected edge: the lines are two pixels wide
+/// (shifted by one pixel right and up) and rasterized within half a pixel of the exact line.
+const NEAR_EDGE_PX: f64 = 2.5;
+
+fn is_overlay(p: [f32; 4]) -> bool {
+    (0..3).all(|c| p[c] == TERMINATOR_COLOR[c])
+}
+
+/// Distance from pixel centre `(x, y)` to the segment `a`–`b` in pixels.
+fn distance_to_segment(x: f64, y: f64, a: (f64, f64), b: (f64, f64)) -> f64 {
+    let (dx, dy) = (b.0 - a.0, b.1 - a.1);
+    let len2 = dx * dx + dy * dy;
+    let t = if len2 > 0.0 { (((x - a.0) * dx + (y - a.1) * dy) / len2).clamp(0.0, 1.0) } else { 0.0 };
+    ((x - a.0 - t * dx).powi(2) + (y - a.1 - t * dy).powi(2)).sqrt()
+}
+
+fn overlay_pixels(image: &LinearImage) -> usize {
+    image.pixels.iter().filter(|p| is_overlay(**p)).count()
+}
+
+#[test]
+fn the_overlay_changes_only_pixels_near_the_projected_boundary() {
+    let scenes = [shadelab_model::assets::figure_7_3_pyramid(), shadelab_model::scene::default_scene()];
+    for scene in scenes {
+        let settings = RenderSettings::default();
+        let edges = scene_terminator(&scene);
+        assert!(!edges.is_empty(), "{}", scene.name);
+        let plain = render_image(gpu(), &scene, W, H, &settings).unwrap();
+        let drawn = render_image_with_lines(gpu(), &scene, (W, H), &settings, &edges, TERMINATOR_COLOR).unwrap();
+        let projected: Vec<_> =
+            edges.iter().map(|s| (project(&scene.camera, s[0], W, H), project(&scene.camera, s[1], W, H))).collect();
+        let mut changed = 0;
+        for y in 0..H {
+            for x in 0..W {
+                let i = (y * W + x) as usize;
+                if plain.pixels[i] == drawn.pixels[i] {
+                    continue;
+                }
+                changed += 1;
+                assert!(is_overlay(drawn.pixels[i]), "{}: ({x}, {y}) changed to another colour", scene.name);
+                let (px, py) = (x as f64 + 0.5, y as f64 + 0.5);
+                let near = projected.iter().map(|&(a, b)| distance_to_segment(px, py, a, b)).fold(f64::MAX, f64::min);
+                assert!(near <= NEAR_EDGE_PX, "{}: ({x}, {y}) is {near:.1} px from every edge", scene.name);
+            }
+        }
+        assert!(changed > 0 && overlay_pixels(&drawn) >= changed, "{}: {changed} pixels changed", scene.name);
+        assert_eq!(overlay_pixels(&plain), 0, "{}: the shading itself made the overlay colour", scene.name);
+    }
+}
+
+#[test]
+fn an_edge_behind_an_object_is_hidden() {
+    // A line across the view behind the sphere (radius 1 at (0, 1, 0)), from one side to the other.
+    let scene = single_shape_scene("sphere", Shape::Sphere, 32);
+    let (a, b) = (DVec3::new(-3.0, 1.0, -2.0), DVec3::new(3.0, 1.0, -2.0));
+    let image = render_image_with_lines(gpu(), &scene, (W, H), &RenderSettings::default(), &[[a, b]], TERMINATOR_COLOR)
+        .unwrap();
+    let cam: &Camera = &scene.camera;
+    let count_near = |p: DVec3| {
+        let (cx, cy) = project(cam, p, W, H);
+        let mut n = 0;
+        for y in (cy as i64 - 4).max(0)..(cy as i64 + 5).min(H as i64) {
+            for x in (cx as i64 - 4).max(0)..(cx as i64 + 5).min(W as i64) {
+                n += is_overlay(image.pixels[(y as u32 * W + x as u32) as usize]) as usize;
+            }
+        }
+        n
+    };
+    assert_eq!(count_near(DVec3::new(0.0, 1.0, -2.0)), 0, "the line shows through the sphere");
+    assert!(count_near(DVec3::new(-2.5, 1.0, -2.0)) > 0 && count_near(DVec3::new(2.5, 1.0, -2.0)) > 0);
+}

@@ -191,6 +191,12 @@ case("spot-cone-past-90.gltf", "a spot light with an outer cone of 2 radians (pa
      with_light({"type": "spot", "spot": {"outerConeAngle": 2.0}}))
 case("light-range-zero.gltf", "a point light with range 0", "light 0: range 0 is not in [0.000001, 1000000000]",
      with_light({"type": "point", "range": 0}))
+case("shadow-resolution-too-small.gltf", "a light whose shadow map side in extras is 100 texels",
+     "light 0: extras.shadelab.shadow_resolution = 100 is not an integer in [256, 4096]",
+     with_light({"type": "point", "extras": {"shadelab": {"shadow_resolution": 100}}}))
+case("shadow-filter-unknown.gltf", "a light whose shadow filter in extras is \"vsm\"",
+     "light 0: extras.shadelab.shadow_filter = \"vsm\" is not one of hard, pcf, poisson",
+     with_light({"type": "directional", "extras": {"shadelab": {"shadow_filter": "vsm"}}}))
 case("camera-zero-fov.gltf", "a perspective camera with yfov 0", "camera 0: yfov 0 is not in (0, π)",
      edited(lambda d: (d.update(cameras=[{"type": "perspective", "perspective": {"yfov": 0, "znear": 0.1}}]),
                        d["nodes"].append({"camera": 0}), d["scenes"][0]["nodes"].append(1))))

@@ -14,6 +14,7 @@ pub use camera::{COMPOSED_ASPECT, Camera};
 pub use material::Material;
 
 use crate::params::*;
+use crate::shadows::{ShadowFilter, ShadowSettings};
 use glam::{DMat3, DMat4, DVec3};
 
 /// Analytic shapes, each in its own unit box `[-1, 1]³` of object space.
@@ -111,6 +112,11 @@ pub struct Overrides {
     pub falloff_form: Option<FalloffForm>,
     pub d0: Option<f64>,
     pub light: Option<LightKind>,
+    /// Every light casts shadows (`Some(true)`) or none does (`Some(false)`).
+    pub shadows: Option<bool>,
+    /// Every light's shadow map side, within `shadows::SHADOW_RESOLUTION` (clamped into it).
+    pub shadow_resolution: Option<u32>,
+    pub shadow_filter: Option<ShadowFilter>,
 }
 
 impl Scene {
@@ -147,6 +153,15 @@ impl Scene {
             }
             if let Some(d0) = o.d0 {
                 light.d0 = d0;
+            }
+            if let Some(on) = o.shadows {
+                light.shadow.casts = on;
+            }
+            if let Some(r) = o.shadow_resolution {
+                light.shadow = ShadowSettings { resolution: r, ..light.shadow }.clamped();
+            }
+            if let Some(f) = o.shadow_filter {
+                light.shadow.filter = f;
             }
         }
     }
@@ -218,5 +233,24 @@ mod tests {
         });
         assert!(s.materials.iter().all(|m| m.m == 0.0));
         assert!(s.lights.iter().all(|l| l.kind == LightKind::Point && l.falloff_alpha == 2.0));
+    }
+
+    #[test]
+    fn shadow_overrides_change_every_light() {
+        let mut s = default_scene();
+        assert!(s.lights.len() > 1);
+        let o = Overrides {
+            shadows: Some(false),
+            shadow_resolution: Some(512),
+            shadow_filter: Some(ShadowFilter::Poisson),
+            ..Default::default()
+        };
+        s.apply(&o);
+        let want = ShadowSettings { casts: false, resolution: 512, filter: ShadowFilter::Poisson };
+        assert!(s.lights.iter().all(|l| l.shadow == want), "{:?}", s.lights);
+        // Only what is given changes; a resolution outside the range is held to it.
+        s.apply(&Overrides { shadows: Some(true), shadow_resolution: Some(1 << 20), ..Default::default() });
+        let want = ShadowSettings { casts: true, resolution: 4096, ..want };
+        assert!(s.lights.iter().all(|l| l.shadow == want), "{:?}", s.lights);
     }
 }

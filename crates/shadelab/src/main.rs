@@ -25,6 +25,7 @@ fn main() -> ExitCode {
         Some(cli::Command::Bench(cli::BenchCommand::Effects(args))) => bench::effects::run(&args),
         Some(cli::Command::Bench(cli::BenchCommand::Load(args))) => bench::load::run(&args),
         Some(cli::Command::Bench(cli::BenchCommand::Mesh(args))) => bench::mesh::run(&args),
+        Some(cli::Command::Bench(cli::BenchCommand::Shadows(args))) => bench::shadows::run(&args),
         Some(cli::Command::Sweep) => sweep::run(),
         None => viewer::run(viewer::Options {
             screenshot: cli.screenshot,

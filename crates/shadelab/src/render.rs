@@ -3,8 +3,22 @@
 use crate::{Failure, cli};
 use anyhow::Context;
 use shadelab_model::gltf_io::{self, LoadedScene, SceneSettings};
+use shadelab_model::params::NamedValue;
 use shadelab_render::{AdapterChoice, Gpu, LinearImage, RenderSettings};
 use std::path::Path;
+
+/// What `render --overlay` draws over the image.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Overlay {
+    /// The self-shadow boundary: the edges where the side facing a light changes
+    /// (`shadelab_model::terminator`), in `overlay_pass::TERMINATOR_COLOR`.
+    Terminator,
+}
+
+impl NamedValue for Overlay {
+    const FLAG: &'static str = "--overlay";
+    const ALL: &'static [(&'static str, Self)] = &[("terminator", Overlay::Terminator)];
+}
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum ImageKind {
@@ -53,8 +67,15 @@ pub fn run(args: &cli::RenderArgs) -> Result<(), Failure> {
     }
     let gpu = Gpu::headless(AdapterChoice::from_env()).context("opening a GPU adapter")?;
     log::info!("adapter: {}", gpu.describe());
-    let image = shadelab_render::render_image(&gpu, &scene, width, height, &settings)
-        .map_err(|e| Failure::Usage(format!("{}: {e}", args.scene.scene)))?;
+    let image = if args.overlay.contains(&Overlay::Terminator) {
+        let edges = shadelab_model::terminator::scene_terminator(&scene);
+        log::info!("overlay terminator: {} edges", edges.len());
+        let color = shadelab_render::overlay_pass::TERMINATOR_COLOR;
+        shadelab_render::overlay_pass::render_image_with_lines(&gpu, &scene, (width, height), &settings, &edges, color)
+    } else {
+        shadelab_render::render_image(&gpu, &scene, width, height, &settings)
+    }
+    .map_err(|e| Failure::Usage(format!("{}: {e}", args.scene.scene)))?;
     save(&image, &args.output, kind).with_context(|| format!("writing {}", args.output.display()))?;
     let bad = image.nonfinite_count();
     if bad > 0 {

@@ -1,6 +1,7 @@
 //! The `shadelab` binary from the outside: every flag combination renders, every bad value exits
 //! 2 with one line naming the flag and its allowed range.
 
+use shadelab_model::shadows::{ShadowFilter, ShadowSettings};
 use std::path::PathBuf;
 use std::process::{Command, Output};
 
@@ -45,6 +46,10 @@ fn bad_values_exit_2_with_one_line_naming_flag_and_range() {
         (&["--falloff", "-2"], &["--falloff", "[0, 1000000]"]),
         (&["--falloff-form", "cubic"], &["--falloff-form", "quadratic, linear"]),
         (&["--d0", "0"], &["--d0", "[0.001, 1000]"]),
+        (&["--shadows", "maybe"], &["--shadows", "on, off"]),
+        (&["--shadow-resolution", "100"], &["--shadow-resolution", "[256, 4096]"]),
+        (&["--shadow-resolution", "big"], &["--shadow-resolution", "[256, 4096]"]),
+        (&["--shadow-filter", "vsm"], &["--shadow-filter", "hard, pcf, poisson"]),
         (&["--scene", "nowhere.gltf"], &["--scene", "default"]),
         (&["--output", "x.bmp"], &["--output", ".png, .exr"]),
         (&["--bogus"], &["--bogus"]),
@@ -93,6 +98,7 @@ fn every_shading_and_specular_combination_renders_a_png() {
 #[test]
 fn every_scene_flag_is_accepted() {
     let path = out_dir().join("flags.png");
+    let saved = out_dir().join("flags.gltf");
     let o = shadelab(&[
         "render",
         "--scene",
@@ -111,6 +117,14 @@ fn every_scene_flag_is_accepted() {
         "0.5",
         "--light",
         "point",
+        "--shadows",
+        "off",
+        "--shadow-resolution",
+        "512",
+        "--shadow-filter",
+        "poisson",
+        "--save-scene",
+        saved.to_str().unwrap(),
         "--width",
         "64",
         "--height",
@@ -119,6 +133,10 @@ fn every_scene_flag_is_accepted() {
         path.to_str().unwrap(),
     ]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    // The shadow flags reach every light (the saved scene holds them).
+    let lights = shadelab_model::gltf_io::load_scene(&saved).unwrap().scene.lights;
+    let want = ShadowSettings { casts: false, resolution: 512, filter: ShadowFilter::Poisson };
+    assert!(!lights.is_empty() && lights.iter().all(|l| l.shadow == want), "{lights:?}");
     for scene in ["default", "sphere", "cylinder", "pyramid", "cube"] {
         let o = shadelab(&[
             "render",
@@ -191,6 +209,26 @@ fn bench_rejects_a_bad_frame_count() {
     assert!(lines.len() == 1 && lines[0].contains("--out"), "{lines:?}");
 }
 
+/// The viewer and the benchmarks that take the scene flags take the shadow flags too: a bad
+/// value is refused by each before anything opens.
+#[test]
+fn viewer_and_bench_take_the_shadow_flags() {
+    for command in [&[][..], &["bench", "render"][..], &["bench", "load"][..]] {
+        for (flag, value, needle) in [
+            ("--shadows", "yes", "on, off"),
+            ("--shadow-resolution", "8192", "[256, 4096]"),
+            ("--shadow-filter", "soft", "hard, pcf, poisson"),
+        ] {
+            let mut args = command.to_vec();
+            args.extend([flag, value]);
+            let o = shadelab(&args);
+            assert_eq!(o.status.code(), Some(2), "{args:?}: {}", String::from_utf8_lossy(&o.stderr));
+            let lines = error_lines(&o);
+            assert!(lines.len() == 1 && lines[0].contains(flag) && lines[0].contains(needle), "{args:?}: {lines:?}");
+        }
+    }
+}
+
 #[test]
 fn help_exits_0() {
     let o = shadelab(&["render", "--help"]);
@@ -208,8 +246,15 @@ fn help_exits_0() {
         "--height",
         "--scene",
         "--output",
+        "--shadows",
+        "--shadow-resolution",
+        "--shadow-filter",
     ] {
         assert!(text.contains(flag), "{flag}");
+    }
+    // The shadow flags show their range and values.
+    for shown in ["[256, 4096]", "on, off", "hard, pcf, poisson"] {
+        assert!(text.contains(shown), "--help lacks '{shown}'");
     }
 }
 
@@ -293,26 +338,25 @@ fn bench_accuracy_quick_is_well_formed_and_orders_the_modes() {
 #[test]
 fn explain_and_bench_effects() {
     let png = out_dir().join("explain.png");
-    let o = shadelab(&[
-        "render",
-        "--explain",
-        "--scene",
-        "sphere",
-        "--light",
-        "directional",
-        "--specular",
-        "phong",
-        "--width",
-        "32",
-        "--height",
-        "18",
-        "--output",
-        png.to_str().unwrap(),
-    ]);
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-    let text = String::from_utf8_lossy(&o.stdout);
+    let explain = |extra: &[&str]| {
+        let mut args =
+            vec!["render", "--explain", "--scene", "sphere", "--light", "directional", "--specular", "phong"];
+        args.extend_from_slice(extra);
+        args.extend(["--width", "32", "--height", "18", "--output", png.to_str().unwrap()]);
+        let o = shadelab(&args);
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        String::from_utf8_lossy(&o.stdout).into_owned()
+    };
+    // The sphere on its ground casts a shadow onto it; `--shadows off` takes the effect out.
+    let text = explain(&[]);
+    assert!(
+        text.contains("pipeline [diffuse+phong+ambient+dir+shadows]") && text.contains("cast shadows: on"),
+        "{text}"
+    );
+    let text = explain(&["--shadows", "off"]);
     for needle in [
         "pipeline [diffuse+phong+ambient+dir]",
+        "cast shadows: off",
         "point lights: off — 0 in the scene",
         "Cook–Torrance specular: off — the specular model is phong",
         "absorption: off — nothing transmits",

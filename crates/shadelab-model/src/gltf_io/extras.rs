@@ -81,6 +81,8 @@ ranges! {
     Cone = params::CONE_ANGLE_F32;
     /// A light's range.
     LightRange = params::RANGE;
+    /// A light's shadow map side in texels.
+    ShadowSide = crate::shadows::SHADOW_RESOLUTION;
 }
 
 /// What a field in `R`'s range takes, for the error line.
@@ -111,6 +113,48 @@ impl<'de, R: InRange> Deserialize<'de> for Num<R> {
             .and_then(|x| R::RANGE.check(x).ok())
             .map(Num::from)
             .ok_or_else(|| de::Error::custom(in_range::<R>("a number")))
+    }
+}
+
+/// A whole number in `R`'s range (a shadow map's side).
+pub(super) struct Count<R>(pub u32, PhantomData<R>);
+
+impl<R> From<u32> for Count<R> {
+    fn from(n: u32) -> Self {
+        Count(n, PhantomData)
+    }
+}
+
+impl<R> Serialize for Count<R> {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        s.serialize_u32(self.0)
+    }
+}
+
+impl<'de, R: InRange> Deserialize<'de> for Count<R> {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        let v = Value::deserialize(d)?;
+        // A whole number written as 2048 or 2048.0; the range's bounds are below u32::MAX.
+        v.as_f64()
+            .filter(|x| x.fract() == 0.0)
+            .and_then(|x| R::RANGE.check(x).ok())
+            .map(|x| Count::from(x as u32))
+            .ok_or_else(|| de::Error::custom(in_range::<R>("an integer")))
+    }
+}
+
+/// `true` or `false` (whether a light casts shadows).
+pub(super) struct Flag(pub bool);
+
+impl Serialize for Flag {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        s.serialize_bool(self.0)
+    }
+}
+
+impl<'de> Deserialize<'de> for Flag {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        Value::deserialize(d)?.as_bool().map(Flag).ok_or_else(|| de::Error::custom("true or false"))
     }
 }
 

@@ -1,16 +1,18 @@
 //! Lights: `KHR_lights_punctual` directional, point and spot lights, placed by their nodes (a
 //! light shines along its node's −Z), mapped to the chapter's light sources (`I_L = E/π`, the
 //! falloff `1/(1 + α d²)`, the spot's cones, glTF's `range`) and back, with the exact parameters
-//! in `extras.shadelab`; at most `MAX_LIGHTS` are kept, and a file without lights gets a
-//! default one.
+//! and the shadow settings in `extras.shadelab`; at most `MAX_LIGHTS` are kept, and a file
+//! without lights gets a default one.
 
-use crate::shadows::ShadowSettings;
-use super::extras::{self, Cone, D0, Falloff, Intensity, LightRange, Named, Num, Rgb, Unit, Vec3, agrees};
+use super::extras::{
+    self, Cone, Count, D0, Falloff, Flag, Intensity, LightRange, Named, Num, Rgb, ShadowSide, Unit, Vec3, agrees,
+};
 use super::scene_file::{Reader, num, quat, rgb, vec3};
 use super::{GltfError, POINT_FALLOFF_ALPHA};
 use crate::brdf::safe_normalize;
 use crate::params::{self, FalloffForm, LightKind, NamedValue};
 use crate::scene::{Light, MAX_LIGHTS, Scene};
+use crate::shadows::{ShadowFilter, ShadowSettings};
 use glam::{DMat4, DQuat, DVec3};
 use gltf::json;
 use gltf::json::extensions::scene::khr_lights_punctual as khr;
@@ -38,6 +40,10 @@ struct LightExtras {
     outer_cone: Option<Num<Cone>>,
     #[serde(skip_serializing_if = "Option::is_none")]
     range: Option<Num<LightRange>>,
+    /// The light's `ShadowSettings` (`crate::shadows`).
+    casts_shadows: Option<Flag>,
+    shadow_resolution: Option<Count<ShadowSide>>,
+    shadow_filter: Option<Named<ShadowFilter>>,
 }
 
 impl Reader<'_> {
@@ -147,6 +153,15 @@ impl Reader<'_> {
         if let Some(v) = ex.range {
             light.range = Some(v.0);
         }
+        if let Some(c) = ex.casts_shadows {
+            light.shadow.casts = c.0;
+        }
+        if let Some(r) = ex.shadow_resolution {
+            light.shadow.resolution = r.0;
+        }
+        if let Some(f) = ex.shadow_filter {
+            light.shadow.filter = f.0;
+        }
         // glTF's f32 π/2 is a little above f64's: the cones are held to [0, π/2] after the check.
         let (inner, outer) = (light.inner_cone, light.outer_cone);
         let span = params::CONE_ANGLE_F32;
@@ -191,6 +206,10 @@ pub(super) fn write_light(i: usize, l: &Light) -> (Value, Value) {
         inner_cone: spot.then(|| l.inner_cone.into()),
         outer_cone: spot.then(|| l.outer_cone.into()),
         range: range.map(Num::from),
+        casts_shadows: Some(Flag(l.shadow.casts)),
+        // A validated light's side is in range; one that is not is written held to it.
+        shadow_resolution: Some(l.shadow.clamped().resolution.into()),
+        shadow_filter: Some(Named(l.shadow.filter)),
     };
     let mut light = json!({
         "type": kind,

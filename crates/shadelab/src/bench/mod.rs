@@ -6,3 +6,4 @@ pub mod effects;
 pub mod load;
 pub mod mesh;
 pub mod render;
+pub mod shadows;

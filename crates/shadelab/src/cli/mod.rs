@@ -13,6 +13,7 @@ use clap::{Args, Parser, Subcommand};
 use shadelab_model::gltf_io::SceneSettings;
 use shadelab_model::params::{self, PhongExponent};
 use shadelab_model::scene::BUILTIN_SCENES;
+use shadelab_model::shadows::{SHADOW_RESOLUTION, ShadowFilter};
 use shadelab_model::{FalloffForm, LightKind, ShadingMode, SpecularModel};
 use shadelab_render::RenderSettings;
 use std::path::PathBuf;
@@ -82,6 +83,32 @@ pub enum BenchCommand {
     /// Large meshes: generate spheres of about the given triangle counts as .glb and run
     /// `bench load` on each in a fresh process (under /usr/bin/time -v when installed).
     Mesh(BenchMeshArgs),
+    /// What shadow accuracy costs: every light's shadow map at each resolution × filter, the same
+    /// frame without shadows and the null-shader baseline, interleaved, each against the f64
+    /// reference's exact shadows. Writes a CSV, a Markdown table and a plot.
+    Shadows(BenchShadowsArgs),
+}
+
+#[derive(Args, Debug)]
+#[command(allow_negative_numbers = true)]
+pub struct BenchShadowsArgs {
+    /// A built-in scene or a glTF file.
+    #[arg(long, default_value = "default", value_name = "NAME|PATH")]
+    pub scene: String,
+    #[command(flatten)]
+    pub size: SizeArgs,
+    #[arg(long, value_name = "N", value_parser = values::count(FRAMES),
+          help = within("Measured frames per row (default 30; 5 with --quick)", FRAMES))]
+    pub frames: Option<u32>,
+    #[arg(long, value_name = "N", value_parser = values::count(WARMUP),
+          help = within("Warm-up frames per row (default 3; 1 with --quick)", WARMUP))]
+    pub warmup: Option<u32>,
+    /// Folder for shadows.csv, shadows.md and shadows.png.
+    #[arg(long, default_value = "bench-shadows", value_name = "DIR")]
+    pub output: PathBuf,
+    /// Resolutions 256, 1024 and 4096 only, 5 frames.
+    #[arg(long)]
+    pub quick: bool,
 }
 
 #[derive(Args, Debug)]
@@ -185,6 +212,17 @@ pub struct SceneArgs {
     /// at the origin).
     #[arg(long, value_name = "KIND", value_parser = values::named::<LightKind>())]
     pub light: Option<LightKind>,
+    /// Cast shadows from every light (on) or from none (off) [default: each light's own setting,
+    /// on unless a scene file says otherwise].
+    #[arg(long, value_name = "ON|OFF", value_parser = values::on_off())]
+    pub shadows: Option<bool>,
+    #[arg(long, value_name = "N", value_parser = values::count(SHADOW_RESOLUTION),
+          help = within("Shadow map side in texels of every light", SHADOW_RESOLUTION))]
+    pub shadow_resolution: Option<u32>,
+    /// Shadow map filter of every light: hard (one comparison), pcf (the hardware 2×2
+    /// comparison) or poisson (rotated Poisson-disk taps).
+    #[arg(long, value_name = "FILTER", value_parser = values::named::<ShadowFilter>())]
+    pub shadow_filter: Option<ShadowFilter>,
 }
 
 #[derive(Args, Debug)]
@@ -209,6 +247,11 @@ pub struct RenderArgs {
     /// Print the effects the scene calls for (the shader holds only those), each with its reason.
     #[arg(long)]
     pub explain: bool,
+    /// Draw over the image, comma-separated: terminator (the self-shadow boundary, the edges
+    /// where the side facing a light changes), depth-tested against the scene.
+    #[arg(long, value_name = "NAME,...", value_delimiter = ',',
+          value_parser = values::named::<crate::render::Overlay>())]
+    pub overlay: Vec<crate::render::Overlay>,
 }
 
 #[derive(Args, Debug)]

@@ -84,6 +84,16 @@ pub fn named<T: NamedValue + PartialEq + Send + Sync>() -> ModelValue<T> {
     ModelValue { parse: Arc::new(T::parse_named), possible: T::ALL.iter().map(|(n, _)| *n).collect() }
 }
 
+/// A switch: `on` (true) or `off` (false), both listed in `--help`.
+pub fn on_off() -> ModelValue<bool> {
+    let parse = |t: &str| match t.trim().to_ascii_lowercase().as_str() {
+        "on" => Ok(true),
+        "off" => Ok(false),
+        _ => Err(ParamError::Unknown { flag: String::new(), value: t.into(), allowed: "on, off".into() }),
+    };
+    ModelValue { parse: Arc::new(parse), possible: vec!["on", "off"] }
+}
+
 /// A numeric flag's help: what it sets, and its range as the model declares it.
 pub fn within(what: &str, range: ParamRange) -> String {
     format!("{what}, in [{}, {}]", range.min, range.max)
@@ -125,6 +135,9 @@ mod tests {
         let e = parse(&named::<ShadingMode>(), "shading", "toon").unwrap_err();
         assert!(e.contains("--shading: unknown value 'toon' (allowed: flat, gouraud, phong)"), "{e}");
         assert_eq!(parse(&real(params::M), "m", "0.25"), Ok(0.25));
+        let e = parse(&on_off(), "shadows", "yes").unwrap_err();
+        assert!(e.contains("--shadows: unknown value 'yes' (allowed: on, off)"), "{e}");
+        assert_eq!((parse(&on_off(), "shadows", "on"), parse(&on_off(), "shadows", "OFF")), (Ok(true), Ok(false)));
     }
 
     #[test]

@@ -1,7 +1,8 @@
 //! Tests of lights: `KHR_lights_punctual` kinds, cones, range, the light limit and the default
-//! light, and their round trip.
+//! light, the shadow settings, and their round trip.
 
 use super::*;
+use crate::shadows::{SHADOW_RESOLUTION, ShadowFilter, ShadowSettings};
 
 #[test]
 fn lights_spot_range_limit_and_default() {
@@ -112,4 +113,63 @@ fn spot_lights_and_range_are_read_from_khr_lights_punctual() {
     let s = load_scene_from_slice(&light(json!({ "type": "directional", "range": 3.0 }))).unwrap();
     assert_eq!(s.scene.lights[0].range, None);
     assert!(s.warnings.iter().any(|w| w.contains("range 3 ignored")), "{:?}", s.warnings);
+}
+
+/// One light with `extras` in a file of one triangle.
+fn light_with_extras(extras: Value) -> Vec<u8> {
+    triangle(json!({
+        "extensionsUsed": ["KHR_lights_punctual"],
+        "extensions": { "KHR_lights_punctual": { "lights": [{ "type": "point", "extras": extras }] } },
+        "scenes": [{ "nodes": [0, 1] }],
+        "nodes": [{ "mesh": 0 }, { "translation": [0, 2, 0], "extensions": { "KHR_lights_punctual": { "light": 0 } } }],
+    }))
+}
+
+#[test]
+fn shadow_settings_round_trip_exactly() {
+    let mut scene = Scene::builtin("default").unwrap();
+    let settings = [
+        ShadowSettings { casts: false, resolution: 256, filter: ShadowFilter::Hard },
+        ShadowSettings { casts: true, resolution: 4096, filter: ShadowFilter::Poisson },
+        ShadowSettings { casts: true, resolution: 1000, filter: ShadowFilter::Pcf },
+    ];
+    scene.lights.push(Light::spot(DVec3::new(1.0, 3.0, 0.0), DVec3::NEG_Y, [1.0; 3], 2.0, 0.1, (0.2, 0.5)));
+    for (l, s) in scene.lights.iter_mut().zip(settings) {
+        l.shadow = s;
+    }
+    let none = SceneSettings::default();
+    for bytes in [scene_to_glb(&scene, &none), scene_to_gltf_json(&scene, &none).into_bytes()] {
+        let back = load(&bytes).scene;
+        assert_same_scene(&scene, &back);
+        assert_eq!(back.lights.iter().map(|l| l.shadow).collect::<Vec<_>>(), settings);
+    }
+    // A file without the keys gets the model's defaults; each key alone changes only itself.
+    let s = load(&light_with_extras(json!({}))).scene;
+    assert_eq!(s.lights[0].shadow, ShadowSettings::default());
+    let s = load(&light_with_extras(json!({ "shadelab": { "shadow_filter": "hard", "shadow_resolution": 512.0 } })));
+    let want = ShadowSettings { resolution: 512, filter: ShadowFilter::Hard, ..Default::default() };
+    assert_eq!(s.scene.lights[0].shadow, want);
+}
+
+#[test]
+fn a_bad_shadow_setting_is_one_error_line_naming_the_key() {
+    let (lo, hi) = (SHADOW_RESOLUTION.min, SHADOW_RESOLUTION.max);
+    for (bad, says) in [
+        (
+            json!({ "shadow_resolution": 128 }),
+            format!("extras.shadelab.shadow_resolution = 128 is not an integer in [{lo}, {hi}]"),
+        ),
+        (json!({ "shadow_resolution": 8192 }), format!("shadow_resolution = 8192 is not an integer in [{lo}, {hi}]")),
+        (json!({ "shadow_resolution": 1024.5 }), "shadow_resolution = 1024.5 is not an integer".into()),
+        (json!({ "shadow_resolution": "high" }), "shadow_resolution = \"high\" is not an integer".into()),
+        (
+            json!({ "shadow_filter": "vsm" }),
+            "extras.shadelab.shadow_filter = \"vsm\" is not one of hard, pcf, poisson".into(),
+        ),
+        (json!({ "casts_shadows": "yes" }), "extras.shadelab.casts_shadows = \"yes\" is not true or false".into()),
+        (json!({ "casts_shadows": null }), "extras.shadelab.casts_shadows = null is not true or false".into()),
+    ] {
+        let e = load_scene_from_slice(&light_with_extras(json!({ "shadelab": bad }))).unwrap_err().to_string();
+        assert!(e.starts_with("<memory>: light 0: ") && e.contains(&says) && !e.contains('\n'), "{e}\nlacks: {says}");
+    }
 }

@@ -69,6 +69,7 @@ pub(crate) fn assert_same_scene(a: &Scene, b: &Scene) {
             (y.kind, y.color, y.intensity, y.falloff_form, y.falloff_alpha, y.d0)
         );
         assert_eq!((x.inner_cone, x.outer_cone, x.range), (y.inner_cone, y.outer_cone, y.range));
+        assert_eq!(x.shadow, y.shadow);
         near(x.position, y.position, "light position");
         near(x.direction, y.direction, "light direction");
     }

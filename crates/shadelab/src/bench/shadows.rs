@@ -1,0 +1,459 @@
+//! `shadelab bench shadows`: what shadow accuracy costs (docs/model.md §6). One scene with every
+//! light's shadow map at each resolution × filter, beside the same frame without shadows and the
+//! null-shader baseline, all interleaved frame by frame; each against the f64 reference's exact
+//! shadows (image RMSE and the share of pixels whose lit/shadowed state disagrees). Writes a CSV,
+//! a Markdown table and a plot of error share against time.
+
+use crate::{Failure, cli};
+use anyhow::Context;
+use plotters::coord::combinators::BindKeyPoints;
+use plotters::prelude::*;
+use shadelab_model::Scene;
+use shadelab_model::reference::render_reference;
+use shadelab_model::shadows::ShadowFilter;
+use shadelab_render::image_error;
+use shadelab_render::timing::{FrameTimer, TimeSource, median, quantile_sorted};
+use shadelab_render::{Gpu, Program, RenderSettings, Renderer, SceneGpu, Target, target};
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+
+/// Shadow-map sides of the full run (the model's whole range, `SHADOW_RESOLUTION`).
+pub const RESOLUTIONS: [u32; 5] = [256, 512, 1024, 2048, 4096];
+/// Sides of `--quick`: both ends and the middle.
+pub const QUICK_RESOLUTIONS: [u32; 3] = [256, 1024, 4096];
+/// Every filter, in the order of the table.
+pub const FILTERS: [ShadowFilter; 3] = [ShadowFilter::Hard, ShadowFilter::Pcf, ShadowFilter::Poisson];
+
+/// What one row measures.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Config {
+    /// Every light casting at this map side with this filter.
+    Shadows { resolution: u32, filter: ShadowFilter },
+    /// The same frame with no light casting (no shadow pass).
+    Off,
+    /// `Program::NullBaseline`: the same geometry, a constant colour.
+    Baseline,
+}
+
+impl Config {
+    pub fn name(self) -> String {
+        match self {
+            Config::Shadows { resolution, filter } => format!("{resolution} {}", filter_name(filter)),
+            Config::Off => "shadows off".into(),
+            Config::Baseline => "null-shader baseline".into(),
+        }
+    }
+}
+
+pub fn filter_name(f: ShadowFilter) -> &'static str {
+    match f {
+        ShadowFilter::Hard => "hard",
+        ShadowFilter::Pcf => "pcf",
+        ShadowFilter::Poisson => "poisson",
+    }
+}
+
+/// One measured row.
+#[derive(Clone, Debug)]
+pub struct Row {
+    pub config: Config,
+    /// The map side the GPU used (the memory budget may halve a requested 4096); `None` without maps.
+    pub side: Option<u32>,
+    pub median_ms: f64,
+    pub p10_ms: f64,
+    pub p90_ms: f64,
+    pub ratio_to_baseline: f64,
+    pub ratio_to_off: f64,
+    /// RMSE against the reference (linear RGB); `None` for the baseline.
+    pub rmse: Option<f64>,
+    /// Share of pixels whose lit/shadowed state disagrees with the reference; `None` for the baseline.
+    pub share_disagreeing: Option<f64>,
+}
+
+/// Everything a run produced.
+pub struct Report {
+    pub rows: Vec<Row>,
+    pub scene: String,
+    pub size: (u32, u32),
+    pub frames: usize,
+    pub warmup: usize,
+    pub device: String,
+    pub time_source: TimeSource,
+    pub command: String,
+    pub seconds: f64,
+}
+
+/// The scene with every light casting at `resolution` with `filter`.
+fn with_shadows(scene: &Scene, resolution: u32, filter: ShadowFilter) -> Scene {
+    let mut s = scene.clone();
+    for l in &mut s.lights {
+        l.shadow.casts = true;
+        l.shadow.resolution = resolution;
+        l.shadow.filter = filter;
+    }
+    s
+}
+
+/// Measure `scene` at `size` for every resolution × filter, shadows off and the baseline.
+pub fn run_plan(
+    gpu: &Gpu,
+    scene: &Scene,
+    resolutions: &[u32],
+    size: (u32, u32),
+    frames: usize,
+    warmup: usize,
+    command: &str,
+) -> Result<Report, Failure> {
+    let start = std::time::Instant::now();
+    let settings = RenderSettings::default();
+    let mut r = Renderer::new(&gpu.device, &gpu.queue);
+    let timer = FrameTimer::new(&gpu.device, &gpu.queue);
+    let target = Target::new(&gpu.device, size.0, size.1, target::HDR_FORMAT);
+    let upload = |r: &mut Renderer, s: &Scene| r.upload(s).map_err(|e| Failure::Usage(format!("{}: {e}", scene.name)));
+    // One upload per resolution keeps each map array allocated once: a filter is only a uniform,
+    // a new side would reallocate the maps between interleaved frames.
+    let mut off_scene = scene.clone();
+    off_scene.set_shadows(false);
+    let mut uploads: Vec<SceneGpu> = vec![upload(&mut r, &off_scene)?];
+    let mut configs: Vec<(Config, usize, Scene)> =
+        vec![(Config::Baseline, 0, off_scene.clone()), (Config::Off, 0, off_scene.clone())];
+    for &resolution in resolutions {
+        uploads.push(upload(&mut r, &with_shadows(scene, resolution, ShadowFilter::Pcf))?);
+        for filter in FILTERS {
+            configs.push((
+                Config::Shadows { resolution, filter },
+                uploads.len() - 1,
+                with_shadows(scene, resolution, filter),
+            ));
+        }
+    }
+    let program = |c: Config, s: &Scene| match c {
+        Config::Baseline => Program::NullBaseline,
+        _ => Program::for_scene(s, &settings),
+    };
+    // Interleaved as `FrameTimer::interleaved`, each row with its own scene (its shadow settings).
+    for (c, g, s) in &configs {
+        r.write_uniforms(&uploads[*g], s, &target, &settings);
+        for _ in 0..warmup.max(1) {
+            timer.frame(&mut r, &uploads[*g], &target, program(*c, s));
+        }
+    }
+    let mut samples = vec![Vec::with_capacity(frames); configs.len()];
+    for _ in 0..frames {
+        for (i, (c, g, s)) in configs.iter().enumerate() {
+            r.write_uniforms(&uploads[*g], s, &target, &settings);
+            samples[i].push(timer.frame(&mut r, &uploads[*g], &target, program(*c, s)));
+        }
+    }
+    // The exact image, once: the reference's shadows do not depend on the map.
+    let reference =
+        render_reference(&with_shadows(scene, RESOLUTIONS[0], ShadowFilter::Pcf), settings.specular, size.0, size.1);
+    let mut images = Vec::new();
+    for (c, g, s) in &configs {
+        let image = (*c != Config::Baseline).then(|| {
+            r.render(&uploads[*g], s, &target, &settings);
+            target::read_back(&gpu.device, &gpu.queue, &target)
+        });
+        images.push(image);
+    }
+    let off_image = images[1].clone().expect("the shadows-off row is rendered");
+    let baseline_ms = median(&mut samples[0]);
+    let off_ms = median(&mut samples[1]);
+    let mut rows = Vec::new();
+    for (i, (c, g, _)) in configs.iter().enumerate() {
+        let m = median(&mut samples[i]);
+        let side = match c {
+            Config::Shadows { .. } => {
+                r.shadow_plan(&uploads[*g]).and_then(|p| p.lights.iter().flatten().map(|l| l.resolution).max())
+            }
+            _ => None,
+        };
+        let (rmse, share) = match &images[i] {
+            Some(img) => (
+                Some(image_error::compare(img, &reference).stats.rmse),
+                Some(image_error::shadow_disagreement(img, &off_image, &reference).stats.share_disagreeing),
+            ),
+            None => (None, None),
+        };
+        rows.push(Row {
+            config: *c,
+            side,
+            median_ms: m,
+            p10_ms: quantile_sorted(&samples[i], 0.1),
+            p90_ms: quantile_sorted(&samples[i], 0.9),
+            ratio_to_baseline: m / baseline_ms,
+            ratio_to_off: m / off_ms,
+            rmse,
+            share_disagreeing: share,
+        });
+    }
+    // Shadow rows first (resolution, then filter), then shadows off, then the baseline.
+    rows.rotate_left(2);
+    let n = rows.len();
+    rows.swap(n - 2, n - 1);
+    Ok(Report {
+        rows,
+        scene: scene.name.clone(),
+        size,
+        frames,
+        warmup,
+        device: gpu.describe(),
+        time_source: timer.source(),
+        command: command.to_string(),
+        seconds: start.elapsed().as_secs_f64(),
+    })
+}
+
+/// The CSV header; one line per row follows (empty fields where a row has no value).
+pub const CSV_HEADER: &str = "config,resolution,map_side,filter,frames,median_ms,p10_ms,p90_ms,ratio_to_baseline,ratio_to_off,rmse,share_disagreeing";
+
+pub fn csv(report: &Report) -> String {
+    let mut s = String::from(CSV_HEADER);
+    s.push('\n');
+    for r in &report.rows {
+        let (kind, res, filter) = match r.config {
+            Config::Shadows { resolution, filter } => ("shadows", resolution.to_string(), filter_name(filter)),
+            Config::Off => ("off", String::new(), ""),
+            Config::Baseline => ("baseline", String::new(), ""),
+        };
+        let opt = |v: Option<f64>| v.map_or(String::new(), |x| format!("{x:.6e}"));
+        let _ = writeln!(
+            s,
+            "{kind},{res},{},{filter},{},{:.4},{:.4},{:.4},{:.4},{:.4},{},{}",
+            r.side.map_or(String::new(), |v| v.to_string()),
+            report.frames,
+            r.median_ms,
+            r.p10_ms,
+            r.p90_ms,
+            r.ratio_to_baseline,
+            r.ratio_to_off,
+            opt(r.rmse),
+            opt(r.share_disagreeing)
+        );
+    }
+    s
+}
+
+/// The Markdown table with the command, device and time source above it.
+pub fn markdown(report: &Report) -> String {
+    let mut s = String::new();
+    let _ = writeln!(s, "# What shadow accuracy costs — `{}`\n", report.command);
+    let _ = writeln!(
+        s,
+        "Scene '{}', {}×{}, Phong shading with Cook–Torrance specular. Device: {}. Time: {}, median of {} frames after {} warm-up, every row interleaved frame by frame. Error: against the f64 ray-cast reference with exact shadow rays. Run took {:.0} s.\n",
+        report.scene,
+        report.size.0,
+        report.size.1,
+        report.device,
+        report.time_source.label(),
+        report.frames,
+        report.warmup,
+        report.seconds
+    );
+    let _ = writeln!(
+        s,
+        "Map side: what the GPU used (every layer fits in `SHADOW_MAP_BUDGET_BYTES`, so a request may be halved). ×base: over the null-shader baseline; ×off: over the same frame without shadows. Disagree: share of pixels lit on one side and in a cast shadow on the other.\n"
+    );
+    let _ = writeln!(s, "| shadows | map side | median ms | p10–p90 ms | ×base | ×off | RMSE | disagree |");
+    let _ = writeln!(s, "|---|---:|---:|---|---:|---:|---:|---:|");
+    for r in &report.rows {
+        let _ = writeln!(
+            s,
+            "| {} | {} | {:.3} | {:.3}–{:.3} | {:.2} | {:.2} | {} | {} |",
+            r.config.name(),
+            r.side.map_or(String::new(), |v| v.to_string()),
+            r.median_ms,
+            r.p10_ms,
+            r.p90_ms,
+            r.ratio_to_baseline,
+            r.ratio_to_off,
+            r.rmse.map_or(String::new(), |v| format!("{v:.3e}")),
+            r.share_disagreeing.map_or(String::new(), |v| format!("{:.3} %", v * 100.0)),
+        );
+    }
+    s
+}
+
+/// Text is drawn with egui's bundled font, so the plot needs no system fonts (as `plots.rs`).
+fn register_font() {
+    static ONCE: std::sync::Once = std::sync::Once::new();
+    ONCE.call_once(|| {
+        plotters::style::register_font("sans-serif", FontStyle::Normal, epaint_default_fonts::UBUNTU_LIGHT)
+            .unwrap_or_else(|_| panic!("egui's bundled font is a valid TrueType font"));
+    });
+}
+
+fn plot_err(e: impl std::fmt::Display) -> anyhow::Error {
+    anyhow::anyhow!("drawing the plot: {e}")
+}
+
+/// Axis labels at 1, 2, 5 × 10^k in `lo..hi` (a log axis otherwise labels every step or only
+/// powers of ten).
+fn nice_points(lo: f64, hi: f64) -> Vec<f64> {
+    let mut out = Vec::new();
+    let mut decade = 10f64.powf(lo.log10().floor());
+    while decade <= hi {
+        out.extend([1.0, 2.0, 5.0].map(|m| m * decade).into_iter().filter(|v| (lo..hi).contains(v)));
+        decade *= 10.0;
+    }
+    out
+}
+
+fn filter_color(f: ShadowFilter) -> RGBColor {
+    match f {
+        ShadowFilter::Hard => RGBColor(200, 30, 30),
+        ShadowFilter::Pcf => RGBColor(35, 90, 180),
+        ShadowFilter::Poisson => RGBColor(30, 140, 50),
+    }
+}
+
+/// Disagreeing share against median GPU time (log x), a line per filter through its
+/// resolutions (each point labelled with its map side), the shadows-off and baseline times as
+/// vertical lines.
+pub fn plot(report: &Report, path: &Path) -> anyhow::Result<()> {
+    register_font();
+    let size = (1200u32, 800u32);
+    let mut buf = vec![0u8; (size.0 * size.1 * 3) as usize];
+    let time_of = |c: Config| report.rows.iter().find(|r| r.config == c).map_or(f64::NAN, |r| r.median_ms);
+    let (off_ms, base_ms) = (time_of(Config::Off), time_of(Config::Baseline));
+    let off_share = report
+        .rows
+        .iter()
+        .find(|r| r.config == Config::Off)
+        .and_then(|r| r.share_disagreeing)
+        .map_or(String::new(), |v| format!(", {:.2} % disagree", v * 100.0));
+    {
+        let root = BitMapBackend::with_buffer(&mut buf, size).into_drawing_area();
+        root.fill(&WHITE).map_err(plot_err)?;
+        let times = report.rows.iter().map(|r| r.median_ms).filter(|v| v.is_finite() && *v > 0.0);
+        let (lo, hi) = times.fold((f64::INFINITY, 0.0f64), |(a, b), v| (a.min(v), b.max(v)));
+        let (lo, hi) = if lo.is_finite() && hi > lo { (lo / 1.3, hi * 1.3) } else { (1e-3, 1.0) };
+        // The shadow rows set the height: shadows off disagrees wherever the reference is shadowed.
+        let ymax = report
+            .rows
+            .iter()
+            .filter(|r| matches!(r.config, Config::Shadows { .. }))
+            .filter_map(|r| r.share_disagreeing)
+            .fold(0.0, f64::max)
+            * 100.0
+            * 1.15
+            + 1e-3;
+        let mut chart = ChartBuilder::on(&root)
+            .caption(
+                format!(
+                    "Shadow error vs time, '{}' {}×{}: {} ({})",
+                    report.scene,
+                    report.size.0,
+                    report.size.1,
+                    report.device,
+                    report.time_source.label()
+                ),
+                ("sans-serif", 18),
+            )
+            .margin(14)
+            .x_label_area_size(45)
+            .y_label_area_size(70)
+            .build_cartesian_2d((lo..hi).log_scale().with_key_points(nice_points(lo, hi)), 0.0..ymax)
+            .map_err(plot_err)?;
+        chart
+            .configure_mesh()
+            .x_desc("median GPU ms per frame (log)")
+            .y_desc("pixels with lit/shadowed state disagreeing with the reference, %")
+            .x_label_formatter(&|v| format!("{v}"))
+            .draw()
+            .map_err(plot_err)?;
+        for (ms, name, color) in
+            [(off_ms, "shadows off", RGBColor(110, 110, 110)), (base_ms, "null-shader baseline", BLACK)]
+        {
+            if ms.is_finite() && ms > 0.0 {
+                chart
+                    .draw_series(LineSeries::new([(ms, 0.0), (ms, ymax)], color.stroke_width(1)))
+                    .map_err(plot_err)?
+                    .label(format!(
+                        "{name} ({ms:.3} ms{})",
+                        if name == "shadows off" { off_share.clone() } else { String::new() }
+                    ))
+                    .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], color.stroke_width(2)));
+            }
+        }
+        for filter in FILTERS {
+            let color = filter_color(filter);
+            // Hard and PCF often coincide: PCF's labels go below its points.
+            let label_offset = if filter == ShadowFilter::Pcf { (6, 6) } else { (6, -16) };
+            let pts: Vec<(f64, f64, String, bool)> = report
+                .rows
+                .iter()
+                .filter_map(|r| match r.config {
+                    Config::Shadows { resolution, filter: f } if f == filter => {
+                        let side = r.side.unwrap_or(resolution);
+                        let label =
+                            if side == resolution { format!("{side}") } else { format!("{resolution} (used {side})") };
+                        Some((r.median_ms, r.share_disagreeing? * 100.0, label, side != resolution))
+                    }
+                    _ => None,
+                })
+                .collect();
+            chart
+                .draw_series(LineSeries::new(pts.iter().map(|p| (p.0, p.1)), color.stroke_width(2)))
+                .map_err(plot_err)?
+                .label(filter_name(filter))
+                .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], color.stroke_width(3)));
+            chart
+                .draw_series(pts.iter().map(|p| {
+                    EmptyElement::at((p.0, p.1))
+                        + Circle::new((0, 0), 4, color.filled())
+                        + Text::new(
+                            p.2.clone(),
+                            // A halved map lands on the smaller side's point: its label one line lower.
+                            (label_offset.0, label_offset.1 + if p.3 { 14 } else { 0 }),
+                            ("sans-serif", 13).into_font().color(&color),
+                        )
+                }))
+                .map_err(plot_err)?;
+        }
+        chart
+            .configure_series_labels()
+            .position(SeriesLabelPosition::UpperLeft)
+            .background_style(WHITE.mix(0.85))
+            .border_style(BLACK)
+            .label_font(("sans-serif", 14))
+            .draw()
+            .map_err(plot_err)?;
+        root.present().map_err(plot_err)?;
+    }
+    image::RgbImage::from_raw(size.0, size.1, buf).ok_or_else(|| anyhow::anyhow!("plot buffer size"))?.save(path)?;
+    Ok(())
+}
+
+/// Files a run writes into its output folder.
+pub const OUTPUTS: [&str; 3] = ["shadows.csv", "shadows.md", "shadows.png"];
+
+pub fn write_outputs(report: &Report, dir: &Path) -> anyhow::Result<Vec<PathBuf>> {
+    std::fs::create_dir_all(dir).with_context(|| format!("creating {}", dir.display()))?;
+    let paths: Vec<PathBuf> = OUTPUTS.iter().map(|f| dir.join(f)).collect();
+    std::fs::write(&paths[0], csv(report)).with_context(|| format!("writing {}", paths[0].display()))?;
+    std::fs::write(&paths[1], markdown(report)).with_context(|| format!("writing {}", paths[1].display()))?;
+    plot(report, &paths[2]).with_context(|| format!("writing {}", paths[2].display()))?;
+    Ok(paths)
+}
+
+/// `shadelab bench shadows`.
+pub fn run(args: &cli::BenchShadowsArgs) -> Result<(), Failure> {
+    let resolutions: &[u32] = if args.quick { &QUICK_RESOLUTIONS } else { &RESOLUTIONS };
+    let frames = args.frames.unwrap_or(if args.quick { 5 } else { 30 }) as usize;
+    let warmup = args.warmup.unwrap_or(if args.quick { 1 } else { 3 }) as usize;
+    let scene = cli::scene(&cli::SceneArgs { scene: args.scene.clone(), ..cli::SceneArgs::default() })?;
+    // A folder that cannot be made is the user's to fix, and is found before the work.
+    std::fs::create_dir_all(&args.output)
+        .map_err(|e| Failure::Usage(format!("--output: cannot create folder '{}': {e}", args.output.display())))?;
+    let gpu = Gpu::headless(shadelab_render::AdapterChoice::from_env()).context("opening a GPU adapter")?;
+    let command = std::iter::once("shadelab".to_string()).chain(std::env::args().skip(1)).collect::<Vec<_>>().join(" ");
+    eprintln!("# shadelab bench shadows — {} rows on {}", resolutions.len() * FILTERS.len() + 2, gpu.describe());
+    let report = run_plan(&gpu, &scene, resolutions, args.size.pixels(), frames, warmup, &command)?;
+    let paths = write_outputs(&report, &args.output)?;
+    print!("{}", markdown(&report));
+    for p in paths {
+        println!("wrote {}", p.display());
+    }
+    Ok(())
+}

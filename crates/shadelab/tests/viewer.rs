@@ -279,3 +279,27 @@ fn a_light_can_become_a_spot_light_in_the_panel() {
     // Outside its 45° cone the point light's share is gone: the ground's edges darken.
     assert!(changed_view_pixels(&before, &after) > 2000, "{}", changed_view_pixels(&before, &after));
 }
+
+/// A light's "casts shadows" box in its panel section switches that light's shadows, and only its.
+#[test]
+fn a_lights_casts_shadows_box_switches_its_shadows() {
+    let mut h = harness();
+    let before = h.state_mut().scene_mut().lights.clone();
+    assert!(before.iter().all(|l| l.shadow.casts));
+    // Collapsed sections show no shadow controls.
+    assert!(h.query_by_label("casts shadows").is_none());
+    h.get_by_label("L1 — directional").click();
+    h.run_steps(2);
+    h.get_by_label("casts shadows").click();
+    h.run_steps(3);
+    let after = h.state_mut().scene_mut().lights.clone();
+    assert!(!after[0].shadow.casts, "the box did not switch L1's shadows off");
+    assert_eq!(
+        (after[0].shadow.resolution, after[0].shadow.filter),
+        (before[0].shadow.resolution, before[0].shadow.filter)
+    );
+    assert_eq!(after[1..], before[1..], "another light changed");
+    h.get_by_label("casts shadows").click();
+    h.run_steps(2);
+    assert!(h.state_mut().scene_mut().lights[0].shadow.casts);
+}

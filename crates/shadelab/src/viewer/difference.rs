@@ -3,12 +3,14 @@
 //! beside the mode's GPU time. The reference is ray-cast on a worker thread, so the viewer keeps
 //! drawing while it is computed; it is computed again only when the scene, the camera, the
 //! specular model or the size changes (a change of shading mode reuses it). Its legend is drawn
-//! with the other overlays.
+//! with the other overlays. In place of the FLIP map it can show the shadow error map: where the
+//! GPU's lit/shadowed state (its render with shadows against the same with them off) disagrees
+//! with the reference's cast shadows, with the shares of false and missed shadow.
 
 use eframe::egui;
 use shadelab_model::reference::{ReferenceImage, render_reference};
 use shadelab_model::{Scene, ShadingMode, SpecularModel};
-use shadelab_render::image_error::{self, ErrorStats};
+use shadelab_render::image_error::{self, ErrorStats, ShadowStats};
 use shadelab_render::{RenderSettings, Renderer, SceneGpu, Target, target};
 use std::sync::Arc;
 use std::sync::mpsc::{Receiver, channel};
@@ -26,13 +28,34 @@ struct ReferenceKey {
     size: (u32, u32),
 }
 
+/// Which error map the difference view shows.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum DifferenceKind {
+    /// The FLIP error of the image (magma scale).
+    #[default]
+    Flip,
+    /// Where the lit/shadowed state disagrees with the reference (`image_error::ShadowPixel`).
+    Shadow,
+}
+
+/// The map on show: what it is of, its texture, its numbers (the shadow numbers with the
+/// shadow error map).
+struct Shown {
+    key: ReferenceKey,
+    shading: ShadingMode,
+    kind: DifferenceKind,
+    texture: egui::TextureHandle,
+    stats: ErrorStats,
+    shadow: Option<ShadowStats>,
+}
+
 #[derive(Default)]
 pub struct DifferenceView {
     pub enabled: bool,
+    pub kind: DifferenceKind,
     reference: Option<(ReferenceKey, Arc<ReferenceImage>)>,
     pending: Option<(ReferenceKey, Receiver<ReferenceImage>)>,
-    /// The map on show: what it is of, its texture, its numbers.
-    shown: Option<(ReferenceKey, ShadingMode, egui::TextureHandle, ErrorStats)>,
+    shown: Option<Shown>,
     /// Whether `shown` matches the state of the last update.
     current: bool,
 }
@@ -49,7 +72,12 @@ pub fn difference_size(w: u32, h: u32) -> (u32, u32) {
 impl DifferenceView {
     /// The numbers of the map on show, if it matches the current state.
     pub fn stats(&self) -> Option<ErrorStats> {
-        self.shown.as_ref().filter(|_| self.current).map(|s| s.3)
+        self.shown.as_ref().filter(|_| self.current).map(|s| s.stats)
+    }
+
+    /// The shadow numbers of the map on show, if it is the current shadow error map.
+    pub fn shadow_stats(&self) -> Option<ShadowStats> {
+        self.shown.as_ref().filter(|_| self.current).and_then(|s| s.shadow)
     }
 
     /// Whether a reference is being computed.
@@ -71,12 +99,13 @@ impl DifferenceView {
         let size = difference_size(view_size.0, view_size.1);
         let key = ReferenceKey { scene: scene.clone(), specular: settings.specular, size };
         self.current = false;
-        if let Some((k, shading, tex, _)) = &self.shown
-            && *k == key
-            && *shading == settings.shading
+        if let Some(s) = &self.shown
+            && s.key == key
+            && s.shading == settings.shading
+            && s.kind == self.kind
         {
             self.current = true;
-            return Some(tex.id());
+            return Some(s.texture.id());
         }
         // One worker at a time: a finished one hands its image over (even if the view has moved
         // on since; it is then replaced), and a new one starts only for the latest key.
@@ -109,10 +138,24 @@ impl DifferenceView {
         renderer.render(gpu_scene, scene, &target, settings);
         let image = target::read_back(&renderer.device, &renderer.queue, &target);
         let cmp = image_error::compare(&image, &reference);
-        let color = egui::ColorImage::from_rgb([size.0 as usize, size.1 as usize], &cmp.flip_map_rgb8);
-        let tex = ctx.load_texture("difference from reference", color, egui::TextureOptions::LINEAR);
-        let id = tex.id();
-        self.shown = Some((key, settings.shading, tex, cmp.stats));
+        let (rgb, shadow) = match self.kind {
+            DifferenceKind::Flip => (cmp.flip_map_rgb8, None),
+            DifferenceKind::Shadow => {
+                // The same frame with every light's shadows off (its permutation may draw with
+                // the uber pipeline meanwhile, whose shadow uniform is then zeroed: no shadows).
+                let mut unshadowed_scene = scene.clone();
+                unshadowed_scene.set_shadows(false);
+                renderer.render(gpu_scene, &unshadowed_scene, &target, settings);
+                let unshadowed = target::read_back(&renderer.device, &renderer.queue, &target);
+                let s = image_error::shadow_disagreement(&image, &unshadowed, &reference);
+                (s.map_rgb8(), Some(s.stats))
+            }
+        };
+        let color = egui::ColorImage::from_rgb([size.0 as usize, size.1 as usize], &rgb);
+        let texture = ctx.load_texture("difference from reference", color, egui::TextureOptions::LINEAR);
+        let id = texture.id();
+        let (shading, kind, stats) = (settings.shading, self.kind, cmp.stats);
+        self.shown = Some(Shown { key, shading, kind, texture, stats, shadow });
         self.current = true;
         Some(id)
     }

@@ -3,8 +3,8 @@
 //! at the side edits the model, never wgpu objects. This file holds the viewer's state, its
 //! start from the command line, the scenes it shows and its keys; the concerns live beside it:
 //! the orbit camera (`orbit`), the view (`view`), the panel's sections (`panel/`), files
-//! (`files`), the scripted run (`scripting`), what is drawn over the view (`overlays`) and the
-//! difference view (`difference`).
+//! (`files`), the scripted run (`scripting`), what is drawn over the view (`overlays`), the
+//! difference view (`difference`) and the lights' shadow maps (`shadow_maps`).
 
 mod difference;
 mod files;
@@ -12,6 +12,7 @@ mod orbit;
 mod overlays;
 mod panel;
 mod scripting;
+mod shadow_maps;
 mod view;
 
 pub use files::{FilePicker, FileRequest, native_file_picker};
@@ -107,6 +108,10 @@ pub struct Viewer {
     pub show_live_numbers: bool,
     shader_stamp: Option<std::time::SystemTime>,
     difference: DifferenceView,
+    /// The self-shadow boundary over the view (`overlays::BoundaryOverlay`).
+    boundary: overlays::BoundaryOverlay,
+    /// The lights' shadow maps on show in their panel sections.
+    shadow_maps: shadow_maps::ShadowMapViews,
     /// The panel's file path field (open / save scene).
     pub file_field: String,
     /// How "open…" and "save as…" ask for a file.
@@ -157,6 +162,8 @@ impl Viewer {
             shader_stamp: None,
             show_live_numbers: true,
             difference: DifferenceView::default(),
+            boundary: overlays::BoundaryOverlay::default(),
+            shadow_maps: shadow_maps::ShadowMapViews::default(),
             file_field: String::new(),
             file_picker: native_file_picker(),
             cameras: vec![("the scene's camera".into(), scene_camera)],
@@ -178,6 +185,27 @@ impl Viewer {
     /// The error of the current mode against the reference, once the map on show is current.
     pub fn difference(&self) -> Option<shadelab_render::image_error::ErrorStats> {
         self.difference.stats()
+    }
+
+    /// Show light `i`'s shadow map in its panel section or not (its "show shadow map" box).
+    pub fn set_shadow_map_view(&mut self, i: usize, on: bool) {
+        self.shadow_maps.set(i, on);
+    }
+
+    /// The size (width, height) of light `i`'s shadow map on show, once read back; `None` while
+    /// it is off, not read yet, or the light has no map.
+    pub fn shadow_map_shown(&self, i: usize) -> Option<[usize; 2]> {
+        self.shadow_maps.texture(i).flatten().map(|t| t.size())
+    }
+
+    /// Show the shadow error map in the difference view (`true`) or the FLIP error map.
+    pub fn set_shadow_error_map(&mut self, on: bool) {
+        self.difference.kind = if on { difference::DifferenceKind::Shadow } else { difference::DifferenceKind::Flip };
+    }
+
+    /// The shadow error map's numbers, once the shadow error map on show is current.
+    pub fn shadow_difference(&self) -> Option<shadelab_render::image_error::ShadowStats> {
+        self.difference.shadow_stats()
     }
 
     /// How many pipelines have been built so far (must not grow per frame).
@@ -252,6 +280,7 @@ impl Viewer {
         self.base_camera = s.camera;
         self.orbit = Orbit::from_camera(&s.camera);
         self.selected_material = s.objects.get(1).map_or(0, |o| o.material);
+        self.shadow_maps.scene_replaced(s.lights.len());
         self.scene = s;
         self.scene_name = name.into();
         Ok(())

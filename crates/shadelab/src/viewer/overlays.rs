@@ -1,11 +1,17 @@
 //! What the viewer draws over the scene: a marker where each light is (pinned to the edge when
-//! off the view), and the difference view's legend (the magma scale and the error numbers).
+//! off the view), the difference view's legend (the magma scale or the shadow error map's
+//! colours, and the error numbers), and the
+//! self-shadow boundary (drawn by the GPU into the view's target, depth-tested).
 
-use super::difference::DifferenceView;
+use super::difference::{DifferenceKind, DifferenceView};
 use eframe::egui::{self, Color32, Rect, pos2, vec2};
 use glam::DVec3;
 use shadelab_model::params::NamedValue;
-use shadelab_model::{LightKind, Scene};
+use shadelab_model::terminator::SceneEdges;
+use shadelab_model::{Light, LightKind, Object, Scene};
+use shadelab_render::image_error::ShadowPixel;
+use shadelab_render::overlay_pass::{OverlayPass, TERMINATOR_COLOR};
+use shadelab_render::{Renderer, Target};
 
 /// Smallest |w| a projected light is divided by: a light in the eye's plane (w = 0) still gets a
 /// finite position, far off the view, where its marker is pinned to the edge.
@@ -65,8 +71,9 @@ pub(super) fn light_markers(
     }
 }
 
-/// The difference view's legend over the view: the magma scale, and the numbers of the map on
-/// show for `mode` beside its GPU time (`live`: the time is shown).
+/// The difference view's legend over the view: the magma scale or the shadow error map's
+/// colours, and the numbers of the map on show for `mode` beside its GPU time (`live`: the time
+/// is shown), with the shadow shares under the shadow error map.
 pub(super) fn difference_legend(
     painter: &egui::Painter,
     rect: Rect,
@@ -75,30 +82,29 @@ pub(super) fn difference_legend(
     gpu_ms: Option<f64>,
     live: bool,
 ) {
-    let bar = Rect::from_min_size(pos2(rect.left() + 12.0, rect.bottom() - 34.0), vec2(256.0, 12.0));
-    let scale = shadelab_render::image_error::magma_scale();
-    for (i, c) in scale.iter().enumerate() {
-        let x = bar.left() + i as f32 * bar.width() / scale.len() as f32;
-        let r = Rect::from_min_max(pos2(x, bar.top()), pos2(x + bar.width() / scale.len() as f32 + 0.5, bar.bottom()));
-        painter.rect_filled(r, 0.0, Color32::from_rgb(c[0], c[1], c[2]));
-    }
     let font = egui::FontId::proportional(12.0);
-    painter.text(bar.left_bottom() + vec2(0.0, 2.0), egui::Align2::LEFT_TOP, "0", font.clone(), Color32::WHITE);
-    painter.text(
-        bar.right_bottom() + vec2(0.0, 2.0),
-        egui::Align2::RIGHT_TOP,
-        "1  FLIP error",
-        font.clone(),
-        Color32::WHITE,
-    );
+    match difference.kind {
+        DifferenceKind::Flip => magma_legend(painter, rect, &font),
+        DifferenceKind::Shadow => shadow_legend(painter, rect, &font),
+    }
     let text = match (difference.stats(), difference.computing()) {
         (Some(s), _) => {
             let time = match gpu_ms {
                 Some(ms) if live => format!(" · {ms:.2} ms GPU"),
                 _ => String::new(),
             };
+            let shadow = match difference.shadow_stats() {
+                Some(sh) => format!(
+                    "\nlit/shadowed state: {:.2} % of pixels disagree ({:.2} % false shadow, {:.2} % missed shadow; {:.1} % shadowed in the reference)",
+                    sh.share_disagreeing * 100.0,
+                    sh.share_false_shadow * 100.0,
+                    sh.share_missed_shadow * 100.0,
+                    sh.share_shadowed_reference * 100.0
+                ),
+                None => String::new(),
+            };
             format!(
-                "{mode}{time}\nagainst the f64 reference of the exact surface: FLIP mean {:.4} · RMSE {:.2e} · max {:.3} · {:.1} % of pixels off by > 1/255",
+                "{mode}{time}\nagainst the f64 reference of the exact surface: FLIP mean {:.4} · RMSE {:.2e} · max {:.3} · {:.1} % of pixels off by > 1/255{shadow}",
                 s.flip_mean,
                 s.rmse,
                 s.max_abs,
@@ -109,4 +115,105 @@ pub(super) fn difference_legend(
         (None, false) => String::new(),
     };
     painter.text(rect.left_top() + vec2(10.0, 8.0), egui::Align2::LEFT_TOP, text, font, Color32::WHITE);
+}
+
+/// The FLIP map's magma scale from 0 to 1 at the view's bottom left.
+fn magma_legend(painter: &egui::Painter, rect: Rect, font: &egui::FontId) {
+    let bar = Rect::from_min_size(pos2(rect.left() + 12.0, rect.bottom() - 34.0), vec2(256.0, 12.0));
+    let scale = shadelab_render::image_error::magma_scale();
+    for (i, c) in scale.iter().enumerate() {
+        let x = bar.left() + i as f32 * bar.width() / scale.len() as f32;
+        let r = Rect::from_min_max(pos2(x, bar.top()), pos2(x + bar.width() / scale.len() as f32 + 0.5, bar.bottom()));
+        painter.rect_filled(r, 0.0, Color32::from_rgb(c[0], c[1], c[2]));
+    }
+    painter.text(bar.left_bottom() + vec2(0.0, 2.0), egui::Align2::LEFT_TOP, "0", font.clone(), Color32::WHITE);
+    painter.text(
+        bar.right_bottom() + vec2(0.0, 2.0),
+        egui::Align2::RIGHT_TOP,
+        "1  FLIP error",
+        font.clone(),
+        Color32::WHITE,
+    );
+}
+
+/// The shadow error map's four colours, each with what it means, at the view's bottom left.
+fn shadow_legend(painter: &egui::Painter, rect: Rect, font: &egui::FontId) {
+    let entries = [
+        (ShadowPixel::Lit, "lit on both"),
+        (ShadowPixel::Shadowed, "shadowed on both"),
+        (ShadowPixel::FalseShadow, "false shadow (GPU only)"),
+        (ShadowPixel::MissedShadow, "missed shadow (reference only)"),
+    ];
+    let mut at = pos2(rect.left() + 12.0, rect.bottom() - 30.0);
+    for (p, name) in entries {
+        let [r, g, b] = p.rgb8();
+        let swatch = Rect::from_min_size(at, vec2(12.0, 12.0));
+        painter.rect_filled(swatch, 0.0, Color32::from_rgb(r, g, b));
+        painter.rect_stroke(swatch, 0.0, egui::Stroke::new(1.0, Color32::GRAY), egui::StrokeKind::Outside);
+        let text = painter.text(at + vec2(16.0, 0.0), egui::Align2::LEFT_TOP, name, font.clone(), Color32::WHITE);
+        at.x = text.right() + 14.0;
+    }
+}
+
+/// What the scene's edges were built from: its name, objects and mesh sizes (comparing whole
+/// file meshes every frame would cost as much as welding them again).
+#[derive(Clone, Debug, PartialEq)]
+struct EdgesOf {
+    scene: String,
+    objects: Vec<Object>,
+    meshes: Vec<(usize, usize)>,
+}
+
+impl EdgesOf {
+    fn new(scene: &Scene) -> EdgesOf {
+        EdgesOf {
+            scene: scene.name.clone(),
+            objects: scene.objects.clone(),
+            meshes: scene.meshes.iter().map(|m| (m.positions.len(), m.indices.len())).collect(),
+        }
+    }
+}
+
+/// The self-shadow boundary over the view (the panel's "self-shadow boundary" switch): the
+/// scene's welded edges, rebuilt when its objects change, and the lines, re-evaluated when a
+/// light changes, drawn by the render crate's overlay pass.
+#[derive(Default)]
+pub(super) struct BoundaryOverlay {
+    pub enabled: bool,
+    pass: Option<OverlayPass>,
+    edges: Option<(EdgesOf, SceneEdges)>,
+    lights: Option<Vec<Light>>,
+}
+
+impl BoundaryOverlay {
+    /// Draw the boundary of `scene`'s lights into `target`, over the frame just drawn there (and
+    /// its depth); nothing when the switch is off.
+    pub fn draw(&mut self, renderer: &Renderer, target: &Target, scene: &Scene) {
+        if !self.enabled {
+            return;
+        }
+        let of = EdgesOf::new(scene);
+        if self.edges.as_ref().is_none_or(|(built, _)| *built != of) {
+            self.edges = Some((of, SceneEdges::new(scene)));
+            self.lights = None;
+        }
+        let (device, queue) = (&renderer.device, &renderer.queue);
+        let pass = self.pass.get_or_insert_with(|| OverlayPass::new(device));
+        if self.lights.as_deref() != Some(&scene.lights[..]) {
+            let edges = &self.edges.as_ref().expect("edges just built").1;
+            pass.set_lines(device, &edges.terminator(&scene.lights), TERMINATOR_COLOR);
+            self.lights = Some(scene.lights.clone());
+        }
+        let mut encoder = device.create_command_encoder(&Default::default());
+        pass.encode(device, queue, &mut encoder, target, &scene.camera);
+        queue.submit([encoder.finish()]);
+    }
+
+    /// How many boundary edges are drawn (0 while the switch is off or before the first frame).
+    pub fn line_count(&self) -> u32 {
+        match (&self.pass, self.enabled) {
+            (Some(p), true) => p.line_count(),
+            _ => 0,
+        }
+    }
 }

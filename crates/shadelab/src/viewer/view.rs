@@ -1,6 +1,6 @@
 //! The view: the scene drawn by the shared `Renderer` into an offscreen target at the central
 //! area's size, shown by egui as a texture (or the difference view's error map in its place),
-//! with the overlays on top.
+//! with the overlays on top (the self-shadow boundary drawn into the target after the frame).
 
 use super::{Viewer, overlays};
 use eframe::egui::{self, Color32, Rect, pos2};
@@ -17,6 +17,16 @@ pub(super) struct View {
 }
 
 impl Viewer {
+    /// Draw the self-shadow boundary over the view or not (the panel's switch).
+    pub fn set_self_shadow_boundary(&mut self, on: bool) {
+        self.boundary.enabled = on;
+    }
+
+    /// How many self-shadow boundary edges the last frame drew (0 with the switch off).
+    pub fn self_shadow_boundary_edges(&self) -> u32 {
+        self.boundary.line_count()
+    }
+
     fn ensure_view(&mut self, w: u32, h: u32) {
         if self.view.as_ref().is_some_and(|v| v.target.width == w && v.target.height == h) {
             return;
@@ -53,6 +63,9 @@ impl Viewer {
         self.renderer.write_uniforms(&self.gpu_scene, &self.scene, &view.target, &self.settings);
         let program = Program::for_scene(&self.scene, &self.settings);
         self.frame_ms = Some(self.timer.frame(&mut self.renderer, &self.gpu_scene, &view.target, program));
+        self.boundary.draw(&self.renderer, &view.target, &self.scene);
+        // The lights' maps this frame drew, for their panel sections (read back only on a change).
+        self.shadow_maps.update(ui.ctx(), &self.renderer, &self.gpu_scene, &self.scene);
         let mut shown = view.texture;
         let analytic = shadelab_model::scene_variants::is_analytic(&self.scene);
         if self.difference.enabled && analytic {

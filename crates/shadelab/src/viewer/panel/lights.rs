@@ -1,12 +1,15 @@
 //! The panel's lights section: add and remove lights, and per light its kind, position or
-//! direction, colour and intensity, falloff, range and spot cones.
+//! direction, colour and intensity, falloff, range, spot cones, shadow settings and a view of
+//! the light's shadow map.
 
 use super::{slider, tooltip, vec3_row};
 use crate::viewer::Viewer;
+use crate::viewer::shadow_maps::{SHADOW_MAP_SHOWN_POINTS, ShadowMapViews};
 use eframe::egui;
 use glam::DVec3;
 use shadelab_model::params::{self, NamedValue};
 use shadelab_model::scene::MAX_LIGHTS;
+use shadelab_model::shadows::{SHADOW_RESOLUTION, ShadowFilter, ShadowSettings};
 use shadelab_model::{FalloffForm, Light, LightKind};
 
 /// Where a light's range starts when it is switched on, scene units: beyond the built-in scenes,
@@ -87,10 +90,111 @@ impl Viewer {
                     l.outer_cone = outer.to_radians().clamp(cone.min, cone.max);
                     l.inner_cone = inner.min(outer).to_radians().max(cone.min).min(l.outer_cone);
                 }
+                shadow_ui(ui, i, &mut l.shadow);
+                shadow_map_ui(ui, i, l.kind, &mut self.shadow_maps);
             });
         }
         if let Some(i) = remove {
             self.scene.lights.remove(i);
         }
+    }
+}
+
+/// One light's shadow settings: whether it casts, its shadow map's side (the powers of two in
+/// `SHADOW_RESOLUTION`; a file's other side is shown as it is until changed) and its filter.
+fn shadow_ui(ui: &mut egui::Ui, light: usize, shadow: &mut ShadowSettings) {
+    ui.horizontal(|ui| {
+        ui.checkbox(&mut shadow.casts, "casts shadows")
+            .on_hover_text("the light's shadow map hides what another object blocks from it (when the scene has any)");
+        ui.add_enabled_ui(shadow.casts, |ui| {
+            egui::ComboBox::from_id_salt(("shadow resolution", light))
+                .selected_text(format!("{} px", shadow.resolution))
+                .show_ui(ui, |ui| {
+                    for side in shadow_sides() {
+                        ui.selectable_value(&mut shadow.resolution, side, format!("{side} px"));
+                    }
+                })
+                .response
+                .on_hover_text(format!(
+                    "{} — {}, in [{}, {}]: finer edges, more memory and time",
+                    SHADOW_RESOLUTION.symbol, SHADOW_RESOLUTION.meaning, SHADOW_RESOLUTION.min, SHADOW_RESOLUTION.max
+                ));
+            egui::ComboBox::from_id_salt(("shadow filter", light))
+                .selected_text(shadow.filter.name())
+                .show_ui(ui, |ui| {
+                    for (name, f) in ShadowFilter::ALL {
+                        ui.selectable_value(&mut shadow.filter, *f, *name).on_hover_text(filter_meaning(*f));
+                    }
+                })
+                .response
+                .on_hover_text(format!("shadow filter: {}", filter_meaning(shadow.filter)));
+        });
+    });
+}
+
+/// The "show shadow map" box, a face menu for a point light's six faces, and the map as grey
+/// (nearest black, empty white) once the view has read it back.
+fn shadow_map_ui(ui: &mut egui::Ui, light: usize, kind: LightKind, maps: &mut ShadowMapViews) {
+    let mut on = maps.is_on(light);
+    ui.horizontal(|ui| {
+        ui.checkbox(&mut on, "show shadow map")
+            .on_hover_text("the depth the light sees, as grey: near black, far light grey, nothing drawn white");
+        maps.set(light, on);
+        if let Some(view) = maps.view_mut(light)
+            && kind == LightKind::Point
+        {
+            egui::ComboBox::from_id_salt(("shadow map face", light))
+                .selected_text(CUBE_FACES[view.face.min(5) as usize])
+                .show_ui(ui, |ui| {
+                    for (f, name) in CUBE_FACES.iter().enumerate() {
+                        ui.selectable_value(&mut view.face, f as u32, *name);
+                    }
+                })
+                .response
+                .on_hover_text("which of the point light's six cube faces");
+        } else if let Some(view) = maps.view_mut(light) {
+            view.face = 0;
+        }
+    });
+    match maps.texture(light) {
+        Some(Some(t)) => {
+            let [w, h] = t.size();
+            let side = SHADOW_MAP_SHOWN_POINTS;
+            ui.image((t.id(), egui::vec2(side, side * h as f32 / w.max(1) as f32)))
+                .on_hover_text(format!("{w} × {h} texels"));
+        }
+        Some(None) => {
+            ui.small("no shadow map: the light casts none here (nothing it could hide from another surface)");
+        }
+        None if on => {
+            ui.small("reading the shadow map…");
+        }
+        None => {}
+    }
+}
+
+/// A point light's cube faces in layer order (+x, −x, +y, −y, +z, −z).
+const CUBE_FACES: [&str; 6] = ["face +x", "face −x", "face +y", "face −y", "face +z", "face −z"];
+
+/// The powers of two within `SHADOW_RESOLUTION` (256, 512, …, 4096).
+fn shadow_sides() -> impl Iterator<Item = u32> {
+    let (lo, hi) = (SHADOW_RESOLUTION.min as u32, SHADOW_RESOLUTION.max as u32);
+    (0..u32::BITS).map(|k| 1u32 << k).filter(move |side| (lo..=hi).contains(side))
+}
+
+/// What a filter does, for its tooltip.
+fn filter_meaning(f: ShadowFilter) -> &'static str {
+    match f {
+        ShadowFilter::Hard => "one comparison at the nearest texel: a hard, aliased edge",
+        ShadowFilter::Pcf => "the hardware's 2×2 comparison: an edge softened over one texel",
+        ShadowFilter::Poisson => "rotated Poisson-disk taps: a wider, smoother edge, at more samples per pixel",
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn shadow_sides_are_the_powers_of_two_in_the_range() {
+        assert_eq!(super::shadow_sides().collect::<Vec<_>>(), [256, 512, 1024, 2048, 4096]);
     }
 }

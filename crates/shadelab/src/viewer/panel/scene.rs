@@ -1,8 +1,10 @@
 //! The panel's scene and modes: the built-in scene and the file's camera to look through, the
-//! shading mode, the specular model, and the debug and difference views.
+//! shading mode, the specular model, the debug and difference views, and the self-shadow
+//! boundary over the view; with the difference view, which error map it shows.
 
 use super::shading_meaning;
 use crate::viewer::Viewer;
+use crate::viewer::difference::DifferenceKind;
 use eframe::egui;
 use shadelab_model::params::NamedValue;
 use shadelab_model::scene::BUILTIN_SCENES;
@@ -33,7 +35,8 @@ impl Viewer {
         }
     }
 
-    /// Shading mode, specular model, the non-finite debug paint and the difference view.
+    /// Shading mode, specular model, the non-finite debug paint, the self-shadow boundary and
+    /// the difference view.
     pub(super) fn modes_ui(&mut self, ui: &mut egui::Ui) {
         ui.horizontal(|ui| {
             ui.label("shading");
@@ -55,6 +58,10 @@ impl Viewer {
                 );
         });
         ui.checkbox(&mut self.settings.debug_nonfinite, "paint non-finite pixels magenta");
+        ui.checkbox(&mut self.boundary.enabled, "self-shadow boundary").on_hover_text(
+            "draw the edges where the side facing a light changes (N·L changes sign between the \
+             two faces), over the view, hidden behind objects",
+        );
         let analytic = shadelab_model::scene_variants::is_analytic(&self.scene);
         ui.add_enabled(analytic, egui::Checkbox::new(&mut self.difference.enabled, "difference from reference"))
             .on_hover_text(format!(
@@ -65,5 +72,17 @@ impl Viewer {
             .on_disabled_hover_text(
                 "only for scenes made of analytic shapes (the reference knows their exact surface)",
             );
+        if self.difference.enabled && analytic {
+            ui.horizontal(|ui| {
+                ui.label("error map");
+                ui.selectable_value(&mut self.difference.kind, DifferenceKind::Flip, "FLIP error")
+                    .on_hover_text("the FLIP error of this mode's image against the reference (magma scale)");
+                ui.selectable_value(&mut self.difference.kind, DifferenceKind::Shadow, "shadow error").on_hover_text(
+                    "where the lit/shadowed state disagrees with the reference's exact cast shadows: \
+                     this render with shadows against the same with them off, red false shadow, \
+                     cyan missed shadow",
+                );
+            });
+        }
     }
 }

@@ -1,0 +1,42 @@
+//! The viewer's "self-shadow boundary" switch, driven by egui_kittest on lavapipe: ticking it
+//! draws the boundary edges over the view in the overlay colour.
+
+use egui_kittest::Harness;
+use egui_kittest::kittest::Queryable;
+use shadelab::viewer::Viewer;
+
+/// Pixels of the scene area (left of the panel) in the boundary's colour, saturated cyan.
+fn boundary_pixels(image: &image::RgbaImage) -> usize {
+    let view_width = image.width() * 6 / 10;
+    (0..image.height())
+        .flat_map(|y| (0..view_width).map(move |x| (x, y)))
+        .filter(|&(x, y)| {
+            let [r, g, b, _] = image.get_pixel(x, y).0;
+            r < 30 && g > 230 && b > 230
+        })
+        .count()
+}
+
+#[test]
+fn the_boundary_switch_draws_the_edges_over_the_view() {
+    let mut h = Harness::builder()
+        .with_size(egui::vec2(1100.0, 640.0))
+        .wgpu()
+        .build_eframe(|cc| Viewer::new(cc, None, None).expect("viewer"));
+    h.run_steps(2);
+    assert_eq!(h.state().self_shadow_boundary_edges(), 0);
+    let off = h.render().expect("render");
+    h.get_by_label("self-shadow boundary").click();
+    h.run_steps(3);
+    let edges = h.state().self_shadow_boundary_edges();
+    // The default scene's two lights: a loop round each sphere, the cylinder's and the pyramid's.
+    assert!(edges > 100, "{edges} edges");
+    let on = h.render().expect("render");
+    // Kept for a look: target/tmp/viewer-boundary.png.
+    on.save(std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join("viewer-boundary.png")).unwrap();
+    let (before, after) = (boundary_pixels(&off), boundary_pixels(&on));
+    assert!(before == 0 && after > 500, "boundary-coloured pixels: {before} off, {after} on");
+    h.get_by_label("self-shadow boundary").click();
+    h.run_steps(3);
+    assert_eq!(h.state().self_shadow_boundary_edges(), 0);
+}

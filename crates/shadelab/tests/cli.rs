@@ -473,3 +473,35 @@ fn camera_picks_one_of_the_files_cameras() {
         error_lines(&o)
     );
 }
+
+/// `render --overlay`: the self-shadow boundary is accepted and drawn.
+#[test]
+fn overlay_terminator_renders_and_a_bad_value_is_one_line() {
+    let figure = common::root().join("assets/figure-7-3-pyramid.gltf");
+    let png = out_dir().join("terminator.png");
+    for scene in [figure.to_str().unwrap(), "pyramid"] {
+        let o = shadelab(&[
+            "render",
+            "--scene",
+            scene,
+            "--overlay",
+            "terminator",
+            "--width",
+            "160",
+            "--height",
+            "90",
+            "--output",
+            png.to_str().unwrap(),
+        ]);
+        assert!(o.status.success(), "{scene}: {}", String::from_utf8_lossy(&o.stderr));
+        let img = image::open(&png).unwrap().to_rgb8();
+        assert!(img.pixels().any(|p| p.0 == [0, 255, 255]), "{scene}: no boundary pixel");
+    }
+    for bad in ["outline", "terminator,outline", ""] {
+        let o = shadelab(&["render", "--overlay", bad, "--output", png.to_str().unwrap()]);
+        assert_eq!(o.status.code(), Some(2), "{bad:?}: {}", String::from_utf8_lossy(&o.stderr));
+        let lines = error_lines(&o);
+        assert_eq!(lines.len(), 1, "{bad:?}: {lines:?}");
+        assert!(lines[0].contains("--overlay") && lines[0].contains("terminator"), "{bad:?}: {}", lines[0]);
+    }
+}

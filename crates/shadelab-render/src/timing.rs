@@ -88,6 +88,16 @@ impl FrameTimer {
     }
 }
 
+/// One draw of an interleaved measurement: a scene on the GPU, the parameters its uniforms are
+/// written from, and the program that draws it.
+#[derive(Clone, Copy)]
+pub struct TimedDraw<'a> {
+    pub gpu_scene: &'a SceneGpu,
+    pub scene: &'a shadelab_model::Scene,
+    pub program: Program,
+    pub settings: RenderSettings,
+}
+
 impl FrameTimer {
     /// Time several programs side by side, each with the settings its uniforms are written with:
     /// each is warmed up (at least one frame, which builds its pipeline), then `frames` rounds
@@ -104,17 +114,32 @@ impl FrameTimer {
         frames: usize,
         warmup: usize,
     ) -> Vec<Vec<f64>> {
-        for (p, s) in programs {
-            r.write_uniforms(gpu_scene, scene, target, s);
+        let draws: Vec<TimedDraw> =
+            programs.iter().map(|&(program, settings)| TimedDraw { gpu_scene, scene, program, settings }).collect();
+        self.interleaved_draws(r, target, &draws, frames, warmup)
+    }
+
+    /// [`FrameTimer::interleaved`] over draws that may each have their own scene (e.g. other
+    /// shadow settings), in the same order: warm-up per draw, then `frames` rounds of every draw.
+    pub fn interleaved_draws(
+        &self,
+        r: &mut Renderer,
+        target: &Target,
+        draws: &[TimedDraw],
+        frames: usize,
+        warmup: usize,
+    ) -> Vec<Vec<f64>> {
+        for d in draws {
+            r.write_uniforms(d.gpu_scene, d.scene, target, &d.settings);
             for _ in 0..warmup.max(1) {
-                self.frame(r, gpu_scene, target, *p);
+                self.frame(r, d.gpu_scene, target, d.program);
             }
         }
-        let mut samples = vec![Vec::with_capacity(frames); programs.len()];
+        let mut samples = vec![Vec::with_capacity(frames); draws.len()];
         for _ in 0..frames {
-            for (i, (p, s)) in programs.iter().enumerate() {
-                r.write_uniforms(gpu_scene, scene, target, s);
-                samples[i].push(self.frame(r, gpu_scene, target, *p));
+            for (i, d) in draws.iter().enumerate() {
+                r.write_uniforms(d.gpu_scene, d.scene, target, &d.settings);
+                samples[i].push(self.frame(r, d.gpu_scene, target, d.program));
             }
         }
         samples

@@ -12,7 +12,7 @@ use shadelab_model::Scene;
 use shadelab_model::reference::render_reference;
 use shadelab_model::shadows::ShadowFilter;
 use shadelab_render::image_error;
-use shadelab_render::timing::{FrameTimer, TimeSource, median, quantile_sorted};
+use shadelab_render::timing::{FrameTimer, TimeSource, TimedDraw, median, quantile_sorted};
 use shadelab_render::{Gpu, Program, RenderSettings, Renderer, SceneGpu, Target, target};
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
@@ -131,20 +131,12 @@ pub fn run_plan(
         Config::Baseline => Program::NullBaseline,
         _ => Program::for_scene(s, &settings),
     };
-    // Interleaved as `FrameTimer::interleaved`, each row with its own scene (its shadow settings).
-    for (c, g, s) in &configs {
-        r.write_uniforms(&uploads[*g], s, &target, &settings);
-        for _ in 0..warmup.max(1) {
-            timer.frame(&mut r, &uploads[*g], &target, program(*c, s));
-        }
-    }
-    let mut samples = vec![Vec::with_capacity(frames); configs.len()];
-    for _ in 0..frames {
-        for (i, (c, g, s)) in configs.iter().enumerate() {
-            r.write_uniforms(&uploads[*g], s, &target, &settings);
-            samples[i].push(timer.frame(&mut r, &uploads[*g], &target, program(*c, s)));
-        }
-    }
+    // Interleaved frame by frame, each row with its own scene (its shadow settings).
+    let draws: Vec<TimedDraw> = configs
+        .iter()
+        .map(|(c, g, s)| TimedDraw { gpu_scene: &uploads[*g], scene: s, program: program(*c, s), settings })
+        .collect();
+    let mut samples = timer.interleaved_draws(&mut r, &target, &draws, frames, warmup);
     // The exact image, once: the reference's shadows do not depend on the map.
     let reference =
         render_reference(&with_shadows(scene, RESOLUTIONS[0], ShadowFilter::Pcf), settings.specular, size.0, size.1);

@@ -17,11 +17,13 @@ const MAX_SHADOW_LAYERS: u32 = 48u;
 const SHADOW_NORMAL_OFFSET_TEXELS: f32 = 1.5;
 const SHADOW_POISSON_TAPS: u32 = 16u;
 const SHADOW_POISSON_RADIUS_TEXELS: f32 = 2.0;
+const SHADOW_CASCADE_MARGIN_TEXELS: f32 = 3.0;
 
 // One light's shadow map in the frame's array of maps.
 struct ShadowLight {
     first_layer: u32,
-    // 0: the light casts no shadow; 1: a directional or spot light; 6: a point light's faces.
+    // 0: the light casts no shadow; 1: a spot light or a directional light's one map; 2…4: a
+    // directional light's cascades, finest first; 6: a point light's faces.
     layers: u32,
     // SHADOW_FILTER_HARD, _PCF or _POISSON.
     shadow_filter: u32,
@@ -120,6 +122,31 @@ fn shadow_compare(sl: ShadowLight, layer: u32, t: vec3<f32>, pixel: vec2<f32>) -
     return textureSampleCompareLevel(shadow_maps, shadow_linear, uv, layer, t.z);
 }
 
+#if EFFECT_SHADOW_CASCADES
+// The world size of one texel of orthographic map `m`, `resolution` texels across: the map spans
+// 2 / |first row| in world units.
+fn shadow_ortho_texel_world(m: mat4x4<f32>, resolution: f32) -> f32 {
+    return 2.0 / (length(vec3(m[0].x, m[1].x, m[2].x)) * resolution);
+}
+
+// Which of directional light `sl`'s cascades (finest first) shadows world point `p` with unit
+// normal `n`: the first whose map holds the normal-offset point SHADOW_CASCADE_MARGIN_TEXELS from
+// its edge (so the filter's taps stay on it) and inside its depth range; the last otherwise.
+fn shadow_cascade(sl: ShadowLight, p: vec3<f32>, n: vec3<f32>) -> u32 {
+    let resolution = sl.uv_scale / sl.texel_uv;
+    let margin = SHADOW_CASCADE_MARGIN_TEXELS / resolution;
+    for (var k = 0u; k + 1u < sl.layers; k++) {
+        let m = shadows.matrices[min(sl.first_layer + k, MAX_SHADOW_LAYERS - 1u)];
+        let q = p + n * (SHADOW_NORMAL_OFFSET_TEXELS * shadow_ortho_texel_world(m, resolution));
+        let t = shadow_map_coord(m, q);
+        if (all(t.xy >= vec2(margin)) && all(t.xy <= vec2(1.0 - margin)) && t.z >= 0.0 && t.z <= 1.0) {
+            return k;
+        }
+    }
+    return sl.layers - 1u;
+}
+#endif
+
 // How much of light `i` reaches world point `p` with unit normal `n`: 1 lit, 0 in a cast shadow.
 // The receiver is first moved along its normal by SHADOW_NORMAL_OFFSET_TEXELS texels of the
 // light's map at that point (the normal offset; the slope-scaled bias is the shadow pass's).
@@ -142,8 +169,15 @@ fn shadow_visibility(i: u32, light: Light, p: vec3<f32>, n: vec3<f32>, pixel: ve
     }
 #endif
 #endif
-    let offset = SHADOW_NORMAL_OFFSET_TEXELS * shadow_texel_world(sl.texel_world, sl.perspective != 0u, dist);
-    let q = p + n * offset;
+    var texel = shadow_texel_world(sl.texel_world, sl.perspective != 0u, dist);
+#if EFFECT_SHADOW_CASCADES
+    // A directional light's cascades: the finest that holds the point, with its own texel size.
+    if (sl.perspective == 0u && sl.layers > 1u) {
+        layer += shadow_cascade(sl, p, n);
+        texel = shadow_ortho_texel_world(shadows.matrices[min(layer, MAX_SHADOW_LAYERS - 1u)], sl.uv_scale / sl.texel_uv);
+    }
+#endif
+    let q = p + n * (SHADOW_NORMAL_OFFSET_TEXELS * texel);
 #if EFFECT_POINT_LIGHTS
     // A point light's face is chosen after the offset (the offset point may cross into the next).
     if (sl.layers == 6u) {

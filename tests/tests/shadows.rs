@@ -177,3 +177,34 @@ fn degenerate_shadow_setups_give_finite_images() {
     huge.lights = vec![Light::directional(DVec3::new(-0.3, -1.0, -0.2), [1.0; 3], 1.0)];
     finite_everywhere("huge scene", &huge);
 }
+
+/// A scene large relative to the view (`field`): with cascades the sun's shadow agrees with the
+/// exact shadow rays on more pixels than one map fitted to the whole scene does, at the same map
+/// side. Measured at 640×360, 1024 pcf: about 0.5 % of pixels disagree with cascades, 2 % without.
+#[test]
+fn cascades_bring_a_large_scene_closer_to_the_exact_shadows() {
+    let (w, h) = (640, 360);
+    let settings = RenderSettings::new(ShadingMode::Phong, SpecularModel::CookTorrance);
+    let mut scene = Scene::builtin("field").expect("built-in");
+    for l in &mut scene.lights {
+        l.shadow.resolution = 1024;
+    }
+    assert_eq!(shadelab_model::shadows::cascade_count(&scene), 2);
+    let reference = render_reference(&scene, SpecularModel::CookTorrance, w, h);
+    let mut off_scene = scene.clone();
+    off_scene.set_shadows(false);
+    let off = render_image(gpu(), &off_scene, w, h, &settings).expect("upload");
+    let share = |cascades: bool| {
+        let mut s = scene.clone();
+        for l in &mut s.lights {
+            l.shadow.cascades = cascades;
+        }
+        let img = render_image(gpu(), &s, w, h, &settings).expect("upload");
+        assert_eq!(img.nonfinite_count(), 0);
+        shadow_disagreement(&img, &off, &reference).stats.share_disagreeing
+    };
+    let (with, without) = (share(true), share(false));
+    eprintln!("field 1024 pcf: {:.3} % disagree with cascades, {:.3} % with one map", 100.0 * with, 100.0 * without);
+    assert!(with < 0.6 * without, "cascades {with} vs one map {without}");
+    assert!(with < 0.01, "{with}");
+}

@@ -117,6 +117,8 @@ pub struct Overrides {
     /// Every light's shadow map side, within `shadows::SHADOW_RESOLUTION` (clamped into it).
     pub shadow_resolution: Option<u32>,
     pub shadow_filter: Option<ShadowFilter>,
+    /// Every directional light may use cascades (`Some(true)`) or keeps one map (`Some(false)`).
+    pub shadow_cascades: Option<bool>,
 }
 
 impl Scene {
@@ -162,6 +164,9 @@ impl Scene {
             }
             if let Some(f) = o.shadow_filter {
                 light.shadow.filter = f;
+            }
+            if let Some(c) = o.shadow_cascades {
+                light.shadow.cascades = c;
             }
         }
     }
@@ -243,10 +248,11 @@ mod tests {
             shadows: Some(false),
             shadow_resolution: Some(512),
             shadow_filter: Some(ShadowFilter::Poisson),
+            shadow_cascades: Some(false),
             ..Default::default()
         };
         s.apply(&o);
-        let want = ShadowSettings { casts: false, resolution: 512, filter: ShadowFilter::Poisson };
+        let want = ShadowSettings { casts: false, resolution: 512, filter: ShadowFilter::Poisson, cascades: false };
         assert!(s.lights.iter().all(|l| l.shadow == want), "{:?}", s.lights);
         // Only what is given changes; a resolution outside the range is held to it.
         s.apply(&Overrides { shadows: Some(true), shadow_resolution: Some(1 << 20), ..Default::default() });

@@ -12,6 +12,12 @@ use crate::params::{LightKind, NamedValue, ParamRange};
 use crate::scene::{Light, Scene, Shape};
 use glam::{DMat4, DVec3, DVec4};
 
+mod cascades;
+pub use cascades::{
+    SHADOW_CASCADE_DEPTH_RATIO, SHADOW_CASCADE_MARGIN_TEXELS, SHADOW_CASCADES_MAX, cascade_count, cascade_projection,
+    cascade_splits, shadow_cascade, shadow_ortho_texel_world, view_depth_range,
+};
+
 /// How the shadow map is filtered where a point is compared with it.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum ShadowFilter {
@@ -60,11 +66,14 @@ pub struct ShadowSettings {
     /// Shadow map side in texels, within [`SHADOW_RESOLUTION`].
     pub resolution: u32,
     pub filter: ShadowFilter,
+    /// A directional light may split its map into cascades when the view calls for them
+    /// ([`cascade_count`]); off, it keeps one map fitted to the whole scene.
+    pub cascades: bool,
 }
 
 impl Default for ShadowSettings {
     fn default() -> Self {
-        ShadowSettings { casts: true, resolution: SHADOW_RESOLUTION_DEFAULT, filter: ShadowFilter::Pcf }
+        ShadowSettings { casts: true, resolution: SHADOW_RESOLUTION_DEFAULT, filter: ShadowFilter::Pcf, cascades: true }
     }
 }
 
@@ -128,18 +137,34 @@ pub const SHADOW_BOUNDS_RADIUS_MIN: f64 = 1e-3;
 
 /// The constants `shaders/shadows.wgsl` repeats, by their WGSL name: the twin test holds them
 /// equal, and every `f32`/`u32` constant of that file (other than the filter codes) is here.
-pub const WGSL_TWINS: [(&str, f64); 4] = [
+pub const WGSL_TWINS: [(&str, f64); 5] = [
     ("SHADOW_NORMAL_OFFSET_TEXELS", SHADOW_NORMAL_OFFSET_TEXELS as f64),
     ("SHADOW_POISSON_TAPS", SHADOW_POISSON_TAPS as f64),
     ("SHADOW_POISSON_RADIUS_TEXELS", SHADOW_POISSON_RADIUS_TEXELS as f64),
     ("MAX_SHADOW_LAYERS", MAX_SHADOW_LAYERS as f64),
+    ("SHADOW_CASCADE_MARGIN_TEXELS", SHADOW_CASCADE_MARGIN_TEXELS),
 ];
 
 /// The bounding sphere `(centre, radius)` of every object in world space (the corners of each
 /// shape's box carried by its transform); `None` for a scene without objects.
 pub fn scene_bounds(scene: &Scene) -> Option<(DVec3, f64)> {
-    let mut lo = DVec3::splat(f64::INFINITY);
-    let mut hi = DVec3::splat(f64::NEG_INFINITY);
+    let (lo, hi) = scene_box(scene)?;
+    let centre = (lo + hi) * 0.5;
+    Some((centre, ((hi - lo).length() * 0.5).max(SHADOW_BOUNDS_RADIUS_MIN)))
+}
+
+/// The world-space box `(lo, hi)` around every object; `None` for a scene without objects.
+pub fn scene_box(scene: &Scene) -> Option<(DVec3, DVec3)> {
+    let boxes = object_boxes(scene);
+    let lo = boxes.iter().fold(DVec3::splat(f64::INFINITY), |a, b| a.min(b.0));
+    let hi = boxes.iter().fold(DVec3::splat(f64::NEG_INFINITY), |a, b| a.max(b.1));
+    (lo.is_finite() && hi.is_finite()).then_some((lo, hi))
+}
+
+/// Each object's world-space box `(lo, hi)`: the corners of its shape's box carried by its
+/// transform, non-finite corners left out (an object with none is left out).
+pub fn object_boxes(scene: &Scene) -> Vec<(DVec3, DVec3)> {
+    let mut out = Vec::new();
     for o in &scene.objects {
         let (a, b) = match o.shape {
             Shape::Mesh(i) => match scene.meshes.get(i).and_then(|m| m.bounds()) {
@@ -150,6 +175,8 @@ pub fn scene_bounds(scene: &Scene) -> Option<(DVec3, f64)> {
             _ => (DVec3::splat(-1.0), DVec3::splat(1.0)),
         };
         let m = o.transform.matrix();
+        let mut lo = DVec3::splat(f64::INFINITY);
+        let mut hi = DVec3::splat(f64::NEG_INFINITY);
         for k in 0..8 {
             let c = DVec3::new(
                 if k & 1 == 0 { a.x } else { b.x },
@@ -162,12 +189,11 @@ pub fn scene_bounds(scene: &Scene) -> Option<(DVec3, f64)> {
                 hi = hi.max(w);
             }
         }
+        if lo.is_finite() && hi.is_finite() {
+            out.push((lo, hi));
+        }
     }
-    if !(lo.is_finite() && hi.is_finite()) {
-        return None;
-    }
-    let centre = (lo + hi) * 0.5;
-    Some((centre, ((hi - lo).length() * 0.5).max(SHADOW_BOUNDS_RADIUS_MIN)))
+    out
 }
 
 /// One light's shadow projection: a view-projection per layer (1, or 6 cube faces in the order

@@ -34,7 +34,7 @@ impl Renderer {
         }
         self.queue.write_buffer(&gpu_scene.objects_buf, 0, &bytes);
         let shadows = Program::for_scene(scene, settings).effects().has(Effect::CastShadows);
-        self.write_shadows(gpu_scene, scene, shadows);
+        self.write_shadows(gpu_scene, scene, shadows, target.width as f64 / target.height.max(1) as f64);
     }
 
     /// Record the scene pass of `program` into `encoder`, drawing into `target` with the uniforms

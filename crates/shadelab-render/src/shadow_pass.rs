@@ -1,6 +1,7 @@
 //! The shadow passes (docs/model.md §0, §6): each casting light's view-projections (from
 //! `shadelab_model::shadows`), the frame's shadow maps (one `Depth32Float` 2D array: one layer per
-//! directional or spot light, six per point light), the depth-only pipeline with the
+//! spot light, one per cascade of a directional light, six per point light), the depth-only
+//! pipeline with the
 //! slope-scaled bias, and the passes encoded before the scene pass. Only programs with
 //! `Effect::CastShadows` run them; `shaders/shadows.wgsl` samples the maps.
 //!
@@ -17,7 +18,7 @@ use crate::vertex::SmoothVertex;
 use bytemuck::Zeroable;
 use shadelab_model::shadows::{
     MAX_SHADOW_LAYERS, SHADOW_CONSTANT_BIAS, SHADOW_DEPTH_BIAS_CLAMP, SHADOW_MAP_BUDGET_BYTES, SHADOW_RESOLUTION,
-    SHADOW_SLOPE_BIAS, SHADOW_TEXEL_BYTES, scene_bounds, shadow_projection,
+    SHADOW_SLOPE_BIAS, SHADOW_TEXEL_BYTES, cascade_count, cascade_projection, scene_bounds, shadow_projection,
 };
 use shadelab_model::{LightKind, Scene};
 
@@ -25,7 +26,7 @@ use shadelab_model::{LightKind, Scene};
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct LightMap {
     pub first_layer: u32,
-    /// 1, or 6 for a point light.
+    /// 1; a directional light's cascades (up to `SHADOW_CASCADES_MAX`); 6 for a point light.
     pub layers: u32,
     /// Its side in texels (its resolution, at most the array's side).
     pub resolution: u32,
@@ -51,7 +52,11 @@ impl ShadowPlan {
                 lights.push(None);
                 continue;
             }
-            let n = if l.kind == LightKind::Point { 6 } else { 1 };
+            let n = match l.kind {
+                LightKind::Point => 6,
+                LightKind::Directional if l.shadow.cascades => cascade_count(scene),
+                _ => 1,
+            };
             let resolution = l.shadow.clamped().resolution;
             lights.push(Some(LightMap { first_layer: layers, layers: n, resolution }));
             layers += n;
@@ -204,14 +209,19 @@ pub(crate) fn build_pipeline(
     })
 }
 
-/// The `Shadows` uniform of a scene for a plan: each casting light's matrices (fitted to the
-/// scene's bounding sphere) and map. No objects: nothing casts.
-pub fn shadows_uniform(scene: &Scene, plan: &ShadowPlan) -> ShadowsUniform {
+/// The `Shadows` uniform of a scene for a plan and an image of `aspect` (width / height): each
+/// casting light's matrices (fitted to the scene's bounding sphere, or a directional light's
+/// cascades to the slices of the view) and map. No objects: nothing casts.
+pub fn shadows_uniform(scene: &Scene, plan: &ShadowPlan, aspect: f64) -> ShadowsUniform {
     let mut u = ShadowsUniform::zeroed();
     let Some((centre, radius)) = scene_bounds(scene) else { return u };
     for ((slot, light), map) in u.lights.iter_mut().zip(&scene.lights).zip(&plan.lights) {
         let Some(map) = map else { continue };
-        let p = shadow_projection(light, centre, radius, map.resolution);
+        let p = if light.kind == LightKind::Directional && map.layers > 1 {
+            cascade_projection(light, scene, aspect, (centre, radius), map.resolution, map.layers)
+        } else {
+            shadow_projection(light, centre, radius, map.resolution)
+        };
         for (k, m) in p.matrices.iter().enumerate() {
             u.matrices[(map.first_layer as usize + k).min(MAX_SHADOW_LAYERS as usize - 1)] =
                 m.as_mat4().to_cols_array_2d();
@@ -292,10 +302,10 @@ impl Renderer {
     }
 
     /// Plan the scene's shadow maps, (re)allocate them when the plan changed, and write their
-    /// uniform (`write_uniforms` calls it when the program has cast shadows). With `casting`
-    /// false only an existing uniform is zeroed (every light unshadowed), so a stand-in program
-    /// that still samples the maps shows no stale shadows.
-    pub(crate) fn write_shadows(&self, gpu_scene: &SceneGpu, scene: &Scene, casting: bool) {
+    /// uniform for an image of `aspect` (`write_uniforms` calls it when the program has cast
+    /// shadows). With `casting` false only an existing uniform is zeroed (every light
+    /// unshadowed), so a stand-in program that still samples the maps shows no stale shadows.
+    pub(crate) fn write_shadows(&self, gpu_scene: &SceneGpu, scene: &Scene, casting: bool, aspect: f64) {
         let mut slot = gpu_scene.shadows.lock().unwrap_or_else(|e| e.into_inner());
         if !casting {
             if let Some(maps) = slot.as_mut().filter(|m| m.casting) {
@@ -305,7 +315,7 @@ impl Renderer {
             return;
         }
         let plan = ShadowPlan::for_scene(scene, &self.device.limits());
-        let u = shadows_uniform(scene, &plan);
+        let u = shadows_uniform(scene, &plan, aspect);
         if slot.as_ref().is_none_or(|m| m.plan != plan) {
             *slot = Some(self.create_shadow_maps(plan));
         }

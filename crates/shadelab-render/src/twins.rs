@@ -13,8 +13,14 @@ const TWINS: [(&str, &str); 5] = [
     ("common.wgsl", include_str!("../../shadelab-model/src/lighting/common.rs")),
     ("brdf.wgsl", include_str!("../../shadelab-model/src/lighting/brdf.rs")),
     ("lights.wgsl", include_str!("../../shadelab-model/src/lighting/lights.rs")),
-    // The projection math; the map sampling has none (the reference traces shadow rays).
-    ("shadows.wgsl", include_str!("../../shadelab-model/src/shadows.rs")),
+    // The projection and cascade math; the map sampling has none (the reference traces shadow rays).
+    (
+        "shadows.wgsl",
+        concat!(
+            include_str!("../../shadelab-model/src/shadows.rs"),
+            include_str!("../../shadelab-model/src/shadows/cascades.rs")
+        ),
+    ),
     ("shading.wgsl", include_str!("../../shadelab-model/src/lighting/shading.rs")),
 ];
 

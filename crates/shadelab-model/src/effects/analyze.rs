@@ -149,6 +149,8 @@ pub fn analyze(scene: &Scene, specular: SpecularModel) -> Analysis {
     );
     let (on, why) = cast_shadows(scene, lights);
     a.decide(Effect::CastShadows, on, why);
+    let (cascades, why) = shadow_cascades(scene, lights, on);
+    a.decide(Effect::ShadowCascades, cascades, why);
     let transmitting: Vec<_> = used.iter().filter(|m| m.transmission > 0.0).collect();
     a.note(
         Effect::Transmission,
@@ -201,6 +203,32 @@ fn cast_shadows(scene: &Scene, lights: &[crate::scene::Light]) -> (bool, String)
         )
     } else {
         (false, "no objects".into())
+    }
+}
+
+/// Cascades are on when shadows are, some directional light casts them with its cascades
+/// allowed, and the objects in view span a depth ratio over `SHADOW_CASCADE_DEPTH_RATIO`.
+fn shadow_cascades(scene: &Scene, lights: &[crate::scene::Light], shadows: bool) -> (bool, String) {
+    use crate::shadows::{SHADOW_CASCADE_DEPTH_RATIO, cascade_count, view_depth_range};
+    let directional = |l: &&crate::scene::Light| l.kind == LightKind::Directional && l.shadow.casts;
+    if !shadows {
+        return (false, "no cast shadows".into());
+    }
+    if !lights.iter().any(|l| directional(&l)) {
+        return (false, "no directional light casts shadows".into());
+    }
+    if !lights.iter().filter(directional).any(|l| l.shadow.cascades) {
+        return (false, "every directional light's cascades setting is off".into());
+    }
+    let Some((near, far)) = view_depth_range(scene) else {
+        return (false, "no object in view".into());
+    };
+    let n = cascade_count(scene);
+    let span = format!("the objects in view span depths {near:.2} to {far:.2}, a ratio of {:.1}", far / near);
+    if n > 1 {
+        (true, format!("{span} (over {SHADOW_CASCADE_DEPTH_RATIO}): {n} cascades"))
+    } else {
+        (false, format!("{span} (at most {SHADOW_CASCADE_DEPTH_RATIO}): one map fits"))
     }
 }
 
@@ -270,6 +298,22 @@ mod tests {
         assert!(analyze(&s, SpecularModel::Phong).key.has(Effect::LightRange));
         s.lights.clear();
         assert_eq!(analyze(&s, SpecularModel::Phong).key, EffectKey::NONE);
+    }
+
+    #[test]
+    fn cascades_need_a_deep_view_and_a_directional_caster() {
+        let on = |s: &Scene| analyze(s, SpecularModel::Phong).key.has(Effect::ShadowCascades);
+        assert!(!on(&Scene::builtin("default").unwrap()), "the default view spans a ratio under 8");
+        let mut s = Scene::builtin("field").unwrap();
+        assert!(on(&s));
+        s.lights[0].shadow.cascades = false;
+        assert!(!on(&s), "cascades off");
+        s.lights[0].shadow.cascades = true;
+        s.lights[0].set_kind(LightKind::Point);
+        assert!(!on(&s), "a point light has no cascades");
+        s.lights[0].set_kind(LightKind::Directional);
+        s.set_shadows(false);
+        assert!(!on(&s), "no shadows, no cascades");
     }
 
     #[test]

@@ -178,6 +178,16 @@ declare_effects! {
         functions: &["shadow_visibility", "shadow_face", "shadow_map_coord", "shadow_texel_world", "shadow_compare"],
         members: &[("Shadows", "matrices"), ("Shadows", "lights"), ("ShadowLight", "shadow_filter")],
     },
+    /// A directional light's shadow map split along the view's depth into cascades, finest near
+    /// the camera (docs/model.md §6).
+    ShadowCascades {
+        explain: "shadow cascades",
+        name: "shadow cascades",
+        label: "cascades",
+        define: Some("EFFECT_SHADOW_CASCADES"),
+        functions: &["shadow_cascade", "shadow_ortho_texel_world"],
+        members: &[],
+    },
     /// Light transmitted through a material: analysed, not simulated yet (docs/model.md §7).
     Transmission {
         explain: "transmission",
@@ -400,7 +410,7 @@ mod tests {
         assert_eq!(format!("{k:?}"), "EffectKey(diffuse+cook-torrance+point+range)");
         assert_eq!(
             EffectKey::UBER.without(Effect::Ambient).label(),
-            "diffuse+phong+cook-torrance+dir+point+quad+linear+spot+range+shadows"
+            "diffuse+phong+cook-torrance+dir+point+quad+linear+spot+range+shadows+cascades"
         );
         assert_eq!(Effect::SpecularPhong.to_string(), "Phong specular (V·R)^h");
     }

@@ -44,6 +44,7 @@ struct LightExtras {
     casts_shadows: Option<Flag>,
     shadow_resolution: Option<Count<ShadowSide>>,
     shadow_filter: Option<Named<ShadowFilter>>,
+    shadow_cascades: Option<Flag>,
 }
 
 impl Reader<'_> {
@@ -159,6 +160,9 @@ impl Reader<'_> {
         if let Some(r) = ex.shadow_resolution {
             light.shadow.resolution = r.0;
         }
+        if let Some(c) = ex.shadow_cascades {
+            light.shadow.cascades = c.0;
+        }
         if let Some(f) = ex.shadow_filter {
             light.shadow.filter = f.0;
         }
@@ -210,6 +214,7 @@ pub(super) fn write_light(i: usize, l: &Light) -> (Value, Value) {
         // A validated light's side is in range; one that is not is written held to it.
         shadow_resolution: Some(l.shadow.clamped().resolution.into()),
         shadow_filter: Some(Named(l.shadow.filter)),
+        shadow_cascades: Some(Flag(l.shadow.cascades)),
     };
     let mut light = json!({
         "type": kind,

@@ -6,7 +6,7 @@ use crate::params::PhongExponent;
 use glam::DVec3;
 
 /// Names of the scenes compiled into the binary.
-pub const BUILTIN_SCENES: &[&str] = &["default", "sphere", "cylinder", "pyramid", "cube"];
+pub const BUILTIN_SCENES: &[&str] = &["default", "sphere", "cylinder", "pyramid", "cube", "field"];
 
 impl Scene {
     /// A built-in scene by name (see [`BUILTIN_SCENES`]).
@@ -17,6 +17,7 @@ impl Scene {
             "cylinder" => Some(single_shape_scene("cylinder", Shape::Cylinder, 16)),
             "pyramid" => Some(single_shape_scene("pyramid", Shape::Pyramid, 1)),
             "cube" => Some(single_shape_scene("cube", Shape::Cube, 1)),
+            "field" => Some(field_scene()),
             _ => None,
         }
     }
@@ -146,6 +147,30 @@ pub fn default_scene() -> Scene {
         camera: default_camera(),
         meshes: Vec::new(),
     }
+}
+
+/// A scene large relative to the view: the default scene's objects on an 80 m field, with two
+/// rows of stone posts going 36 m away, under a low sun alone. The objects in view span depths
+/// 3.3 m to 40 m, a ratio over 8 (docs/model.md §6), so the sun's shadow gets two cascades.
+pub fn field_scene() -> Scene {
+    let mut s = default_scene();
+    s.name = "field".into();
+    s.objects[0].transform.scale = DVec3::new(40.0, 1.0, 40.0);
+    s.objects[0].tessellation = 32;
+    let stone = s.materials.iter().position(|m| m.name == "stone").unwrap_or(0);
+    for i in 0..9 {
+        for x in [-3.0, 3.0] {
+            s.objects.push(Object {
+                name: format!("post {}{}", if x < 0.0 { "L" } else { "R" }, i + 1),
+                shape: Shape::Cube,
+                tessellation: 1,
+                transform: Transform::new(DVec3::new(x, 1.2, -4.0 - 4.0 * i as f64), DVec3::new(0.3, 1.2, 0.3)),
+                material: stone,
+            });
+        }
+    }
+    s.lights = vec![Light::directional(DVec3::new(-0.6, -0.45, -0.65), [1.0, 0.95, 0.88], 0.9)];
+    s
 }
 
 /// One shape on the ground, lit by the default lights: the scenes the reference knows exactly.

@@ -29,6 +29,9 @@ pub const FILTERS: [ShadowFilter; 3] = [ShadowFilter::Hard, ShadowFilter::Pcf, S
 pub enum Config {
     /// Every light casting at this map side with this filter.
     Shadows { resolution: u32, filter: ShadowFilter },
+    /// The same with PCF and the directional lights' cascades off (one map fitted to the whole
+    /// scene); measured only for a scene whose view calls for cascades.
+    OneMap { resolution: u32 },
     /// The same frame with no light casting (no shadow pass).
     Off,
     /// `Program::NullBaseline`: the same geometry, a constant colour.
@@ -39,6 +42,7 @@ impl Config {
     pub fn name(self) -> String {
         match self {
             Config::Shadows { resolution, filter } => format!("{resolution} {}", filter_name(filter)),
+            Config::OneMap { resolution } => format!("{resolution} pcf, one map (no cascades)"),
             Config::Off => "shadows off".into(),
             Config::Baseline => "null-shader baseline".into(),
         }
@@ -94,6 +98,22 @@ fn with_shadows(scene: &Scene, resolution: u32, filter: ShadowFilter) -> Scene {
     s
 }
 
+/// The scene with every light casting at `resolution` with PCF and no cascades.
+fn one_map(scene: &Scene, resolution: u32) -> Scene {
+    let mut s = with_shadows(scene, resolution, ShadowFilter::Pcf);
+    for l in &mut s.lights {
+        l.shadow.cascades = false;
+    }
+    s
+}
+
+/// Whether the scene's view gives its directional lights cascades (then the one-map rows are
+/// measured beside them).
+fn has_cascades(scene: &Scene) -> bool {
+    scene.lights.iter().any(|l| l.kind == shadelab_model::LightKind::Directional)
+        && shadelab_model::shadows::cascade_count(scene) > 1
+}
+
 /// Measure `scene` at `size` for every resolution × filter, shadows off and the baseline.
 pub fn run_plan(
     gpu: &Gpu,
@@ -126,6 +146,10 @@ pub fn run_plan(
                 with_shadows(scene, resolution, filter),
             ));
         }
+        if has_cascades(scene) {
+            uploads.push(upload(&mut r, &one_map(scene, resolution))?);
+            configs.push((Config::OneMap { resolution }, uploads.len() - 1, one_map(scene, resolution)));
+        }
     }
     let program = |c: Config, s: &Scene| match c {
         Config::Baseline => Program::NullBaseline,
@@ -155,7 +179,7 @@ pub fn run_plan(
     for (i, (c, g, _)) in configs.iter().enumerate() {
         let m = median(&mut samples[i]);
         let side = match c {
-            Config::Shadows { .. } => {
+            Config::Shadows { .. } | Config::OneMap { .. } => {
                 r.shadow_plan(&uploads[*g]).and_then(|p| p.lights.iter().flatten().map(|l| l.resolution).max())
             }
             _ => None,
@@ -205,6 +229,7 @@ pub fn csv(report: &Report) -> String {
     for r in &report.rows {
         let (kind, res, filter) = match r.config {
             Config::Shadows { resolution, filter } => ("shadows", resolution.to_string(), filter_name(filter)),
+            Config::OneMap { resolution } => ("one-map", resolution.to_string(), "pcf"),
             Config::Off => ("off", String::new(), ""),
             Config::Baseline => ("baseline", String::new(), ""),
         };
@@ -324,7 +349,7 @@ pub fn plot(report: &Report, path: &Path) -> anyhow::Result<()> {
         let ymax = report
             .rows
             .iter()
-            .filter(|r| matches!(r.config, Config::Shadows { .. }))
+            .filter(|r| matches!(r.config, Config::Shadows { .. } | Config::OneMap { .. }))
             .filter_map(|r| r.share_disagreeing)
             .fold(0.0, f64::max)
             * 100.0
@@ -367,6 +392,21 @@ pub fn plot(report: &Report, path: &Path) -> anyhow::Result<()> {
                     ))
                     .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], color.stroke_width(2)));
             }
+        }
+        let one_map_pts: Vec<(f64, f64)> = report
+            .rows
+            .iter()
+            .filter(|r| matches!(r.config, Config::OneMap { .. }))
+            .filter_map(|r| Some((r.median_ms, r.share_disagreeing? * 100.0)))
+            .collect();
+        if !one_map_pts.is_empty() {
+            let color = RGBColor(150, 150, 150);
+            chart
+                .draw_series(LineSeries::new(one_map_pts.iter().copied(), color.stroke_width(2)))
+                .map_err(plot_err)?
+                .label("pcf, one map (no cascades)")
+                .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], color.stroke_width(3)));
+            chart.draw_series(one_map_pts.iter().map(|p| Circle::new(*p, 4, color.filled()))).map_err(plot_err)?;
         }
         for filter in FILTERS {
             let color = filter_color(filter);

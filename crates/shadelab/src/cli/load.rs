@@ -77,5 +77,6 @@ pub fn overrides(a: &SceneArgs) -> Overrides {
         shadows: a.shadows,
         shadow_resolution: a.shadow_resolution,
         shadow_filter: a.shadow_filter,
+        shadow_cascades: a.shadow_cascades,
     }
 }

@@ -223,6 +223,10 @@ pub struct SceneArgs {
     /// comparison) or poisson (rotated Poisson-disk taps).
     #[arg(long, value_name = "FILTER", value_parser = values::named::<ShadowFilter>())]
     pub shadow_filter: Option<ShadowFilter>,
+    /// Let every directional light split its shadow map into cascades when the view spans a
+    /// depth ratio over 8 (on), or keep one map fitted to the scene (off) [default: on].
+    #[arg(long, value_name = "ON|OFF", value_parser = values::on_off())]
+    pub shadow_cascades: Option<bool>,
 }
 
 #[derive(Args, Debug)]

@@ -51,8 +51,12 @@ fn extras_are_written_and_read_by_the_same_types() {
         ..Light::spot(DVec3::new(0.5, 3.0, 1.0), DVec3::new(0.1, -1.0, 0.2), [1.0, 0.9, 0.8], 4.0, 0.3, (0.1, 0.4))
     };
     scene.materials[1].h = PhongExponent::Mirror;
-    scene.lights[0].shadow =
-        crate::shadows::ShadowSettings { casts: false, resolution: 300, filter: crate::shadows::ShadowFilter::Poisson };
+    scene.lights[0].shadow = crate::shadows::ShadowSettings {
+        casts: false,
+        resolution: 300,
+        filter: crate::shadows::ShadowFilter::Poisson,
+        cascades: false,
+    };
     let settings = SceneSettings { shading: Some(ShadingMode::Flat), specular: Some(SpecularModel::CookTorrance) };
     let doc: Value = serde_json::from_str(&scene_to_gltf_json(&scene, &settings)).unwrap();
     let keys = |v: &Value| v["extras"]["shadelab"].as_object().unwrap().keys().cloned().collect::<Vec<_>>().join(" ");
@@ -61,7 +65,7 @@ fn extras_are_written_and_read_by_the_same_types() {
     assert_eq!(
         keys(&doc["extensions"]["KHR_lights_punctual"]["lights"][0]),
         "I_L alpha casts_shadows color d0 direction falloff_form inner_cone outer_cone position range \
-         shadow_filter shadow_resolution"
+         shadow_cascades shadow_filter shadow_resolution"
     );
     assert_eq!(keys(&doc["scenes"][0]), "ambient shading specular");
     assert_eq!(keys(&doc["cameras"][0]), "eye far fov_y_deg near target up");

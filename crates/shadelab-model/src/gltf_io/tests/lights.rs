@@ -129,9 +129,9 @@ fn light_with_extras(extras: Value) -> Vec<u8> {
 fn shadow_settings_round_trip_exactly() {
     let mut scene = Scene::builtin("default").unwrap();
     let settings = [
-        ShadowSettings { casts: false, resolution: 256, filter: ShadowFilter::Hard },
-        ShadowSettings { casts: true, resolution: 4096, filter: ShadowFilter::Poisson },
-        ShadowSettings { casts: true, resolution: 1000, filter: ShadowFilter::Pcf },
+        ShadowSettings { casts: false, resolution: 256, filter: ShadowFilter::Hard, cascades: true },
+        ShadowSettings { casts: true, resolution: 4096, filter: ShadowFilter::Poisson, cascades: false },
+        ShadowSettings { casts: true, resolution: 1000, filter: ShadowFilter::Pcf, cascades: true },
     ];
     scene.lights.push(Light::spot(DVec3::new(1.0, 3.0, 0.0), DVec3::NEG_Y, [1.0; 3], 2.0, 0.1, (0.2, 0.5)));
     for (l, s) in scene.lights.iter_mut().zip(settings) {
@@ -149,6 +149,8 @@ fn shadow_settings_round_trip_exactly() {
     let s = load(&light_with_extras(json!({ "shadelab": { "shadow_filter": "hard", "shadow_resolution": 512.0 } })));
     let want = ShadowSettings { resolution: 512, filter: ShadowFilter::Hard, ..Default::default() };
     assert_eq!(s.scene.lights[0].shadow, want);
+    let s = load(&light_with_extras(json!({ "shadelab": { "shadow_cascades": false } })));
+    assert_eq!(s.scene.lights[0].shadow, ShadowSettings { cascades: false, ..Default::default() });
 }
 
 #[test]

@@ -90,7 +90,7 @@ impl Viewer {
                     l.outer_cone = outer.to_radians().clamp(cone.min, cone.max);
                     l.inner_cone = inner.min(outer).to_radians().max(cone.min).min(l.outer_cone);
                 }
-                shadow_ui(ui, i, &mut l.shadow);
+                shadow_ui(ui, i, l.kind == LightKind::Directional, &mut l.shadow);
                 shadow_map_ui(ui, i, l.kind, &mut self.shadow_maps);
             });
         }
@@ -101,8 +101,9 @@ impl Viewer {
 }
 
 /// One light's shadow settings: whether it casts, its shadow map's side (the powers of two in
-/// `SHADOW_RESOLUTION`; a file's other side is shown as it is until changed) and its filter.
-fn shadow_ui(ui: &mut egui::Ui, light: usize, shadow: &mut ShadowSettings) {
+/// `SHADOW_RESOLUTION`; a file's other side is shown as it is until changed), its filter, and
+/// for a directional light whether it may use cascades.
+fn shadow_ui(ui: &mut egui::Ui, light: usize, directional: bool, shadow: &mut ShadowSettings) {
     ui.horizontal(|ui| {
         ui.checkbox(&mut shadow.casts, "casts shadows")
             .on_hover_text("the light's shadow map hides what another object blocks from it (when the scene has any)");
@@ -128,6 +129,12 @@ fn shadow_ui(ui: &mut egui::Ui, light: usize, shadow: &mut ShadowSettings) {
                 })
                 .response
                 .on_hover_text(format!("shadow filter: {}", filter_meaning(shadow.filter)));
+            if directional {
+                ui.checkbox(&mut shadow.cascades, "cascades").on_hover_text(
+                    "split the map along the view's depth when the objects in view span a depth ratio over 8, \
+                     finest near the camera",
+                );
+            }
         });
     });
 }

@@ -1,8 +1,7 @@
 // Cast shadows from shadow maps (docs/model.md §0, §6): the visibility of a light from a surface
 // point, by comparing the point's depth seen from the light with the depth the light's shadow
-// pass stored (crates/shadelab-render/src/shadow_pass.rs). The projection math has f64 twins in
-// crates/shadelab-model/src/shadows.rs, with the constants' reasons; the f64 reference traces
-// exact shadow rays instead of sampling maps. Everything here exists only in the permutations
+// pass stored (crates/shadelab-render/src/shadow_pass.rs). The projection math is in
+// shadow_math.wgsl; the f64 reference traces exact shadow rays instead of sampling maps. Everything here exists only in the permutations
 // with EFFECT_CAST_SHADOWS, the bind group @group(2) included.
 
 #if EFFECT_CAST_SHADOWS
@@ -14,7 +13,6 @@ const SHADOW_FILTER_POISSON: u32 = 2u;
 
 // Twins of crates/shadelab-model/src/shadows.rs (shadows::WGSL_TWINS), reasons there.
 const MAX_SHADOW_LAYERS: u32 = 48u;
-const SHADOW_NORMAL_OFFSET_TEXELS: f32 = 1.5;
 const SHADOW_POISSON_TAPS: u32 = 16u;
 const SHADOW_POISSON_RADIUS_TEXELS: f32 = 2.0;
 const SHADOW_CASCADE_MARGIN_TEXELS: f32 = 3.0;
@@ -55,31 +53,6 @@ struct ShadowCasters {
 @group(2) @binding(2) var shadow_linear: sampler_comparison;
 @group(2) @binding(3) var shadow_nearest: sampler_comparison;
 @group(3) @binding(0) var<uniform> shadow_casters: ShadowCasters;
-
-// The cube face that sees direction `d` from a point light: its largest axis, ties to x then y;
-// 0 +x, 1 −x, 2 +y, 3 −y, 4 +z, 5 −z.
-fn shadow_face(d: vec3<f32>) -> u32 {
-    let a = abs(d);
-    if (a.x >= a.y && a.x >= a.z) {
-        return select(1u, 0u, d.x >= 0.0);
-    }
-    if (a.y >= a.z) {
-        return select(3u, 2u, d.y >= 0.0);
-    }
-    return select(5u, 4u, d.z >= 0.0);
-}
-
-// (u, v, depth) of world point `p` in the map of view-projection `m`: u, v in [0, 1], v down.
-fn shadow_map_coord(m: mat4x4<f32>, p: vec3<f32>) -> vec3<f32> {
-    let c = m * vec4(p, 1.0);
-    let ndc = c.xyz / c.w;
-    return vec3(ndc.x * 0.5 + 0.5, 0.5 - ndc.y * 0.5, ndc.z);
-}
-
-// World size of one texel at distance `dist` along the map's view axis.
-fn shadow_texel_world(texel_world: f32, perspective: bool, dist: f32) -> f32 {
-    return select(texel_world, texel_world * max(dist, 0.0), perspective);
-}
 
 // A per-pixel angle in [0, 2π) (interleaved gradient noise of the screen position): rotates the
 // Poisson disk so its pattern turns into fine noise instead of banding.
@@ -123,12 +96,6 @@ fn shadow_compare(sl: ShadowLight, layer: u32, t: vec3<f32>, pixel: vec2<f32>) -
 }
 
 #if EFFECT_SHADOW_CASCADES
-// The world size of one texel of orthographic map `m`, `resolution` texels across: the map spans
-// 2 / |first row| in world units.
-fn shadow_ortho_texel_world(m: mat4x4<f32>, resolution: f32) -> f32 {
-    return 2.0 / (length(vec3(m[0].x, m[1].x, m[2].x)) * resolution);
-}
-
 // Which of directional light `sl`'s cascades (finest first) shadows world point `p` with unit
 // normal `n`: the first whose map holds the normal-offset point SHADOW_CASCADE_MARGIN_TEXELS from
 // its edge (so the filter's taps stay on it) and inside its depth range; the last otherwise.

@@ -14,6 +14,14 @@ struct SweepCounts {
     total: u32,
     // Index of the first m row in `table` (geometry rows come first, 3 per entry).
     m_offset: u32,
+    // Shadow projections, 5 rows each after the α rows: the matrix's columns, then
+    // (texel_world, perspective).
+    shadow: u32,
+    // This dispatch's combinations: `chunk` of them from `first` (the outputs are bound from
+    // there, so one binding stays within the device's limit).
+    first: u32,
+    chunk: u32,
+    _pad: u32,
 }
 
 // SWEEP_COLOR, the material's colour in the per-light contribution, and SWEEP_CONE_PER_M come
@@ -23,14 +31,15 @@ struct SweepCounts {
 
 @group(0) @binding(0) var<uniform> counts: SweepCounts;
 // Rows: geometry (n, v, l) × count, then m (x), h (x = h, y = 1 for mirror), μ (xyz), d (x),
-// α (x = α, y = d0 of the linear falloff).
+// α (x = α, y = d0 of the linear falloff), the shadow projections.
 @group(0) @binding(1) var<storage, read> table: array<vec4<f32>>;
 @group(0) @binding(2) var<storage, read_write> outputs: array<f32>;
 
 @compute @workgroup_size(64)
 fn sweep(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workgroups) groups: vec3<u32>) {
-    let idx = gid.x + gid.y * groups.x * 64u;
-    if (idx >= counts.total) {
+    let local = gid.x + gid.y * groups.x * 64u;
+    let idx = counts.first + local;
+    if (local >= counts.chunk || idx >= counts.total) {
         return;
     }
     var rest = idx;
@@ -83,7 +92,7 @@ fn sweep(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workgroups)
         SPECULAR_COOK_TORRANCE,
     );
 
-    let base = idx * SWEEP_OUTPUTS;
+    let base = local * SWEEP_OUTPUTS;
     outputs[base + COL_DIFFUSE_LAMBERT] = diffuse_lambert(dot(n, l));
     outputs[base + COL_SPECULAR_PHONG] = specular_phong(dot(v, r), h_row.x, mirror);
     let n_x_h = cross(n, half);
@@ -100,6 +109,18 @@ fn sweep(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workgroups)
     let inner = outer * min(a_row.x, 1.0);
     outputs[base + COL_SPOT_CONE] = spot_cone(dot(v, l), cos(inner), cos(outer));
     outputs[base + COL_WINDOW_RANGE] = window_range(d, a_row.y);
+
+    // Shadow math: case (geometry + m index) of the projections, the receiver at l·d with normal
+    // n moved by the normal offset, as shadow_visibility does (docs/model.md §6).
+    let so = o + counts.m + counts.h + counts.mu + counts.d + counts.alpha + ((gi + mi) % counts.shadow) * 5u;
+    let sm = mat4x4(table[so], table[so + 1u], table[so + 2u], table[so + 3u]);
+    let s_row = table[so + 4u];
+    let to_p = l * d;
+    let texel = shadow_texel_world(s_row.x, s_row.y > 0.5, d * dot(n, l));
+    outputs[base + COL_SHADOW_FACE] = f32(shadow_face(to_p));
+    outputs[base + COL_SHADOW_TEXEL_WORLD] = texel;
+    put_rgb(base + COL_SHADOW_MAP_COORD, shadow_map_coord(sm, to_p + n * (SHADOW_NORMAL_OFFSET_TEXELS * texel)));
+    outputs[base + COL_SHADOW_ORTHO_TEXEL_WORLD] = shadow_ortho_texel_world(sm, SWEEP_SHADOW_RESOLUTION);
 }
 
 // A colour's three channels into consecutive outputs from `at`.

@@ -135,14 +135,20 @@ pub const SPOT_SHADOW_HALF_ANGLE_MAX: f64 = 85.0 * std::f64::consts::PI / 180.0;
 /// seen edge-on still gets a map with a finite, non-zero extent.
 pub const SHADOW_BOUNDS_RADIUS_MIN: f64 = 1e-3;
 
-/// The constants `shaders/shadows.wgsl` repeats, by their WGSL name: the twin test holds them
+/// Smallest clip-space w of a point in a perspective map: a point at the map's eye (a receiver at
+/// a point light's centre, w = 0) or behind it has no coordinate there and counts as outside the
+/// map, lit. 1e-20 keeps `c.xyz / w` finite in f32 for any |c.xyz| below 3e18.
+pub const SHADOW_CLIP_W_MIN: f64 = 1e-20;
+
+/// The constants `shaders/shadows.wgsl` and `shaders/shadow_math.wgsl` repeat, by their WGSL name: the twin test holds them
 /// equal, and every `f32`/`u32` constant of that file (other than the filter codes) is here.
-pub const WGSL_TWINS: [(&str, f64); 5] = [
+pub const WGSL_TWINS: [(&str, f64); 6] = [
     ("SHADOW_NORMAL_OFFSET_TEXELS", SHADOW_NORMAL_OFFSET_TEXELS as f64),
     ("SHADOW_POISSON_TAPS", SHADOW_POISSON_TAPS as f64),
     ("SHADOW_POISSON_RADIUS_TEXELS", SHADOW_POISSON_RADIUS_TEXELS as f64),
     ("MAX_SHADOW_LAYERS", MAX_SHADOW_LAYERS as f64),
     ("SHADOW_CASCADE_MARGIN_TEXELS", SHADOW_CASCADE_MARGIN_TEXELS),
+    ("SHADOW_CLIP_W_MIN", SHADOW_CLIP_W_MIN),
 ];
 
 /// The bounding sphere `(centre, radius)` of every object in world space (the corners of each
@@ -274,9 +280,13 @@ pub fn shadow_face(d: DVec3) -> u32 {
 
 /// Where world point `p` falls in the map of view-projection `m`: `(u, v, depth)`, u and v in
 /// [0, 1] across the map (v down, as textures are addressed), depth in [0, 1] from near to far.
-/// Twin of `shadow_map_coord` in `shaders/shadows.wgsl`.
+/// A point with clip w below [`SHADOW_CLIP_W_MIN`] is outside: `(−1, −1, −1)`.
+/// Twin of `shadow_map_coord` in `shaders/shadow_math.wgsl`.
 pub fn shadow_map_coord(m: DMat4, p: DVec3) -> DVec3 {
     let c = m * DVec4::new(p.x, p.y, p.z, 1.0);
+    if c.w < SHADOW_CLIP_W_MIN {
+        return DVec3::splat(-1.0);
+    }
     let ndc = c.truncate() / c.w;
     DVec3::new(ndc.x * 0.5 + 0.5, 0.5 - ndc.y * 0.5, ndc.z)
 }

@@ -16,7 +16,7 @@ mod report;
 
 pub use columns::{COLUMNS, Column, OUTPUTS, wgsl_columns};
 pub use dispatch::{SWEEP_KERNEL, sweep_source};
-pub use inputs::{Geometry, SweepInputs};
+pub use inputs::{Geometry, ShadowCase, SweepInputs};
 pub use report::{SweepReport, TermReport};
 
 use crate::gpu::Gpu;
@@ -67,7 +67,8 @@ pub fn run(gpu: &Gpu, inputs: SweepInputs) -> SweepReport {
         let (m, (h, mirror), mu) = (inputs.m[mi] as f64, inputs.h[hi], inputs.mu[ui].map(|x| x as f64));
         let (d, (alpha, d0)) = (inputs.d[di] as f64, inputs.alpha[ai]);
         let (h, alpha, d0) = (h as f64, alpha as f64, d0 as f64);
-        let expected = reference(n, v, l, (m, h, mirror), mu, (d, alpha, d0), 1.0);
+        let shadow = inputs.shadow_case(gi, mi);
+        let expected = reference(n, v, l, (m, h, mirror), mu, (d, alpha, d0), 1.0, shadow);
         let gpu_out = &out[idx * OUTPUTS..(idx + 1) * OUTPUTS];
         let mut perturbed: Option<[[f64; OUTPUTS]; 8]> = None;
         let near_switch = {
@@ -84,7 +85,7 @@ pub fn run(gpu: &Gpu, inputs: SweepInputs) -> SweepReport {
                     t.nonfinite += 1;
                     continue;
                 }
-                if gv < 0.0 {
+                if gv < 0.0 && !t.signed {
                     t.negative += 1;
                 }
                 if gv > t.bound * BOUND_SLACK {
@@ -127,6 +128,7 @@ pub fn run(gpu: &Gpu, inputs: SweepInputs) -> SweepReport {
                             mu.map(|x| x * (1.0 + k)),
                             (d * (1.0 + k) + k.abs(), alpha * (1.0 + k), d0 * (1.0 + k)),
                             1.0 + k,
+                            shadow,
                         )
                     })
                 });

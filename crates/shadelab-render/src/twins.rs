@@ -9,11 +9,19 @@ use shadelab_model::params::NamedValue;
 use shadelab_model::{FalloffForm, LightKind, SpecularModel};
 
 /// Each WGSL file and the source of its f64 twin.
-const TWINS: [(&str, &str); 5] = [
+const TWINS: [(&str, &str); 6] = [
     ("common.wgsl", include_str!("../../shadelab-model/src/lighting/common.rs")),
     ("brdf.wgsl", include_str!("../../shadelab-model/src/lighting/brdf.rs")),
     ("lights.wgsl", include_str!("../../shadelab-model/src/lighting/lights.rs")),
-    // The projection and cascade math; the map sampling has none (the reference traces shadow rays).
+    // The projection and cascade math, and the map lookup around it; the map sampling has
+    // none (the reference traces shadow rays).
+    (
+        "shadow_math.wgsl",
+        concat!(
+            include_str!("../../shadelab-model/src/shadows.rs"),
+            include_str!("../../shadelab-model/src/shadows/cascades.rs")
+        ),
+    ),
     (
         "shadows.wgsl",
         concat!(
@@ -143,7 +151,7 @@ fn wgsl_shadow_constants_equal_rust() {
     for (name, code) in &codes {
         assert_eq!(wgsl_constant(&module, name), Some(*code as f64), "{name}: WGSL vs ShadowFilter::code");
     }
-    for (name, ty) in wgsl_consts(wgsl_file("shadows.wgsl")) {
+    for (name, ty) in ["shadows.wgsl", "shadow_math.wgsl"].into_iter().flat_map(|f| wgsl_consts(wgsl_file(f))) {
         if ty == "f32" || ty == "u32" {
             let known = WGSL_TWINS.iter().any(|(n, _)| *n == name) || codes.iter().any(|(n, _)| *n == name);
             assert!(known, "{name} in shadows.wgsl is neither in shadows::WGSL_TWINS nor a filter code");

@@ -3,9 +3,11 @@
 //! before `shaders/sweep.wgsl`, and the f64 reference of a combination ([`reference`]) writes the
 //! same columns by name, so the GPU and the f64 side cannot disagree on positions.
 
+use super::inputs::ShadowCase;
 use glam::DVec3;
 use shadelab_model::guards::{D0_MIN, M_MIN, N_DOT_V_MIN};
 use shadelab_model::lighting::{brdf, common, lights};
+use shadelab_model::shadows;
 use shadelab_model::{FalloffForm, Light, LightKind, Material, PhongExponent, SpecularModel};
 
 /// One term the kernel writes per combination: `channels` consecutive floats.
@@ -20,13 +22,15 @@ pub struct Column {
     /// The largest value the guards allow.
     pub bound: f64,
     pub why_bound: &'static str,
+    /// The term may be negative (a map coordinate outside the map): not counted as an error.
+    pub signed: bool,
 }
 
 /// The peak of the chapter's Beckmann D, `1/(4 m²)` at `m = M_MIN`.
 const D_MAX: f64 = 1.0 / (4.0 * M_MIN * M_MIN);
 
 /// Every column in the order the kernel writes them (and the report lists them).
-pub const COLUMNS: [Column; 12] = [
+pub const COLUMNS: [Column; 16] = [
     col("diffuse_lambert", "DIFFUSE_LAMBERT", 1, 1.0, "N·L of unit vectors"),
     col("specular_phong", "SPECULAR_PHONG", 1, 1.0, "(V·R)^h with V·R clamped to [0, 1]"),
     col("d_beckmann", "D_BECKMANN", 1, D_MAX, "peak 1/(4 m²) at m = M_MIN"),
@@ -51,10 +55,17 @@ pub const COLUMNS: [Column; 12] = [
     ),
     col("spot_cone", "SPOT_CONE", 1, 1.0, "a ramp clamped to [0, 1], squared"),
     col("window_range", "WINDOW_RANGE", 1, 1.0, "1 − x⁴, x clamped to [0, 1]"),
+    col("shadow_face", "SHADOW_FACE", 1, 5.0, "a cube face index, 0…5"),
+    col("shadow_texel_world", "SHADOW_TEXEL_WORLD", 1, f64::INFINITY, "a world length: finite, grows with the scene"),
+    Column {
+        signed: true,
+        ..col("shadow_map_coord", "SHADOW_MAP_COORD", 3, f64::INFINITY, "finite; outside [0, 1] off the map")
+    },
+    col("shadow_ortho_texel_world", "SHADOW_ORTHO_TEXEL_WORLD", 1, f64::INFINITY, "a world length: finite"),
 ];
 
 const fn col(name: &'static str, wgsl: &'static str, channels: usize, bound: f64, why_bound: &'static str) -> Column {
-    Column { name, wgsl, channels, bound, why_bound }
+    Column { name, wgsl, channels, bound, why_bound, signed: false }
 }
 
 /// Floats the kernel writes per combination (`SWEEP_OUTPUTS` in WGSL).
@@ -112,6 +123,7 @@ pub fn wgsl_columns() -> String {
     let c = SWEEP_COLOR.map(|x| x as f32);
     s += &format!("const SWEEP_COLOR: vec3<f32> = vec3({:?}, {:?}, {:?});\n", c[0], c[1], c[2]);
     s += &format!("const SWEEP_CONE_PER_M: f32 = {:?};\n", SWEEP_CONE_PER_M as f32);
+    s += &format!("const SWEEP_SHADOW_RESOLUTION: f32 = {:?};\n", SWEEP_SHADOW_RESOLUTION as f32);
     s += &format!("const SWEEP_OUTPUTS: u32 = {OUTPUTS}u;\n");
     for (c, r) in ranges() {
         s += &format!("const COL_{}: u32 = {}u;\n", c.wgsl, r.start);
@@ -125,6 +137,9 @@ const SWEEP_COLOR: [f64; 3] = [0.8, 0.5, 0.2];
 /// the GPU multiplies by.
 const SWEEP_CONE_PER_M: f64 = std::f32::consts::FRAC_PI_2 as f64;
 
+/// Map side the sweep's `shadow_ortho_texel_world` divides by (`SWEEP_SHADOW_RESOLUTION`).
+const SWEEP_SHADOW_RESOLUTION: f64 = 2048.0;
+
 const DIFFUSE_LAMBERT: usize = offset("DIFFUSE_LAMBERT");
 const SPECULAR_PHONG: usize = offset("SPECULAR_PHONG");
 const D_BECKMANN: usize = offset("D_BECKMANN");
@@ -137,6 +152,10 @@ const CONTRIBUTION_PHONG: usize = offset("CONTRIBUTION_PHONG");
 const CONTRIBUTION_COOK_TORRANCE: usize = offset("CONTRIBUTION_COOK_TORRANCE");
 const SPOT_CONE: usize = offset("SPOT_CONE");
 const WINDOW_RANGE: usize = offset("WINDOW_RANGE");
+const SHADOW_FACE: usize = offset("SHADOW_FACE");
+const SHADOW_TEXEL_WORLD: usize = offset("SHADOW_TEXEL_WORLD");
+const SHADOW_MAP_COORD: usize = offset("SHADOW_MAP_COORD");
+const SHADOW_ORTHO_TEXEL_WORLD: usize = offset("SHADOW_ORTHO_TEXEL_WORLD");
 
 /// The f64 reference of the kernel's outputs for one combination's inputs.
 ///
@@ -144,6 +163,8 @@ const WINDOW_RANGE: usize = offset("WINDOW_RANGE");
 /// (1 for the exact model): the GPU's `to_light / d` is a unit vector, and its `cos` of a cone
 /// angle exact, only to a few f32 ulps. (Near 1 an f32 cosine is good to 6e-8, so a cone under a
 /// degree, where `1 − cos` is ~1e-4 or less, is decided by that rounding.)
+// One argument per axis of the sweep, as the kernel reads them.
+#[allow(clippy::too_many_arguments)]
 pub(super) fn reference(
     n_raw: DVec3,
     v: DVec3,
@@ -152,6 +173,7 @@ pub(super) fn reference(
     mu: [f64; 3],
     (d, alpha, d0): (f64, f64, f64),
     l_len: f64,
+    shadow: &ShadowCase,
 ) -> [f64; OUTPUTS] {
     let n = common::safe_normalize(n_raw, v);
     let half = common::safe_normalize(l + v, n);
@@ -200,6 +222,13 @@ pub(super) fn reference(
     rgb(&mut out, CONTRIBUTION_COOK_TORRANCE, cc);
     out[SPOT_CONE] = lights::spot_cone(v.dot(l), inner.cos() * l_len, outer.cos() * l_len);
     out[WINDOW_RANGE] = lights::window_range(d, d0);
+    let to_p = l * d;
+    let texel = shadows::shadow_texel_world(shadow.texel_world as f64, shadow.perspective, d * n.dot(l));
+    out[SHADOW_FACE] = shadows::shadow_face(to_p) as f64;
+    out[SHADOW_TEXEL_WORLD] = texel;
+    let q = to_p + n * (shadows::SHADOW_NORMAL_OFFSET_TEXELS as f64 * texel);
+    rgb(&mut out, SHADOW_MAP_COORD, shadows::shadow_map_coord(shadow.dmat4(), q).to_array());
+    out[SHADOW_ORTHO_TEXEL_WORLD] = shadows::shadow_ortho_texel_world(shadow.dmat4(), SWEEP_SHADOW_RESOLUTION);
     out
 }
 
@@ -211,7 +240,8 @@ mod tests {
     #[test]
     fn every_column_is_written_on_both_sides() {
         let y = DVec3::Y;
-        let out = reference(y, y, y, (0.2, 20.0, false), [0.04; 3], (1.0, 0.1, 1.0), 1.0);
+        let case = super::super::SweepInputs::standard().shadow[0];
+        let out = reference(y, y, y, (0.2, 20.0, false), [0.04; 3], (1.0, 0.1, 1.0), 1.0, &case);
         assert!(out.iter().all(|x| !x.is_nan()), "{out:?}");
         for c in COLUMNS {
             let name = format!("COL_{}", c.wgsl);

@@ -22,21 +22,6 @@ pub(super) fn dispatch(gpu: &Gpu, inputs: &SweepInputs, total: usize) -> Vec<f32
         label: Some("sweep"),
         source: wgpu::ShaderSource::Wgsl(sweep_source().into()),
     });
-    let counts: [u32; 8] = [
-        inputs.geometry.len() as u32,
-        inputs.m.len() as u32,
-        inputs.h.len() as u32,
-        inputs.mu.len() as u32,
-        inputs.d.len() as u32,
-        inputs.alpha.len() as u32,
-        total as u32,
-        (inputs.geometry.len() * 3) as u32,
-    ];
-    let counts_buf = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
-        label: Some("sweep counts"),
-        contents: bytemuck::cast_slice(&counts),
-        usage: wgpu::BufferUsages::UNIFORM,
-    });
     let table_buf = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
         label: Some("sweep table"),
         contents: bytemuck::cast_slice(&inputs.table()),
@@ -63,20 +48,51 @@ pub(super) fn dispatch(gpu: &Gpu, inputs: &SweepInputs, total: usize) -> Vec<f32
         compilation_options: Default::default(),
         cache: None,
     });
-    let bind = device.create_bind_group(&wgpu::BindGroupDescriptor {
-        label: Some("sweep"),
-        layout: &pipeline.get_bind_group_layout(0),
-        entries: &[
-            wgpu::BindGroupEntry { binding: 0, resource: counts_buf.as_entire_binding() },
-            wgpu::BindGroupEntry { binding: 1, resource: table_buf.as_entire_binding() },
-            wgpu::BindGroupEntry { binding: 2, resource: out_buf.as_entire_binding() },
-        ],
-    });
-    let groups = total.div_ceil(64) as u32;
-    let max = device.limits().max_compute_workgroups_per_dimension;
-    let (gx, gy) = if groups <= max { (groups, 1) } else { (max, groups.div_ceil(max)) };
+    // Chunks of whole workgroups whose outputs fit one storage binding; 64 combinations of
+    // OUTPUTS floats are a multiple of 256 bytes, the offset alignment.
+    let limit = device.limits().max_storage_buffer_binding_size as usize;
+    let per_chunk = (limit / (OUTPUTS * 4) / 64 * 64).max(64);
     let mut enc = device.create_command_encoder(&Default::default());
-    {
+    for first in (0..total).step_by(per_chunk) {
+        let chunk = per_chunk.min(total - first);
+        let counts: [u32; 12] = [
+            inputs.geometry.len() as u32,
+            inputs.m.len() as u32,
+            inputs.h.len() as u32,
+            inputs.mu.len() as u32,
+            inputs.d.len() as u32,
+            inputs.alpha.len() as u32,
+            total as u32,
+            (inputs.geometry.len() * 3) as u32,
+            inputs.shadow.len() as u32,
+            first as u32,
+            chunk as u32,
+            0,
+        ];
+        let counts_buf = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+            label: Some("sweep counts"),
+            contents: bytemuck::cast_slice(&counts),
+            usage: wgpu::BufferUsages::UNIFORM,
+        });
+        let bind = device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some("sweep"),
+            layout: &pipeline.get_bind_group_layout(0),
+            entries: &[
+                wgpu::BindGroupEntry { binding: 0, resource: counts_buf.as_entire_binding() },
+                wgpu::BindGroupEntry { binding: 1, resource: table_buf.as_entire_binding() },
+                wgpu::BindGroupEntry {
+                    binding: 2,
+                    resource: wgpu::BindingResource::Buffer(wgpu::BufferBinding {
+                        buffer: &out_buf,
+                        offset: (first * OUTPUTS * 4) as u64,
+                        size: wgpu::BufferSize::new((chunk * OUTPUTS * 4) as u64),
+                    }),
+                },
+            ],
+        });
+        let groups = chunk.div_ceil(64) as u32;
+        let max = device.limits().max_compute_workgroups_per_dimension;
+        let (gx, gy) = if groups <= max { (groups, 1) } else { (max, groups.div_ceil(max)) };
         let mut pass = enc.begin_compute_pass(&Default::default());
         pass.set_pipeline(&pipeline);
         pass.set_bind_group(0, &bind, &[]);

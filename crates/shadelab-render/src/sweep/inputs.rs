@@ -3,6 +3,7 @@
 
 use glam::DVec3;
 use shadelab_model::guards::{D0_MIN, H_MAX};
+use shadelab_model::{Light, Scene};
 
 /// One geometry: a (possibly zero or non-unit) normal, and unit view and light vectors, in f32
 /// as the GPU gets them.
@@ -12,6 +13,59 @@ pub struct Geometry {
     pub v: [f32; 3],
     pub l: [f32; 3],
     pub label: &'static str,
+}
+
+/// One shadow projection the sweep maps points through: a light's view-projection as the GPU gets
+/// it (f32), the world size of its texel and whether it is perspective.
+#[derive(Clone, Copy, Debug)]
+pub struct ShadowCase {
+    pub matrix: [[f32; 4]; 4],
+    pub texel_world: f32,
+    pub perspective: bool,
+    pub label: &'static str,
+}
+
+impl ShadowCase {
+    fn new(p: &shadelab_model::shadows::ShadowProjection, face: usize, label: &'static str) -> ShadowCase {
+        ShadowCase {
+            matrix: p.matrices[face].as_mat4().to_cols_array_2d(),
+            texel_world: p.texel_world as f32,
+            perspective: p.perspective,
+            label,
+        }
+    }
+
+    /// The matrix as the f64 side reads it: the f32 values the GPU multiplies by.
+    pub fn dmat4(&self) -> glam::DMat4 {
+        glam::Mat4::from_cols_array_2d(&self.matrix).as_dmat4()
+    }
+}
+
+/// The hard shadow projections (docs/model.md §9): grazing light, a light at the scene's centre
+/// or far outside it (near ≈ far), a scene of zero size and one of 10⁶, the widest spot cone, a
+/// cascade.
+fn shadow_cases() -> Vec<ShadowCase> {
+    use shadelab_model::shadows::{cascade_count, cascade_projection, scene_bounds, shadow_projection};
+    let o = DVec3::ZERO;
+    let grazing = Light::directional(DVec3::new(1.0, -1e-7, 0.3), [1.0; 3], 1.0);
+    let down = Light::directional(DVec3::NEG_Y, [1.0; 3], 1.0);
+    let at_centre = Light::point(o, [1.0; 3], 1.0, 0.0);
+    let far = Light::point(DVec3::new(1e6, 0.0, 0.0), [1.0; 3], 1.0, 0.0);
+    let spot = Light::spot(o, DVec3::new(0.2, -1.0, 0.1), [1.0; 3], 1.0, 0.0, (1.4, 89f64.to_radians()));
+    let field = Scene::builtin("field").expect("built-in");
+    let (centre, radius) = scene_bounds(&field).expect("objects");
+    let cascades =
+        cascade_projection(&field.lights[0], &field, 16.0 / 9.0, (centre, radius), 2048, cascade_count(&field));
+    vec![
+        ShadowCase::new(&shadow_projection(&grazing, o, 1.0, 2048), 0, "directional, grazing 1e-7"),
+        ShadowCase::new(&shadow_projection(&down, o, 1e6, 256), 0, "directional, scene radius 1e6"),
+        ShadowCase::new(&shadow_projection(&down, o, 0.0, 4096), 0, "directional, scene of zero size"),
+        ShadowCase::new(&shadow_projection(&at_centre, o, 1.0, 2048), 0, "point at the centre, +x face"),
+        ShadowCase::new(&shadow_projection(&at_centre, o, 0.0, 2048), 3, "point, zero-size scene (near ≈ far)"),
+        ShadowCase::new(&shadow_projection(&far, o, 1.0, 1024), 1, "point 1e6 away (near ≈ far)"),
+        ShadowCase::new(&shadow_projection(&spot, o, 10.0, 2048), 0, "spot, widest cone"),
+        ShadowCase::new(&cascades, 0, "first cascade of 'field'"),
+    ]
 }
 
 /// The sweep's axes; the combinations are their full product.
@@ -24,6 +78,8 @@ pub struct SweepInputs {
     pub d: Vec<f32>,
     /// (α of the quadratic falloff, d0 of the linear one)
     pub alpha: Vec<(f32, f32)>,
+    /// The shadow projections; combination (geometry g, m index i) uses case (g + i) mod count.
+    pub shadow: Vec<ShadowCase>,
 }
 
 fn unit(v: DVec3) -> [f32; 3] {
@@ -121,6 +177,7 @@ impl SweepInputs {
             mu: vec![[0.0; 3], [1e-6, 0.02, 0.04], [0.5; 3], [1.0, 0.766, 0.336], [1.0; 3]],
             d: vec![0.0, 1e-6, 1e-4, 0.01, 1.0, 100.0, 1e4],
             alpha: vec![(0.0, D0_MIN as f32), (1e-3, 0.01), (1.0, 1.0), (1e3, 10.0), (1e6, 1e3)],
+            shadow: shadow_cases(),
         }
     }
 
@@ -143,14 +200,29 @@ impl SweepInputs {
         [r / self.m.len(), mi, hi, ui, di, ai]
     }
 
+    /// The shadow case of the combination with geometry `gi` and m index `mi`.
+    pub fn shadow_case(&self, gi: usize, mi: usize) -> &ShadowCase {
+        &self.shadow[(gi + mi) % self.shadow.len()]
+    }
+
     /// A combination's inputs in words.
     pub fn describe(&self, idx: usize) -> String {
         let [gi, mi, hi, ui, di, ai] = self.split(idx);
         let g = &self.geometry[gi];
         let h = if self.h[hi].1 { "mirror".to_string() } else { format!("{:e}", self.h[hi].0) };
         format!(
-            "{}: n={:?} v={:?} l={:?} m={:e} h={} μ={:?} d={:e} α={:e} d0={:e}",
-            g.label, g.n, g.v, g.l, self.m[mi], h, self.mu[ui], self.d[di], self.alpha[ai].0, self.alpha[ai].1
+            "{}: n={:?} v={:?} l={:?} m={:e} h={} μ={:?} d={:e} α={:e} d0={:e}; shadow: {}",
+            g.label,
+            g.n,
+            g.v,
+            g.l,
+            self.m[mi],
+            h,
+            self.mu[ui],
+            self.d[di],
+            self.alpha[ai].0,
+            self.alpha[ai].1,
+            self.shadow_case(gi, mi).label
         )
     }
 
@@ -166,6 +238,10 @@ impl SweepInputs {
         t.extend(self.mu.iter().map(|mu| [mu[0], mu[1], mu[2], 0.0]));
         t.extend(self.d.iter().map(|&d| [d, 0.0, 0.0, 0.0]));
         t.extend(self.alpha.iter().map(|&(a, d0)| [a, d0, 0.0, 0.0]));
+        for c in &self.shadow {
+            t.extend(c.matrix);
+            t.push([c.texel_world, c.perspective as u32 as f32, 0.0, 0.0]);
+        }
         t
     }
 }

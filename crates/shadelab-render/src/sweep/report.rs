@@ -13,6 +13,8 @@ pub struct TermReport {
     /// The largest value the guards allow.
     pub bound: f64,
     pub why_bound: &'static str,
+    /// Negative values are legitimate (not counted in `negative`).
+    pub signed: bool,
     pub nonfinite: usize,
     pub negative: usize,
     pub over_bound: usize,
@@ -78,6 +80,7 @@ pub(super) fn terms() -> Vec<TermReport> {
             columns,
             bound: c.bound,
             why_bound: c.why_bound,
+            signed: c.signed,
             nonfinite: 0,
             negative: 0,
             over_bound: 0,

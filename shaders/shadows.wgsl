@@ -49,50 +49,86 @@ struct ShadowCasters {
 
 @group(2) @binding(0) var<uniform> shadows: Shadows;
 @group(2) @binding(1) var shadow_maps: texture_depth_2d_array;
-// Bilinear 2×2 compare (Pcf, Poisson) and one nearest compare (Hard).
+// Bilinear 2×2 compare (Pcf, Poisson) and one nearest compare (Hard; its binding exists in the
+// layout whether or not the permutation samples it).
 @group(2) @binding(2) var shadow_linear: sampler_comparison;
+#if EFFECT_SHADOW_HARD
 @group(2) @binding(3) var shadow_nearest: sampler_comparison;
+#endif
 @group(3) @binding(0) var<uniform> shadow_casters: ShadowCasters;
 
+#if EFFECT_SHADOW_POISSON
 // A per-pixel angle in [0, 2π) (interleaved gradient noise of the screen position): rotates the
 // Poisson disk so its pattern turns into fine noise instead of banding.
 fn shadow_rotation(pixel: vec2<f32>) -> f32 {
     return 6.2831853 * fract(52.9829189 * fract(dot(pixel, vec2(0.06711056, 0.00583715))));
 }
 
+// SHADOW_FILTER_POISSON: the mean of SHADOW_POISSON_TAPS bilinear compares on a disk of
+// SHADOW_POISSON_RADIUS_TEXELS texels, rotated per pixel.
+fn shadow_compare_poisson(sl: ShadowLight, uv: vec2<f32>, layer: u32, depth: f32, pixel: vec2<f32>) -> f32 {
+    var disk = array<vec2<f32>, SHADOW_POISSON_TAPS>(
+        vec2(-0.94201624, -0.39906216), vec2(0.94558609, -0.76890725),
+        vec2(-0.09418410, -0.92938870), vec2(0.34495938, 0.29387760),
+        vec2(-0.91588581, 0.45771432), vec2(-0.81544232, -0.87912464),
+        vec2(-0.38277543, 0.27676845), vec2(0.97484398, 0.75648379),
+        vec2(0.44323325, -0.97511554), vec2(0.53742981, -0.47373420),
+        vec2(-0.26496911, -0.41893023), vec2(0.79197514, 0.19090188),
+        vec2(-0.24188840, 0.99706507), vec2(-0.81409955, 0.91437590),
+        vec2(0.19984126, 0.78641367), vec2(0.14383161, -0.14100790),
+    );
+    let a = shadow_rotation(pixel);
+    let rot = mat2x2(cos(a), sin(a), -sin(a), cos(a)) * (SHADOW_POISSON_RADIUS_TEXELS * sl.texel_uv);
+    // The taps stay inside the light's part of the layer (the rest is another size's border).
+    let hi = vec2(sl.uv_scale - 0.5 * sl.texel_uv);
+    var sum = 0.0;
+    for (var i = 0u; i < SHADOW_POISSON_TAPS; i++) {
+        let q = clamp(uv + rot * disk[i], vec2(0.5 * sl.texel_uv), hi);
+        sum += textureSampleCompareLevel(shadow_maps, shadow_linear, q, layer, depth);
+    }
+    return sum / f32(SHADOW_POISSON_TAPS);
+}
+#endif
+
+#if EFFECT_SHADOW_HARD
+// SHADOW_FILTER_HARD: one compare at the nearest texel.
+fn shadow_compare_hard(uv: vec2<f32>, layer: u32, depth: f32) -> f32 {
+    return textureSampleCompareLevel(shadow_maps, shadow_nearest, uv, layer, depth);
+}
+#endif
+
+#if EFFECT_SHADOW_PCF
+// SHADOW_FILTER_PCF: the hardware's bilinear 2×2 compare.
+fn shadow_compare_pcf(uv: vec2<f32>, layer: u32, depth: f32) -> f32 {
+    return textureSampleCompareLevel(shadow_maps, shadow_linear, uv, layer, depth);
+}
+#endif
+
 // 1 where the point at map coordinate `t` (layer `layer`) is lit, 0 where shadowed, between at
-// filtered edges. Outside the map's square or depth range nothing is known: lit.
+// filtered edges. Outside the map's square or depth range nothing is known: lit. Each filter is
+// its own effect, in the permutation only when some light uses it: a CPU rasterizer runs the
+// code of branches no pixel takes. A filter the permutation lacks leaves the light unshadowed.
 fn shadow_compare(sl: ShadowLight, layer: u32, t: vec3<f32>, pixel: vec2<f32>) -> f32 {
     if (any(t.xy < vec2(0.0)) || any(t.xy > vec2(1.0)) || t.z < 0.0 || t.z > 1.0) {
         return 1.0;
     }
     let uv = t.xy * sl.uv_scale;
+#if EFFECT_SHADOW_HARD
     if (sl.shadow_filter == SHADOW_FILTER_HARD) {
-        return textureSampleCompareLevel(shadow_maps, shadow_nearest, uv, layer, t.z);
+        return shadow_compare_hard(uv, layer, t.z);
     }
+#endif
+#if EFFECT_SHADOW_POISSON
     if (sl.shadow_filter == SHADOW_FILTER_POISSON) {
-        var disk = array<vec2<f32>, SHADOW_POISSON_TAPS>(
-            vec2(-0.94201624, -0.39906216), vec2(0.94558609, -0.76890725),
-            vec2(-0.09418410, -0.92938870), vec2(0.34495938, 0.29387760),
-            vec2(-0.91588581, 0.45771432), vec2(-0.81544232, -0.87912464),
-            vec2(-0.38277543, 0.27676845), vec2(0.97484398, 0.75648379),
-            vec2(0.44323325, -0.97511554), vec2(0.53742981, -0.47373420),
-            vec2(-0.26496911, -0.41893023), vec2(0.79197514, 0.19090188),
-            vec2(-0.24188840, 0.99706507), vec2(-0.81409955, 0.91437590),
-            vec2(0.19984126, 0.78641367), vec2(0.14383161, -0.14100790),
-        );
-        let a = shadow_rotation(pixel);
-        let rot = mat2x2(cos(a), sin(a), -sin(a), cos(a)) * (SHADOW_POISSON_RADIUS_TEXELS * sl.texel_uv);
-        // The taps stay inside the light's part of the layer (the rest is another size's border).
-        let hi = vec2(sl.uv_scale - 0.5 * sl.texel_uv);
-        var sum = 0.0;
-        for (var i = 0u; i < SHADOW_POISSON_TAPS; i++) {
-            let q = clamp(uv + rot * disk[i], vec2(0.5 * sl.texel_uv), hi);
-            sum += textureSampleCompareLevel(shadow_maps, shadow_linear, q, layer, t.z);
-        }
-        return sum / f32(SHADOW_POISSON_TAPS);
+        return shadow_compare_poisson(sl, uv, layer, t.z, pixel);
     }
-    return textureSampleCompareLevel(shadow_maps, shadow_linear, uv, layer, t.z);
+#endif
+#if EFFECT_SHADOW_PCF
+    if (sl.shadow_filter == SHADOW_FILTER_PCF) {
+        return shadow_compare_pcf(uv, layer, t.z);
+    }
+#endif
+    return 1.0;
 }
 
 #if EFFECT_SHADOW_CASCADES

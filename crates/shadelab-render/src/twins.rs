@@ -34,7 +34,7 @@ const TWINS: [(&str, &str); 6] = [
 
 /// WGSL functions with no f64 twin, by file, and why. (Entry points are left out by naga's list:
 /// they are the GPU's stages, whose f64 counterpart is `reference::render_reference`.)
-const NO_TWIN: [(&str, &str, &str); 9] = [
+const NO_TWIN: [(&str, &str, &str); 12] = [
     ("common.wgsl", "is_nonfinite", "the NaN/∞ test on f32 bits; f64 code uses f64::is_finite"),
     ("common.wgsl", "any_nonfinite", "the debug view's test of a colour, built on is_nonfinite"),
     ("shading.wgsl", "finish", "the debug view that paints non-finite pixels; the reference has none"),
@@ -43,6 +43,9 @@ const NO_TWIN: [(&str, &str, &str); 9] = [
     ("shading.wgsl", "vertex_seed", "the shadow filter's noise seed; the reference traces exact shadow rays"),
     ("shadows.wgsl", "shadow_rotation", "the Poisson filter's per-pixel noise; the reference has no filter"),
     ("shadows.wgsl", "shadow_compare", "samples the shadow map; the reference traces rays instead"),
+    ("shadows.wgsl", "shadow_compare_hard", "samples the shadow map (nearest); the reference traces rays"),
+    ("shadows.wgsl", "shadow_compare_pcf", "samples the shadow map (2×2); the reference traces rays"),
+    ("shadows.wgsl", "shadow_compare_poisson", "samples the shadow map (Poisson); the reference traces rays"),
     ("shadows.wgsl", "shadow_visibility", "looks the point up in a shadow map; the reference traces a shadow ray"),
 ];
 

@@ -352,9 +352,14 @@ fn explain_and_bench_effects() {
     // The sphere on its ground casts a shadow onto it; `--shadows off` takes the effect out.
     let text = explain(&[]);
     assert!(
-        text.contains("pipeline [diffuse+phong+ambient+dir+shadows]") && text.contains("cast shadows: on"),
+        text.contains("pipeline [diffuse+phong+ambient+dir+shadows+pcf]")
+            && text.contains("cast shadows: on")
+            && text.contains("shadow filter poisson: off — no casting light filters with poisson"),
         "{text}"
     );
+    // A filter's code is in the pipeline only when a light uses it.
+    let text = explain(&["--shadow-filter", "poisson"]);
+    assert!(text.contains("pipeline [diffuse+phong+ambient+dir+shadows+poisson]"), "{text}");
     let text = explain(&["--shadows", "off"]);
     for needle in [
         "pipeline [diffuse+phong+ambient+dir]",
@@ -369,7 +374,13 @@ fn explain_and_bench_effects() {
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let text = String::from_utf8_lossy(&o.stdout);
     for shading in ["flat", "gouraud", "phong"] {
-        for pipeline in ["specialized", "uber", "without Cook–Torrance specular", "without point lights"] {
+        for pipeline in [
+            "specialized",
+            "uber",
+            "without Cook–Torrance specular",
+            "without point lights",
+            "without PCF shadow filter",
+        ] {
             assert!(
                 text.lines().any(|l| l.contains(&format!("| default | {shading} | {pipeline} |"))),
                 "no row {shading}/{pipeline} in:\n{text}"

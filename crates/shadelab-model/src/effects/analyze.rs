@@ -4,8 +4,10 @@
 //! [`EffectKey`].
 
 use super::declared::{Effect, EffectKey};
+use crate::params::NamedValue;
 use crate::params::{FalloffForm, LightKind, SpecularModel};
 use crate::scene::Scene;
+use crate::shadows::ShadowFilter;
 
 /// Absorption inside a translucent material below this `a·d` is neglected (docs/model.md §7).
 pub const ABSORPTION_NEGLECT_BELOW: f64 = 0.2;
@@ -149,6 +151,14 @@ pub fn analyze(scene: &Scene, specular: SpecularModel) -> Analysis {
     );
     let (on, why) = cast_shadows(scene, lights);
     a.decide(Effect::CastShadows, on, why);
+    for (effect, filter) in [
+        (Effect::ShadowFilterHard, ShadowFilter::Hard),
+        (Effect::ShadowFilterPcf, ShadowFilter::Pcf),
+        (Effect::ShadowFilterPoisson, ShadowFilter::Poisson),
+    ] {
+        let (used, why) = shadow_filter(lights, on, filter);
+        a.decide(effect, used, why);
+    }
     let (cascades, why) = shadow_cascades(scene, lights, on);
     a.decide(Effect::ShadowCascades, cascades, why);
     let transmitting: Vec<_> = used.iter().filter(|m| m.transmission > 0.0).collect();
@@ -203,6 +213,21 @@ fn cast_shadows(scene: &Scene, lights: &[crate::scene::Light]) -> (bool, String)
         )
     } else {
         (false, "no objects".into())
+    }
+}
+
+/// A shadow filter is on when shadows are and some casting light uses it: the others' code is
+/// left out (a CPU rasterizer would run it for every pixel).
+fn shadow_filter(lights: &[crate::scene::Light], shadows: bool, filter: ShadowFilter) -> (bool, String) {
+    let name = filter.name();
+    if !shadows {
+        return (false, "no cast shadows".into());
+    }
+    let n = lights.iter().filter(|l| l.shadow.casts && l.shadow.filter == filter).count();
+    if n > 0 {
+        (true, format!("{n} casting light(s) filter with {name}"))
+    } else {
+        (false, format!("no casting light filters with {name}"))
     }
 }
 
@@ -273,7 +298,7 @@ mod tests {
         let a = analyze(&s, SpecularModel::CookTorrance);
         assert_eq!(
             a.key.effects(),
-            vec![Effect::Diffuse, Effect::DirectionalLights, Effect::CastShadows],
+            vec![Effect::Diffuse, Effect::DirectionalLights, Effect::CastShadows, Effect::ShadowFilterPcf],
             "{:?}",
             a.lines()
         );
@@ -298,6 +323,25 @@ mod tests {
         assert!(analyze(&s, SpecularModel::Phong).key.has(Effect::LightRange));
         s.lights.clear();
         assert_eq!(analyze(&s, SpecularModel::Phong).key, EffectKey::NONE);
+    }
+
+    #[test]
+    fn a_shadow_filter_is_in_the_shader_only_when_a_light_uses_it() {
+        let key = |s: &Scene| analyze(s, SpecularModel::Phong).key;
+        let mut s = Scene::builtin("default").unwrap();
+        let filters = [Effect::ShadowFilterHard, Effect::ShadowFilterPcf, Effect::ShadowFilterPoisson];
+        assert_eq!(filters.map(|f| key(&s).has(f)), [false, true, false], "the default filter is pcf");
+        s.lights[0].shadow.filter = ShadowFilter::Poisson;
+        s.lights[1].shadow.filter = ShadowFilter::Hard;
+        assert_eq!(filters.map(|f| key(&s).has(f)), [true, false, true]);
+        s.lights[1].shadow.casts = false;
+        assert_eq!(
+            filters.map(|f| key(&s).has(f)),
+            [false, false, true],
+            "a light that casts no shadow needs no filter"
+        );
+        s.set_shadows(false);
+        assert_eq!(filters.map(|f| key(&s).has(f)), [false; 3]);
     }
 
     #[test]

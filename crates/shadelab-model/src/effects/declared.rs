@@ -178,6 +178,33 @@ declare_effects! {
         functions: &["shadow_visibility", "shadow_face", "shadow_map_coord", "shadow_texel_world", "shadow_compare"],
         members: &[("Shadows", "matrices"), ("Shadows", "lights"), ("ShadowLight", "shadow_filter")],
     },
+    /// The `hard` shadow filter: one compare at the nearest texel (docs/model.md §6).
+    ShadowFilterHard {
+        explain: "shadow filter hard",
+        name: "hard shadow filter",
+        label: "hard",
+        define: Some("EFFECT_SHADOW_HARD"),
+        functions: &["shadow_compare_hard"],
+        members: &[],
+    },
+    /// The `pcf` shadow filter: the hardware's bilinear 2×2 compare (docs/model.md §6).
+    ShadowFilterPcf {
+        explain: "shadow filter pcf",
+        name: "PCF shadow filter",
+        label: "pcf",
+        define: Some("EFFECT_SHADOW_PCF"),
+        functions: &["shadow_compare_pcf"],
+        members: &[],
+    },
+    /// The `poisson` shadow filter: rotated Poisson-disk taps (docs/model.md §6).
+    ShadowFilterPoisson {
+        explain: "shadow filter poisson",
+        name: "Poisson shadow filter",
+        label: "poisson",
+        define: Some("EFFECT_SHADOW_POISSON"),
+        functions: &["shadow_compare_poisson", "shadow_rotation"],
+        members: &[],
+    },
     /// A directional light's shadow map split along the view's depth into cascades, finest near
     /// the camera (docs/model.md §6).
     ShadowCascades {
@@ -410,7 +437,7 @@ mod tests {
         assert_eq!(format!("{k:?}"), "EffectKey(diffuse+cook-torrance+point+range)");
         assert_eq!(
             EffectKey::UBER.without(Effect::Ambient).label(),
-            "diffuse+phong+cook-torrance+dir+point+quad+linear+spot+range+shadows+cascades"
+            "diffuse+phong+cook-torrance+dir+point+quad+linear+spot+range+shadows+hard+pcf+poisson+cascades"
         );
         assert_eq!(Effect::SpecularPhong.to_string(), "Phong specular (V·R)^h");
     }

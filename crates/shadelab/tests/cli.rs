@@ -158,9 +158,23 @@ fn every_scene_flag_is_accepted() {
 #[test]
 fn extreme_legal_values_write_an_exr_without_nonfinite_pixels() {
     let path = out_dir().join("extreme.exr");
-    for specular in ["phong", "cook-torrance"] {
+    // Both specular models on the default scene with point lights; the large `field` with its
+    // sun in cascades at the coarsest map and the widest filter, and with a spot light.
+    let cases = [
+        ("phong", "default", "2048", "pcf", "point"),
+        ("cook-torrance", "default", "2048", "pcf", "point"),
+        ("cook-torrance", "field", "256", "poisson", "directional"),
+        ("phong", "field", "256", "hard", "spot"),
+    ];
+    for (specular, scene, side, filter, light) in cases {
         let o = shadelab(&[
             "render",
+            "--scene",
+            scene,
+            "--shadow-resolution",
+            side,
+            "--shadow-filter",
+            filter,
             "--specular",
             specular,
             "--m",
@@ -172,7 +186,7 @@ fn extreme_legal_values_write_an_exr_without_nonfinite_pixels() {
             "--falloff",
             "1e6",
             "--light",
-            "point",
+            light,
             "--width",
             "160",
             "--height",
@@ -183,7 +197,7 @@ fn extreme_legal_values_write_an_exr_without_nonfinite_pixels() {
         assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
         let img = image::open(&path).unwrap().to_rgba32f();
         assert_eq!((img.width(), img.height()), (160, 90));
-        assert!(img.pixels().all(|p| p.0.iter().all(|c| c.is_finite() && *c >= 0.0)), "{specular}");
+        assert!(img.pixels().all(|p| p.0.iter().all(|c| c.is_finite() && *c >= 0.0)), "{specular} {scene}");
         // Linear float: the background is stored as-is, not sRGB-encoded.
         let p = img.get_pixel(0, 0).0;
         assert!((p[0] - 0.03).abs() < 1e-6, "{p:?}");

@@ -91,3 +91,32 @@ fn a_point_lights_map_shows_a_cube_face_with_a_face_menu() {
     h.run_steps(20);
     assert!(h.query_by_value("face +x").is_some(), "the point light's map has a face menu");
 }
+
+/// On a scene large relative to the view the sun's map has cascades: the panel offers a cascade
+/// menu, and the second cascade is read back when chosen.
+#[test]
+fn a_directional_lights_cascades_have_a_menu() {
+    let mut h = harness();
+    let field = shadelab_model::Scene::builtin("field").expect("built-in");
+    let loaded = shadelab_model::gltf_io::LoadedScene {
+        scene: field,
+        settings: Default::default(),
+        warnings: Vec::new(),
+        cameras: Vec::new(),
+    };
+    h.state_mut().show_loaded(loaded, "field").expect("shown");
+    h.run_steps(2);
+    h.get_by_label("L1 — directional").click();
+    h.run_steps(2);
+    h.state_mut().set_shadow_map_view(0, true);
+    run_until(&mut h, "first cascade", |v| v.shadow_map_shown(0));
+    h.get_by_label("show shadow map").scroll_to_me();
+    h.run_steps(20);
+    assert!(h.query_by_value("cascade 1").is_some(), "the sun's map has a cascade menu");
+    h.get_by_value("cascade 1").click();
+    h.run_steps(2);
+    h.get_by_label("cascade 2").click();
+    h.run_steps(2);
+    run_until(&mut h, "second cascade", |v| v.shadow_map_shown(0));
+    assert!(h.query_by_value("cascade 2").is_some(), "the menu shows the chosen cascade");
+}

@@ -1,7 +1,8 @@
 //! The viewer's view of each light's shadow map (docs/model.md §6): a light whose "show shadow
-//! map" box is ticked gets its map (one face of a point light's six) read back from the GPU and
-//! shown as grey in its panel section. The map is read back only when what it depends on (the
-//! scene's objects, lights and meshes, the face) changed since the last read, not every frame.
+//! map" box is ticked gets its map (one face of a point light's six, or one of a directional
+//! light's cascades) read back from the GPU and shown as grey in its panel section. The map is
+//! read back only when what it depends on (the scene's objects, lights and meshes, the layer, and
+//! for cascades the camera) changed since the last read, not every frame.
 
 use eframe::egui;
 use shadelab_model::Scene;
@@ -15,22 +16,40 @@ pub const SHADOW_MAP_SHOWN_POINTS: f32 = 200.0;
 /// Drawn texels span grey 0..=this, so the farthest stays apart from the empty texels' white.
 const FARTHEST_GREY: f32 = 220.0;
 
-/// What a map on show depends on: the scene's objects, meshes and lights (not its camera: the
-/// maps are fitted to the scene's bounds, not to the view) and the face.
+/// What a map on show depends on: the scene's objects, meshes and lights, the layer, and the
+/// camera only for a directional light's cascades (fitted to the view; the other maps are fitted
+/// to the scene's bounds).
 struct MapKey {
     objects: Vec<shadelab_model::Object>,
     meshes: Vec<shadelab_model::mesh::TriangleMesh>,
     lights: Vec<shadelab_model::Light>,
     face: u32,
+    camera: Option<shadelab_model::Camera>,
+}
+
+/// The camera a light's map depends on: the view, for a directional light that may use cascades.
+fn camera_for(scene: &Scene, light: usize) -> Option<shadelab_model::Camera> {
+    let l = scene.lights.get(light)?;
+    (l.kind == shadelab_model::LightKind::Directional && l.shadow.cascades).then_some(scene.camera)
 }
 
 impl MapKey {
-    fn new(scene: &Scene, face: u32) -> MapKey {
-        MapKey { objects: scene.objects.clone(), meshes: scene.meshes.clone(), lights: scene.lights.clone(), face }
+    fn new(scene: &Scene, light: usize, face: u32) -> MapKey {
+        MapKey {
+            objects: scene.objects.clone(),
+            meshes: scene.meshes.clone(),
+            lights: scene.lights.clone(),
+            face,
+            camera: camera_for(scene, light),
+        }
     }
 
-    fn matches(&self, scene: &Scene, face: u32) -> bool {
-        self.face == face && self.objects == scene.objects && self.lights == scene.lights && self.meshes == scene.meshes
+    fn matches(&self, scene: &Scene, light: usize, face: u32) -> bool {
+        self.face == face
+            && self.camera == camera_for(scene, light)
+            && self.objects == scene.objects
+            && self.lights == scene.lights
+            && self.meshes == scene.meshes
     }
 }
 
@@ -87,10 +106,10 @@ impl ShadowMapViews {
         }
         self.views.retain(|&i, _| i < scene.lights.len());
         for (&i, v) in &mut self.views {
-            if v.shown.as_ref().is_some_and(|(k, _)| k.matches(scene, v.face)) {
+            if v.shown.as_ref().is_some_and(|(k, _)| k.matches(scene, i, v.face)) {
                 continue;
             }
-            let key = MapKey::new(scene, v.face);
+            let key = MapKey::new(scene, i, v.face);
             let texture = renderer.read_shadow_map(gpu_scene, i, v.face).map(|map| {
                 let name = format!("shadow map L{} face {}", i + 1, v.face);
                 ctx.load_texture(name, depth_as_grey(&map), egui::TextureOptions::LINEAR)

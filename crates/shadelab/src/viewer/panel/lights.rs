@@ -25,6 +25,8 @@ impl Viewer {
             }
         });
         let mut remove = None;
+        // A directional light's cascades (when its setting allows them), for the map's layer menu.
+        let cascades = shadelab_model::shadows::cascade_count(&self.scene);
         for (i, l) in self.scene.lights.iter_mut().enumerate() {
             egui::CollapsingHeader::new(format!("L{} — {}", i + 1, l.kind.name())).id_salt(i).show(ui, |ui| {
                 ui.horizontal(|ui| {
@@ -91,7 +93,12 @@ impl Viewer {
                     l.inner_cone = inner.min(outer).to_radians().max(cone.min).min(l.outer_cone);
                 }
                 shadow_ui(ui, i, l.kind == LightKind::Directional, &mut l.shadow);
-                shadow_map_ui(ui, i, l.kind, &mut self.shadow_maps);
+                let layers = match l.kind {
+                    LightKind::Point => 6,
+                    LightKind::Directional if l.shadow.cascades => cascades,
+                    _ => 1,
+                };
+                shadow_map_ui(ui, i, l.kind, layers, &mut self.shadow_maps);
             });
         }
         if let Some(i) = remove {
@@ -139,9 +146,10 @@ fn shadow_ui(ui: &mut egui::Ui, light: usize, directional: bool, shadow: &mut Sh
     });
 }
 
-/// The "show shadow map" box, a face menu for a point light's six faces, and the map as grey
-/// (nearest black, empty white) once the view has read it back.
-fn shadow_map_ui(ui: &mut egui::Ui, light: usize, kind: LightKind, maps: &mut ShadowMapViews) {
+/// The "show shadow map" box, a menu of the map's `layers` (a point light's six faces, a
+/// directional light's cascades), and the map as grey (nearest black, empty white) once the view
+/// has read it back.
+fn shadow_map_ui(ui: &mut egui::Ui, light: usize, kind: LightKind, layers: u32, maps: &mut ShadowMapViews) {
     let mut on = maps.is_on(light);
     ui.horizontal(|ui| {
         ui.checkbox(&mut on, "show shadow map")
@@ -159,6 +167,19 @@ fn shadow_map_ui(ui: &mut egui::Ui, light: usize, kind: LightKind, maps: &mut Sh
                 })
                 .response
                 .on_hover_text("which of the point light's six cube faces");
+        } else if let Some(view) = maps.view_mut(light)
+            && layers > 1
+        {
+            view.face = view.face.min(layers - 1);
+            egui::ComboBox::from_id_salt(("shadow map cascade", light))
+                .selected_text(format!("cascade {}", view.face + 1))
+                .show_ui(ui, |ui| {
+                    for c in 0..layers {
+                        ui.selectable_value(&mut view.face, c, format!("cascade {}", c + 1));
+                    }
+                })
+                .response
+                .on_hover_text("which of the directional light's cascades, 1 nearest the camera (the finest)");
         } else if let Some(view) = maps.view_mut(light) {
             view.face = 0;
         }

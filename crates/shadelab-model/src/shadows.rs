@@ -116,11 +116,12 @@ pub const SHADOW_POISSON_RADIUS_TEXELS: f32 = 2.0;
 /// Shadow-map layers: one per directional or spot light, six per point light (its cube faces),
 /// so 8 point lights fill them (`scene::MAX_LIGHTS` × 6).
 pub const MAX_SHADOW_LAYERS: u32 = crate::scene::MAX_LIGHTS as u32 * 6;
-/// Most memory all of a frame's shadow maps may take: 256 MiB. One 2D array holds every layer at
+/// Most memory all of a frame's shadow maps may take: 512 MiB. One 2D array holds every layer at
 /// one side; when the layers at the largest requested side would need more, the side is halved
-/// until they fit (8 point lights × 6 faces × 4096² × 4 bytes would be 3 GiB). 256 MiB holds a
-/// point and a directional light (7 layers) at 2048², or 4 layers at 4096².
-pub const SHADOW_MAP_BUDGET_BYTES: u64 = 256 << 20;
+/// until they fit (8 point lights × 6 faces × 4096² × 4 bytes would be 3 GiB, and get 1024²).
+/// 512 MiB holds a point and a directional light (7 layers, the default scene) at 4096², the
+/// top of [`SHADOW_RESOLUTION`], in 448 MiB.
+pub const SHADOW_MAP_BUDGET_BYTES: u64 = 512 << 20;
 /// Bytes per shadow-map texel (`Depth32Float`).
 pub const SHADOW_TEXEL_BYTES: u64 = 4;
 /// Near plane of a point or spot light's map as a share of its far plane, at least: keeps 32-bit

@@ -464,6 +464,33 @@ mod tests {
         s
     }
 
+    /// The plan keeps each light's own side, and halves the array's side only past the budget.
+    #[test]
+    fn the_plan_keeps_each_lights_side_within_the_budget() {
+        let limits = wgpu::Limits::default();
+        let mut s = Scene::builtin("default").unwrap();
+        for l in &mut s.lights {
+            l.shadow.resolution = 4096;
+        }
+        let plan = ShadowPlan::for_scene(&s, &limits);
+        assert_eq!((plan.side, plan.layers), (4096, 7), "a directional and a point light at 4096");
+        assert!(plan.bytes() <= SHADOW_MAP_BUDGET_BYTES);
+        s.lights[0].shadow.resolution = 256;
+        let plan = ShadowPlan::for_scene(&s, &limits);
+        assert_eq!(plan.lights[0].map(|m| m.resolution), Some(256), "a light asking less keeps its side");
+        assert_eq!(plan.lights[1].map(|m| (m.first_layer, m.layers, m.resolution)), Some((1, 6, 4096)));
+        // Eight point lights at 4096 (48 layers, 3 GiB) are halved until they fit: 1024.
+        s.lights = (0..8).map(|i| Light::point(DVec3::new(i as f64, 3.0, 0.0), [1.0; 3], 1.0, 0.0)).collect();
+        for l in &mut s.lights {
+            l.shadow.resolution = 4096;
+        }
+        let plan = ShadowPlan::for_scene(&s, &limits);
+        assert_eq!((plan.side, plan.layers), (1024, 48));
+        assert!(plan.bytes() <= SHADOW_MAP_BUDGET_BYTES && plan.lights.iter().flatten().all(|m| m.resolution == 1024));
+        s.set_shadows(false);
+        assert_eq!(ShadowPlan::for_scene(&s, &limits).layers, 1, "no caster: one 1×1 layer for the binding");
+    }
+
     /// Pixels darker with shadows than without (by more than 1/255): all false, nothing can
     /// shadow the plane. Prints the counts (the acne study of issue 13).
     #[test]

@@ -198,3 +198,51 @@ fn debug_view_paints_nonfinite_pixels_magenta() {
     let img = render_image(gpu(), &scene, 160, 90, &RenderSettings::default()).expect("upload");
     assert!(img.nonfinite_count() > 500);
 }
+
+/// Each term alone (`render --term`) matches the f64 reference's same term on a fine sphere, and
+/// the GPU's terms add up to its whole image on the default scene, in linear float (what an EXR
+/// holds), for both specular models.
+#[test]
+fn each_term_matches_the_reference_and_the_terms_sum_to_the_image() {
+    use shadelab_model::terms::Term;
+    let (w, h) = (320, 180);
+    for specular in SpecularModel::ALL_MODELS {
+        let settings = RenderSettings::new(ShadingMode::Phong, specular);
+        let sphere = single_shape_scene("sphere", Shape::Sphere, 256);
+        for term in Term::PARTS {
+            let s = term.scene(&sphere);
+            let gpu_img = render_image(gpu(), &s, w, h, &settings).expect("upload");
+            let reference = render_reference(&s, specular, w, h);
+            let pixels = interior(&reference, 1);
+            let (mean, max, worst) = error(&gpu_img, &reference, &pixels);
+            eprintln!("{specular} {term:?}: mean |error| {mean:.2e}, max {max:.2e} at {worst:?}");
+            // The whole image's thresholds (see the test above): a part errs no more than the whole.
+            assert!(mean < 1e-4, "{specular} {term:?}: mean |error| {mean}");
+            assert!(max < 4e-3, "{specular} {term:?}: max |error| {max} at {worst:?}");
+        }
+        let scene = Scene::builtin("default").expect("built-in");
+        let full = render_image(gpu(), &scene, w, h, &settings).expect("upload");
+        let parts: Vec<_> = Term::PARTS
+            .iter()
+            .map(|t| render_image(gpu(), &t.scene(&scene), w, h, &settings).expect("upload"))
+            .collect();
+        let background = shadelab_model::scene::BACKGROUND.map(|c| c as f32);
+        let (mut worst, mut covered) = (0.0f32, 0);
+        for (i, p) in full.pixels.iter().enumerate() {
+            // The background is drawn in every part (the same mesh covers the same pixels in
+            // each); the terms add up on the objects.
+            if p[..3] == background {
+                continue;
+            }
+            covered += 1;
+            for (c, whole) in p[..3].iter().enumerate() {
+                let sum: f32 = parts.iter().map(|q| q.pixels[i][c]).sum();
+                worst = worst.max((sum - whole).abs());
+            }
+        }
+        assert!(covered > w as usize * h as usize / 2, "{covered} pixels on objects");
+        eprintln!("{specular}: the terms' sum differs from the image by at most {worst:.2e}");
+        // f32 rounding of three sums of about one: measured 2.4e-7; 1e-5 leaves a factor of 40.
+        assert!(worst < 1e-5, "{specular}: terms sum to the image within {worst}");
+    }
+}

@@ -17,6 +17,7 @@ pub mod scene;
 pub mod scene_variants;
 pub mod shadows;
 pub mod terminator;
+pub mod terms;
 
 pub use params::{FalloffForm, LightKind, PhongExponent, ShadingMode, SpecularModel};
 pub use scene::{Camera, Light, Material, Object, Overrides, Scene, Shape, Transform};

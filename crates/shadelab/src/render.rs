@@ -55,12 +55,16 @@ pub fn save_scene(scene: &shadelab_model::Scene, settings: SceneSettings, path: 
 
 pub fn run(args: &cli::RenderArgs) -> Result<(), Failure> {
     let LoadedScene { scene, settings: file, .. } = cli::load(&args.scene)?;
+    // One term alone is the scene with the other terms' coefficients at 0 (--save-scene keeps
+    // the whole scene).
+    let whole = scene;
+    let scene = args.term.scene(&whole);
     let settings = RenderSettings { debug_nonfinite: args.debug_nonfinite, ..args.mode.resolve(file) };
     let (width, height) = args.size.pixels();
     let kind = image_kind(&args.output)?;
     if let Some(path) = &args.save_scene {
         let recorded = SceneSettings { shading: Some(settings.shading), specular: Some(settings.specular) };
-        save_scene(&scene, recorded, path)?;
+        save_scene(&whole, recorded, path)?;
     }
     if args.explain {
         print!("{}", explain(&scene, &settings));

@@ -50,6 +50,8 @@ fn bad_values_exit_2_with_one_line_naming_flag_and_range() {
         (&["--shadow-resolution", "100"], &["--shadow-resolution", "[256, 4096]"]),
         (&["--shadow-resolution", "big"], &["--shadow-resolution", "[256, 4096]"]),
         (&["--shadow-filter", "vsm"], &["--shadow-filter", "hard, pcf, poisson"]),
+        (&["--shadow-cascades", "auto"], &["--shadow-cascades", "on, off"]),
+        (&["--term", "emission"], &["--term", "all, ambient, diffuse, specular"]),
         (&["--scene", "nowhere.gltf"], &["--scene", "default"]),
         (&["--output", "x.bmp"], &["--output", ".png, .exr"]),
         (&["--bogus"], &["--bogus"]),
@@ -530,5 +532,44 @@ fn overlay_terminator_renders_and_a_bad_value_is_one_line() {
         let lines = error_lines(&o);
         assert_eq!(lines.len(), 1, "{bad:?}: {lines:?}");
         assert!(lines[0].contains("--overlay") && lines[0].contains("terminator"), "{bad:?}: {}", lines[0]);
+    }
+}
+
+/// `render --term` draws one term alone: each differs from the whole image, and the three add up
+/// to it on the objects.
+#[test]
+fn render_term_draws_one_term() {
+    let dir = out_dir();
+    let read = |term: &str| {
+        let path = dir.join(format!("term-{term}.exr"));
+        let o = shadelab(&[
+            "render",
+            "--term",
+            term,
+            "--width",
+            "64",
+            "--height",
+            "36",
+            "--output",
+            path.to_str().unwrap(),
+        ]);
+        assert!(o.status.success(), "{term}: {}", String::from_utf8_lossy(&o.stderr));
+        image::open(&path).unwrap().to_rgba32f()
+    };
+    let all = read("all");
+    for term in ["ambient", "diffuse", "specular"] {
+        let img = read(term);
+        let differ = img.pixels().zip(all.pixels()).filter(|(a, b)| (a.0[0] - b.0[0]).abs() > 1e-3).count();
+        assert!(differ > 100, "{term}: only {differ} pixels differ from the whole image");
+    }
+    // The terms add up to the whole on the objects (the background is in each).
+    let parts: Vec<_> = ["ambient", "diffuse", "specular"].map(read).into_iter().collect();
+    let bg = shadelab_model::scene::BACKGROUND.map(|c| c as f32);
+    for (i, p) in all.pixels().enumerate() {
+        if p.0[..3] == bg {
+            continue;
+        }
+        let sum: f32 = parts.iter().map(|q| q.as_raw()[i * 4 + 1]).sum();
+        assert!((sum - p.0[1]).abs() < 1e-5, "pixel {i}: {sum} vs {}", p.0[1]);
     }
 }

@@ -51,6 +51,27 @@ fn clicking_the_specular_model_changes_the_image() {
     assert!(changed > 2000, "only {changed} pixels of the view changed");
 }
 
+/// The term row shows one term of the model alone; "all" brings the whole model back, and the
+/// scene's own coefficients are untouched by the view.
+#[test]
+fn the_term_row_shows_one_term_alone() {
+    let mut h = harness();
+    let before = h.render().expect("render");
+    let r_s: Vec<f64> = h.state_mut().scene_mut().materials.iter().map(|m| m.r_s).collect();
+    h.get_by_label("I_s").click();
+    h.run_steps(3);
+    let specular = h.render().expect("render");
+    // Without ambient and diffuse light only the highlights stay: most of the view darkens.
+    let changed = changed_view_pixels(&before, &specular);
+    assert!(changed > 20000, "only {changed} pixels of the view changed");
+    let after: Vec<f64> = h.state_mut().scene_mut().materials.iter().map(|m| m.r_s).collect();
+    assert_eq!(r_s, after, "the view's term does not change the scene");
+    h.get_by_label("all").click();
+    h.run_steps(3);
+    let back = h.render().expect("render");
+    assert_eq!(changed_view_pixels(&before, &back), 0, "all: the whole model again");
+}
+
 #[test]
 fn keyboard_shortcuts_switch_modes() {
     let mut h = harness();
@@ -290,6 +311,9 @@ fn a_lights_casts_shadows_box_switches_its_shadows() {
     assert!(h.query_by_label("casts shadows").is_none());
     h.get_by_label("L1 — directional").click();
     h.run_steps(2);
+    // The box may be below the panel's fold: scroll to it first (the scroll is animated).
+    h.get_by_label("casts shadows").scroll_to_me();
+    h.run_steps(20);
     h.get_by_label("casts shadows").click();
     h.run_steps(3);
     let after = h.state_mut().scene_mut().lights.clone();

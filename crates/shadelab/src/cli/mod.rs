@@ -251,6 +251,11 @@ pub struct RenderArgs {
     /// Print the effects the scene calls for (the shader holds only those), each with its reason.
     #[arg(long)]
     pub explain: bool,
+    /// Draw one term of the model alone: all (the default), ambient (I_amb·r_a·C), diffuse
+    /// (Σ I_L·r_d·C·(N·L), cast shadows included) or specular (Σ I_L·r_s·S). The terms add up to
+    /// the whole image.
+    #[arg(long, value_name = "TERM", default_value = "all", value_parser = values::named::<shadelab_model::terms::Term>())]
+    pub term: shadelab_model::terms::Term,
     /// Draw over the image, comma-separated: terminator (the self-shadow boundary, the edges
     /// where the side facing a light changes), depth-tested against the scene.
     #[arg(long, value_name = "NAME,...", value_delimiter = ',',

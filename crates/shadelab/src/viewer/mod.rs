@@ -90,6 +90,8 @@ pub struct Viewer {
     base_camera: Camera,
     orbit: Orbit,
     settings: RenderSettings,
+    /// The term of the model on show (`All`: the whole model).
+    term: shadelab_model::terms::Term,
     renderer: Renderer,
     gpu_scene: SceneGpu,
     egui_renderer: Arc<egui::mutex::RwLock<egui_wgpu::Renderer>>,
@@ -147,6 +149,7 @@ impl Viewer {
             selected_material: scene.objects.get(1).map_or(0, |o| o.material),
             scene,
             settings: RenderSettings::default(),
+            term: shadelab_model::terms::Term::All,
             timer: FrameTimer::new(&rs.device, &rs.queue),
             renderer,
             gpu_scene,

@@ -60,6 +60,9 @@ impl Viewer {
         self.scene.camera = self.orbit.camera(&self.base_camera).fitted(w as f64 / h as f64);
         self.ensure_view(w, h);
         let view = self.view.as_ref().expect("view just made");
+        // One term alone: the other terms' coefficients at 0 for this frame (and the reference).
+        let whole = (self.scene.ambient, self.scene.materials.clone());
+        self.term.apply(&mut self.scene);
         self.renderer.write_uniforms(&self.gpu_scene, &self.scene, &view.target, &self.settings);
         let program = Program::for_scene(&self.scene, &self.settings);
         self.frame_ms = Some(self.timer.frame(&mut self.renderer, &self.gpu_scene, &view.target, program));
@@ -76,6 +79,7 @@ impl Viewer {
                 shown = t;
             }
         }
+        (self.scene.ambient, self.scene.materials) = whole;
         let painter = ui.painter_at(rect);
         painter.image(shown, rect, Rect::from_min_max(pos2(0.0, 0.0), pos2(1.0, 1.0)), Color32::WHITE);
         if self.difference.enabled && analytic {

@@ -8,6 +8,7 @@ use crate::viewer::difference::DifferenceKind;
 use eframe::egui;
 use shadelab_model::params::NamedValue;
 use shadelab_model::scene::BUILTIN_SCENES;
+use shadelab_model::terms::Term;
 use shadelab_model::{ShadingMode, SpecularModel};
 
 impl Viewer {
@@ -35,7 +36,7 @@ impl Viewer {
         }
     }
 
-    /// Shading mode, specular model, the non-finite debug paint, the self-shadow boundary and
+    /// Shading mode, specular model, the term on show, the non-finite debug paint, the self-shadow boundary and
     /// the difference view.
     pub(super) fn modes_ui(&mut self, ui: &mut egui::Ui) {
         ui.horizontal(|ui| {
@@ -56,6 +57,12 @@ impl Viewer {
                 .on_hover_text(
                     "Cook–Torrance: Beckmann D(m), geometric G, exact Fresnel F(μ) per channel (key S toggles)",
                 );
+        });
+        ui.horizontal(|ui| {
+            ui.label("term");
+            for (_, term) in Term::ALL {
+                ui.selectable_value(&mut self.term, *term, term.symbol()).on_hover_text(term.meaning());
+            }
         });
         ui.checkbox(&mut self.settings.debug_nonfinite, "paint non-finite pixels magenta");
         ui.checkbox(&mut self.boundary.enabled, "self-shadow boundary").on_hover_text(

@@ -1,0 +1,132 @@
+//! One term of the illumination model at a time (docs/model.md §1–§3): the image of the ambient,
+//! the diffuse or the specular term alone is the image of the same scene with the other terms'
+//! coefficients set to 0 (I_amb, r_d, r_s). The GPU and the f64 reference draw the same
+//! transformed scene, so each term has both, and the terms add up to the full image.
+
+use crate::params::NamedValue;
+use crate::scene::Scene;
+
+/// Which part of the model an image shows.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum Term {
+    /// Every term summed: the model as it is.
+    #[default]
+    All,
+    /// `I_amb·r_a·C` alone.
+    Ambient,
+    /// `Σ V·I_L·r_d·C·(N·L)` alone, cast shadows included.
+    Diffuse,
+    /// `Σ V·I_L·r_s·S` alone (Phong or Cook–Torrance), cast shadows included.
+    Specular,
+}
+
+impl NamedValue for Term {
+    const FLAG: &'static str = "--term";
+    const ALL: &'static [(&'static str, Self)] =
+        &[("all", Term::All), ("ambient", Term::Ambient), ("diffuse", Term::Diffuse), ("specular", Term::Specular)];
+}
+
+impl Term {
+    /// The terms that add up to [`Term::All`].
+    pub const PARTS: [Term; 3] = [Term::Ambient, Term::Diffuse, Term::Specular];
+
+    /// The chapter's symbol of the term (`all` for the whole model).
+    pub fn symbol(self) -> &'static str {
+        match self {
+            Term::All => "all",
+            Term::Ambient => "I_a",
+            Term::Diffuse => "I_d",
+            Term::Specular => "I_s",
+        }
+    }
+
+    /// What the term is, for a tooltip or a caption.
+    pub fn meaning(self) -> &'static str {
+        match self {
+            Term::All => "the whole model: I_a + I_d + I_s",
+            Term::Ambient => "the ambient term I_amb·r_a·C alone",
+            Term::Diffuse => "the diffuse term Σ I_L·r_d·C·(N·L) alone, with cast shadows",
+            Term::Specular => "the specular term Σ I_L·r_s·S alone, with cast shadows",
+        }
+    }
+
+    /// `scene` with every coefficient of the other terms set to 0 (`All`: unchanged).
+    pub fn scene(self, scene: &Scene) -> Scene {
+        let mut s = scene.clone();
+        self.apply(&mut s);
+        s
+    }
+
+    /// Set the other terms' coefficients of `scene` to 0 in place (the lights, the geometry and
+    /// this term's coefficients stay).
+    pub fn apply(self, scene: &mut Scene) {
+        if self == Term::All {
+            return;
+        }
+        if self != Term::Ambient {
+            scene.ambient = [0.0; 3];
+        }
+        for m in &mut scene.materials {
+            if self != Term::Diffuse {
+                m.r_d = 0.0;
+            }
+            if self != Term::Specular {
+                m.r_s = 0.0;
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::params::SpecularModel;
+    use crate::reference::render_reference;
+
+    /// The f64 terms add up to the full image, pixel by pixel, for both specular models.
+    #[test]
+    fn the_reference_terms_sum_to_the_full_image() {
+        let scene = Scene::builtin("default").unwrap();
+        for specular in [SpecularModel::Phong, SpecularModel::CookTorrance] {
+            let full = render_reference(&scene, specular, 96, 54);
+            let parts: Vec<_> =
+                Term::PARTS.iter().map(|t| render_reference(&t.scene(&scene), specular, 96, 54)).collect();
+            let mut worst = 0.0f64;
+            let mut lit = 0;
+            for (i, p) in full.pixels.iter().enumerate() {
+                if full.object[i].is_none() {
+                    continue;
+                }
+                lit += 1;
+                for (c, whole) in p.iter().enumerate() {
+                    let sum: f64 = parts.iter().map(|q| q.pixels[i][c]).sum();
+                    worst = worst.max((sum - whole).abs());
+                }
+            }
+            assert!(lit > 1000, "{lit} pixels on objects");
+            assert!(worst < 1e-12, "{specular:?}: the terms differ from the whole by {worst}");
+            // Each term is non-zero somewhere and the terms differ.
+            for (t, img) in Term::PARTS.iter().zip(&parts) {
+                let on = img.pixels.iter().zip(&img.object).filter(|(p, o)| o.is_some() && p[0] > 1e-6).count();
+                assert!(on > 100, "{t:?}: {on} pixels");
+            }
+        }
+    }
+
+    #[test]
+    fn each_term_keeps_only_its_coefficients() {
+        let s = Scene::builtin("default").unwrap();
+        let a = Term::Ambient.scene(&s);
+        assert!(a.ambient == s.ambient && a.materials.iter().all(|m| m.r_d == 0.0 && m.r_s == 0.0));
+        let d = Term::Diffuse.scene(&s);
+        assert!(
+            d.ambient == [0.0; 3] && d.materials.iter().zip(&s.materials).all(|(m, o)| m.r_d == o.r_d && m.r_s == 0.0)
+        );
+        let sp = Term::Specular.scene(&s);
+        assert!(
+            sp.ambient == [0.0; 3]
+                && sp.materials.iter().zip(&s.materials).all(|(m, o)| m.r_s == o.r_s && m.r_d == 0.0)
+        );
+        assert_eq!(Term::All.scene(&s), s);
+    }
+}

@@ -83,3 +83,37 @@ fn an_edge_behind_an_object_is_hidden() {
     assert_eq!(count_near(DVec3::new(0.0, 1.0, -2.0)), 0, "the line shows through the sphere");
     assert!(count_near(DVec3::new(-2.5, 1.0, -2.0)) > 0 && count_near(DVec3::new(2.5, 1.0, -2.0)) > 0);
 }
+
+/// Normals and creases over the cylinder (`render --overlay normals,creases`): both colours are
+/// drawn, each only near its own lines, and the second set is depth-tested like the first (the
+/// overlay passes keep the scene's depth).
+#[test]
+fn normals_and_creases_are_drawn_each_near_its_lines() {
+    use shadelab_model::mesh_lines::{crease_segments, normal_segments};
+    use shadelab_render::overlay_pass::{CREASES_COLOR, NORMALS_COLOR, render_image_with_line_sets};
+    let scene = single_shape_scene("cylinder", Shape::Cylinder, 16);
+    let settings = RenderSettings::default();
+    let (normals, creases) = (normal_segments(&scene), crease_segments(&scene));
+    assert_eq!(creases.len(), 32, "the cylinder's two rims");
+    let plain = render_image(gpu(), &scene, W, H, &settings).unwrap();
+    let sets = [(normals.as_slice(), NORMALS_COLOR), (creases.as_slice(), CREASES_COLOR)];
+    let drawn = render_image_with_line_sets(gpu(), &scene, (W, H), &settings, &sets).unwrap();
+    for (lines, color) in sets {
+        let projected: Vec<_> =
+            lines.iter().map(|s| (project(&scene.camera, s[0], W, H), project(&scene.camera, s[1], W, H))).collect();
+        let mut count = 0;
+        for y in 0..H {
+            for x in 0..W {
+                let i = (y * W + x) as usize;
+                if plain.pixels[i] == drawn.pixels[i] || (0..3).any(|c| drawn.pixels[i][c] != color[c]) {
+                    continue;
+                }
+                count += 1;
+                let (px, py) = (x as f64 + 0.5, y as f64 + 0.5);
+                let near = projected.iter().map(|&(a, b)| distance_to_segment(px, py, a, b)).fold(f64::MAX, f64::min);
+                assert!(near <= NEAR_EDGE_PX, "{color:?}: ({x}, {y}) is {near:.1} px from its lines");
+            }
+        }
+        assert!(count > 200, "{color:?}: only {count} pixels drawn");
+    }
+}

@@ -10,6 +10,7 @@ pub mod guards;
 mod identities;
 pub mod lighting;
 pub mod mesh;
+pub mod mesh_lines;
 pub mod params;
 pub mod presets;
 pub mod reference;

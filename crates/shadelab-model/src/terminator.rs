@@ -116,6 +116,23 @@ impl EdgeMesh {
         self.edges.len()
     }
 
+    /// The edges whose faces' normals differ by more than the angle whose cosine is
+    /// `cos_crease` (any two of a non-manifold edge's faces): the creases the mesh builder keeps
+    /// sharp (`mesh_lines`). An edge with one face is no crease.
+    pub fn creases(&self, cos_crease: f64) -> Vec<Segment> {
+        let mut out = Vec::new();
+        for (e, &[a, b]) in self.edges.iter().enumerate() {
+            let faces = &self.faces[self.first_face[e] as usize..self.first_face[e + 1] as usize];
+            let n = |f: &u32| self.normals[*f as usize];
+            let sharp =
+                faces.iter().enumerate().any(|(i, f)| faces[i + 1..].iter().any(|g| n(f).dot(n(g)) < cos_crease));
+            if sharp {
+                out.push([self.positions[a as usize], self.positions[b as usize]]);
+            }
+        }
+        out
+    }
+
     /// The edges on the self-shadow boundary of `light` (the rule in the module's comment). A
     /// directional light with a zero direction has no `L`: nothing faces it, nothing is drawn.
     pub fn terminator(&self, light: &Light) -> Vec<Segment> {

@@ -17,6 +17,12 @@ use wgpu::util::DeviceExt;
 /// built-in scenes comes near (all are greys, warm stone, red and gold), and unlike the
 /// magenta of the non-finite debug paint.
 pub const TERMINATOR_COLOR: [f32; 3] = [0.0, 1.0, 1.0];
+/// The vertex normals' colour (linear RGB): saturated yellow, apart from the cyan boundary and
+/// from every built-in material.
+pub const NORMALS_COLOR: [f32; 3] = [1.0, 1.0, 0.0];
+/// The kept creases' colour (linear RGB): saturated orange, apart from the other overlays and
+/// from the gold cylinder (whose blue is 0.34, not 0).
+pub const CREASES_COLOR: [f32; 3] = [1.0, 0.35, 0.0];
 
 /// How far each end of a line is pulled towards the eye, as a share of its distance (the
 /// overlay's depth bias): 2e-3 is about two pixels' footprint at 720 rows and a 40° field of
@@ -156,7 +162,8 @@ impl OverlayPass {
             })],
             depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
                 view: &target.depth_view,
-                depth_ops: Some(wgpu::Operations { load: wgpu::LoadOp::Load, store: wgpu::StoreOp::Discard }),
+                // Kept: a later overlay pass tests its lines against the same depth.
+                depth_ops: Some(wgpu::Operations { load: wgpu::LoadOp::Load, store: wgpu::StoreOp::Store }),
                 stencil_ops: None,
             }),
             timestamp_writes: None,
@@ -218,19 +225,33 @@ fn build_pipeline(
 pub fn render_image_with_lines(
     gpu: &Gpu,
     scene: &Scene,
-    (width, height): (u32, u32),
+    size: (u32, u32),
     settings: &RenderSettings,
     segments: &[[DVec3; 2]],
     color: [f32; 3],
+) -> Result<LinearImage, UploadError> {
+    render_image_with_line_sets(gpu, scene, size, settings, &[(segments, color)])
+}
+
+/// [`crate::render_image`] with each set of lines drawn over it in its colour, the later sets
+/// over the earlier ones (one overlay pass each, each with its own uniform).
+pub fn render_image_with_line_sets(
+    gpu: &Gpu,
+    scene: &Scene,
+    (width, height): (u32, u32),
+    settings: &RenderSettings,
+    sets: &[(&[[DVec3; 2]], [f32; 3])],
 ) -> Result<LinearImage, UploadError> {
     let mut r = Renderer::new(&gpu.device, &gpu.queue);
     let gs = r.upload(scene)?;
     let target = Target::new(&gpu.device, width, height, target::HDR_FORMAT);
     r.render(&gs, scene, &target, settings);
-    let mut overlay = OverlayPass::new(&gpu.device);
-    overlay.set_lines(&gpu.device, segments, color);
-    let mut encoder = gpu.device.create_command_encoder(&Default::default());
-    overlay.encode(&gpu.device, &gpu.queue, &mut encoder, &target, &scene.camera);
-    gpu.queue.submit([encoder.finish()]);
+    for (segments, color) in sets {
+        let mut overlay = OverlayPass::new(&gpu.device);
+        overlay.set_lines(&gpu.device, segments, *color);
+        let mut encoder = gpu.device.create_command_encoder(&Default::default());
+        overlay.encode(&gpu.device, &gpu.queue, &mut encoder, &target, &scene.camera);
+        gpu.queue.submit([encoder.finish()]);
+    }
     Ok(target::read_back(&gpu.device, &gpu.queue, &target))
 }

@@ -13,11 +13,28 @@ pub enum Overlay {
     /// The self-shadow boundary: the edges where the side facing a light changes
     /// (`shadelab_model::terminator`), in `overlay_pass::TERMINATOR_COLOR`.
     Terminator,
+    /// The smooth meshes' vertex normals (`shadelab_model::mesh_lines`), in `NORMALS_COLOR`.
+    Normals,
+    /// The edges the crease-angle rule keeps sharp (`mesh_lines`), in `CREASES_COLOR`.
+    Creases,
 }
 
 impl NamedValue for Overlay {
     const FLAG: &'static str = "--overlay";
-    const ALL: &'static [(&'static str, Self)] = &[("terminator", Overlay::Terminator)];
+    const ALL: &'static [(&'static str, Self)] =
+        &[("terminator", Overlay::Terminator), ("normals", Overlay::Normals), ("creases", Overlay::Creases)];
+}
+
+impl Overlay {
+    /// The overlay's lines for `scene`, in world space, and their colour.
+    fn lines(self, scene: &shadelab_model::Scene) -> (Vec<[glam::DVec3; 2]>, [f32; 3]) {
+        use shadelab_render::overlay_pass::{CREASES_COLOR, NORMALS_COLOR, TERMINATOR_COLOR};
+        match self {
+            Overlay::Terminator => (shadelab_model::terminator::scene_terminator(scene), TERMINATOR_COLOR),
+            Overlay::Normals => (shadelab_model::mesh_lines::normal_segments(scene), NORMALS_COLOR),
+            Overlay::Creases => (shadelab_model::mesh_lines::crease_segments(scene), CREASES_COLOR),
+        }
+    }
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -71,13 +88,22 @@ pub fn run(args: &cli::RenderArgs) -> Result<(), Failure> {
     }
     let gpu = Gpu::headless(AdapterChoice::from_env()).context("opening a GPU adapter")?;
     log::info!("adapter: {}", gpu.describe());
-    let image = if args.overlay.contains(&Overlay::Terminator) {
-        let edges = shadelab_model::terminator::scene_terminator(&scene);
-        log::info!("overlay terminator: {} edges", edges.len());
-        let color = shadelab_render::overlay_pass::TERMINATOR_COLOR;
-        shadelab_render::overlay_pass::render_image_with_lines(&gpu, &scene, (width, height), &settings, &edges, color)
-    } else {
+    let image = if args.overlay.is_empty() {
         shadelab_render::render_image(&gpu, &scene, width, height, &settings)
+    } else {
+        // Each overlay once, in the order given (a later one drawn over an earlier one).
+        let mut overlays: Vec<Overlay> = Vec::new();
+        for o in &args.overlay {
+            if !overlays.contains(o) {
+                overlays.push(*o);
+            }
+        }
+        let lines: Vec<_> = overlays.iter().map(|o| (*o, o.lines(&scene))).collect();
+        for (o, (l, _)) in &lines {
+            log::info!("overlay {}: {} lines", o.name(), l.len());
+        }
+        let sets: Vec<_> = lines.iter().map(|(_, (l, c))| (l.as_slice(), *c)).collect();
+        shadelab_render::overlay_pass::render_image_with_line_sets(&gpu, &scene, (width, height), &settings, &sets)
     }
     .map_err(|e| Failure::Usage(format!("{}: {e}", args.scene.scene)))?;
     save(&image, &args.output, kind).with_context(|| format!("writing {}", args.output.display()))?;

@@ -526,12 +526,34 @@ fn overlay_terminator_renders_and_a_bad_value_is_one_line() {
         let img = image::open(&png).unwrap().to_rgb8();
         assert!(img.pixels().any(|p| p.0 == [0, 255, 255]), "{scene}: no boundary pixel");
     }
+    // Normals (yellow) and creases (orange, sRGB-encoded) over the cylinder, in one image.
+    let o = shadelab(&[
+        "render",
+        "--scene",
+        "cylinder",
+        "--overlay",
+        "normals,creases,normals",
+        "--width",
+        "320",
+        "--height",
+        "180",
+        "--output",
+        png.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let img = image::open(&png).unwrap().to_rgb8();
+    assert!(img.pixels().any(|p| p.0 == [255, 255, 0]), "no normal pixel");
+    assert!(img.pixels().any(|p| p.0[0] == 255 && p.0[2] == 0 && p.0[1] > 100 && p.0[1] < 200), "no crease pixel");
     for bad in ["outline", "terminator,outline", ""] {
         let o = shadelab(&["render", "--overlay", bad, "--output", png.to_str().unwrap()]);
         assert_eq!(o.status.code(), Some(2), "{bad:?}: {}", String::from_utf8_lossy(&o.stderr));
         let lines = error_lines(&o);
         assert_eq!(lines.len(), 1, "{bad:?}: {lines:?}");
-        assert!(lines[0].contains("--overlay") && lines[0].contains("terminator"), "{bad:?}: {}", lines[0]);
+        assert!(
+            lines[0].contains("--overlay") && lines[0].contains("terminator, normals, creases"),
+            "{bad:?}: {}",
+            lines[0]
+        );
     }
 }
 

@@ -256,8 +256,9 @@ pub struct RenderArgs {
     /// the whole image.
     #[arg(long, value_name = "TERM", default_value = "all", value_parser = values::named::<shadelab_model::terms::Term>())]
     pub term: shadelab_model::terms::Term,
-    /// Draw over the image, comma-separated: terminator (the self-shadow boundary, the edges
-    /// where the side facing a light changes), depth-tested against the scene.
+    /// Draw over the image, comma-separated, depth-tested against the scene: terminator (the
+    /// self-shadow boundary, cyan), normals (the smooth meshes' vertex normals, yellow), creases
+    /// (the edges the crease-angle rule keeps sharp, orange).
     #[arg(long, value_name = "NAME,...", value_delimiter = ',',
           value_parser = values::named::<crate::render::Overlay>())]
     pub overlay: Vec<crate::render::Overlay>,

@@ -112,6 +112,9 @@ pub struct Viewer {
     difference: DifferenceView,
     /// The self-shadow boundary over the view (`overlays::BoundaryOverlay`).
     boundary: overlays::BoundaryOverlay,
+    /// The smooth meshes' vertex normals and the kept creases over the view.
+    normals: overlays::MeshLinesOverlay,
+    creases: overlays::MeshLinesOverlay,
     /// The lights' shadow maps on show in their panel sections.
     shadow_maps: shadow_maps::ShadowMapViews,
     /// The panel's file path field (open / save scene).
@@ -166,6 +169,8 @@ impl Viewer {
             show_live_numbers: true,
             difference: DifferenceView::default(),
             boundary: overlays::BoundaryOverlay::default(),
+            normals: overlays::MeshLinesOverlay::normals(),
+            creases: overlays::MeshLinesOverlay::creases(),
             shadow_maps: shadow_maps::ShadowMapViews::default(),
             file_field: String::new(),
             file_picker: native_file_picker(),

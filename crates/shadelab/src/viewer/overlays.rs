@@ -10,7 +10,7 @@ use shadelab_model::params::NamedValue;
 use shadelab_model::terminator::SceneEdges;
 use shadelab_model::{Light, LightKind, Object, Scene};
 use shadelab_render::image_error::ShadowPixel;
-use shadelab_render::overlay_pass::{OverlayPass, TERMINATOR_COLOR};
+use shadelab_render::overlay_pass::{CREASES_COLOR, NORMALS_COLOR, OverlayPass, TERMINATOR_COLOR};
 use shadelab_render::{Renderer, Target};
 
 /// Smallest |w| a projected light is divided by: a light in the eye's plane (w = 0) still gets a
@@ -210,6 +210,57 @@ impl BoundaryOverlay {
     }
 
     /// How many boundary edges are drawn (0 while the switch is off or before the first frame).
+    pub fn line_count(&self) -> u32 {
+        match (&self.pass, self.enabled) {
+            (Some(p), true) => p.line_count(),
+            _ => 0,
+        }
+    }
+}
+
+/// One set of the meshes' lines over the view (the panel's "vertex normals" or "creases"
+/// switch): built from the scene's objects and meshes, rebuilt only when they change.
+pub(super) struct MeshLinesOverlay {
+    pub enabled: bool,
+    lines: fn(&Scene) -> Vec<[DVec3; 2]>,
+    color: [f32; 3],
+    pass: Option<OverlayPass>,
+    built: Option<EdgesOf>,
+}
+
+impl MeshLinesOverlay {
+    /// The smooth meshes' vertex normals (`shadelab_model::mesh_lines`), yellow.
+    pub fn normals() -> MeshLinesOverlay {
+        Self::of(shadelab_model::mesh_lines::normal_segments, NORMALS_COLOR)
+    }
+
+    /// The edges the crease-angle rule keeps sharp, orange.
+    pub fn creases() -> MeshLinesOverlay {
+        Self::of(shadelab_model::mesh_lines::crease_segments, CREASES_COLOR)
+    }
+
+    fn of(lines: fn(&Scene) -> Vec<[DVec3; 2]>, color: [f32; 3]) -> MeshLinesOverlay {
+        MeshLinesOverlay { enabled: false, lines, color, pass: None, built: None }
+    }
+
+    /// Draw the lines into `target` over the frame (and its depth); nothing when switched off.
+    pub fn draw(&mut self, renderer: &Renderer, target: &Target, scene: &Scene) {
+        if !self.enabled {
+            return;
+        }
+        let (device, queue) = (&renderer.device, &renderer.queue);
+        let pass = self.pass.get_or_insert_with(|| OverlayPass::new(device));
+        let of = EdgesOf::new(scene);
+        if self.built.as_ref() != Some(&of) {
+            pass.set_lines(device, &(self.lines)(scene), self.color);
+            self.built = Some(of);
+        }
+        let mut encoder = device.create_command_encoder(&Default::default());
+        pass.encode(device, queue, &mut encoder, target, &scene.camera);
+        queue.submit([encoder.finish()]);
+    }
+
+    /// How many lines are drawn (0 while switched off or before the first frame).
     pub fn line_count(&self) -> u32 {
         match (&self.pass, self.enabled) {
             (Some(p), true) => p.line_count(),

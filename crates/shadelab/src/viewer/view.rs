@@ -22,6 +22,11 @@ impl Viewer {
         self.boundary.enabled = on;
     }
 
+    /// How many vertex-normal and crease lines the last frame drew (0 for a switch that is off).
+    pub fn mesh_line_counts(&self) -> (u32, u32) {
+        (self.normals.line_count(), self.creases.line_count())
+    }
+
     /// How many self-shadow boundary edges the last frame drew (0 with the switch off).
     pub fn self_shadow_boundary_edges(&self) -> u32 {
         self.boundary.line_count()
@@ -67,6 +72,8 @@ impl Viewer {
         let program = Program::for_scene(&self.scene, &self.settings);
         self.frame_ms = Some(self.timer.frame(&mut self.renderer, &self.gpu_scene, &view.target, program));
         self.boundary.draw(&self.renderer, &view.target, &self.scene);
+        self.creases.draw(&self.renderer, &view.target, &self.scene);
+        self.normals.draw(&self.renderer, &view.target, &self.scene);
         // The lights' maps this frame drew, for their panel sections (read back only on a change).
         self.shadow_maps.update(ui.ctx(), &self.renderer, &self.gpu_scene, &self.scene);
         let mut shown = view.texture;

@@ -69,6 +69,12 @@ impl Viewer {
             "draw the edges where the side facing a light changes (N·L changes sign between the \
              two faces), over the view, hidden behind objects",
         );
+        ui.horizontal(|ui| {
+            ui.checkbox(&mut self.normals.enabled, "vertex normals")
+                .on_hover_text("the smooth meshes' vertex normals (Gouraud's and Phong's), yellow");
+            ui.checkbox(&mut self.creases.enabled, "creases")
+                .on_hover_text("the edges the crease-angle rule keeps sharp (faces more than 60° apart), orange");
+        });
         let analytic = shadelab_model::scene_variants::is_analytic(&self.scene);
         ui.add_enabled(analytic, egui::Checkbox::new(&mut self.difference.enabled, "difference from reference"))
             .on_hover_text(format!(

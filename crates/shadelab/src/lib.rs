@@ -3,6 +3,7 @@
 
 pub mod bench;
 pub mod cli;
+pub mod figures;
 pub mod plots;
 pub mod render;
 pub mod sweep;

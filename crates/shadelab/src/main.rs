@@ -1,7 +1,7 @@
-//! `shadelab`: the viewer (no subcommand), `render`, `bench` and `sweep`.
+//! `shadelab`: the viewer (no subcommand), `render`, `bench`, `sweep` and `figures`.
 
 use clap::Parser;
-use shadelab::{EXIT_USAGE, Failure, bench, cli, render, sweep, viewer};
+use shadelab::{EXIT_USAGE, Failure, bench, cli, figures, render, sweep, viewer};
 use std::process::ExitCode;
 
 fn main() -> ExitCode {
@@ -27,6 +27,7 @@ fn main() -> ExitCode {
         Some(cli::Command::Bench(cli::BenchCommand::Mesh(args))) => bench::mesh::run(&args),
         Some(cli::Command::Bench(cli::BenchCommand::Shadows(args))) => bench::shadows::run(&args),
         Some(cli::Command::Sweep) => sweep::run(),
+        Some(cli::Command::Figures(args)) => figures::run(&args),
         None => viewer::run(viewer::Options {
             screenshot: cli.screenshot,
             exit_after_frames: cli.exit_after_frames,

@@ -595,3 +595,43 @@ fn render_term_draws_one_term() {
         assert!((sum - p.0[1]).abs() < 1e-5, "pixel {i}: {sum} vs {}", p.0[1]);
     }
 }
+
+/// `shadelab figures` writes every figure, the scene files they use and commands.txt; each
+/// listed command, run from that folder, remakes its figure byte for byte.
+#[test]
+fn figures_writes_each_figure_and_the_commands_that_remake_it() {
+    let dir = out_dir().join("figures");
+    let _ = std::fs::remove_dir_all(&dir);
+    let o = shadelab(&["figures", "--out", dir.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let listing = std::fs::read_to_string(dir.join("commands.txt")).unwrap();
+    let commands: Vec<&str> = listing.lines().filter(|l| l.starts_with("shadelab ")).collect();
+    assert_eq!(commands.len(), shadelab::figures::FIGURES.len(), "{listing}");
+    for f in shadelab::figures::FIGURES {
+        let img = image::open(dir.join(f.file)).unwrap_or_else(|e| panic!("{}: {e}", f.file)).to_rgb8();
+        assert_eq!((img.width(), img.height()), (640, 360), "{}", f.file);
+        let colours: std::collections::HashSet<_> = img.pixels().map(|p| p.0).collect();
+        // Not blank: the ambient term alone is flat, one colour per material and the background.
+        assert!(colours.len() >= 4, "{}: {} colours", f.file, colours.len());
+    }
+    // The cylinder's figure, remade from its listed command in the folder.
+    let line = commands.iter().find(|l| l.contains("cylinder")).unwrap();
+    let again = Command::new(env!("CARGO_BIN_EXE_shadelab"))
+        .args(line.split_whitespace().skip(1).map(|w| if w.ends_with(".png") { "again.png" } else { w }))
+        .current_dir(&dir)
+        .env("SHADELAB_ADAPTER", "lavapipe")
+        .output()
+        .unwrap();
+    assert!(again.status.success(), "{}", String::from_utf8_lossy(&again.stderr));
+    assert!(
+        std::fs::read(dir.join("again.png")).unwrap()
+            == std::fs::read(dir.join("figure-7-11-cylinder-normals.png")).unwrap()
+    );
+    // A folder that cannot be made is one line.
+    let blocker = out_dir().join("figures-blocker");
+    std::fs::write(&blocker, b"a file").unwrap();
+    let o = shadelab(&["figures", "--out", blocker.join("sub").to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(2));
+    let lines = error_lines(&o);
+    assert!(lines.len() == 1 && lines[0].contains("--out"), "{lines:?}");
+}

@@ -61,6 +61,16 @@ pub enum Command {
     /// Evaluate every lighting term of the shipped WGSL over >10⁶ hard input combinations on the
     /// GPU and compare with the f64 reference: non-finite values, bounds, relative errors.
     Sweep,
+    /// Write the chapter's figures as PNGs, with commands.txt listing the render command of each
+    /// (and the scene files they use), to remake or change any of them.
+    Figures(FiguresArgs),
+}
+
+#[derive(Args, Debug)]
+pub struct FiguresArgs {
+    /// Folder for the figures, their scene files and commands.txt.
+    #[arg(long, default_value = "figures", value_name = "DIR")]
+    pub out: PathBuf,
 }
 
 #[derive(Subcommand, Debug)]

@@ -1,0 +1,137 @@
+//! `shadelab figures --out DIR`: the chapter's figures as PNGs, each made by one `shadelab
+//! render` command that `DIR/commands.txt` lists, so a teacher can re-run or change any of them.
+//! The scene files the figures use are written into `DIR` first, so the commands run from there
+//! on any machine.
+
+use crate::{Failure, cli, render};
+use anyhow::Context;
+use clap::Parser;
+use std::path::Path;
+
+/// The scene files written beside the figures: (file name, the scene).
+fn scene_files() -> [(&'static str, shadelab_model::Scene); 2] {
+    [
+        ("figure-7-3-pyramid.gltf", shadelab_model::assets::figure_7_3_pyramid()),
+        ("gouraud-vs-phong.gltf", shadelab_model::assets::gouraud_vs_phong()),
+    ]
+}
+
+/// One figure: its image's file name, its caption and the `render` flags that make it.
+pub struct Figure {
+    pub file: &'static str,
+    pub caption: &'static str,
+    pub flags: &'static [&'static str],
+}
+
+/// The figures, in the chapter's order.
+pub const FIGURES: &[Figure] = &[
+    Figure {
+        file: "figure-7-3-pyramid.png",
+        caption: "7.3: the pyramid in parallel light, its cast shadow and its self-shadow boundary ABCDEV (cyan)",
+        flags: &["--scene", "figure-7-3-pyramid.gltf", "--shading", "phong", "--overlay", "terminator"],
+    },
+    Figure {
+        file: "figure-7-9-sphere-normals.png",
+        caption: "7.9-7.10: the sphere's vertex normals, each the mean of all the faces around its vertex",
+        flags: &["--scene", "sphere", "--shading", "gouraud", "--overlay", "normals,creases"],
+    },
+    Figure {
+        file: "figure-7-11-cylinder-normals.png",
+        caption: "7.11-7.12: the cylinder's vertex normals; the rim keeps the cap's and the side's apart (creases orange)",
+        flags: &["--scene", "cylinder", "--shading", "gouraud", "--overlay", "normals,creases"],
+    },
+    Figure {
+        file: "gouraud.png",
+        caption: "7.6: Gouraud shading of the coarse sphere: the highlight is lost between the vertices",
+        flags: &["--scene", "gouraud-vs-phong.gltf", "--shading", "gouraud"],
+    },
+    Figure {
+        file: "phong.png",
+        caption: "7.6: Phong shading of the same sphere: the normal interpolated, the highlight kept",
+        flags: &["--scene", "gouraud-vs-phong.gltf", "--shading", "phong"],
+    },
+    Figure {
+        file: "term-ambient.png",
+        caption: "equation (1): the ambient term I_a alone",
+        flags: &["--term", "ambient"],
+    },
+    Figure {
+        file: "term-diffuse.png",
+        caption: "equation (1): the diffuse term I_d alone (Lambert, with cast shadows)",
+        flags: &["--term", "diffuse"],
+    },
+    Figure {
+        file: "term-specular.png",
+        caption: "equation (1): the specular term I_s alone, the spheres going from sharp to rough",
+        flags: &["--term", "specular"],
+    },
+];
+
+/// Every figure's size.
+const FIGURE_SIZE: [&str; 4] = ["--width", "640", "--height", "360"];
+
+/// The command that makes `figure`, run from the figures' folder.
+pub fn command(figure: &Figure) -> Vec<&'static str> {
+    let mut args = vec!["render"];
+    args.extend(figure.flags);
+    args.extend(FIGURE_SIZE);
+    args.extend(["--output", figure.file]);
+    args
+}
+
+pub fn run(args: &cli::FiguresArgs) -> Result<(), Failure> {
+    let out = &args.out;
+    std::fs::create_dir_all(out)
+        .map_err(|e| Failure::Usage(format!("--out: cannot make the folder '{}': {e}", out.display())))?;
+    for (name, scene) in scene_files() {
+        let settings = shadelab_model::gltf_io::SceneSettings::default();
+        shadelab_model::gltf_io::save_scene(&scene, &settings, &out.join(name))
+            .with_context(|| format!("writing {}", out.join(name).display()))?;
+    }
+    let mut listing = String::from(
+        "# The chapter's figures, made by `shadelab figures`. Run these from this folder to remake\n\
+         # or change one.\n",
+    );
+    for f in FIGURES {
+        let words = command(f);
+        listing += &format!("\n# {}\nshadelab {}\n", f.caption, words.join(" "));
+        render::run(&render_args(&words, out)?)?;
+        println!("wrote {}", out.join(f.file).display());
+    }
+    std::fs::write(out.join("commands.txt"), listing).context("writing commands.txt")?;
+    println!("wrote {}", out.join("commands.txt").display());
+    Ok(())
+}
+
+/// The `render` arguments of `words` with the files it names (the scene files written here and
+/// the output) inside `dir`, parsed as the command line would be.
+fn render_args(words: &[&str], dir: &Path) -> Result<cli::RenderArgs, Failure> {
+    let mut argv = vec!["shadelab".to_string()];
+    for w in words {
+        let file = w.ends_with(".gltf") || w.ends_with(".png");
+        argv.push(if file { dir.join(w).to_string_lossy().into_owned() } else { w.to_string() });
+    }
+    match cli::Cli::try_parse_from(&argv) {
+        Ok(cli::Cli { command: Some(cli::Command::Render(a)), .. }) => Ok(a),
+        Ok(_) => Err(Failure::Usage(format!("figure command '{}' is not a render command", words.join(" ")))),
+        Err(e) => Err(Failure::Usage(cli::one_line(&e))),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every figure's command parses, and each names a distinct image.
+    #[test]
+    fn every_figure_command_parses() {
+        let dir = Path::new("figures");
+        let mut files: Vec<_> = FIGURES.iter().map(|f| f.file).collect();
+        for f in FIGURES {
+            render_args(&command(f), dir).unwrap_or_else(|_| panic!("{}", f.file));
+        }
+        files.sort();
+        files.dedup();
+        assert_eq!(files.len(), FIGURES.len());
+    }
+}

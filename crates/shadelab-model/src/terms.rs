@@ -18,12 +18,21 @@ pub enum Term {
     Diffuse,
     /// `Σ V·I_L·r_s·S` alone (Phong or Cook–Torrance), cast shadows included.
     Specular,
+    /// The cast-shadow factor: the share of the lights' diffuse and specular light that reaches
+    /// each point (1 lit, 0 in every light's shadow), as grey. Not a summand: [`shadow_factor`]
+    /// of the image with and without cast shadows.
+    Shadow,
 }
 
 impl NamedValue for Term {
     const FLAG: &'static str = "--term";
-    const ALL: &'static [(&'static str, Self)] =
-        &[("all", Term::All), ("ambient", Term::Ambient), ("diffuse", Term::Diffuse), ("specular", Term::Specular)];
+    const ALL: &'static [(&'static str, Self)] = &[
+        ("all", Term::All),
+        ("ambient", Term::Ambient),
+        ("diffuse", Term::Diffuse),
+        ("specular", Term::Specular),
+        ("shadow", Term::Shadow),
+    ];
 }
 
 impl Term {
@@ -37,6 +46,7 @@ impl Term {
             Term::Ambient => "I_a",
             Term::Diffuse => "I_d",
             Term::Specular => "I_s",
+            Term::Shadow => "V",
         }
     }
 
@@ -47,10 +57,12 @@ impl Term {
             Term::Ambient => "the ambient term I_amb·r_a·C alone",
             Term::Diffuse => "the diffuse term Σ I_L·r_d·C·(N·L) alone, with cast shadows",
             Term::Specular => "the specular term Σ I_L·r_s·S alone, with cast shadows",
+            Term::Shadow => "the cast-shadow factor V: the share of the lights' light that reaches each point",
         }
     }
 
-    /// `scene` with every coefficient of the other terms set to 0 (`All`: unchanged).
+    /// `scene` with every coefficient of the other terms set to 0 (`All`: unchanged; `Shadow`:
+    /// the lit terms, ambient at 0, whose image with and without shadows gives the factor).
     pub fn scene(self, scene: &Scene) -> Scene {
         let mut s = scene.clone();
         self.apply(&mut s);
@@ -66,6 +78,9 @@ impl Term {
         if self != Term::Ambient {
             scene.ambient = [0.0; 3];
         }
+        if self == Term::Shadow {
+            return;
+        }
         for m in &mut scene.materials {
             if self != Term::Diffuse {
                 m.r_d = 0.0;
@@ -75,6 +90,20 @@ impl Term {
             }
         }
     }
+}
+
+/// Below this luminance of the unshadowed light a point has nothing to be shadowed (facing away
+/// from every light, or the background): its factor is 1. 1e-6 is far below one 8-bit step and
+/// far above f32 rounding of an unlit point (0).
+pub const SHADOW_FACTOR_LIGHT_MIN: f64 = 1e-6;
+
+/// The cast-shadow factor of a pixel: the luminance of its light with shadows over that without
+/// (Rec. 709 weights), in [0, 1]; 1 where the unshadowed light is below
+/// [`SHADOW_FACTOR_LIGHT_MIN`].
+pub fn shadow_factor(shadowed: [f64; 3], unshadowed: [f64; 3]) -> f64 {
+    let y = |c: [f64; 3]| 0.2126 * c[0] + 0.7152 * c[1] + 0.0722 * c[2];
+    let (s, u) = (y(shadowed), y(unshadowed));
+    if u < SHADOW_FACTOR_LIGHT_MIN || !(s.is_finite() && u.is_finite()) { 1.0 } else { (s / u).clamp(0.0, 1.0) }
 }
 
 #[cfg(test)]

@@ -42,3 +42,33 @@ pub fn render_image(
     r.render(&gs, scene, &target, settings);
     Ok(target::read_back(&gpu.device, &gpu.queue, &target))
 }
+
+/// The cast-shadow factor of `scene` (`terms::Term::Shadow`: its lit terms) as grey, what
+/// `render --term shadow` writes: per pixel, the share of the light with cast shadows over that
+/// without (`terms::shadow_factor`); the background stays as it is.
+pub fn render_shadow_factor(
+    gpu: &Gpu,
+    scene: &shadelab_model::Scene,
+    (width, height): (u32, u32),
+    settings: &RenderSettings,
+) -> Result<LinearImage, UploadError> {
+    let shadowed = render_image(gpu, scene, width, height, settings)?;
+    let mut off = scene.clone();
+    off.set_shadows(false);
+    let unshadowed = render_image(gpu, &off, width, height, settings)?;
+    let background = shadelab_model::scene::BACKGROUND.map(|c| c as f32);
+    let rgb = |p: &[f32; 4]| [p[0] as f64, p[1] as f64, p[2] as f64];
+    let pixels = shadowed
+        .pixels
+        .iter()
+        .zip(&unshadowed.pixels)
+        .map(|(s, u)| {
+            if u[..3] == background {
+                return *u;
+            }
+            let v = shadelab_model::terms::shadow_factor(rgb(s), rgb(u)) as f32;
+            [v, v, v, 1.0]
+        })
+        .collect();
+    Ok(LinearImage { width, height, pixels })
+}

@@ -61,6 +61,11 @@ pub const FIGURES: &[Figure] = &[
         flags: &["--term", "diffuse"],
     },
     Figure {
+        file: "term-shadow.png",
+        caption: "the cast-shadow factor V alone: black where both lights are hidden, grey where one is",
+        flags: &["--term", "shadow"],
+    },
+    Figure {
         file: "term-specular.png",
         caption: "equation (1): the specular term I_s alone, the spheres going from sharp to rough",
         flags: &["--term", "specular"],

@@ -79,6 +79,10 @@ pub fn run(args: &cli::RenderArgs) -> Result<(), Failure> {
     let settings = RenderSettings { debug_nonfinite: args.debug_nonfinite, ..args.mode.resolve(file) };
     let (width, height) = args.size.pixels();
     let kind = image_kind(&args.output)?;
+    let factor = args.term == shadelab_model::terms::Term::Shadow;
+    if factor && !args.overlay.is_empty() {
+        return Err(Failure::Usage("--overlay: not drawn over --term shadow (a grey factor image)".into()));
+    }
     if let Some(path) = &args.save_scene {
         let recorded = SceneSettings { shading: Some(settings.shading), specular: Some(settings.specular) };
         save_scene(&whole, recorded, path)?;
@@ -88,7 +92,9 @@ pub fn run(args: &cli::RenderArgs) -> Result<(), Failure> {
     }
     let gpu = Gpu::headless(AdapterChoice::from_env()).context("opening a GPU adapter")?;
     log::info!("adapter: {}", gpu.describe());
-    let image = if args.overlay.is_empty() {
+    let image = if factor {
+        shadelab_render::render_shadow_factor(&gpu, &scene, (width, height), &settings)
+    } else if args.overlay.is_empty() {
         shadelab_render::render_image(&gpu, &scene, width, height, &settings)
     } else {
         // Each overlay once, in the order given (a later one drawn over an earlier one).

@@ -584,6 +584,16 @@ fn render_term_draws_one_term() {
         let differ = img.pixels().zip(all.pixels()).filter(|(a, b)| (a.0[0] - b.0[0]).abs() > 1e-3).count();
         assert!(differ > 100, "{term}: only {differ} pixels differ from the whole image");
     }
+    // The shadow factor is grey on the objects, in [0, 1], with cast shadows in it; the
+    // background stays; it takes no overlay.
+    let v = read("shadow");
+    let bg = shadelab_model::scene::BACKGROUND.map(|c| c as f32);
+    let grey = |p: &image::Rgba<f32>| p.0[0] == p.0[1] && p.0[1] == p.0[2] && (0.0..=1.0).contains(&p.0[0]);
+    assert!(v.pixels().all(|p| p.0[..3] == bg || grey(p)));
+    assert!(v.pixels().any(|p| p.0[0] < 0.5), "no cast shadow in the factor");
+    let o = shadelab(&["render", "--term", "shadow", "--overlay", "terminator", "--output", "x.png"]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(error_lines(&o).len() == 1 && error_lines(&o)[0].contains("--overlay"), "{:?}", error_lines(&o));
     // The terms add up to the whole on the objects (the background is in each).
     let parts: Vec<_> = ["ambient", "diffuse", "specular"].map(read).into_iter().collect();
     let bg = shadelab_model::scene::BACKGROUND.map(|c| c as f32);

@@ -262,8 +262,8 @@ pub struct RenderArgs {
     #[arg(long)]
     pub explain: bool,
     /// Draw one term of the model alone: all (the default), ambient (I_amb·r_a·C), diffuse
-    /// (Σ I_L·r_d·C·(N·L), cast shadows included) or specular (Σ I_L·r_s·S). The terms add up to
-    /// the whole image.
+    /// (Σ I_L·r_d·C·(N·L), cast shadows included) or specular (Σ I_L·r_s·S), which add up to the
+    /// whole image; or shadow, the cast-shadow factor as grey.
     #[arg(long, value_name = "TERM", default_value = "all", value_parser = values::named::<shadelab_model::terms::Term>())]
     pub term: shadelab_model::terms::Term,
     /// Draw over the image, comma-separated, depth-tested against the scene: terminator (the

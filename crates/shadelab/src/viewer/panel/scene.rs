@@ -60,7 +60,8 @@ impl Viewer {
         });
         ui.horizontal(|ui| {
             ui.label("term");
-            for (_, term) in Term::ALL {
+            // The shadow factor is a ratio of two frames: `render --term shadow` only.
+            for (_, term) in Term::ALL.iter().filter(|(_, t)| *t != Term::Shadow) {
                 ui.selectable_value(&mut self.term, *term, term.symbol()).on_hover_text(term.meaning());
             }
         });

@@ -15,7 +15,7 @@ use glam::{DMat4, DVec3, DVec4};
 mod cascades;
 pub use cascades::{
     SHADOW_CASCADE_DEPTH_RATIO, SHADOW_CASCADE_MARGIN_TEXELS, SHADOW_CASCADES_MAX, cascade_count, cascade_projection,
-    cascade_splits, shadow_cascade, shadow_ortho_texel_world, view_depth_range,
+    cascade_splits, cascades_for_depths, shadow_cascade, shadow_ortho_texel_world, view_depth_range,
 };
 
 /// How the shadow map is filtered where a point is compared with it.

@@ -177,6 +177,15 @@ impl OverlayPass {
     }
 }
 
+impl OverlayPass {
+    /// Record the lines into `target` ([`OverlayPass::encode`]) and submit them.
+    pub fn draw(&mut self, device: &wgpu::Device, queue: &wgpu::Queue, target: &Target, camera: &Camera) {
+        let mut encoder = device.create_command_encoder(&Default::default());
+        self.encode(device, queue, &mut encoder, target, camera);
+        queue.submit([encoder.finish()]);
+    }
+}
+
 const LINE_ATTRS: [wgpu::VertexAttribute; 1] = wgpu::vertex_attr_array![0 => Float32x3];
 
 fn build_pipeline(
@@ -234,7 +243,7 @@ pub fn render_image_with_lines(
 }
 
 /// [`crate::render_image`] with each set of lines drawn over it in its colour, the later sets
-/// over the earlier ones (one overlay pass each, each with its own uniform).
+/// over the earlier ones (one submission each: the uniform a set writes is read by its own).
 pub fn render_image_with_line_sets(
     gpu: &Gpu,
     scene: &Scene,
@@ -246,12 +255,10 @@ pub fn render_image_with_line_sets(
     let gs = r.upload(scene)?;
     let target = Target::new(&gpu.device, width, height, target::HDR_FORMAT);
     r.render(&gs, scene, &target, settings);
+    let mut overlay = OverlayPass::new(&gpu.device);
     for (segments, color) in sets {
-        let mut overlay = OverlayPass::new(&gpu.device);
         overlay.set_lines(&gpu.device, segments, *color);
-        let mut encoder = gpu.device.create_command_encoder(&Default::default());
-        overlay.encode(&gpu.device, &gpu.queue, &mut encoder, &target, &scene.camera);
-        gpu.queue.submit([encoder.finish()]);
+        overlay.draw(&gpu.device, &gpu.queue, &target, &scene.camera);
     }
     Ok(target::read_back(&gpu.device, &gpu.queue, &target))
 }

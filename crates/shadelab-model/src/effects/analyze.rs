@@ -234,7 +234,7 @@ fn shadow_filter(lights: &[crate::scene::Light], shadows: bool, filter: ShadowFi
 /// Cascades are on when shadows are, some directional light casts them with its cascades
 /// allowed, and the objects in view span a depth ratio over `SHADOW_CASCADE_DEPTH_RATIO`.
 fn shadow_cascades(scene: &Scene, lights: &[crate::scene::Light], shadows: bool) -> (bool, String) {
-    use crate::shadows::{SHADOW_CASCADE_DEPTH_RATIO, cascade_count, view_depth_range};
+    use crate::shadows::{SHADOW_CASCADE_DEPTH_RATIO, cascades_for_depths, view_depth_range};
     let directional = |l: &&crate::scene::Light| l.kind == LightKind::Directional && l.shadow.casts;
     if !shadows {
         return (false, "no cast shadows".into());
@@ -248,7 +248,7 @@ fn shadow_cascades(scene: &Scene, lights: &[crate::scene::Light], shadows: bool)
     let Some((near, far)) = view_depth_range(scene) else {
         return (false, "no object in view".into());
     };
-    let n = cascade_count(scene);
+    let n = cascades_for_depths(near, far);
     let span = format!("the objects in view span depths {near:.2} to {far:.2}, a ratio of {:.1}", far / near);
     if n > 1 {
         (true, format!("{span} (over {SHADOW_CASCADE_DEPTH_RATIO}): {n} cascades"))

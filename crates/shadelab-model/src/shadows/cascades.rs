@@ -84,7 +84,12 @@ fn ray_box(o: DVec3, d: DVec3, lo: DVec3, hi: DVec3) -> Option<(f64, f64)> {
 /// depth ratio of at most [`SHADOW_CASCADE_DEPTH_RATIO`], at most [`SHADOW_CASCADES_MAX`]; 1
 /// (one map fitted to the scene) when the view's ratio is within it.
 pub fn cascade_count(scene: &Scene) -> u32 {
-    let Some((near, far)) = view_depth_range(scene) else { return 1 };
+    view_depth_range(scene).map_or(1, |(near, far)| cascades_for_depths(near, far))
+}
+
+/// The cascades a view of depths `near` to `far` ([`view_depth_range`]) needs (see
+/// [`cascade_count`]).
+pub fn cascades_for_depths(near: f64, far: f64) -> u32 {
     let k = ((far / near).ln() / SHADOW_CASCADE_DEPTH_RATIO.ln()).ceil();
     if k.is_finite() { (k as u32).clamp(1, SHADOW_CASCADES_MAX) } else { SHADOW_CASCADES_MAX }
 }

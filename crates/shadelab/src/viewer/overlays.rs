@@ -204,9 +204,7 @@ impl BoundaryOverlay {
             pass.set_lines(device, &edges.terminator(&scene.lights), TERMINATOR_COLOR);
             self.lights = Some(scene.lights.clone());
         }
-        let mut encoder = device.create_command_encoder(&Default::default());
-        pass.encode(device, queue, &mut encoder, target, &scene.camera);
-        queue.submit([encoder.finish()]);
+        pass.draw(device, queue, target, &scene.camera);
     }
 
     /// How many boundary edges are drawn (0 while the switch is off or before the first frame).
@@ -255,9 +253,7 @@ impl MeshLinesOverlay {
             pass.set_lines(device, &(self.lines)(scene), self.color);
             self.built = Some(of);
         }
-        let mut encoder = device.create_command_encoder(&Default::default());
-        pass.encode(device, queue, &mut encoder, target, &scene.camera);
-        queue.submit([encoder.finish()]);
+        pass.draw(device, queue, target, &scene.camera);
     }
 
     /// How many lines are drawn (0 while switched off or before the first frame).

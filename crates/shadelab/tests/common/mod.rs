@@ -1,6 +1,29 @@
-//! Helpers shared by the app's test binaries.
+//! Helpers shared by the app's test binaries (each uses some of them).
+#![allow(dead_code)]
 
 use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+/// Run the `shadelab` binary on lavapipe.
+pub fn shadelab(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_shadelab"))
+        .args(args)
+        .env("SHADELAB_ADAPTER", "lavapipe")
+        .output()
+        .expect("run shadelab")
+}
+
+/// The folder the CLI tests write into.
+pub fn out_dir() -> PathBuf {
+    let d = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("cli");
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
+
+/// stderr lines that are shadelab's own (the Vulkan driver may print its own warnings).
+pub fn error_lines(o: &Output) -> Vec<String> {
+    String::from_utf8_lossy(&o.stderr).lines().filter(|l| l.starts_with("error:")).map(String::from).collect()
+}
 
 /// The project's root folder.
 pub fn root() -> PathBuf {

@@ -26,7 +26,8 @@ impl Viewer {
         });
         let mut remove = None;
         // A directional light's cascades (when its setting allows them), for the map's layer menu.
-        let cascades = shadelab_model::shadows::cascade_count(&self.scene);
+        let may_cascade = self.scene.lights.iter().any(|l| l.kind == LightKind::Directional && l.shadow.cascades);
+        let cascades = if may_cascade { shadelab_model::shadows::cascade_count(&self.scene) } else { 1 };
         for (i, l) in self.scene.lights.iter_mut().enumerate() {
             egui::CollapsingHeader::new(format!("L{} — {}", i + 1, l.kind.name())).id_salt(i).show(ui, |ui| {
                 ui.horizontal(|ui| {

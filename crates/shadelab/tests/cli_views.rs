@@ -1,0 +1,150 @@
+//! The views of the model from the outside: `render --overlay` (boundary, normals, creases),
+//! `render --term` (one term alone, the shadow factor) and `shadelab figures`.
+
+use common::{error_lines, out_dir, shadelab};
+use std::process::Command;
+
+mod common;
+
+/// `render --overlay`: the self-shadow boundary is accepted and drawn.
+#[test]
+fn overlay_terminator_renders_and_a_bad_value_is_one_line() {
+    let figure = common::root().join("assets/figure-7-3-pyramid.gltf");
+    let png = out_dir().join("terminator.png");
+    for scene in [figure.to_str().unwrap(), "pyramid"] {
+        let o = shadelab(&[
+            "render",
+            "--scene",
+            scene,
+            "--overlay",
+            "terminator",
+            "--width",
+            "160",
+            "--height",
+            "90",
+            "--output",
+            png.to_str().unwrap(),
+        ]);
+        assert!(o.status.success(), "{scene}: {}", String::from_utf8_lossy(&o.stderr));
+        let img = image::open(&png).unwrap().to_rgb8();
+        assert!(img.pixels().any(|p| p.0 == [0, 255, 255]), "{scene}: no boundary pixel");
+    }
+    // Normals (yellow) and creases (orange, sRGB-encoded) over the cylinder, in one image.
+    let o = shadelab(&[
+        "render",
+        "--scene",
+        "cylinder",
+        "--overlay",
+        "normals,creases,normals",
+        "--width",
+        "320",
+        "--height",
+        "180",
+        "--output",
+        png.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let img = image::open(&png).unwrap().to_rgb8();
+    assert!(img.pixels().any(|p| p.0 == [255, 255, 0]), "no normal pixel");
+    assert!(img.pixels().any(|p| p.0[0] == 255 && p.0[2] == 0 && p.0[1] > 100 && p.0[1] < 200), "no crease pixel");
+    for bad in ["outline", "terminator,outline", ""] {
+        let o = shadelab(&["render", "--overlay", bad, "--output", png.to_str().unwrap()]);
+        assert_eq!(o.status.code(), Some(2), "{bad:?}: {}", String::from_utf8_lossy(&o.stderr));
+        let lines = error_lines(&o);
+        assert_eq!(lines.len(), 1, "{bad:?}: {lines:?}");
+        assert!(
+            lines[0].contains("--overlay") && lines[0].contains("terminator, normals, creases"),
+            "{bad:?}: {}",
+            lines[0]
+        );
+    }
+}
+
+/// `render --term` draws one term alone: each differs from the whole image, and the three add up
+/// to it on the objects.
+#[test]
+fn render_term_draws_one_term() {
+    let dir = out_dir();
+    let read = |term: &str| {
+        let path = dir.join(format!("term-{term}.exr"));
+        let o = shadelab(&[
+            "render",
+            "--term",
+            term,
+            "--width",
+            "64",
+            "--height",
+            "36",
+            "--output",
+            path.to_str().unwrap(),
+        ]);
+        assert!(o.status.success(), "{term}: {}", String::from_utf8_lossy(&o.stderr));
+        image::open(&path).unwrap().to_rgba32f()
+    };
+    let all = read("all");
+    for term in ["ambient", "diffuse", "specular"] {
+        let img = read(term);
+        let differ = img.pixels().zip(all.pixels()).filter(|(a, b)| (a.0[0] - b.0[0]).abs() > 1e-3).count();
+        assert!(differ > 100, "{term}: only {differ} pixels differ from the whole image");
+    }
+    // The shadow factor is grey on the objects, in [0, 1], with cast shadows in it; the
+    // background stays; it takes no overlay.
+    let v = read("shadow");
+    let bg = shadelab_model::scene::BACKGROUND.map(|c| c as f32);
+    let grey = |p: &image::Rgba<f32>| p.0[0] == p.0[1] && p.0[1] == p.0[2] && (0.0..=1.0).contains(&p.0[0]);
+    assert!(v.pixels().all(|p| p.0[..3] == bg || grey(p)));
+    assert!(v.pixels().any(|p| p.0[0] < 0.5), "no cast shadow in the factor");
+    let o = shadelab(&["render", "--term", "shadow", "--overlay", "terminator", "--output", "x.png"]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(error_lines(&o).len() == 1 && error_lines(&o)[0].contains("--overlay"), "{:?}", error_lines(&o));
+    // The terms add up to the whole on the objects (the background is in each).
+    let parts: Vec<_> = ["ambient", "diffuse", "specular"].map(read).into_iter().collect();
+    let bg = shadelab_model::scene::BACKGROUND.map(|c| c as f32);
+    for (i, p) in all.pixels().enumerate() {
+        if p.0[..3] == bg {
+            continue;
+        }
+        let sum: f32 = parts.iter().map(|q| q.as_raw()[i * 4 + 1]).sum();
+        assert!((sum - p.0[1]).abs() < 1e-5, "pixel {i}: {sum} vs {}", p.0[1]);
+    }
+}
+
+/// `shadelab figures` writes every figure, the scene files they use and commands.txt; each
+/// listed command, run from that folder, remakes its figure byte for byte.
+#[test]
+fn figures_writes_each_figure_and_the_commands_that_remake_it() {
+    let dir = out_dir().join("figures");
+    let _ = std::fs::remove_dir_all(&dir);
+    let o = shadelab(&["figures", "--out", dir.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let listing = std::fs::read_to_string(dir.join("commands.txt")).unwrap();
+    let commands: Vec<&str> = listing.lines().filter(|l| l.starts_with("shadelab ")).collect();
+    assert_eq!(commands.len(), shadelab::figures::FIGURES.len(), "{listing}");
+    for f in shadelab::figures::FIGURES {
+        let img = image::open(dir.join(f.file)).unwrap_or_else(|e| panic!("{}: {e}", f.file)).to_rgb8();
+        assert_eq!((img.width(), img.height()), (640, 360), "{}", f.file);
+        let colours: std::collections::HashSet<_> = img.pixels().map(|p| p.0).collect();
+        // Not blank: the ambient term alone is flat, one colour per material and the background.
+        assert!(colours.len() >= 4, "{}: {} colours", f.file, colours.len());
+    }
+    // The cylinder's figure, remade from its listed command in the folder.
+    let line = commands.iter().find(|l| l.contains("cylinder")).unwrap();
+    let again = Command::new(env!("CARGO_BIN_EXE_shadelab"))
+        .args(line.split_whitespace().skip(1).map(|w| if w.ends_with(".png") { "again.png" } else { w }))
+        .current_dir(&dir)
+        .env("SHADELAB_ADAPTER", "lavapipe")
+        .output()
+        .unwrap();
+    assert!(again.status.success(), "{}", String::from_utf8_lossy(&again.stderr));
+    assert!(
+        std::fs::read(dir.join("again.png")).unwrap()
+            == std::fs::read(dir.join("figure-7-11-cylinder-normals.png")).unwrap()
+    );
+    // A folder that cannot be made is one line.
+    let blocker = out_dir().join("figures-blocker");
+    std::fs::write(&blocker, b"a file").unwrap();
+    let o = shadelab(&["figures", "--out", blocker.join("sub").to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(2));
+    let lines = error_lines(&o);
+    assert!(lines.len() == 1 && lines[0].contains("--out"), "{lines:?}");
+}

@@ -1,6 +1,7 @@
-// The three shading modes (docs/model.md §8) over the Phong illumination model (docs/model.md §3):
-// I = I_a + Σ_lights I_L · (r_d·C·(N·L) + r_s·S), S = Phong or Cook–Torrance specular; the f64
-// twin of `shade` is crates/shadelab-model/src/lighting/shading.rs.
+// The three shading modes (docs/model.md §8) over the chosen illumination model (docs/model.md
+// §3a): the Phong model I = I_a + Σ_lights I_L · (r_d·C·(N·L) + r_s·S), S = Phong or Cook–Torrance
+// specular, the Lambert rule or the four-term sum (models.wgsl); the f64 twin of `shade` is
+// crates/shadelab-model/src/lighting/shading.rs.
 // Flat: lit once per face at its centroid. Gouraud: lit at the vertices, colour interpolated.
 // Phong: normals interpolated, renormalized, lit per pixel.
 
@@ -19,7 +20,8 @@ struct Globals {
     flags: u32,
     // Which specular term S is: SPECULAR_PHONG or SPECULAR_COOK_TORRANCE.
     specular_model: u32,
-    _pad1: u32,
+    // Which illumination model: ILLUMINATION_PHONG, _LAMBERT or _SUM (models.wgsl).
+    illumination: u32,
     lights: array<Light, MAX_LIGHTS>,
 }
 
@@ -38,7 +40,8 @@ struct Object {
     h: f32,
     // 1: the Phong "mirror" setting (h = ∞).
     mirror: u32,
-    _pad0: u32,
+    // The four-term sum's 1 − t (glTF's transmission factor; 0 is opaque).
+    transmission: f32,
     _pad1: u32,
 }
 
@@ -48,8 +51,9 @@ const NONFINITE_COLOR: vec3<f32> = vec3(1.0, 0.0, 1.0);
 @group(0) @binding(0) var<uniform> globals: Globals;
 @group(1) @binding(0) var<uniform> object: Object;
 
-// The Phong illumination model at world point `p` with (not necessarily unit) normal `n_in`;
-// `pixel` seeds the shadow filter's per-pixel rotation (read only with cast shadows).
+// The illumination model at world point `p` with (not necessarily unit) normal `n_in`; `pixel`
+// seeds the shadow filter's per-pixel rotation (read only with cast shadows). The Lambert rule's
+// fill and the sum's transmitted term are not shadowed (see the twin's shade_with_visibility).
 fn shade(p: vec3<f32>, n_in: vec3<f32>, pixel: vec2<f32>) -> vec3<f32> {
     let v = safe_normalize(globals.camera_pos.xyz - p, vec3(0.0, 1.0, 0.0));
     // A zero normal (e.g. interpolated between opposite vertex normals) faces the viewer.
@@ -64,17 +68,43 @@ fn shade(p: vec3<f32>, n_in: vec3<f32>, pixel: vec2<f32>) -> vec3<f32> {
 #if EFFECT_AMBIENT
     total += globals.ambient.rgb * object.r_a * c;
 #endif
+#if EFFECT_LAMBERT_RULE
+    // The Lambert rule's I: the brightest light at the point, per channel, in [0, 1].
+    var i_max = vec3(0.0);
+#endif
     for (var i = 0u; i < min(globals.light_count, MAX_LIGHTS); i++) {
         let s = light_sample(globals.lights[i], p, n);
         var visibility = 1.0;
 #if EFFECT_CAST_SHADOWS
         visibility = shadow_visibility(i, globals.lights[i], p, n, pixel);
 #endif
+#if EFFECT_LAMBERT_RULE
+        if (globals.illumination == ILLUMINATION_LAMBERT) {
+            let li = clamp(s.radiance, vec3(0.0), vec3(1.0));
+            i_max = max(i_max, li);
+            total += visibility * lambert_rule_lit(object.r_d * c, li, dot(n, s.l));
+            continue;
+        }
+#endif
+#if EFFECT_FOUR_TERM_SUM
+        if (globals.illumination == ILLUMINATION_SUM) {
+#if EFFECT_TRANSMITTED_TERM
+            total += transmitted_term(s.radiance, c, object.transmission);
+#endif
+            total += visibility * sum_contribution(s.radiance, dot(n, s.l), dot(n, v), c, object.r_d, object.r_s);
+            continue;
+        }
+#endif
         total += visibility * light_contribution(
             s.l, s.radiance, n, v, c, object.r_s, object.r_d, object.m, object.h, object.mirror != 0u,
             v_index, globals.specular_model,
         );
     }
+#if EFFECT_LAMBERT_RULE
+    if (globals.illumination == ILLUMINATION_LAMBERT) {
+        total += lambert_rule_fill(object.r_a * c, i_max);
+    }
+#endif
     return total;
 }
 

@@ -104,6 +104,14 @@ fn sweep(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workgroups)
     outputs[base + COL_FALLOFF_LINEAR] = falloff_linear(d, a_row.y);
     put_rgb(base + COL_CONTRIBUTION_PHONG, c_phong);
     put_rgb(base + COL_CONTRIBUTION_COOK_TORRANCE, c_ct);
+    // The other models at the linear falloff's sample; m in [0, 1] doubles as the share 1 − t.
+    let nl = dot(n, linear.l);
+    let nv = dot(n, v);
+    put_rgb(base + COL_LAMBERT_RULE_LIT, lambert_rule_lit(SWEEP_COLOR, linear.radiance, nl));
+    put_rgb(base + COL_LAMBERT_RULE_FILL, lambert_rule_fill(SWEEP_COLOR, linear.radiance));
+    outputs[base + COL_REFLECTED_COS_PHI] = reflected_cos_phi(nl, nv);
+    put_rgb(base + COL_SUM_CONTRIBUTION, sum_contribution(linear.radiance, nl, nv, SWEEP_COLOR, 1.0, 1.0));
+    put_rgb(base + COL_TRANSMITTED_TERM, transmitted_term(linear.radiance, SWEEP_COLOR, m));
     // The spot cone at the angle between V and L; the range window at distance d with range d0.
     let outer = m * SWEEP_CONE_PER_M;
     let inner = outer * min(a_row.x, 1.0);

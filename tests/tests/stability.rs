@@ -201,26 +201,36 @@ fn debug_view_paints_nonfinite_pixels_magenta() {
 
 /// Each term alone (`render --term`) matches the f64 reference's same term on a fine sphere, and
 /// the GPU's terms add up to its whole image on the default scene, in linear float (what an EXR
-/// holds), for both specular models.
+/// holds), in each of the four illumination models (materials transmitting 0.3, so that the
+/// four-term sum's I_t is not zero).
 #[test]
 fn each_term_matches_the_reference_and_the_terms_sum_to_the_image() {
     use shadelab_model::terms::Term;
+    use shadelab_model::{ModelChoice, Overrides};
     let (w, h) = (320, 180);
-    for specular in SpecularModel::ALL_MODELS {
+    let chosen = |mut s: Scene, choice: ModelChoice| {
+        s.apply(&Overrides::for_model(choice));
+        for m in &mut s.materials {
+            m.transmission = 0.3;
+        }
+        s
+    };
+    for choice in ModelChoice::ALL_CHOICES {
+        let specular = choice.split().1.unwrap_or(SpecularModel::CookTorrance);
         let settings = RenderSettings::new(ShadingMode::Phong, specular);
-        let sphere = single_shape_scene("sphere", Shape::Sphere, 256);
+        let sphere = chosen(single_shape_scene("sphere", Shape::Sphere, 256), choice);
         for term in Term::PARTS {
             let s = term.scene(&sphere);
             let gpu_img = render_image(gpu(), &s, w, h, &settings).expect("upload");
             let reference = render_reference(&s, specular, w, h);
             let pixels = interior(&reference, 1);
             let (mean, max, worst) = error(&gpu_img, &reference, &pixels);
-            eprintln!("{specular} {term:?}: mean |error| {mean:.2e}, max {max:.2e} at {worst:?}");
+            eprintln!("{choice} {term:?}: mean |error| {mean:.2e}, max {max:.2e} at {worst:?}");
             // The whole image's thresholds (see the test above): a part errs no more than the whole.
-            assert!(mean < 1e-4, "{specular} {term:?}: mean |error| {mean}");
-            assert!(max < 4e-3, "{specular} {term:?}: max |error| {max} at {worst:?}");
+            assert!(mean < 1e-4, "{choice} {term:?}: mean |error| {mean}");
+            assert!(max < 4e-3, "{choice} {term:?}: max |error| {max} at {worst:?}");
         }
-        let scene = Scene::builtin("default").expect("built-in");
+        let scene = chosen(Scene::builtin("default").expect("built-in"), choice);
         let full = render_image(gpu(), &scene, w, h, &settings).expect("upload");
         let parts: Vec<_> = Term::PARTS
             .iter()
@@ -241,9 +251,9 @@ fn each_term_matches_the_reference_and_the_terms_sum_to_the_image() {
             }
         }
         assert!(covered > w as usize * h as usize / 2, "{covered} pixels on objects");
-        eprintln!("{specular}: the terms' sum differs from the image by at most {worst:.2e}");
-        // f32 rounding of three sums of about one: measured 2.4e-7; 1e-5 leaves a factor of 40.
-        assert!(worst < 1e-5, "{specular}: terms sum to the image within {worst}");
+        eprintln!("{choice}: the terms' sum differs from the image by at most {worst:.2e}");
+        // f32 rounding of four sums of about one: measured 2.4e-7; 1e-5 leaves a factor of 40.
+        assert!(worst < 1e-5, "{choice}: terms sum to the image within {worst}");
     }
 }
 

@@ -101,6 +101,7 @@ pub fn figure_7_3_pyramid() -> Scene {
         ambient: [0.1; 3],
         camera: camera(DVec3::new(0.6, 2.4, 4.6), DVec3::new(0.0, 0.7, 0.0)),
         meshes: Vec::new(),
+        illumination: Default::default(),
     }
 }
 
@@ -150,6 +151,7 @@ pub fn gouraud_vs_phong() -> Scene {
         ambient: [0.12; 3],
         camera: camera(DVec3::new(0.0, 2.2, 4.6), DVec3::new(0.0, 0.8, 0.0)),
         meshes: Vec::new(),
+        illumination: Default::default(),
     }
 }
 
@@ -236,5 +238,6 @@ pub fn material_board() -> Scene {
         ambient: [0.1; 3],
         camera: camera(DVec3::new(0.0, 3.6, 4.4), DVec3::new(0.0, 0.2, 0.1)),
         meshes: Vec::new(),
+        illumination: Default::default(),
     }
 }

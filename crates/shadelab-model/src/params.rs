@@ -11,6 +11,7 @@ use std::str::FromStr;
 
 pub use crate::lighting::brdf::SpecularModel;
 pub use crate::lighting::lights::{CONE_ANGLE, CONE_ANGLE_F32, D0, FALLOFF, FalloffForm, INTENSITY, LightKind, RANGE};
+pub use crate::lighting::models::{IlluminationModel, ModelChoice};
 
 /// How lighting is distributed over a face (docs/model.md §8).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
@@ -142,6 +143,15 @@ impl ParamRange {
 /// the lobe is so wide the highlight has gone, and the white-furnace check covers [0.05, 1].
 pub const M: ParamRange =
     ParamRange { flag: "--m", symbol: "m", meaning: "roughness m (Beckmann facet slope)", min: 0.0, max: 1.0 };
+/// The transmission share `1 − t` of the four-term sum's `I_t` (docs/model.md §2): glTF's
+/// transmission factor, 0 opaque.
+pub const TRANSMISSION: ParamRange = ParamRange {
+    flag: "--transmission",
+    symbol: "1 − t",
+    meaning: "transmission share 1 − t (0 opaque)",
+    min: 0.0,
+    max: 1.0,
+};
 /// Phong exponent `h` (docs/model.md §3); "mirror" is accepted besides the numbers.
 pub const H: ParamRange = ParamRange {
     flag: "--h",
@@ -246,7 +256,7 @@ macro_rules! from_str_named {
         }
     )*};
 }
-from_str_named!(ShadingMode, SpecularModel, LightKind, FalloffForm);
+from_str_named!(ShadingMode, SpecularModel, IlluminationModel, ModelChoice, LightKind, FalloffForm);
 
 impl ShadingMode {
     pub const ALL_MODES: [ShadingMode; 3] = [ShadingMode::Flat, ShadingMode::Gouraud, ShadingMode::Phong];

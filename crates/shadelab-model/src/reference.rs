@@ -83,19 +83,29 @@ pub fn render_reference(scene: &Scene, specular: SpecularModel, width: u32, heig
             let (p, n, eye) = (hit.point, hit.normal, scene.camera.eye);
             let mat = &scene.materials[scene.objects[hit.object].material];
             let mut hidden = 0u8;
-            let lit = shade_with_visibility(p, n, eye, mat, &scene.lights, scene.ambient, specular, |i, light, l| {
-                if light.shadow.casts && rays.hidden(light, p, hit.geometric_normal, l) {
-                    hidden |= 1 << i;
-                    0.0
-                } else {
-                    1.0
-                }
-            });
+            let lit = shade_with_visibility(
+                p,
+                n,
+                eye,
+                mat,
+                &scene.lights,
+                scene.ambient,
+                specular,
+                scene.illumination,
+                |i, light, l| {
+                    if light.shadow.casts && rays.hidden(light, p, hit.geometric_normal, l) {
+                        hidden |= 1 << i;
+                        0.0
+                    } else {
+                        1.0
+                    }
+                },
+            );
             img.pixels.push(lit);
             img.unshadowed.push(if hidden == 0 {
                 lit
             } else {
-                shade(p, n, eye, mat, &scene.lights, scene.ambient, specular)
+                shade(p, n, eye, mat, &scene.lights, scene.ambient, specular, scene.illumination)
             });
             img.object.push(Some(hit.object));
             img.hidden.push(hidden);

@@ -96,6 +96,8 @@ pub struct Scene {
     pub camera: Camera,
     /// Triangle meshes from a scene file, indexed by `Shape::Mesh(i)`.
     pub meshes: Vec<crate::mesh::TriangleMesh>,
+    /// The illumination model the scene is lit with (docs/model.md §3a).
+    pub illumination: crate::params::IlluminationModel,
 }
 
 /// Background colour (linear RGB): dark enough for highlights to stand out, not black, so a blank
@@ -108,6 +110,8 @@ pub struct Overrides {
     pub m: Option<f64>,
     pub h: Option<PhongExponent>,
     pub mu: Option<[f64; 3]>,
+    /// Every material's transmission share `1 − t` (docs/model.md §2).
+    pub transmission: Option<f64>,
     pub falloff_alpha: Option<f64>,
     pub falloff_form: Option<FalloffForm>,
     pub d0: Option<f64>,
@@ -119,6 +123,21 @@ pub struct Overrides {
     pub shadow_filter: Option<ShadowFilter>,
     /// Every directional light may use cascades (`Some(true)`) or keeps one map (`Some(false)`).
     pub shadow_cascades: Option<bool>,
+    /// The illumination model (`--model`, with the specular model it fixes kept elsewhere).
+    pub illumination: Option<crate::params::IlluminationModel>,
+}
+
+impl Overrides {
+    /// What choosing `choice` changes in a scene: its illumination model, and for the four-term
+    /// sum the chapter's falloff `1/(d + d0)` on every point and spot light (equation (1)).
+    pub fn for_model(choice: crate::params::ModelChoice) -> Overrides {
+        let (model, _) = choice.split();
+        Overrides {
+            illumination: Some(model),
+            falloff_form: (model == crate::params::IlluminationModel::Sum).then_some(FalloffForm::Linear),
+            ..Default::default()
+        }
+    }
 }
 
 impl Scene {
@@ -132,6 +151,9 @@ impl Scene {
 
     /// Apply command-line or panel overrides to every material and light.
     pub fn apply(&mut self, o: &Overrides) {
+        if let Some(model) = o.illumination {
+            self.illumination = model;
+        }
         for mat in &mut self.materials {
             if let Some(m) = o.m {
                 mat.m = m;
@@ -141,6 +163,9 @@ impl Scene {
             }
             if let Some(mu) = o.mu {
                 mat.mu = mu;
+            }
+            if let Some(t) = o.transmission {
+                mat.transmission = t;
             }
         }
         for light in &mut self.lights {

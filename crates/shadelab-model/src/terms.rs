@@ -1,9 +1,9 @@
-//! One term of the illumination model at a time (docs/model.md §1–§3): the image of the ambient,
-//! the diffuse or the specular term alone is the image of the same scene with the other terms'
-//! coefficients set to 0 (I_amb, r_d, r_s). The GPU and the f64 reference draw the same
+//! One term of the illumination model at a time (docs/model.md §1–§3a): the image of the ambient,
+//! the diffuse, the specular (or reflected) or the transmitted term alone is the image of the same
+//! scene with the other terms' coefficients set to 0 (I_amb and r_a, r_d, r_s, the transmission). The GPU and the f64 reference draw the same
 //! transformed scene, so each term has both, and the terms add up to the full image.
 
-use crate::params::NamedValue;
+use crate::params::{IlluminationModel, NamedValue};
 use crate::scene::Scene;
 
 /// Which part of the model an image shows.
@@ -16,8 +16,11 @@ pub enum Term {
     Ambient,
     /// `Σ V·I_L·r_d·C·(N·L)` alone, cast shadows included.
     Diffuse,
-    /// `Σ V·I_L·r_s·S` alone (Phong or Cook–Torrance), cast shadows included.
+    /// `Σ V·I_L·r_s·S` alone (Phong or Cook–Torrance), cast shadows included; the four-term
+    /// sum's reflected term `I_r`.
     Specular,
+    /// The four-term sum's transmitted term `I_t = K_t·(1 − t)·I/(d + d0)` alone.
+    Transmitted,
     /// The cast-shadow factor: the share of the lights' diffuse and specular light that reaches
     /// each point (1 lit, 0 in every light's shadow), as grey. Not a summand: [`shadow_factor`]
     /// of the image with and without cast shadows.
@@ -31,13 +34,36 @@ impl NamedValue for Term {
         ("ambient", Term::Ambient),
         ("diffuse", Term::Diffuse),
         ("specular", Term::Specular),
+        ("transmitted", Term::Transmitted),
         ("shadow", Term::Shadow),
     ];
 }
 
 impl Term {
-    /// The terms that add up to [`Term::All`].
-    pub const PARTS: [Term; 3] = [Term::Ambient, Term::Diffuse, Term::Specular];
+    /// The terms that add up to [`Term::All`] (in every model; a model without a term draws it
+    /// black, see [`Term::in_model`]).
+    pub const PARTS: [Term; 4] = [Term::Ambient, Term::Diffuse, Term::Specular, Term::Transmitted];
+
+    /// Whether `model` has this term: the Lambert rule has its fill (shown as ambient) and its lit
+    /// part (diffuse); the Phong model has no transmitted term; the four-term sum has all four.
+    pub fn in_model(self, model: IlluminationModel) -> bool {
+        !matches!(
+            (self, model),
+            (Term::Specular, IlluminationModel::Lambert)
+                | (Term::Transmitted, IlluminationModel::Lambert | IlluminationModel::Phong)
+        )
+    }
+
+    /// The term's symbol in `model`: the four-term sum calls its specular term `I_r`, and the
+    /// Lambert rule's ambient part is its fill `R(1−I)`.
+    pub fn symbol_in(self, model: IlluminationModel) -> &'static str {
+        match (self, model) {
+            (Term::Specular, IlluminationModel::Sum) => "I_r",
+            (Term::Ambient, IlluminationModel::Lambert) => "R(1−I)",
+            (Term::Diffuse, IlluminationModel::Lambert) => "R·I·cos α",
+            _ => self.symbol(),
+        }
+    }
 
     /// The chapter's symbol of the term (`all` for the whole model).
     pub fn symbol(self) -> &'static str {
@@ -46,6 +72,7 @@ impl Term {
             Term::Ambient => "I_a",
             Term::Diffuse => "I_d",
             Term::Specular => "I_s",
+            Term::Transmitted => "I_t",
             Term::Shadow => "V",
         }
     }
@@ -53,16 +80,20 @@ impl Term {
     /// What the term is, for a tooltip or a caption.
     pub fn meaning(self) -> &'static str {
         match self {
-            Term::All => "the whole model: I_a + I_d + I_s",
+            Term::All => "the whole model: the sum of its terms",
             Term::Ambient => "the ambient term I_amb·r_a·C alone",
             Term::Diffuse => "the diffuse term Σ I_L·r_d·C·(N·L) alone, with cast shadows",
-            Term::Specular => "the specular term Σ I_L·r_s·S alone, with cast shadows",
+            Term::Specular => {
+                "the specular term Σ I_L·r_s·S alone (the four-term sum's reflected I_r), with cast shadows"
+            }
+            Term::Transmitted => "the four-term sum's transmitted term Σ K_t·(1 − t)·I/(d + d0) alone",
             Term::Shadow => "the cast-shadow factor V: the share of the lights' light that reaches each point",
         }
     }
 
     /// `scene` with every coefficient of the other terms set to 0 (`All`: unchanged; `Shadow`:
-    /// the lit terms, ambient at 0, whose image with and without shadows gives the factor).
+    /// the shadowed terms, diffuse and specular, whose image with and without shadows gives the
+    /// factor).
     pub fn scene(self, scene: &Scene) -> Scene {
         let mut s = scene.clone();
         self.apply(&mut s);
@@ -78,10 +109,17 @@ impl Term {
         if self != Term::Ambient {
             scene.ambient = [0.0; 3];
         }
-        if self == Term::Shadow {
-            return;
-        }
         for m in &mut scene.materials {
+            // r_a weighs the Lambert rule's fill as well as the ambient term.
+            if self != Term::Ambient {
+                m.r_a = 0.0;
+            }
+            if self != Term::Transmitted {
+                m.transmission = 0.0;
+            }
+            if self == Term::Shadow {
+                continue;
+            }
             if self != Term::Diffuse {
                 m.r_d = 0.0;
             }
@@ -112,11 +150,18 @@ mod tests {
     use crate::params::SpecularModel;
     use crate::reference::render_reference;
 
-    /// The f64 terms add up to the full image, pixel by pixel, for both specular models.
+    /// The f64 terms add up to the full image, pixel by pixel, in each of the four models (the
+    /// four-term sum on a scene whose materials transmit, so that I_t is not zero).
     #[test]
     fn the_reference_terms_sum_to_the_full_image() {
-        let scene = Scene::builtin("default").unwrap();
-        for specular in [SpecularModel::Phong, SpecularModel::CookTorrance] {
+        for choice in crate::params::ModelChoice::ALL_CHOICES {
+            let mut scene = Scene::builtin("default").unwrap();
+            let (model, specular) = choice.split();
+            let specular = specular.unwrap_or(SpecularModel::Phong);
+            scene.apply(&crate::scene::Overrides::for_model(choice));
+            for m in &mut scene.materials {
+                m.transmission = 0.3;
+            }
             let full = render_reference(&scene, specular, 96, 54);
             let parts: Vec<_> =
                 Term::PARTS.iter().map(|t| render_reference(&t.scene(&scene), specular, 96, 54)).collect();
@@ -133,11 +178,15 @@ mod tests {
                 }
             }
             assert!(lit > 1000, "{lit} pixels on objects");
-            assert!(worst < 1e-12, "{specular:?}: the terms differ from the whole by {worst}");
-            // Each term is non-zero somewhere and the terms differ.
+            assert!(worst < 1e-12, "{choice:?}: the terms differ from the whole by {worst}");
+            // Each term of the model is non-zero somewhere; a term it lacks is black.
             for (t, img) in Term::PARTS.iter().zip(&parts) {
                 let on = img.pixels.iter().zip(&img.object).filter(|(p, o)| o.is_some() && p[0] > 1e-6).count();
-                assert!(on > 100, "{t:?}: {on} pixels");
+                if t.in_model(model) {
+                    assert!(on > 100, "{choice:?} {t:?}: {on} pixels");
+                } else {
+                    assert_eq!(on, 0, "{choice:?} {t:?} is not a term of {model}");
+                }
             }
         }
     }

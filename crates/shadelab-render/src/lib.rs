@@ -56,6 +56,12 @@ pub fn render_shadow_factor(
     let mut off = scene.clone();
     off.set_shadows(false);
     let unshadowed = render_image(gpu, &off, width, height, settings)?;
+    Ok(shadow_factor_image(&shadowed, &unshadowed))
+}
+
+/// The cast-shadow factor per pixel of two renders of the same frame, with cast shadows and
+/// without (`terms::shadow_factor`), as grey; the background stays as it is.
+pub fn shadow_factor_image(shadowed: &LinearImage, unshadowed: &LinearImage) -> LinearImage {
     let background = shadelab_model::scene::BACKGROUND.map(|c| c as f32);
     let rgb = |p: &[f32; 4]| [p[0] as f64, p[1] as f64, p[2] as f64];
     let pixels = shadowed
@@ -70,5 +76,5 @@ pub fn render_shadow_factor(
             [v, v, v, 1.0]
         })
         .collect();
-    Ok(LinearImage { width, height, pixels })
+    LinearImage { width: shadowed.width, height: shadowed.height, pixels }
 }

@@ -8,9 +8,10 @@
 use shadelab_model::effects::EffectKey;
 
 /// `(file name, source)` in the order they are concatenated.
-pub const FILES: [(&str, &str); 6] = [
+pub const FILES: [(&str, &str); 7] = [
     ("common.wgsl", include_str!("../../../shaders/common.wgsl")),
     ("brdf.wgsl", include_str!("../../../shaders/brdf.wgsl")),
+    ("models.wgsl", include_str!("../../../shaders/models.wgsl")),
     ("lights.wgsl", include_str!("../../../shaders/lights.wgsl")),
     // The shadow projection math, without bindings (the sweep runs it): with cast shadows only.
     ("shadow_math.wgsl", include_str!("../../../shaders/shadow_math.wgsl")),
@@ -63,10 +64,10 @@ fn uber_defines() -> Vec<&'static str> {
 }
 
 /// Constants, guards and the lighting terms with every effect, without bindings or entry points
-/// (for compute passes that evaluate the terms directly): `common`, `brdf`, `lights` and
-/// `shadow_math`.
+/// (for compute passes that evaluate the terms directly): `common`, `brdf`, `models`, `lights`
+/// and `shadow_math`.
 pub fn terms_source() -> String {
-    let raw = FILES[..4].iter().map(|(_, s)| *s).collect::<Vec<_>>().join("\n");
+    let raw = FILES[..5].iter().map(|(_, s)| *s).collect::<Vec<_>>().join("\n");
     preprocess(&raw, &uber_defines()).expect("the shipped WGSL preprocesses")
 }
 

@@ -6,12 +6,13 @@
 use crate::shaders::tests::parse;
 use crate::shaders::{FILES, lighting_source, terms_source};
 use shadelab_model::params::NamedValue;
-use shadelab_model::{FalloffForm, LightKind, SpecularModel};
+use shadelab_model::{FalloffForm, IlluminationModel, LightKind, SpecularModel};
 
 /// Each WGSL file and the source of its f64 twin.
-const TWINS: [(&str, &str); 6] = [
+const TWINS: [(&str, &str); 7] = [
     ("common.wgsl", include_str!("../../shadelab-model/src/lighting/common.rs")),
     ("brdf.wgsl", include_str!("../../shadelab-model/src/lighting/brdf.rs")),
+    ("models.wgsl", include_str!("../../shadelab-model/src/lighting/models.rs")),
     ("lights.wgsl", include_str!("../../shadelab-model/src/lighting/lights.rs")),
     // The projection and cascade math, and the map lookup around it; the map sampling has
     // none (the reference traces shadow rays).
@@ -174,18 +175,19 @@ fn wgsl_codes_equal_rust_codes() {
     rust.extend(LightKind::ALL.iter().map(|(n, k)| (code_name("LIGHT", n), k.code())));
     rust.extend(FalloffForm::ALL.iter().map(|(n, f)| (code_name("FALLOFF", n), f.code())));
     rust.extend(SpecularModel::ALL.iter().map(|(n, s)| (code_name("SPECULAR", n), s.code())));
+    rust.extend(IlluminationModel::ALL.iter().map(|(n, s)| (code_name("ILLUMINATION", n), s.code())));
     for (name, code) in &rust {
         assert_eq!(wgsl_constant(&module, name), Some(*code as f64), "{name}: WGSL vs Rust code()");
     }
     // Every u32 code of the WGSL with one of these prefixes has its Rust value.
     for (name, ty) in FILES.iter().flat_map(|(_, src)| wgsl_consts(src)) {
-        let coded = ["LIGHT_", "FALLOFF_", "SPECULAR_"].iter().any(|p| name.starts_with(p));
+        let coded = ["LIGHT_", "FALLOFF_", "SPECULAR_", "ILLUMINATION_"].iter().any(|p| name.starts_with(p));
         if ty == "u32" && coded {
             assert!(rust.iter().any(|(n, _)| *n == name), "{name} has no Rust code()");
         }
     }
     // Codes are distinct within a kind.
-    for prefix in ["LIGHT_", "FALLOFF_", "SPECULAR_"] {
+    for prefix in ["LIGHT_", "FALLOFF_", "SPECULAR_", "ILLUMINATION_"] {
         let mut codes: Vec<u32> = rust.iter().filter(|(n, _)| n.starts_with(prefix)).map(|(_, c)| *c).collect();
         let len = codes.len();
         codes.sort();

@@ -36,7 +36,7 @@ pub struct GlobalsUniform {
     pub flags: u32,
     /// `SpecularModel::code`: SPECULAR_PHONG or SPECULAR_COOK_TORRANCE.
     pub specular_model: u32,
-    pub _pad1: u32,
+    pub illumination: u32,
     pub lights: [LightUniform; MAX_LIGHTS],
 }
 
@@ -53,7 +53,7 @@ pub struct ObjectUniform {
     pub m: f32,
     pub h: f32,
     pub mirror: u32,
-    pub _pad0: u32,
+    pub transmission: f32,
     pub _pad1: u32,
 }
 
@@ -124,7 +124,7 @@ impl GlobalsUniform {
             light_count: scene.lights.len().min(MAX_LIGHTS) as u32,
             flags,
             specular_model: specular.code(),
-            _pad1: 0,
+            illumination: scene.illumination.code(),
             lights,
         }
     }
@@ -144,7 +144,7 @@ impl ObjectUniform {
             m: material.m as f32,
             h: material.h.value() as f32,
             mirror: material.h.is_mirror() as u32,
-            _pad0: 0,
+            transmission: material.transmission as f32,
             _pad1: 0,
         }
     }

@@ -71,12 +71,21 @@ pub fn save_scene(scene: &shadelab_model::Scene, settings: SceneSettings, path: 
 }
 
 pub fn run(args: &cli::RenderArgs) -> Result<(), Failure> {
-    let LoadedScene { scene, settings: file, .. } = cli::load(&args.scene)?;
+    let mut loaded = cli::load(&args.scene)?;
+    let mode = args.mode.settle(&mut loaded, &args.scene)?;
+    let LoadedScene { scene, .. } = loaded;
+    if !args.term.in_model(scene.illumination) {
+        return Err(Failure::Usage(format!(
+            "--term {}: the {} model has no such term (the four-term sum, --model sum, has I_t; the Lambert rule has no specular term)",
+            shadelab_model::params::NamedValue::name(args.term),
+            scene.illumination
+        )));
+    }
     // One term alone is the scene with the other terms' coefficients at 0 (--save-scene keeps
     // the whole scene).
     let whole = scene;
     let scene = args.term.scene(&whole);
-    let settings = RenderSettings { debug_nonfinite: args.debug_nonfinite, ..args.mode.resolve(file) };
+    let settings = RenderSettings { debug_nonfinite: args.debug_nonfinite, ..mode };
     let (width, height) = args.size.pixels();
     let kind = image_kind(&args.output)?;
     let factor = args.term == shadelab_model::terms::Term::Shadow;
@@ -123,11 +132,12 @@ pub fn run(args: &cli::RenderArgs) -> Result<(), Failure> {
 /// The effect analysis of a scene with these settings, one line per decision (`--explain`).
 pub fn explain(scene: &shadelab_model::Scene, settings: &shadelab_render::RenderSettings) -> String {
     let a = shadelab_model::effects::analyze(scene, settings.specular);
+    let model = shadelab_model::ModelChoice::of(scene.illumination, settings.specular);
     let mut s = format!(
-        "# effects of scene '{}' with {} shading and {} specular — pipeline [{}]\n",
+        "# effects of scene '{}' with {} shading and the {} model — pipeline [{}]\n",
         scene.name,
         settings.shading,
-        settings.specular,
+        model,
         a.key.label()
     );
     for line in a.lines() {

@@ -286,10 +286,15 @@ fn a_files_cameras_are_offered_in_a_menu() {
 fn a_light_can_become_a_spot_light_in_the_panel() {
     let mut h = harness();
     let before = h.render().expect("render");
+    // Below the panel's fold: scroll to it first (the scroll is animated).
+    h.get_by_label("L2 — point").scroll_to_me();
+    h.run_steps(20);
     h.get_by_label("L2 — point").click();
     h.run_steps(2);
     let shown = |h: &Harness<'static, Viewer>, label: &str| h.query_all_by_label(label).next().is_some();
     assert!(!shown(&h, "outer cone °"));
+    h.get_by_label("spot").scroll_to_me();
+    h.run_steps(20);
     h.get_by_label("spot").click();
     h.run_steps(4);
     let l = h.state_mut().scene_mut().lights[1].clone();
@@ -326,4 +331,55 @@ fn a_lights_casts_shadows_box_switches_its_shadows() {
     h.get_by_label("casts shadows").click();
     h.run_steps(2);
     assert!(h.state_mut().scene_mut().lights[0].shadow.casts);
+}
+
+/// The model row switches among the chapter's four models: the Lambert rule changes the image,
+/// leaves the specular row for the Phong model, and the four-term sum puts the chapter's
+/// 1/(d + d0) on the point light; the term row offers the model's own terms, and V shows the
+/// cast-shadow factor in place of the frame.
+#[test]
+fn the_model_row_switches_models_and_v_shows_the_shadow_factor() {
+    use shadelab_model::{FalloffForm, IlluminationModel, LightKind};
+    let mut h = harness();
+    let before = h.render().expect("render");
+    let pick = |h: &mut Harness<'static, Viewer>, label: &str| {
+        h.get_by_label("model").click();
+        h.run_steps(2);
+        h.get_by_label(label).click();
+        h.run_steps(3);
+    };
+    pick(&mut h, "Lambert rule");
+    h.run_steps(3);
+    assert_eq!(h.state_mut().scene_mut().illumination, IlluminationModel::Lambert);
+    let lambert = h.render().expect("render");
+    let changed = changed_view_pixels(&before, &lambert);
+    assert!(changed > 20000, "only {changed} pixels of the view changed");
+    assert!(h.query_by_label("I_s").is_none(), "the Lambert rule has no specular term");
+    pick(&mut h, "four-term sum");
+    let scene = h.state_mut().scene_mut().clone();
+    assert_eq!(scene.illumination, IlluminationModel::Sum);
+    assert!(
+        scene.lights.iter().filter(|l| l.kind != LightKind::Directional).all(|l| l.falloff_form == FalloffForm::Linear)
+    );
+    h.get_by_label("I_r").click();
+    h.run_steps(2);
+    pick(&mut h, "Cook–Torrance model");
+    assert_eq!(h.state().settings().specular, SpecularModel::CookTorrance);
+    assert_eq!(h.state_mut().scene_mut().illumination, IlluminationModel::Phong);
+    assert!(h.query_by_label("I_r").is_none() && h.query_by_label("I_t").is_none());
+    h.get_by_label("V").click();
+    h.run_steps(3);
+    assert!(h.state().shadow_factor_size().is_some(), "the factor image is drawn");
+    let v = h.render().expect("render");
+    // Grey: the view's pixels have equal channels where the factor image is shown.
+    let view_width = v.width() * 6 / 10;
+    let (mut grey, mut all) = (0, 0);
+    for y in (0..v.height()).step_by(7) {
+        for x in (0..view_width).step_by(7) {
+            let p = v.get_pixel(x, y).0;
+            all += 1;
+            grey += (p[0].abs_diff(p[1]) <= 1 && p[1].abs_diff(p[2]) <= 1) as usize;
+        }
+    }
+    assert!(grey * 2 > all, "{grey} of {all} view pixels are grey");
 }

@@ -5,7 +5,7 @@
 
 use super::declared::{Effect, EffectKey};
 use crate::params::NamedValue;
-use crate::params::{FalloffForm, LightKind, SpecularModel};
+use crate::params::{FalloffForm, IlluminationModel, LightKind, SpecularModel};
 use crate::scene::Scene;
 use crate::shadows::ShadowFilter;
 
@@ -108,11 +108,16 @@ pub fn analyze(scene: &Scene, specular: SpecularModel) -> Analysis {
             "no point or spot light uses it".into()
         },
     );
+    let model = scene.illumination;
+    let phong_model = model == IlluminationModel::Phong;
+    let other_model = format!("the illumination model is {model}, which has its own terms");
     let max_rd = used.iter().map(|m| m.r_d * m.color.iter().cloned().fold(0.0, f64::max)).fold(0.0, f64::max);
     a.decide(
         Effect::Diffuse,
-        lit && max_rd > 0.0,
-        if !lit {
+        phong_model && lit && max_rd > 0.0,
+        if !phong_model {
+            other_model.clone()
+        } else if !lit {
             "no lights".into()
         } else if max_rd > 0.0 {
             "some material has r_d·C > 0".into()
@@ -122,7 +127,9 @@ pub fn analyze(scene: &Scene, specular: SpecularModel) -> Analysis {
     );
     let max_rs = used.iter().map(|m| m.r_s).fold(0.0, f64::max);
     let spec_reason = |model: SpecularModel| -> (bool, String) {
-        if specular != model {
+        if !phong_model {
+            (false, other_model.clone())
+        } else if specular != model {
             (false, format!("the specular model is {specular}"))
         } else if !lit {
             (false, "no lights".into())
@@ -140,13 +147,42 @@ pub fn analyze(scene: &Scene, specular: SpecularModel) -> Analysis {
     let max_ra = used.iter().map(|m| m.r_a).fold(0.0, f64::max);
     a.decide(
         Effect::Ambient,
-        amb > 0.0 && max_ra > 0.0,
-        if amb <= 0.0 {
+        model != IlluminationModel::Lambert && amb > 0.0 && max_ra > 0.0,
+        if model == IlluminationModel::Lambert {
+            "the Lambert rule has no I_amb: its fill R·(1 − I) stands for it".into()
+        } else if amb <= 0.0 {
             "I_amb = 0".into()
         } else if max_ra <= 0.0 {
             "every material has r_a = 0".into()
         } else {
             format!("I_amb = {amb} and some material has r_a > 0")
+        },
+    );
+    a.decide(Effect::LambertRule, model == IlluminationModel::Lambert, format!("the illumination model is {model}"));
+    let sum = model == IlluminationModel::Sum;
+    a.decide(
+        Effect::FourTermSum,
+        sum && lit,
+        if !sum {
+            format!("the illumination model is {model}")
+        } else if lit {
+            "the illumination model is the four-term sum".into()
+        } else {
+            "the four-term sum, but no lights: only K_a·I_a is left".into()
+        },
+    );
+    let t_share = used.iter().map(|m| m.transmission).fold(0.0, f64::max);
+    a.decide(
+        Effect::TransmittedTerm,
+        sum && lit && t_share > 0.0,
+        if !sum {
+            format!("the illumination model is {model}, which has no I_t")
+        } else if !lit {
+            "no lights".into()
+        } else if t_share > 0.0 {
+            format!("the four-term sum and some material transmits (1 − t up to {t_share})")
+        } else {
+            "every material is opaque (1 − t = 0)".into()
         },
     );
     let (on, why) = cast_shadows(scene, lights);

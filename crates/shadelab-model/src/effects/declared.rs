@@ -113,6 +113,35 @@ declare_effects! {
         functions: &[],
         members: &[("Globals", "ambient")],
     },
+    /// The Lambert rule's lit part and fill (docs/model.md §1), the illumination model
+    /// `IlluminationModel::Lambert`.
+    LambertRule {
+        explain: "Lambert rule R·I·cos α + R·(1 − I)",
+        name: "Lambert rule",
+        label: "lambert",
+        define: Some("EFFECT_LAMBERT_RULE"),
+        functions: &["lambert_rule_lit", "lambert_rule_fill"],
+        members: &[],
+    },
+    /// The four-term sum's diffuse and reflected terms (docs/model.md §2), the illumination model
+    /// `IlluminationModel::Sum`.
+    FourTermSum {
+        explain: "four-term sum K_d·I_d + K_r·I_r",
+        name: "four-term sum",
+        label: "sum",
+        define: Some("EFFECT_FOUR_TERM_SUM"),
+        functions: &["sum_contribution", "reflected_cos_phi"],
+        members: &[],
+    },
+    /// The four-term sum's transmitted term `K_t·(1 − t)·I/(d + d0)` (docs/model.md §2).
+    TransmittedTerm {
+        explain: "transmitted term K_t·I_t",
+        name: "transmitted term",
+        label: "it",
+        define: Some("EFFECT_TRANSMITTED_TERM"),
+        functions: &["transmitted_term"],
+        members: &[("Object", "transmission")],
+    },
     /// Directional lights (docs/model.md §6).
     DirectionalLights {
         explain: "directional lights",
@@ -437,7 +466,7 @@ mod tests {
         assert_eq!(format!("{k:?}"), "EffectKey(diffuse+cook-torrance+point+range)");
         assert_eq!(
             EffectKey::UBER.without(Effect::Ambient).label(),
-            "diffuse+phong+cook-torrance+dir+point+quad+linear+spot+range+shadows+hard+pcf+poisson+cascades"
+            "diffuse+phong+cook-torrance+lambert+sum+it+dir+point+quad+linear+spot+range+shadows+hard+pcf+poisson+cascades"
         );
         assert_eq!(Effect::SpecularPhong.to_string(), "Phong specular (V·R)^h");
     }

@@ -8,7 +8,7 @@ use super::extras::{self, Named, Rgb, Unit};
 use super::meshes::Prim;
 use super::{DEFAULT_AMBIENT, GltfError, LoadedScene, MAX_FILE_BYTES, SceneSettings};
 use crate::mesh::TriangleMesh;
-use crate::params::{ShadingMode, SpecularModel};
+use crate::params::{IlluminationModel, ShadingMode, SpecularModel};
 use crate::scene::{Camera, Scene};
 use glam::{DQuat, DVec3};
 use gltf::json;
@@ -39,6 +39,9 @@ struct SceneExtras {
     shading: Option<Named<ShadingMode>>,
     #[serde(skip_serializing_if = "Option::is_none")]
     specular: Option<Named<SpecularModel>>,
+    /// The illumination model; absent is the Phong model.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    illumination: Option<Named<IlluminationModel>>,
 }
 
 /// Read a scene file (`.gltf` or `.glb`; external buffers relative to the file's folder).
@@ -178,6 +181,7 @@ impl Reader<'_> {
                 far: 100.0,
             },
             meshes: Vec::new(),
+            illumination: Default::default(),
         };
         self.materials(&mut scene)?;
         let mut default_material = None;
@@ -189,6 +193,9 @@ impl Reader<'_> {
             }
             settings.shading = ex.shading.map(|s| s.0);
             settings.specular = ex.specular.map(|s| s.0);
+            if let Some(m) = ex.illumination {
+                scene.illumination = m.0;
+            }
         }
 
         let mut camera_nodes = Vec::new();
@@ -286,6 +293,7 @@ fn document(scene: &Scene, settings: &SceneSettings) -> (Value, Vec<u8>) {
         ambient: Some(scene.ambient.into()),
         shading: settings.shading.map(Named),
         specular: settings.specular.map(Named),
+        illumination: (scene.illumination != IlluminationModel::Phong).then_some(Named(scene.illumination)),
     };
     let mut root = json!({
         "asset": { "version": "2.0", "generator": concat!("shadelab ", env!("CARGO_PKG_VERSION")) },

@@ -4,6 +4,7 @@
 //! - [`common`] ↔ `common.wgsl`: the shared helpers.
 //! - [`brdf`] ↔ `brdf.wgsl`: the terms of the illumination model and the specular models.
 //! - [`lights`] ↔ `lights.wgsl`: the light sources, their parameters and falloffs.
+//! - [`models`] ↔ `models.wgsl`: the Lambert rule and the four-term sum, and the model choice.
 //! - [`shading`] ↔ `shading.wgsl`: the sum over the lights at one point.
 //!
 //! The test `every_wgsl_function_has_a_rust_twin` (in `shadelab-render`) holds the pairing.
@@ -11,4 +12,5 @@
 pub mod brdf;
 pub mod common;
 pub mod lights;
+pub mod models;
 pub mod shading;

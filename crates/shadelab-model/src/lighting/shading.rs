@@ -1,16 +1,19 @@
-//! The twin of `shaders/shading.wgsl`: the Phong illumination model summed over the lights at
-//! one point (docs/model.md §3, §8), each light weighted by how much of it reaches the point
-//! (its cast shadow, docs/model.md §0). The GPU's transforms, entry points and debug view have no
+//! The twin of `shaders/shading.wgsl`: the chosen illumination model (docs/model.md §1–§3a)
+//! summed over the lights at one point (§8), each light weighted by how much of it reaches the
+//! point (its cast shadow, docs/model.md §0). The GPU's transforms, entry points and debug view have no
 //! f64 twin here (see the exception list of `every_wgsl_function_has_a_rust_twin`).
 
 use super::brdf::{SpecularModel, fresnel_v_from_mu, light_contribution};
 use super::common::safe_normalize;
 use super::lights::{Light, MAX_LIGHTS, light_sample};
+use super::models::{IlluminationModel, lambert_rule_fill, lambert_rule_lit, sum_contribution, transmitted_term};
 use crate::scene::Material;
 use glam::DVec3;
 
-/// docs/model.md §3: the Phong illumination model `I_a + Σ I_L (r_d C (N·L) + r_s S)` at world
-/// point `p` with (not necessarily unit) normal `n_in`, seen from `eye`, every light reaching it.
+/// The illumination model `model` at world point `p` with (not necessarily unit) normal `n_in`,
+/// seen from `eye`, every light reaching it; for the Phong model (docs/model.md §3)
+/// `I_a + Σ I_L (r_d C (N·L) + r_s S)`.
+#[allow(clippy::too_many_arguments)]
 pub fn shade(
     p: DVec3,
     n_in: DVec3,
@@ -19,14 +22,18 @@ pub fn shade(
     lights: &[Light],
     ambient: [f64; 3],
     specular: SpecularModel,
+    model: IlluminationModel,
 ) -> [f64; 3] {
-    shade_with_visibility(p, n_in, eye, mat, lights, ambient, specular, |_, _, _| 1.0)
+    shade_with_visibility(p, n_in, eye, mat, lights, ambient, specular, model, |_, _, _| 1.0)
 }
 
 /// [`shade`] with each light's term scaled by `visibility(i, light, l)`, the share of light `i`
 /// that reaches `p` along the unit direction `l` to it (1: lit, 0: in a cast shadow). It is
 /// asked only of lights that would add something (a non-zero term), so a point in its own
 /// shadow (N·L ≤ 0) costs no shadow query; a visibility of 1 adds the term exactly as `shade`.
+/// The Lambert rule's fill and the four-term sum's transmitted term are not shadowed: the fill
+/// stands for light from everywhere, and the transmitted light is what passes the body that the
+/// shadow test would find in the way.
 #[allow(clippy::too_many_arguments)]
 pub fn shade_with_visibility(
     p: DVec3,
@@ -36,16 +43,37 @@ pub fn shade_with_visibility(
     lights: &[Light],
     ambient: [f64; 3],
     specular: SpecularModel,
+    model: IlluminationModel,
     mut visibility: impl FnMut(usize, &Light, DVec3) -> f64,
 ) -> [f64; 3] {
     let v = safe_normalize(eye - p, DVec3::Y);
     let n = safe_normalize(n_in, v);
     let v_index = mat.mu.map(fresnel_v_from_mu);
-    let mut total: [f64; 3] = std::array::from_fn(|i| ambient[i] * mat.r_a * mat.color[i]);
+    let c = mat.color;
+    let mut total = [0.0; 3];
+    if model != IlluminationModel::Lambert {
+        total = std::array::from_fn(|i| ambient[i] * mat.r_a * c[i]);
+    }
+    // The Lambert rule's I: the brightest light at the point, per channel, in [0, 1].
+    let mut i_max = [0.0f64; 3];
     for (k, light) in lights.iter().take(MAX_LIGHTS).enumerate() {
         let (l, radiance) = light_sample(light, p, n);
-        let c = light_contribution(l, radiance, n, v, mat, v_index, specular);
-        if c == [0.0; 3] {
+        let lit = match model {
+            IlluminationModel::Lambert => {
+                let i = radiance.map(|x| x.clamp(0.0, 1.0));
+                i_max = std::array::from_fn(|j| i_max[j].max(i[j]));
+                lambert_rule_lit(c.map(|x| x * mat.r_d), i, n.dot(l))
+            }
+            IlluminationModel::Sum => {
+                let t = transmitted_term(radiance, c, mat.transmission);
+                for i in 0..3 {
+                    total[i] += t[i];
+                }
+                sum_contribution(radiance, n.dot(l), n.dot(v), c, mat.r_d, mat.r_s)
+            }
+            IlluminationModel::Phong => light_contribution(l, radiance, n, v, mat, v_index, specular),
+        };
+        if lit == [0.0; 3] {
             continue;
         }
         // A NaN visibility counts as none, like 0.
@@ -54,7 +82,13 @@ pub fn shade_with_visibility(
             continue;
         }
         for i in 0..3 {
-            total[i] += if w == 1.0 { c[i] } else { c[i] * w };
+            total[i] += if w == 1.0 { lit[i] } else { lit[i] * w };
+        }
+    }
+    if model == IlluminationModel::Lambert {
+        let fill = lambert_rule_fill(c.map(|x| x * mat.r_a), i_max);
+        for i in 0..3 {
+            total[i] += fill[i];
         }
     }
     total

@@ -44,6 +44,7 @@ fn stage(objects: Vec<Object>, lights: Vec<Light>) -> Scene {
             far: 50.0,
         },
         meshes: Vec::new(),
+        illumination: Default::default(),
     }
 }
 

@@ -146,6 +146,7 @@ pub fn default_scene() -> Scene {
         ambient: [0.12; 3],
         camera: default_camera(),
         meshes: Vec::new(),
+        illumination: Default::default(),
     }
 }
 
@@ -206,5 +207,6 @@ pub fn single_shape_scene(name: &str, shape: Shape, tessellation: u32) -> Scene 
         ambient: [0.12; 3],
         camera: Camera { eye: DVec3::new(0.0, 2.2, 4.6), target: DVec3::new(0.0, 0.8, 0.0), ..default_camera() },
         meshes: Vec::new(),
+        illumination: Default::default(),
     }
 }

@@ -53,11 +53,11 @@ fn uniform_layouts_match_wgsl() {
     );
     assert_eq!(
         wgsl_layout(&module, "Globals"),
-        rust_layout!(GlobalsUniform: view_proj, camera_pos, ambient, light_count, flags, specular_model, _pad1, lights)
+        rust_layout!(GlobalsUniform: view_proj, camera_pos, ambient, light_count, flags, specular_model, illumination, lights)
     );
     assert_eq!(
         wgsl_layout(&module, "Object"),
-        rust_layout!(ObjectUniform: model, normal_matrix, color, mu, r_s, r_d, r_a, m, h, mirror, _pad0, _pad1)
+        rust_layout!(ObjectUniform: model, normal_matrix, color, mu, r_s, r_d, r_a, m, h, mirror, transmission, _pad1)
     );
     assert_eq!(
         wgsl_layout(&module, "ShadowLight"),

@@ -6,7 +6,7 @@
 use super::inputs::ShadowCase;
 use glam::DVec3;
 use shadelab_model::guards::{D0_MIN, M_MIN, N_DOT_V_MIN};
-use shadelab_model::lighting::{brdf, common, lights};
+use shadelab_model::lighting::{brdf, common, lights, models};
 use shadelab_model::shadows;
 use shadelab_model::{FalloffForm, Light, LightKind, Material, PhongExponent, SpecularModel};
 
@@ -30,7 +30,7 @@ pub struct Column {
 const D_MAX: f64 = 1.0 / (4.0 * M_MIN * M_MIN);
 
 /// Every column in the order the kernel writes them (and the report lists them).
-pub const COLUMNS: [Column; 16] = [
+pub const COLUMNS: [Column; 21] = [
     col("diffuse_lambert", "DIFFUSE_LAMBERT", 1, 1.0, "N·L of unit vectors"),
     col("specular_phong", "SPECULAR_PHONG", 1, 1.0, "(V·R)^h with V·R clamped to [0, 1]"),
     col("d_beckmann", "D_BECKMANN", 1, D_MAX, "peak 1/(4 m²) at m = M_MIN"),
@@ -53,6 +53,11 @@ pub const COLUMNS: [Column; 16] = [
         (0.8 + D_MAX / N_DOT_V_MIN) / D0_MIN,
         "(r_d C + r_s S_max) / D0_MIN",
     ),
+    col("lambert_rule_lit", "LAMBERT_RULE_LIT", 3, 1.0, "R·I·cos α with R, I clamped to [0, 1]"),
+    col("lambert_rule_fill", "LAMBERT_RULE_FILL", 3, 1.0, "R·(1 − I) with R, I clamped to [0, 1]"),
+    col("reflected_cos_phi", "REFLECTED_COS_PHI", 1, 1.0, "N·V of unit vectors, clamped at 0"),
+    col("sum_contribution (1/(d+d0))", "SUM_CONTRIBUTION", 3, (0.8 + 1.0) / D0_MIN, "I (r_d C + r_s), I ≤ 1/D0_MIN"),
+    col("transmitted_term (1/(d+d0))", "TRANSMITTED_TERM", 3, 0.8 / D0_MIN, "I·C·(1 − t), I ≤ 1/D0_MIN"),
     col("spot_cone", "SPOT_CONE", 1, 1.0, "a ramp clamped to [0, 1], squared"),
     col("window_range", "WINDOW_RANGE", 1, 1.0, "1 − x⁴, x clamped to [0, 1]"),
     col("shadow_face", "SHADOW_FACE", 1, 5.0, "a cube face index, 0…5"),
@@ -150,6 +155,11 @@ const FALLOFF_QUADRATIC: usize = offset("FALLOFF_QUADRATIC");
 const FALLOFF_LINEAR: usize = offset("FALLOFF_LINEAR");
 const CONTRIBUTION_PHONG: usize = offset("CONTRIBUTION_PHONG");
 const CONTRIBUTION_COOK_TORRANCE: usize = offset("CONTRIBUTION_COOK_TORRANCE");
+const LAMBERT_RULE_LIT: usize = offset("LAMBERT_RULE_LIT");
+const LAMBERT_RULE_FILL: usize = offset("LAMBERT_RULE_FILL");
+const REFLECTED_COS_PHI: usize = offset("REFLECTED_COS_PHI");
+const SUM_CONTRIBUTION: usize = offset("SUM_CONTRIBUTION");
+const TRANSMITTED_TERM: usize = offset("TRANSMITTED_TERM");
 const SPOT_CONE: usize = offset("SPOT_CONE");
 const WINDOW_RANGE: usize = offset("WINDOW_RANGE");
 const SHADOW_FACE: usize = offset("SHADOW_FACE");
@@ -220,6 +230,13 @@ pub(super) fn reference(
     rgb(&mut out, CONTRIBUTION_PHONG, cp);
     let cc = brdf::light_contribution(linear.0, linear.1, n, v, &mat, v_index, SpecularModel::CookTorrance);
     rgb(&mut out, CONTRIBUTION_COOK_TORRANCE, cc);
+    // The other models at the linear falloff's sample; m in [0, 1] doubles as the share 1 − t.
+    let (nl, nv) = (n.dot(linear.0), n.dot(v));
+    rgb(&mut out, LAMBERT_RULE_LIT, models::lambert_rule_lit(SWEEP_COLOR, linear.1, nl));
+    rgb(&mut out, LAMBERT_RULE_FILL, models::lambert_rule_fill(SWEEP_COLOR, linear.1));
+    out[REFLECTED_COS_PHI] = models::reflected_cos_phi(nl, nv);
+    rgb(&mut out, SUM_CONTRIBUTION, models::sum_contribution(linear.1, nl, nv, SWEEP_COLOR, 1.0, 1.0));
+    rgb(&mut out, TRANSMITTED_TERM, models::transmitted_term(linear.1, SWEEP_COLOR, m));
     out[SPOT_CONE] = lights::spot_cone(v.dot(l), inner.cos() * l_len, outer.cos() * l_len);
     out[WINDOW_RANGE] = lights::window_range(d, d0);
     let to_p = l * d;

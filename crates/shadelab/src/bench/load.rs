@@ -32,9 +32,10 @@ pub fn run(args: &cli::BenchLoadArgs) -> Result<(), Failure> {
     let ms = |t: Instant| t.elapsed().as_secs_f64() * 1e3;
 
     let start = Instant::now();
-    let shadelab_model::gltf_io::LoadedScene { scene, settings: file, .. } = cli::load(&args.scene)?;
+    let mut loaded = cli::load(&args.scene)?;
     let load_ms = ms(start);
-    let settings = args.mode.resolve(file);
+    let settings = args.mode.settle(&mut loaded, &args.scene)?;
+    let scene = loaded.scene;
     let (shading, specular) = (settings.shading, settings.specular);
 
     let t = Instant::now();

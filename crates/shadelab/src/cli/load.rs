@@ -70,6 +70,7 @@ pub fn overrides(a: &SceneArgs) -> Overrides {
         m: a.m,
         h: a.h,
         mu: a.mu,
+        transmission: a.transmission,
         falloff_alpha: a.falloff,
         falloff_form: a.falloff_form,
         d0: a.d0,
@@ -78,5 +79,7 @@ pub fn overrides(a: &SceneArgs) -> Overrides {
         shadow_resolution: a.shadow_resolution,
         shadow_filter: a.shadow_filter,
         shadow_cascades: a.shadow_cascades,
+        // `--model` is a mode flag (ModeArgs::settle).
+        illumination: None,
     }
 }

@@ -9,12 +9,13 @@ pub mod values;
 pub use load::{load, overrides, scene};
 pub use values::{FRAMES, MESH_TRIANGLES, WARMUP, one_line, within};
 
+use crate::Failure;
 use clap::{Args, Parser, Subcommand};
-use shadelab_model::gltf_io::SceneSettings;
+use shadelab_model::gltf_io::{LoadedScene, SceneSettings};
 use shadelab_model::params::{self, PhongExponent};
 use shadelab_model::scene::BUILTIN_SCENES;
 use shadelab_model::shadows::{SHADOW_RESOLUTION, ShadowFilter};
-use shadelab_model::{FalloffForm, LightKind, ShadingMode, SpecularModel};
+use shadelab_model::{FalloffForm, IlluminationModel, LightKind, ModelChoice, Overrides, ShadingMode, SpecularModel};
 use shadelab_render::RenderSettings;
 use std::path::PathBuf;
 
@@ -205,6 +206,9 @@ pub struct SceneArgs {
     #[arg(long, value_name = "R,G,B", value_parser = values::reflectance(),
           help = format!("Normal-incidence reflectance μ of every material: R,G,B or one value, each in [{}, {}]", params::MU.min, params::MU.max))]
     pub mu: Option<[f64; 3]>,
+    #[arg(long, value_name = "SHARE", value_parser = values::real(params::TRANSMISSION),
+          help = within("Transmission share 1 − t of every material, the four-term sum's I_t (0 opaque)", params::TRANSMISSION))]
+    pub transmission: Option<f64>,
     #[arg(long, value_name = "ALPHA", value_parser = values::real(params::FALLOFF),
           help = within("Falloff factor α of every point and spot light, I0/(1 + α d²)", params::FALLOFF))]
     pub falloff: Option<f64>,
@@ -316,15 +320,45 @@ pub struct ModeArgs {
     /// The specular model [default: the scene file's, else cook-torrance].
     #[arg(long, value_parser = values::named::<SpecularModel>())]
     pub specular: Option<SpecularModel>,
+    /// The illumination model: lambert (the Lambert rule, 7.1), sum (the four-term sum of
+    /// equation (1), with 1/(d + d0) on every point and spot light), phong (7.2) or
+    /// cook-torrance (7.3); the last two also set --specular [default: the scene file's, else the
+    /// Phong model with --specular].
+    #[arg(long, value_parser = values::named::<ModelChoice>())]
+    pub model: Option<ModelChoice>,
 }
 
 impl ModeArgs {
     /// Each flag when given, else what the scene file records, else Phong shading with
     /// Cook–Torrance specular.
     pub fn resolve(&self, file: SceneSettings) -> RenderSettings {
+        let fixed = self.model.and_then(|m| m.split().1);
         RenderSettings::new(
             self.shading.or(file.shading).unwrap_or(ShadingMode::Phong),
-            self.specular.or(file.specular).unwrap_or(SpecularModel::CookTorrance),
+            fixed.or(self.specular).or(file.specular).unwrap_or(SpecularModel::CookTorrance),
         )
+    }
+
+    /// Apply `--model` to the loaded scene (its illumination model, and for the four-term sum the
+    /// chapter's falloff) and resolve the settings. A `--specular` or `--falloff-form` that
+    /// contradicts the model is one line and exit 2.
+    pub fn settle(&self, loaded: &mut LoadedScene, scene: &SceneArgs) -> Result<RenderSettings, Failure> {
+        if let Some(choice) = self.model {
+            let (model, fixed) = choice.split();
+            if let (Some(fixed), Some(given)) = (fixed, self.specular)
+                && fixed != given
+            {
+                return Err(Failure::Usage(format!(
+                    "--model {choice} uses --specular {fixed}, not --specular {given} (give one of the two)"
+                )));
+            }
+            if model == IlluminationModel::Sum && scene.falloff_form == Some(FalloffForm::Quadratic) {
+                return Err(Failure::Usage(
+                    "--model sum uses the chapter's falloff 1/(d + d0), not --falloff-form quadratic".into(),
+                ));
+            }
+            loaded.scene.apply(&Overrides::for_model(choice));
+        }
+        Ok(self.resolve(loaded.settings))
     }
 }

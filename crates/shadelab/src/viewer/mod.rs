@@ -12,6 +12,7 @@ mod orbit;
 mod overlays;
 mod panel;
 mod scripting;
+mod shadow_factor;
 mod shadow_maps;
 mod view;
 
@@ -45,8 +46,8 @@ pub struct Options {
 pub fn run(options: Options) -> Result<(), Failure> {
     let Options { screenshot, exit_after_frames, shaders, scene, mode, difference } = options;
     // A bad scene file, camera or flag is one line and exit 2, before any window opens.
-    let loaded = cli::load(&scene)?;
-    let settings = mode.resolve(loaded.settings);
+    let mut loaded = cli::load(&scene)?;
+    let settings = mode.settle(&mut loaded, &scene)?;
     if let Some(p) = &screenshot
         && render::image_kind(p)? != render::ImageKind::Png
     {
@@ -117,6 +118,8 @@ pub struct Viewer {
     creases: overlays::MeshLinesOverlay,
     /// The lights' shadow maps on show in their panel sections.
     shadow_maps: shadow_maps::ShadowMapViews,
+    /// The cast-shadow factor V, shown in place of the frame when it is the term on show.
+    shadow_factor: shadow_factor::ShadowFactorView,
     /// The panel's file path field (open / save scene).
     pub file_field: String,
     /// How "open…" and "save as…" ask for a file.
@@ -172,12 +175,23 @@ impl Viewer {
             normals: overlays::MeshLinesOverlay::normals(),
             creases: overlays::MeshLinesOverlay::creases(),
             shadow_maps: shadow_maps::ShadowMapViews::default(),
+            shadow_factor: shadow_factor::ShadowFactorView::default(),
             file_field: String::new(),
             file_picker: native_file_picker(),
             cameras: vec![("the scene's camera".into(), scene_camera)],
             camera_choice: 0,
             picking: None,
         })
+    }
+
+    /// Show one term of the model alone (`Term::All`: the whole model).
+    pub fn set_term(&mut self, term: shadelab_model::terms::Term) {
+        self.term = term;
+    }
+
+    /// The size of the shadow-factor image last shown (`None` before the first).
+    pub fn shadow_factor_size(&self) -> Option<(u32, u32)> {
+        self.shadow_factor.size()
     }
 
     /// Current shading mode, specular model and debug switch.

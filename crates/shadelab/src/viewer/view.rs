@@ -78,7 +78,18 @@ impl Viewer {
         self.shadow_maps.update(ui.ctx(), &self.renderer, &self.gpu_scene, &self.scene);
         let mut shown = view.texture;
         let analytic = shadelab_model::scene_variants::is_analytic(&self.scene);
-        if self.difference.enabled && analytic {
+        let factor = self.term == shadelab_model::terms::Term::Shadow;
+        if factor {
+            let ctx = ui.ctx().clone();
+            shown = self.shadow_factor.update(
+                &ctx,
+                &mut self.renderer,
+                &self.gpu_scene,
+                &self.scene,
+                &self.settings,
+                (w, h),
+            );
+        } else if self.difference.enabled && analytic {
             let ctx = ui.ctx().clone();
             if let Some(t) =
                 self.difference.update(&ctx, &mut self.renderer, &self.gpu_scene, &self.scene, &self.settings, (w, h))
@@ -89,7 +100,7 @@ impl Viewer {
         (self.scene.ambient, self.scene.materials) = whole;
         let painter = ui.painter_at(rect);
         painter.image(shown, rect, Rect::from_min_max(pos2(0.0, 0.0), pos2(1.0, 1.0)), Color32::WHITE);
-        if self.difference.enabled && analytic {
+        if self.difference.enabled && analytic && !factor {
             let mode = format!("{} shading, {} specular", self.settings.shading, self.settings.specular);
             overlays::difference_legend(&painter, rect, &self.difference, &mode, self.frame_ms, self.show_live_numbers);
             return; // the light markers would hide the error map

@@ -9,7 +9,7 @@ use eframe::egui;
 use shadelab_model::params::NamedValue;
 use shadelab_model::scene::BUILTIN_SCENES;
 use shadelab_model::terms::Term;
-use shadelab_model::{ShadingMode, SpecularModel};
+use shadelab_model::{IlluminationModel, ModelChoice, Overrides, ShadingMode, SpecularModel};
 
 impl Viewer {
     /// The scene menu, and the camera menu when the scene has several cameras.
@@ -36,7 +36,21 @@ impl Viewer {
         }
     }
 
-    /// Shading mode, specular model, the term on show, the non-finite debug paint, the self-shadow boundary and
+    /// Switch to one of the four models: the scene's illumination model (the four-term sum with
+    /// 1/(d + d0) on its point and spot lights), and the specular model the choice fixes; a term
+    /// the new model lacks gives way to the whole model.
+    pub fn choose_model(&mut self, choice: ModelChoice) {
+        let (model, specular) = choice.split();
+        self.scene.apply(&Overrides::for_model(choice));
+        if let Some(s) = specular {
+            self.settings.specular = s;
+        }
+        if !self.term.in_model(model) {
+            self.term = Term::All;
+        }
+    }
+
+    /// Shading mode, the model and its specular term, the term on show, the non-finite debug paint, the self-shadow boundary and
     /// the difference view.
     pub(super) fn modes_ui(&mut self, ui: &mut egui::Ui) {
         ui.horizontal(|ui| {
@@ -49,20 +63,35 @@ impl Viewer {
                 ));
             }
         });
-        ui.horizontal(|ui| {
-            ui.label("specular");
-            ui.selectable_value(&mut self.settings.specular, SpecularModel::Phong, "Phong (V·R)^h")
-                .on_hover_text("Phong specular: (V·R)^h, the light's colour (key S toggles)");
-            ui.selectable_value(&mut self.settings.specular, SpecularModel::CookTorrance, "Cook–Torrance")
-                .on_hover_text(
-                    "Cook–Torrance: Beckmann D(m), geometric G, exact Fresnel F(μ) per channel (key S toggles)",
-                );
+        let current = ModelChoice::of(self.scene.illumination, self.settings.specular);
+        let mut choice = current;
+        egui::ComboBox::from_label("model").selected_text(current.label()).show_ui(ui, |ui| {
+            for c in ModelChoice::ALL_CHOICES {
+                ui.selectable_value(&mut choice, c, c.label()).on_hover_text(c.title());
+            }
         });
+        if choice != current {
+            self.choose_model(choice);
+        }
+        let phong_model = self.scene.illumination == IlluminationModel::Phong;
+        ui.add_enabled_ui(phong_model, |ui| {
+            ui.horizontal(|ui| {
+                ui.label("specular");
+                ui.selectable_value(&mut self.settings.specular, SpecularModel::Phong, "Phong (V·R)^h")
+                    .on_hover_text("Phong specular: (V·R)^h, the light's colour (key S toggles)");
+                ui.selectable_value(&mut self.settings.specular, SpecularModel::CookTorrance, "Cook–Torrance")
+                    .on_hover_text(
+                        "Cook–Torrance: Beckmann D(m), geometric G, exact Fresnel F(μ) per channel (key S toggles)",
+                    );
+            })
+        })
+        .response
+        .on_disabled_hover_text("the specular term belongs to the Phong model (phong, cook-torrance)");
         ui.horizontal(|ui| {
             ui.label("term");
-            // The shadow factor is a ratio of two frames: `render --term shadow` only.
-            for (_, term) in Term::ALL.iter().filter(|(_, t)| *t != Term::Shadow) {
-                ui.selectable_value(&mut self.term, *term, term.symbol()).on_hover_text(term.meaning());
+            let model = self.scene.illumination;
+            for (_, term) in Term::ALL.iter().filter(|(_, t)| t.in_model(model)) {
+                ui.selectable_value(&mut self.term, *term, term.symbol_in(model)).on_hover_text(term.meaning());
             }
         });
         ui.checkbox(&mut self.settings.debug_nonfinite, "paint non-finite pixels magenta");

@@ -2,7 +2,8 @@
 // §3a): the Phong model I = I_a + Σ_lights I_L · (r_d·C·(N·L) + r_s·S), S = Phong or Cook–Torrance
 // specular, the Lambert rule or the four-term sum (models.wgsl); the f64 twin of `shade` is
 // crates/shadelab-model/src/lighting/shading.rs.
-// Flat: lit once per face at its centroid. Gouraud: lit at the vertices, colour interpolated.
+// Flat: lit once per face at its centroid (cs_flat), the face's colour read by each of its
+// corners. Gouraud: lit at the vertices, colour interpolated.
 // Phong: normals interpolated, renormalized, lit per pixel.
 
 // Each pipeline's module holds only the effects its scene calls for: the `#if EFFECT_…` blocks
@@ -50,6 +51,14 @@ const NONFINITE_COLOR: vec3<f32> = vec3(1.0, 0.0, 1.0);
 
 @group(0) @binding(0) var<uniform> globals: Globals;
 @group(1) @binding(0) var<uniform> object: Object;
+
+// Flat shading's per-face pass (@group(3); binding 0 is the shadow pass's): cs_flat reads the
+// flat mesh's corners (FLAT_CORNER_FLOATS floats each, three per face) and writes one colour per
+// face; vs_flat reads that colour. Each dispatch binds one chunk of both.
+const FLAT_CORNER_FLOATS: u32 = 9u;
+@group(3) @binding(1) var<storage, read> flat_corners: array<f32>;
+@group(3) @binding(2) var<storage, read_write> face_colors_out: array<vec4<f32>>;
+@group(3) @binding(3) var<storage, read> face_colors: array<vec4<f32>>;
 
 // The illumination model at world point `p` with (not necessarily unit) normal `n_in`; `pixel`
 // seeds the shadow filter's per-pixel rotation (read only with cast shadows). The Lambert rule's
@@ -136,8 +145,6 @@ struct SmoothIn {
 
 struct FlatIn {
     @location(0) position: vec3<f32>,
-    @location(1) normal: vec3<f32>,
-    @location(2) centroid: vec3<f32>,
 }
 
 struct ColorOut {
@@ -156,12 +163,26 @@ struct PhongOut {
     @location(1) world_normal: vec3<f32>,
 }
 
+// One invocation per face: the model at the face's centroid with its normal (its first corner
+// holds both), the only evaluation flat shading makes.
+@compute @workgroup_size(64)
+fn cs_flat(@builtin(global_invocation_id) gid: vec3<u32>) {
+    let face = gid.x;
+    if (face >= arrayLength(&face_colors_out)) {
+        return;
+    }
+    let at = face * 3u * FLAT_CORNER_FLOATS;
+    let normal = vec3(flat_corners[at + 3u], flat_corners[at + 4u], flat_corners[at + 5u]);
+    let centroid = vec3(flat_corners[at + 6u], flat_corners[at + 7u], flat_corners[at + 8u]);
+    let c = to_world(centroid);
+    face_colors_out[face] = vec4(shade(c, normal_to_world(normal), vertex_seed(c)), 1.0);
+}
+
 @vertex
-fn vs_flat(in: FlatIn) -> FlatOut {
+fn vs_flat(in: FlatIn, @builtin(vertex_index) corner: u32) -> FlatOut {
     var out: FlatOut;
     out.clip = globals.view_proj * vec4(to_world(in.position), 1.0);
-    let c = to_world(in.centroid);
-    out.color = shade(c, normal_to_world(in.normal), vertex_seed(c));
+    out.color = face_colors[corner / 3u].rgb;
     return out;
 }
 

@@ -56,7 +56,14 @@ impl Renderer {
             .effects()
             .has(Effect::CastShadows)
             .then(|| self.encode_shadow_passes(encoder, gpu_scene, timestamps));
-        let begun = shadows.as_ref().is_some_and(|s| s.1);
+        let mut begun = shadows.as_ref().is_some_and(|s| s.1);
+        let flat = key.program.draws_flat_mesh();
+        if flat {
+            // The per-face pass is part of flat shading's cost: the first timestamp opens it.
+            let start = timestamps.filter(|_| !begun);
+            self.encode_flat_faces(encoder, gpu_scene, key.program, shadows.as_ref().map(|s| &s.0), start);
+            begun |= start.is_some();
+        }
         let pipeline = self.pipelines.pipeline(key);
         let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
             label: Some("shadelab scene"),
@@ -87,13 +94,49 @@ impl Renderer {
         for (i, k) in gpu_scene.objects.iter().enumerate() {
             let mesh = &gpu_scene.meshes[k];
             pass.set_bind_group(1, &gpu_scene.objects_bind, &[(i as u64 * gpu_scene.object_stride) as u32]);
-            if key.program.draws_flat_mesh() {
+            if flat {
+                let Some(faces) = &gpu_scene.flat_faces[i] else { continue };
+                pass.set_bind_group(3, &faces.colors_bind, &[]);
                 pass.set_vertex_buffer(0, mesh.flat.slice(..));
                 pass.draw(0..mesh.flat_count, 0..1);
             } else {
                 pass.set_vertex_buffer(0, mesh.smooth.slice(..));
                 pass.set_index_buffer(mesh.indices.slice(..), wgpu::IndexFormat::Uint32);
                 pass.draw_indexed(0..mesh.index_count, 0, 0..1);
+            }
+        }
+    }
+
+    /// Flat shading's per-face pass: each object's faces shaded once into its mesh's colours
+    /// (`flat_pass.rs`), with the uniforms last written and, with cast shadows, the maps.
+    fn encode_flat_faces(
+        &mut self,
+        encoder: &mut wgpu::CommandEncoder,
+        gpu_scene: &SceneGpu,
+        program: Program,
+        maps: Option<&wgpu::BindGroup>,
+        start: Option<(&wgpu::QuerySet, u32)>,
+    ) {
+        let pipeline = self.pipelines.flat_pipeline(program.effects());
+        let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
+            label: Some("shadelab flat faces"),
+            timestamp_writes: start.map(|(qs, i)| wgpu::ComputePassTimestampWrites {
+                query_set: qs,
+                beginning_of_pass_write_index: Some(i),
+                end_of_pass_write_index: None,
+            }),
+        });
+        pass.set_pipeline(pipeline);
+        pass.set_bind_group(0, &gpu_scene.globals_bind, &[]);
+        if let Some(maps) = maps {
+            pass.set_bind_group(2, maps, &[]);
+        }
+        for (i, faces) in gpu_scene.flat_faces.iter().enumerate() {
+            let Some(faces) = faces else { continue };
+            pass.set_bind_group(1, &gpu_scene.objects_bind, &[(i as u64 * gpu_scene.object_stride) as u32]);
+            for (bind, n) in &faces.chunks {
+                pass.set_bind_group(3, bind, &[]);
+                pass.dispatch_workgroups(n.div_ceil(crate::flat_pass::FLAT_WORKGROUP), 1, 1);
             }
         }
     }

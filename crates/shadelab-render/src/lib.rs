@@ -2,6 +2,7 @@
 //! pipeline per permutation (cached), capture to a linear float image, GPU timing. Knows nothing
 //! of egui.
 
+pub mod flat_pass;
 pub mod frame;
 pub mod gpu;
 pub mod image_error;

@@ -28,6 +28,12 @@ pub struct Layouts {
     pub lit: wgpu::PipelineLayout,
     /// Globals, object and the shadow maps: programs with cast shadows.
     pub lit_shadows: wgpu::PipelineLayout,
+    /// The flat pipelines: also the face colours (group 3).
+    pub lit_flat: wgpu::PipelineLayout,
+    pub lit_shadows_flat: wgpu::PipelineLayout,
+    /// Flat shading's per-face pass, without and with the shadow maps.
+    pub flat_pass: wgpu::PipelineLayout,
+    pub flat_pass_shadows: wgpu::PipelineLayout,
     /// The shadow pass: object (group 1) and the layers' matrices (group 3).
     pub shadow_pass: wgpu::PipelineLayout,
 }
@@ -35,7 +41,13 @@ pub struct Layouts {
 impl Layouts {
     /// The layout a program's pipeline uses: three bind groups with cast shadows, two without.
     pub fn for_program(&self, program: Program) -> &wgpu::PipelineLayout {
-        if program.effects().has(Effect::CastShadows) { &self.lit_shadows } else { &self.lit }
+        let shadows = program.effects().has(Effect::CastShadows);
+        match (program.draws_flat_mesh(), shadows) {
+            (false, false) => &self.lit,
+            (false, true) => &self.lit_shadows,
+            (true, false) => &self.lit_flat,
+            (true, true) => &self.lit_shadows_flat,
+        }
     }
 }
 
@@ -54,6 +66,8 @@ pub struct PipelineCache {
     layouts: Layouts,
     /// The shadow pass's depth-only pipeline, built on first use.
     shadow_pipeline: Option<wgpu::RenderPipeline>,
+    /// Flat shading's per-face compute pipelines, by effect set, built on first use.
+    flat_pipelines: HashMap<EffectKey, wgpu::ComputePipeline>,
     pipelines: HashMap<PipelineKey, wgpu::RenderPipeline>,
     pending: HashMap<PipelineKey, PendingBuild>,
     /// Build missing pipelines on a worker thread and draw with the uber pipeline meanwhile
@@ -74,6 +88,7 @@ impl PipelineCache {
             modules: HashMap::new(),
             layouts,
             shadow_pipeline: None,
+            flat_pipelines: HashMap::new(),
             pipelines: HashMap::new(),
             pending: HashMap::new(),
             build_in_background: false,
@@ -91,6 +106,7 @@ impl PipelineCache {
         self.modules.clear();
         self.pipelines.clear();
         self.shadow_pipeline = None;
+        self.flat_pipelines.clear();
         self.pending.clear();
         Ok(())
     }
@@ -136,6 +152,26 @@ impl PipelineCache {
             self.shadow_pipeline = Some(p);
         }
         self.shadow_pipeline.as_ref().expect("built above")
+    }
+
+    /// The per-face compute pipeline of flat shading for an effect set, built on first use.
+    pub fn flat_pipeline(&mut self, effects: EffectKey) -> &wgpu::ComputePipeline {
+        if !self.flat_pipelines.contains_key(&effects) {
+            let module = self.module(effects);
+            let layout = if effects.has(Effect::CastShadows) {
+                &self.layouts.flat_pass_shadows
+            } else {
+                &self.layouts.flat_pass
+            };
+            let p = crate::flat_pass::build_pipeline(
+                &self.device,
+                layout,
+                &module,
+                &format!("flat faces [{}]", effects.label()),
+            );
+            self.flat_pipelines.insert(effects, p);
+        }
+        &self.flat_pipelines[&effects]
     }
 
     /// Move pipelines finished on worker threads into the cache.

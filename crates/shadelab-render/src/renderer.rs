@@ -15,6 +15,9 @@ pub struct Renderer {
     pub(crate) shadow_layout: wgpu::BindGroupLayout,
     /// @group(3) of the shadow pass: `ShadowCasters`.
     pub(crate) casters_layout: wgpu::BindGroupLayout,
+    /// @group(3) of flat shading's per-face pass and of the flat pipeline (`flat_pass.rs`).
+    pub(crate) flat_compute_layout: wgpu::BindGroupLayout,
+    pub(crate) flat_colors_layout: wgpu::BindGroupLayout,
     /// Comparison samplers of the maps: bilinear 2×2 (Pcf, Poisson) and nearest (Hard).
     pub(crate) shadow_samplers: [wgpu::Sampler; 2],
     /// The shader modules and pipelines, by program and colour format.
@@ -24,7 +27,8 @@ pub struct Renderer {
 fn uniform_entry(dynamic: bool, size: u64) -> wgpu::BindGroupLayoutEntry {
     wgpu::BindGroupLayoutEntry {
         binding: 0,
-        visibility: wgpu::ShaderStages::VERTEX_FRAGMENT,
+        // Compute too: flat shading's per-face pass shades in a compute stage.
+        visibility: wgpu::ShaderStages::VERTEX_FRAGMENT.union(wgpu::ShaderStages::COMPUTE),
         ty: wgpu::BindingType::Buffer {
             ty: wgpu::BufferBindingType::Uniform,
             has_dynamic_offset: dynamic,
@@ -46,6 +50,8 @@ impl Renderer {
         });
         let shadow_layout = crate::shadow_pass::maps_layout(device);
         let casters_layout = crate::shadow_pass::casters_layout(device);
+        let flat_compute_layout = crate::flat_pass::compute_layout(device);
+        let flat_colors_layout = crate::flat_pass::colors_layout(device);
         let layout = |label: &str, groups: &[Option<&wgpu::BindGroupLayout>]| {
             device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
                 label: Some(label),
@@ -59,6 +65,22 @@ impl Renderer {
                 "shadelab shadows",
                 &[Some(&globals_layout), Some(&object_layout), Some(&shadow_layout)],
             ),
+            lit_flat: layout(
+                "shadelab flat",
+                &[Some(&globals_layout), Some(&object_layout), None, Some(&flat_colors_layout)],
+            ),
+            lit_shadows_flat: layout(
+                "shadelab flat shadows",
+                &[Some(&globals_layout), Some(&object_layout), Some(&shadow_layout), Some(&flat_colors_layout)],
+            ),
+            flat_pass: layout(
+                "shadelab flat faces",
+                &[Some(&globals_layout), Some(&object_layout), None, Some(&flat_compute_layout)],
+            ),
+            flat_pass_shadows: layout(
+                "shadelab flat faces shadows",
+                &[Some(&globals_layout), Some(&object_layout), Some(&shadow_layout), Some(&flat_compute_layout)],
+            ),
             // The shadow pass reads only the object (group 1) and its layer's matrix (group 3).
             shadow_pass: layout("shadelab shadow pass", &[None, Some(&object_layout), None, Some(&casters_layout)]),
         };
@@ -69,6 +91,8 @@ impl Renderer {
             object_layout,
             shadow_layout,
             casters_layout,
+            flat_compute_layout,
+            flat_colors_layout,
             shadow_samplers: crate::shadow_pass::samplers(device),
             pipelines: PipelineCache::new(device, layouts),
         }

@@ -98,9 +98,9 @@ pub(crate) struct ShadowMaps {
 }
 
 /// The maps' bind group layout (@group(2)): `Shadows`, the depth array, two comparison samplers.
-/// Visible to both stages: Flat and Gouraud shade in the vertex stage.
+/// Visible to every stage: Gouraud shades in the vertex stage, flat in a compute pass.
 pub(crate) fn maps_layout(device: &wgpu::Device) -> wgpu::BindGroupLayout {
-    let stages = wgpu::ShaderStages::VERTEX_FRAGMENT;
+    let stages = wgpu::ShaderStages::VERTEX_FRAGMENT.union(wgpu::ShaderStages::COMPUTE);
     let sampler = |binding| wgpu::BindGroupLayoutEntry {
         binding,
         visibility: stages,

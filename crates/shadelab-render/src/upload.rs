@@ -22,6 +22,8 @@ pub struct SceneGpu {
     pub(crate) meshes: HashMap<(Shape, u32), MeshGpu>,
     /// Each object's mesh, in the scene's object order.
     pub(crate) objects: Vec<(Shape, u32)>,
+    /// Each object's flat-shading face colours (`flat_pass.rs`); `None` for an empty mesh.
+    pub(crate) flat_faces: Vec<Option<crate::flat_pass::FlatFaces>>,
     pub(crate) globals: wgpu::Buffer,
     pub(crate) globals_bind: wgpu::BindGroup,
     pub(crate) objects_buf: wgpu::Buffer,
@@ -92,6 +94,15 @@ impl Renderer {
             }
             objects.push(k);
         }
+        // Flat shading's face colours, per object: objects share meshes, not their colours.
+        let layouts = (&self.flat_compute_layout, &self.flat_colors_layout);
+        let flat_faces = objects
+            .iter()
+            .map(|k| {
+                let m: &MeshGpu = &meshes[k];
+                crate::flat_pass::FlatFaces::new(device, layouts, &m.flat, m.flat_count as u64 / 3)
+            })
+            .collect();
         let triangle_count = scene.triangle_count();
         let globals = device.create_buffer(&wgpu::BufferDescriptor {
             label: Some("globals"),
@@ -127,6 +138,7 @@ impl Renderer {
         Ok(SceneGpu {
             meshes,
             objects,
+            flat_faces,
             globals,
             globals_bind,
             objects_buf,
@@ -175,7 +187,15 @@ impl MeshGpu {
             smooth: buffer_from_pieces(device, queue, "smooth vertices", vertex, counts[0], smooth),
             indices: buffer_from_pieces(device, queue, "indices", wgpu::BufferUsages::INDEX, counts[1], indices),
             index_count: counts[1] as u32,
-            flat: buffer_from_pieces(device, queue, "flat vertices", vertex, counts[2], flat),
+            // Also read as storage by the per-face pass (flat_pass.rs).
+            flat: buffer_from_pieces(
+                device,
+                queue,
+                "flat vertices",
+                vertex | wgpu::BufferUsages::STORAGE,
+                counts[2],
+                flat,
+            ),
             flat_count: counts[2] as u32,
         })
     }

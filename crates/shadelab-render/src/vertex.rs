@@ -22,7 +22,7 @@ pub struct FlatVertex {
 }
 
 const SMOOTH_ATTRS: [wgpu::VertexAttribute; 2] = wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3];
-const FLAT_ATTRS: [wgpu::VertexAttribute; 3] = wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3, 2 => Float32x3];
+const FLAT_ATTRS: [wgpu::VertexAttribute; 1] = wgpu::vertex_attr_array![0 => Float32x3];
 
 impl SmoothVertex {
     /// Its vertex buffer layout (locations 0 position, 1 normal).
@@ -34,7 +34,8 @@ impl SmoothVertex {
 }
 
 impl FlatVertex {
-    /// Its vertex buffer layout (locations 0 position, 1 face normal, 2 centroid).
+    /// Its vertex buffer layout: location 0, the position (the normal and the centroid are read
+    /// by the per-face pass, `flat_pass.rs`, as storage).
     pub const LAYOUT: wgpu::VertexBufferLayout<'static> = wgpu::VertexBufferLayout {
         array_stride: size_of::<FlatVertex>() as u64,
         step_mode: wgpu::VertexStepMode::Vertex,

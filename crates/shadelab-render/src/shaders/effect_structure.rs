@@ -160,8 +160,13 @@ fn a_permutation_without_an_effect_has_no_code_for_it() {
             let info = validate(&module);
             for shading in ShadingMode::ALL_MODES {
                 let (vs, fs) = entry_points(shading);
-                // Flat and Gouraud light in the vertex stage, Phong in the fragment stage.
-                let ep = if shading == ShadingMode::Phong { fs } else { vs };
+                // Flat lights in its per-face compute pass, Gouraud in the vertex stage, Phong
+                // in the fragment stage.
+                let ep = match shading {
+                    ShadingMode::Flat => crate::flat_pass::FLAT_ENTRY_POINT,
+                    ShadingMode::Gouraud => vs,
+                    ShadingMode::Phong => fs,
+                };
                 let called: Vec<String> =
                     reachable(&module, ep).into_iter().filter_map(|f| module.functions[f].name.clone()).collect();
                 for f in e.functions() {
@@ -187,7 +192,14 @@ fn a_permutation_without_cast_shadows_has_no_shadow_bindings() {
         [(EffectKey::UBER, true), (EffectKey::UBER.without(Effect::CastShadows), false), (EffectKey::NONE, false)]
     {
         let module = parse(&lighting_source_for(&raw, key).unwrap());
-        let groups: Vec<u32> = module.global_variables.iter().filter_map(|(_, g)| g.binding.map(|b| b.group)).collect();
+        // Flat shading's per-face bindings (@group(3), 1–3) are in every permutation.
+        let groups: Vec<u32> = module
+            .global_variables
+            .iter()
+            .filter_map(|(_, g)| g.binding.as_ref())
+            .filter(|b| !(b.group == 3 && (1..=3).contains(&b.binding)))
+            .map(|b| b.group)
+            .collect();
         assert_eq!(groups.iter().any(|g| *g >= 2), present, "{}: groups {groups:?}", key.label());
         assert_eq!(groups.iter().max().copied().unwrap_or(0) <= 1, !present, "{}", key.label());
         let depth = module.types.iter().any(|(_, t)| {
@@ -204,4 +216,19 @@ fn a_permutation_without_cast_shadows_has_no_shadow_bindings() {
         assert_eq!(compares, present, "{}: depth-compare samples", key.label());
         assert_eq!(module.entry_points.iter().any(|e| e.name == "vs_shadow"), present, "{}", key.label());
     }
+}
+
+/// Flat shading evaluates the model once per face: its per-face pass reaches `shade`, and its
+/// vertex and fragment stages do not (they read the face's colour).
+#[test]
+fn flat_shading_shades_in_its_per_face_pass_only() {
+    let module = parse(&lighting_source_for(&raw_lighting_source(), EffectKey::UBER).unwrap());
+    let calls = |ep: &str| -> bool {
+        reachable(&module, ep).into_iter().any(|f| module.functions[f].name.as_deref() == Some("shade"))
+    };
+    let (vs, fs) = entry_points(ShadingMode::Flat);
+    assert!(calls(crate::flat_pass::FLAT_ENTRY_POINT));
+    assert!(!calls(vs) && !calls(fs), "{vs} or {fs} shades");
+    let (gouraud, _) = entry_points(ShadingMode::Gouraud);
+    assert!(calls(gouraud), "the check can fail: Gouraud shades in its vertex stage");
 }

@@ -191,8 +191,8 @@ fn fs_flat(in: FlatOut) -> @location(0) vec4<f32> {
     return finish(in.color);
 }
 
-@vertex
-fn vs_gouraud(in: SmoothIn) -> ColorOut {
+// Gouraud's vertex stage, shared by its two interpolations.
+fn gouraud_vertex(in: SmoothIn) -> ColorOut {
     var out: ColorOut;
     let p = to_world(in.position);
     out.clip = globals.view_proj * vec4(p, 1.0);
@@ -200,13 +200,18 @@ fn vs_gouraud(in: SmoothIn) -> ColorOut {
     return out;
 }
 
+@vertex
+fn vs_gouraud(in: SmoothIn) -> ColorOut {
+    return gouraud_vertex(in);
+}
+
 @fragment
 fn fs_gouraud(in: ColorOut) -> @location(0) vec4<f32> {
     return finish(in.color);
 }
 
-@vertex
-fn vs_phong(in: SmoothIn) -> PhongOut {
+// Phong shading's vertex stage, shared by its two interpolations.
+fn phong_vertex(in: SmoothIn) -> PhongOut {
     var out: PhongOut;
     out.world_pos = to_world(in.position);
     out.clip = globals.view_proj * vec4(out.world_pos, 1.0);
@@ -214,9 +219,62 @@ fn vs_phong(in: SmoothIn) -> PhongOut {
     return out;
 }
 
+@vertex
+fn vs_phong(in: SmoothIn) -> PhongOut {
+    return phong_vertex(in);
+}
+
 @fragment
 fn fs_phong(in: PhongOut) -> @location(0) vec4<f32> {
     return finish(shade(in.world_pos, in.world_normal, in.clip.xy));
+}
+
+// The chapter's interpolation (docs/model.md §8): linear in screen space along the scanlines, as
+// the chapter writes it, not perspective-correct; the same stages with `@interpolate(linear)`.
+// Screen-space interpolation has no meaning on a triangle clipped at the eye plane (a corner
+// behind the eye projects nowhere), where a rasterizer may give ∞: there the perspective-correct
+// value, carried beside it, stands in.
+struct ColorScreenOut {
+    @builtin(position) clip: vec4<f32>,
+    @location(0) @interpolate(linear) color: vec3<f32>,
+    @location(1) color_perspective: vec3<f32>,
+}
+
+struct PhongScreenOut {
+    @builtin(position) clip: vec4<f32>,
+    @location(0) @interpolate(linear) world_pos: vec3<f32>,
+    @location(1) @interpolate(linear) world_normal: vec3<f32>,
+    @location(2) world_pos_perspective: vec3<f32>,
+    @location(3) world_normal_perspective: vec3<f32>,
+}
+
+// The screen-space value, or the perspective-correct one where it is not finite.
+fn screen_or_perspective(screen: vec3<f32>, perspective: vec3<f32>) -> vec3<f32> {
+    return select(screen, perspective, any_nonfinite(screen));
+}
+
+@vertex
+fn vs_gouraud_screen(in: SmoothIn) -> ColorScreenOut {
+    let g = gouraud_vertex(in);
+    return ColorScreenOut(g.clip, g.color, g.color);
+}
+
+@fragment
+fn fs_gouraud_screen(in: ColorScreenOut) -> @location(0) vec4<f32> {
+    return finish(screen_or_perspective(in.color, in.color_perspective));
+}
+
+@vertex
+fn vs_phong_screen(in: SmoothIn) -> PhongScreenOut {
+    let o = phong_vertex(in);
+    return PhongScreenOut(o.clip, o.world_pos, o.world_normal, o.world_pos, o.world_normal);
+}
+
+@fragment
+fn fs_phong_screen(in: PhongScreenOut) -> @location(0) vec4<f32> {
+    let p = screen_or_perspective(in.world_pos, in.world_pos_perspective);
+    let n = screen_or_perspective(in.world_normal, in.world_normal_perspective);
+    return finish(shade(p, n, in.clip.xy));
 }
 
 // The null-shader baseline of the cost study: the same geometry, vertex fetch, transform and

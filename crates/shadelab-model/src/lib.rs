@@ -20,5 +20,7 @@ pub mod shadows;
 pub mod terminator;
 pub mod terms;
 
-pub use params::{FalloffForm, IlluminationModel, LightKind, ModelChoice, PhongExponent, ShadingMode, SpecularModel};
+pub use params::{
+    FalloffForm, IlluminationModel, Interpolation, LightKind, ModelChoice, PhongExponent, ShadingMode, SpecularModel,
+};
 pub use scene::{Camera, Light, Material, Object, Overrides, Scene, Shape, Transform};

@@ -24,6 +24,24 @@ pub enum ShadingMode {
     Phong,
 }
 
+/// How Gouraud's colours and Phong shading's normals are interpolated across a triangle
+/// (docs/model.md §8).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum Interpolation {
+    /// Perspective-correct, as GPUs interpolate by default: linear on the surface in 3D.
+    #[default]
+    Perspective,
+    /// The chapter's scanline form: linear in screen space (WGSL `@interpolate(linear)`), which
+    /// bends on large triangles seen at a grazing depth.
+    Screen,
+}
+
+impl NamedValue for Interpolation {
+    const FLAG: &'static str = "--interpolation";
+    const ALL: &'static [(&'static str, Self)] =
+        &[("perspective", Interpolation::Perspective), ("screen", Interpolation::Screen)];
+}
+
 /// The Phong exponent `h`: a finite sharpness in `[1, H_MAX]`, or the perfect mirror (`h = ∞`).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum PhongExponent {
@@ -256,7 +274,7 @@ macro_rules! from_str_named {
         }
     )*};
 }
-from_str_named!(ShadingMode, SpecularModel, IlluminationModel, ModelChoice, LightKind, FalloffForm);
+from_str_named!(ShadingMode, SpecularModel, IlluminationModel, ModelChoice, Interpolation, LightKind, FalloffForm);
 
 impl ShadingMode {
     pub const ALL_MODES: [ShadingMode; 3] = [ShadingMode::Flat, ShadingMode::Gouraud, ShadingMode::Phong];

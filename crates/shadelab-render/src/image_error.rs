@@ -79,6 +79,23 @@ pub fn compare(image: &LinearImage, reference: &ReferenceImage) -> Comparison {
     }
 }
 
+/// Compare two renders of the same size, `image` against `against` (as [`compare`] does against
+/// the reference).
+pub fn compare_images(image: &LinearImage, against: &LinearImage) -> Comparison {
+    assert_eq!((image.width, image.height), (against.width, against.height), "image sizes differ");
+    let pixels: Vec<[f64; 3]> = against.pixels.iter().map(|p| [p[0] as f64, p[1] as f64, p[2] as f64]).collect();
+    let n = pixels.len();
+    let reference = ReferenceImage {
+        width: against.width,
+        height: against.height,
+        unshadowed: pixels.clone(),
+        pixels,
+        object: vec![None; n],
+        hidden: vec![0; n],
+    };
+    compare(image, &reference)
+}
+
 /// nv-flip's magma colour scale, 256 RGB8 entries from FLIP error 0 to 1 (the colours of
 /// [`Comparison::flip_map_rgb8`]), for drawing a legend.
 pub fn magma_scale() -> Vec<[u8; 3]> {

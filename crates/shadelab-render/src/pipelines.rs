@@ -222,7 +222,7 @@ fn build_pipeline(
     key: PipelineKey,
 ) -> wgpu::RenderPipeline {
     let (vs, fs) = match key.program {
-        Program::Lit { shading, .. } => shaders::entry_points(shading),
+        Program::Lit { shading, interpolation, .. } => shaders::entry_points_with(shading, interpolation),
         Program::NullBaseline => shaders::BASELINE_ENTRY_POINTS,
     };
     let options = wgpu::PipelineCompilationOptions::default();

@@ -2,7 +2,7 @@
 //! scene (the lit shader of one shading mode and effect set, or the null-shader baseline).
 
 use shadelab_model::effects::{self, EffectKey};
-use shadelab_model::{Scene, ShadingMode, SpecularModel};
+use shadelab_model::{Interpolation, Scene, ShadingMode, SpecularModel};
 
 /// Which effect permutation draws a scene (resolved by [`Program::for_scene`]).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
@@ -21,6 +21,8 @@ pub enum Specialization {
 pub struct RenderSettings {
     pub shading: ShadingMode,
     pub specular: SpecularModel,
+    /// Perspective-correct or the chapter's screen-space interpolation (Gouraud and Phong).
+    pub interpolation: Interpolation,
     /// Paint pixels whose colour is NaN or infinite magenta.
     pub debug_nonfinite: bool,
     pub specialization: Specialization,
@@ -37,6 +39,7 @@ impl Default for RenderSettings {
         RenderSettings {
             shading: ShadingMode::Phong,
             specular: SpecularModel::CookTorrance,
+            interpolation: Interpolation::Perspective,
             debug_nonfinite: false,
             specialization: Specialization::Specialized,
         }
@@ -49,7 +52,7 @@ impl Default for RenderSettings {
 pub enum Program {
     /// The lighting shader of one shading mode, containing `effects` (the specular model is one
     /// of them).
-    Lit { shading: ShadingMode, effects: EffectKey },
+    Lit { shading: ShadingMode, effects: EffectKey, interpolation: Interpolation },
     /// The null-shader baseline: the same geometry (the smooth mesh), constant colour, no
     /// lighting. What rasterizing the scene costs, the denominator of the cost study.
     NullBaseline,
@@ -64,7 +67,10 @@ impl Program {
             Specialization::Uber => EffectKey::UBER,
             Specialization::Fixed(k) => k,
         };
-        Program::Lit { shading: settings.shading, effects }
+        // Flat shading interpolates nothing: one program whatever the setting.
+        let interpolation =
+            if settings.shading == ShadingMode::Flat { Interpolation::Perspective } else { settings.interpolation };
+        Program::Lit { shading: settings.shading, effects, interpolation }
     }
 
     /// The effects the shader module contains (none for the baseline).
@@ -79,7 +85,9 @@ impl Program {
     /// The baseline has no stand-in (it is itself).
     pub fn uber(self) -> Program {
         match self {
-            Program::Lit { shading, .. } => Program::Lit { shading, effects: EffectKey::UBER },
+            Program::Lit { shading, interpolation, .. } => {
+                Program::Lit { shading, effects: EffectKey::UBER, interpolation }
+            }
             Program::NullBaseline => Program::NullBaseline,
         }
     }
@@ -92,7 +100,12 @@ impl Program {
     /// A short name for logs and labels.
     pub fn label(self) -> String {
         match self {
-            Program::Lit { shading, effects } => format!("{shading:?} [{}]", effects.label()),
+            Program::Lit { shading, effects, interpolation: Interpolation::Perspective } => {
+                format!("{shading:?} [{}]", effects.label())
+            }
+            Program::Lit { shading, effects, interpolation: Interpolation::Screen } => {
+                format!("{shading:?} screen-space [{}]", effects.label())
+            }
             Program::NullBaseline => "null baseline".into(),
         }
     }

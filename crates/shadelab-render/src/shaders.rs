@@ -120,6 +120,20 @@ pub fn newest_change(dir: &std::path::Path) -> Option<std::time::SystemTime> {
     FILES.iter().filter_map(|(name, _)| std::fs::metadata(dir.join(name)).and_then(|m| m.modified()).ok()).max()
 }
 
+/// Entry points of a shading mode with an interpolation: (vertex, fragment). Screen-space
+/// interpolation has its own Gouraud and Phong stages (`@interpolate(linear)`); flat has none.
+pub fn entry_points_with(
+    mode: shadelab_model::ShadingMode,
+    interpolation: shadelab_model::Interpolation,
+) -> (&'static str, &'static str) {
+    use shadelab_model::ShadingMode::*;
+    match (mode, interpolation) {
+        (Gouraud, shadelab_model::Interpolation::Screen) => ("vs_gouraud_screen", "fs_gouraud_screen"),
+        (Phong, shadelab_model::Interpolation::Screen) => ("vs_phong_screen", "fs_phong_screen"),
+        _ => entry_points(mode),
+    }
+}
+
 /// Entry points of a shading mode: (vertex, fragment).
 pub fn entry_points(mode: shadelab_model::ShadingMode) -> (&'static str, &'static str) {
     use shadelab_model::ShadingMode::*;

@@ -35,12 +35,15 @@ const TWINS: [(&str, &str); 7] = [
 
 /// WGSL functions with no f64 twin, by file, and why. (Entry points are left out by naga's list:
 /// they are the GPU's stages, whose f64 counterpart is `reference::render_reference`.)
-const NO_TWIN: [(&str, &str, &str); 12] = [
+const NO_TWIN: [(&str, &str, &str); 15] = [
     ("common.wgsl", "is_nonfinite", "the NaN/∞ test on f32 bits; f64 code uses f64::is_finite"),
     ("common.wgsl", "any_nonfinite", "the debug view's test of a colour, built on is_nonfinite"),
     ("shading.wgsl", "finish", "the debug view that paints non-finite pixels; the reference has none"),
     ("shading.wgsl", "to_world", "the object transform; its f64 side is scene::Transform::matrix"),
     ("shading.wgsl", "normal_to_world", "the normal transform; its f64 side is Transform::normal_matrix"),
+    ("shading.wgsl", "gouraud_vertex", "Gouraud's vertex stage; the reference lights every pixel exactly"),
+    ("shading.wgsl", "phong_vertex", "Phong shading's vertex stage; the reference lights every pixel exactly"),
+    ("shading.wgsl", "screen_or_perspective", "the rasterizer's screen-space interpolant; the reference has none"),
     ("shading.wgsl", "vertex_seed", "the shadow filter's noise seed; the reference traces exact shadow rays"),
     ("shadows.wgsl", "shadow_rotation", "the Poisson filter's per-pixel noise; the reference has no filter"),
     ("shadows.wgsl", "shadow_compare", "samples the shadow map; the reference traces rays instead"),

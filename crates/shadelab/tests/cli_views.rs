@@ -197,3 +197,44 @@ fn render_model_draws_each_of_the_four_models() {
         assert_eq!(error_lines(&o).len(), 1, "{bad:?}: {:?}", error_lines(&o));
     }
 }
+
+/// `render --interpolation screen` draws the chapter's screen-space interpolation, finite, and
+/// `--interpolation-difference` writes its FLIP map against the perspective-correct image.
+#[test]
+fn render_interpolation_screen_and_its_difference_map() {
+    let dir = out_dir();
+    let exr = |name: &str, extra: &[&str]| {
+        let path = dir.join(format!("interp-{name}.exr"));
+        let mut args = vec!["render", "--width", "160", "--height", "90", "--output", path.to_str().unwrap()];
+        args.extend_from_slice(extra);
+        let o = shadelab(&args);
+        assert!(o.status.success(), "{name}: {}", String::from_utf8_lossy(&o.stderr));
+        image::open(&path).unwrap().to_rgba32f()
+    };
+    for shading in ["gouraud", "phong"] {
+        let screen = exr(&format!("{shading}-screen"), &["--shading", shading, "--interpolation", "screen"]);
+        let perspective = exr(&format!("{shading}-perspective"), &["--shading", shading]);
+        assert!(screen.pixels().all(|p| p.0.iter().all(|c| c.is_finite())), "{shading}: a non-finite pixel");
+        let differ = screen.pixels().zip(perspective.pixels()).filter(|(a, b)| (a.0[1] - b.0[1]).abs() > 1e-3).count();
+        assert!(differ > 50, "{shading}: only {differ} pixels differ");
+    }
+    // Flat shading interpolates nothing: the same image.
+    let flat = exr("flat-screen", &["--shading", "flat", "--interpolation", "screen"]);
+    assert_eq!(flat.as_raw(), exr("flat", &["--shading", "flat"]).as_raw());
+    let map = dir.join("interp-difference.png");
+    let o =
+        shadelab(&["render", "--shading", "gouraud", "--interpolation-difference", "--output", map.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let said = String::from_utf8_lossy(&o.stdout);
+    let mean: f64 = said.split("mean FLIP ").nth(1).and_then(|r| r.split(',').next()).unwrap().parse().unwrap();
+    assert!(mean > 0.0 && mean < 0.1, "{said}");
+    assert_eq!(image::open(&map).unwrap().width(), 1280);
+    for bad in
+        [&["--shading", "flat", "--interpolation-difference"][..], &["--interpolation-difference", "--output", "x.exr"]]
+    {
+        let mut args = vec!["render", "--output", "x.png"];
+        args.extend_from_slice(bad);
+        let o = shadelab(&args);
+        assert_eq!((o.status.code(), error_lines(&o).len()), (Some(2), 1), "{bad:?}");
+    }
+}

@@ -15,7 +15,9 @@ use shadelab_model::gltf_io::{LoadedScene, SceneSettings};
 use shadelab_model::params::{self, PhongExponent};
 use shadelab_model::scene::BUILTIN_SCENES;
 use shadelab_model::shadows::{SHADOW_RESOLUTION, ShadowFilter};
-use shadelab_model::{FalloffForm, IlluminationModel, LightKind, ModelChoice, Overrides, ShadingMode, SpecularModel};
+use shadelab_model::{
+    FalloffForm, IlluminationModel, Interpolation, LightKind, ModelChoice, Overrides, ShadingMode, SpecularModel,
+};
 use shadelab_render::RenderSettings;
 use std::path::PathBuf;
 
@@ -270,6 +272,11 @@ pub struct RenderArgs {
     /// whole image; or shadow, the cast-shadow factor as grey.
     #[arg(long, value_name = "TERM", default_value = "all", value_parser = values::named::<shadelab_model::terms::Term>())]
     pub term: shadelab_model::terms::Term,
+    /// Write the FLIP error map (magma) of the chapter's screen-space interpolation against the
+    /// perspective-correct image instead of the image (PNG only; Gouraud or Phong shading), and
+    /// print its mean.
+    #[arg(long)]
+    pub interpolation_difference: bool,
     /// Draw over the image, comma-separated, depth-tested against the scene: terminator (the
     /// self-shadow boundary, cyan), normals (the smooth meshes' vertex normals, yellow), creases
     /// (the edges the crease-angle rule keeps sharp, orange).
@@ -326,6 +333,10 @@ pub struct ModeArgs {
     /// Phong model with --specular].
     #[arg(long, value_parser = values::named::<ModelChoice>())]
     pub model: Option<ModelChoice>,
+    /// How Gouraud's colours and Phong shading's normals cross a triangle: perspective (correct,
+    /// the GPU's default) or screen (the chapter's scanline form, linear in screen space).
+    #[arg(long, default_value = "perspective", value_parser = values::named::<Interpolation>())]
+    pub interpolation: Interpolation,
 }
 
 impl ModeArgs {
@@ -333,10 +344,13 @@ impl ModeArgs {
     /// Cook–Torrance specular.
     pub fn resolve(&self, file: SceneSettings) -> RenderSettings {
         let fixed = self.model.and_then(|m| m.split().1);
-        RenderSettings::new(
-            self.shading.or(file.shading).unwrap_or(ShadingMode::Phong),
-            fixed.or(self.specular).or(file.specular).unwrap_or(SpecularModel::CookTorrance),
-        )
+        RenderSettings {
+            interpolation: self.interpolation,
+            ..RenderSettings::new(
+                self.shading.or(file.shading).unwrap_or(ShadingMode::Phong),
+                fixed.or(self.specular).or(file.specular).unwrap_or(SpecularModel::CookTorrance),
+            )
+        }
     }
 
     /// Apply `--model` to the loaded scene (its illumination model, and for the four-term sum the

@@ -9,7 +9,7 @@ use eframe::egui;
 use shadelab_model::params::NamedValue;
 use shadelab_model::scene::BUILTIN_SCENES;
 use shadelab_model::terms::Term;
-use shadelab_model::{IlluminationModel, ModelChoice, Overrides, ShadingMode, SpecularModel};
+use shadelab_model::{IlluminationModel, Interpolation, ModelChoice, Overrides, ShadingMode, SpecularModel};
 
 impl Viewer {
     /// The scene menu, and the camera menu when the scene has several cameras.
@@ -94,6 +94,18 @@ impl Viewer {
                 ui.selectable_value(&mut self.term, *term, term.symbol_in(model)).on_hover_text(term.meaning());
             }
         });
+        let mut screen = self.settings.interpolation == Interpolation::Screen;
+        ui.add_enabled(
+            self.settings.shading != ShadingMode::Flat,
+            egui::Checkbox::new(&mut screen, "chapter's screen-space interpolation"),
+        )
+        .on_hover_text(
+            "interpolate Gouraud's colours and Phong's normals linearly in screen space, along the \
+             scanlines as the chapter does, instead of perspective-correctly; the difference view \
+             shows what it costs in accuracy",
+        )
+        .on_disabled_hover_text("flat shading interpolates nothing");
+        self.settings.interpolation = if screen { Interpolation::Screen } else { Interpolation::Perspective };
         ui.checkbox(&mut self.settings.debug_nonfinite, "paint non-finite pixels magenta");
         ui.checkbox(&mut self.boundary.enabled, "self-shadow boundary").on_hover_text(
             "draw the edges where the side facing a light changes (N·L changes sign between the \

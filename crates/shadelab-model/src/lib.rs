@@ -9,6 +9,7 @@ pub mod guards;
 #[cfg(test)]
 mod identities;
 pub mod lighting;
+pub mod lobe;
 pub mod mesh;
 pub mod mesh_lines;
 pub mod params;

@@ -16,6 +16,16 @@ use glam::DMat4;
 use intersect::trace;
 use shadow_rays::ShadowRays;
 
+/// The nearest surface a ray from `o` along `dir` sees (the pick of `lobe.rs`).
+pub(crate) fn trace_ray(
+    scene: &Scene,
+    inverses: &[DMat4],
+    o: glam::DVec3,
+    dir: glam::DVec3,
+) -> Option<intersect::SurfaceHit> {
+    trace(scene, inverses, o, dir)
+}
+
 /// A linear RGB image in f64, rows top to bottom.
 #[derive(Clone, Debug)]
 pub struct ReferenceImage {

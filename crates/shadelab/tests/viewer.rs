@@ -383,3 +383,47 @@ fn the_model_row_switches_models_and_v_shows_the_shadow_factor() {
     }
     assert!(grey * 2 > all, "{grey} of {all} view pixels are grey");
 }
+
+/// A click on the view picks the pixel: the lobe window shows that pixel's N, V and each light's
+/// angles, the f64 model's values for the point it sees, and its plots.
+#[test]
+fn clicking_a_pixel_shows_its_lobe_and_angles() {
+    let mut h = harness();
+    assert!(h.state().picked().is_none() && h.query_by_label("lobe of the picked pixel").is_none());
+    // On the middle sphere of the default scene.
+    let at = egui::pos2(300.0, 350.0);
+    h.input_mut().events.push(egui::Event::PointerMoved(at));
+    h.run_steps(1);
+    for pressed in [true, false] {
+        h.input_mut().events.push(egui::Event::PointerButton {
+            pos: at,
+            button: egui::PointerButton::Primary,
+            pressed,
+            modifiers: Default::default(),
+        });
+        h.run_steps(1);
+    }
+    h.run_steps(3);
+    let picked = h.state().picked().cloned().expect("a pixel is picked");
+    let size = h.state().view_size().expect("the view is drawn");
+    let scene = h.state_mut().scene_mut().clone();
+    let expected = shadelab_model::lobe::pick(&scene, picked.pixel, size).expect("an object");
+    assert_eq!(picked, expected, "the pick is the f64 model's point of that pixel");
+    assert!(
+        scene.objects[picked.object].shape == shadelab_model::Shape::Sphere,
+        "{}",
+        scene.objects[picked.object].name
+    );
+    // The window shows that pixel and its angles for each light.
+    assert!(h.query_by_label_contains(&format!("pixel ({}, {})", picked.pixel.0, picked.pixel.1)).is_some());
+    for (l, _) in &picked.lights {
+        let a = shadelab_model::lobe::Angles::of(picked.n, picked.v, *l);
+        let text = format!(
+            "θ_i = {:.1}°, θ_v = {:.1}°, θ_h = {:.1}°, θ_d = {:.1}°",
+            a.theta_i, a.theta_v, a.theta_h, a.theta_d
+        );
+        assert!(h.query_by_label_contains(&text).is_some(), "{text} is not shown");
+    }
+    assert!(h.query_by_label_contains("Cook–Torrance F·D·G/(N·V): max").is_some());
+    h.render().expect("render").save(concat!(env!("CARGO_TARGET_TMPDIR"), "/lobe-window.png")).unwrap();
+}

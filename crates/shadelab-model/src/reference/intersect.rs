@@ -20,7 +20,7 @@ const PARALLEL_DENOM_MIN: f64 = 1e-300;
 type Hit = (f64, DVec3);
 
 /// The nearest surface a camera ray sees.
-pub(super) struct SurfaceHit {
+pub(crate) struct SurfaceHit {
     pub object: usize,
     pub point: DVec3,
     /// World unit normal the surface is shaded with (a file's interpolated normals).

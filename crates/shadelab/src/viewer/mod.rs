@@ -8,6 +8,7 @@
 
 mod difference;
 mod files;
+mod lobe;
 mod orbit;
 mod overlays;
 mod panel;
@@ -118,6 +119,8 @@ pub struct Viewer {
     creases: overlays::MeshLinesOverlay,
     /// The lights' shadow maps on show in their panel sections.
     shadow_maps: shadow_maps::ShadowMapViews,
+    /// The picked pixel's point and its lobe window.
+    lobe: lobe::LobeView,
     /// The cast-shadow factor V, shown in place of the frame when it is the term on show.
     shadow_factor: shadow_factor::ShadowFactorView,
     /// The panel's file path field (open / save scene).
@@ -176,12 +179,23 @@ impl Viewer {
             creases: overlays::MeshLinesOverlay::creases(),
             shadow_maps: shadow_maps::ShadowMapViews::default(),
             shadow_factor: shadow_factor::ShadowFactorView::default(),
+            lobe: lobe::LobeView::default(),
             file_field: String::new(),
             file_picker: native_file_picker(),
             cameras: vec![("the scene's camera".into(), scene_camera)],
             camera_choice: 0,
             picking: None,
         })
+    }
+
+    /// The point of the pixel picked last (a click on the view), from the f64 model.
+    pub fn picked(&self) -> Option<&shadelab_model::lobe::Pick> {
+        self.lobe.picked()
+    }
+
+    /// The view's size in pixels (its target), once drawn.
+    pub fn view_size(&self) -> Option<(u32, u32)> {
+        self.view.as_ref().map(|v| (v.target.width, v.target.height))
     }
 
     /// Show one term of the model alone (`Term::All`: the whole model).
@@ -349,6 +363,7 @@ impl eframe::App for Viewer {
             egui::ScrollArea::vertical().show(ui, |ui| self.panel(ui));
         });
         egui::CentralPanel::default().show(ui, |ui| self.viewport(ui));
+        self.lobe.show(&ctx, &self.scene);
         self.script.after_frame(&ctx);
         if self.continuous {
             ctx.request_repaint();

@@ -63,6 +63,14 @@ impl Viewer {
         }
         self.orbit.steer(ui, &response, &self.base_camera);
         self.scene.camera = self.orbit.camera(&self.base_camera).fitted(w as f64 / h as f64);
+        // A click (not a drag) picks the pixel under the cursor for the lobe window.
+        if response.clicked()
+            && let Some(pos) = response.interact_pointer_pos()
+        {
+            let px = (((pos.x - rect.min.x) * ppp).max(0.0) as u32).min(w - 1);
+            let py = (((pos.y - rect.min.y) * ppp).max(0.0) as u32).min(h - 1);
+            self.lobe.pick(&self.scene, (px, py), (w, h));
+        }
         self.ensure_view(w, h);
         let view = self.view.as_ref().expect("view just made");
         // One term alone: the other terms' coefficients at 0 for this frame (and the reference).
@@ -106,5 +114,9 @@ impl Viewer {
             return; // the light markers would hide the error map
         }
         overlays::light_markers(&painter, rect, &self.scene, self.orbit.target, (w, h));
+        if let Some(p) = self.lobe.picked() {
+            let at = rect.min + egui::vec2(p.pixel.0 as f32 + 0.5, p.pixel.1 as f32 + 0.5) / ppp;
+            painter.circle_stroke(at, 4.0, egui::Stroke::new(1.5, Color32::WHITE));
+        }
     }
 }

@@ -4,6 +4,7 @@
 pub mod bench;
 pub mod cli;
 pub mod figures;
+pub mod lobe;
 pub mod plots;
 pub mod render;
 pub mod sweep;

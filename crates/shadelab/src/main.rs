@@ -1,7 +1,7 @@
-//! `shadelab`: the viewer (no subcommand), `render`, `bench`, `sweep` and `figures`.
+//! `shadelab`: the viewer (no subcommand), `render`, `bench`, `sweep`, `figures` and `lobe`.
 
 use clap::Parser;
-use shadelab::{EXIT_USAGE, Failure, bench, cli, figures, render, sweep, viewer};
+use shadelab::{EXIT_USAGE, Failure, bench, cli, figures, lobe, render, sweep, viewer};
 use std::process::ExitCode;
 
 fn main() -> ExitCode {
@@ -28,6 +28,7 @@ fn main() -> ExitCode {
         Some(cli::Command::Bench(cli::BenchCommand::Shadows(args))) => bench::shadows::run(&args),
         Some(cli::Command::Sweep) => sweep::run(),
         Some(cli::Command::Figures(args)) => figures::run(&args),
+        Some(cli::Command::Lobe(args)) => lobe::run(&args),
         None => viewer::run(viewer::Options {
             screenshot: cli.screenshot,
             exit_after_frames: cli.exit_after_frames,

@@ -8,7 +8,7 @@ use shadelab_model::{ShadingMode, SpecularModel};
 use std::path::Path;
 
 /// Text is drawn with egui's own font (shipped with the viewer), so plots need no system fonts.
-fn register_font() {
+pub fn register_font() {
     static ONCE: std::sync::Once = std::sync::Once::new();
     ONCE.call_once(|| {
         plotters::style::register_font("sans-serif", FontStyle::Normal, epaint_default_fonts::UBUNTU_LIGHT)

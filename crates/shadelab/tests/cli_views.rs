@@ -238,3 +238,30 @@ fn render_interpolation_screen_and_its_difference_map() {
         assert_eq!((o.status.code(), error_lines(&o).len()), (Some(2), 1), "{bad:?}");
     }
 }
+
+/// `shadelab lobe --pixel X,Y` prints the f64 model's N, V and angles of the point that pixel of
+/// a render sees and writes the plots; a pixel off the image, on the background or a light the
+/// scene lacks is one line and exit 2.
+#[test]
+fn lobe_prints_the_pixels_angles_and_writes_its_plots() {
+    let png = out_dir().join("lobe.png");
+    let o = shadelab(&["lobe", "--pixel", "640,410", "--output", png.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let scene = shadelab_model::Scene::builtin("default").unwrap();
+    let p = shadelab_model::lobe::pick(&scene, (640, 410), (1280, 720)).expect("an object there");
+    assert_eq!(String::from_utf8_lossy(&o.stdout), shadelab::lobe::describe(&p));
+    let a = shadelab_model::lobe::Angles::of(p.n, p.v, p.lights[0].0);
+    assert!(String::from_utf8_lossy(&o.stdout).contains(&format!("θ_i = {:.1}°", a.theta_i)));
+    assert_eq!(image::open(&png).unwrap().width(), 1100);
+    for bad in [
+        &["--pixel", "1280,0"][..],
+        &["--pixel", "10,10"],
+        &["--pixel", "640,410", "--plane-of", "3"],
+        &["--pixel", "x"],
+    ] {
+        let mut args = vec!["lobe"];
+        args.extend_from_slice(bad);
+        let o = shadelab(&args);
+        assert_eq!((o.status.code(), error_lines(&o).len()), (Some(2), 1), "{bad:?}: {:?}", error_lines(&o));
+    }
+}

@@ -67,6 +67,26 @@ pub enum Command {
     /// Write the chapter's figures as PNGs, with commands.txt listing the render command of each
     /// (and the scene files they use), to remake or change any of them.
     Figures(FiguresArgs),
+    /// The lobe of one pixel of a render (the viewer's click): print its point's N, V and each
+    /// light's angles, from the f64 model, and write the polar plot and the θh/θd slice as PNG.
+    Lobe(LobeArgs),
+}
+
+#[derive(Args, Debug)]
+pub struct LobeArgs {
+    #[command(flatten)]
+    pub scene: SceneArgs,
+    #[command(flatten)]
+    pub size: SizeArgs,
+    /// The pixel, X,Y from the top left of a render of --width × --height.
+    #[arg(long, value_name = "X,Y", value_parser = values::pixel())]
+    pub pixel: (u32, u32),
+    /// Which light's plane of incidence to plot, counted from 1.
+    #[arg(long, default_value = "1", value_name = "N")]
+    pub plane_of: usize,
+    /// The plots' PNG.
+    #[arg(long, default_value = "lobe.png", value_name = "PATH")]
+    pub output: PathBuf,
 }
 
 #[derive(Args, Debug)]

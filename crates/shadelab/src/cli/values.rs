@@ -84,6 +84,18 @@ pub fn named<T: NamedValue + PartialEq + Send + Sync>() -> ModelValue<T> {
     ModelValue { parse: Arc::new(T::parse_named), possible: T::ALL.iter().map(|(n, _)| *n).collect() }
 }
 
+/// A pixel `X,Y`: two whole numbers, each within the image size's range (the image's own size
+/// is checked where it is known).
+pub fn pixel() -> ModelValue<(u32, u32)> {
+    rule(|t: &str| {
+        let bad =
+            || ParamError::Unknown { flag: String::new(), value: t.into(), allowed: "X,Y (two whole numbers)".into() };
+        let (x, y) = t.split_once(',').ok_or_else(bad)?;
+        let (x, y) = (x.trim().parse::<u32>().map_err(|_| bad())?, y.trim().parse::<u32>().map_err(|_| bad())?);
+        Ok((x, y))
+    })
+}
+
 /// A switch: `on` (true) or `off` (false), both listed in `--help`.
 pub fn on_off() -> ModelValue<bool> {
     let parse = |t: &str| match t.trim().to_ascii_lowercase().as_str() {

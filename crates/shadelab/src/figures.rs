@@ -51,6 +51,37 @@ pub const FIGURES: &[Figure] = &[
         flags: &["--scene", "gouraud-vs-phong.gltf", "--shading", "phong"],
     },
     Figure {
+        file: "model-lambert.png",
+        caption: "7.1: the Lambert rule R·I·cos α + R·(1 − I); the fill R·(1 − I) keeps the shadowed side from black",
+        flags: &["--model", "lambert"],
+    },
+    Figure {
+        file: "model-sum.png",
+        caption: "7.1, equation (1): the four-term sum; its reflected term K_r·I·cos φ follows the eye, not the light",
+        flags: &["--model", "sum"],
+    },
+    Figure { file: "model-phong.png", caption: "7.2: the Phong model with (V·R)^h", flags: &["--model", "phong"] },
+    Figure {
+        file: "model-cook-torrance.png",
+        caption: "7.3: Cook–Torrance, Beckmann D, the min() G and the exact Fresnel F",
+        flags: &["--model", "cook-torrance"],
+    },
+    Figure {
+        file: "interpolation-screen.png",
+        caption: "7.6: Gouraud with the chapter's screen-space interpolation: the field's large triangles show",
+        flags: &["--scene", "field", "--shading", "gouraud", "--interpolation", "screen"],
+    },
+    Figure {
+        file: "interpolation-perspective.png",
+        caption: "7.6: the same with the GPU's perspective-correct interpolation",
+        flags: &["--scene", "field", "--shading", "gouraud"],
+    },
+    Figure {
+        file: "interpolation-difference.png",
+        caption: "7.6: the FLIP map of the screen-space image against the perspective-correct one",
+        flags: &["--scene", "field", "--shading", "gouraud", "--interpolation-difference"],
+    },
+    Figure {
         file: "term-ambient.png",
         caption: "equation (1): the ambient term I_a alone",
         flags: &["--term", "ambient"],
@@ -69,6 +100,11 @@ pub const FIGURES: &[Figure] = &[
         file: "term-specular.png",
         caption: "equation (1): the specular term I_s alone, the spheres going from sharp to rough",
         flags: &["--term", "specular"],
+    },
+    Figure {
+        file: "term-transmitted.png",
+        caption: "equation (1): the four-term sum's transmitted term I_t alone, with 1 − t = 0.5",
+        flags: &["--model", "sum", "--transmission", "0.5", "--term", "transmitted"],
     },
 ];
 

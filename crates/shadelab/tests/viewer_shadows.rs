@@ -82,6 +82,9 @@ fn the_shadow_error_map_reports_a_small_disagreement_on_the_default_scene() {
 #[test]
 fn a_point_lights_map_shows_a_cube_face_with_a_face_menu() {
     let mut h = harness();
+    // Below the panel's fold: scroll to it first (the scroll is animated).
+    h.get_by_label("L2 — point").scroll_to_me();
+    h.run_steps(20);
     h.get_by_label("L2 — point").click();
     h.run_steps(2);
     h.state_mut().set_shadow_map_view(1, true);

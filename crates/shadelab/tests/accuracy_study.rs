@@ -17,6 +17,7 @@ fn each_light_count_is_measured_against_its_own_reference() {
         light_counts: (1..=8).collect(),
         resolution_study: ("sphere", 64),
         study_resolutions: vec![],
+        model_study: ("sphere", 16, (96, 54)),
         frames: 1,
         warmup: 0,
     };
@@ -31,5 +32,35 @@ fn each_light_count_is_measured_against_its_own_reference() {
         // (the full study: 2.5e-3 at 640×360); measured against another scene's reference the
         // two-light rows were at 9.7e-2.
         assert!(rmse < 1e-2, "{} lights, {}: RMSE {rmse} against the reference", r.lights, r.program());
+    }
+}
+
+/// The study has a row per illumination model and shading mode, each with its error against the
+/// reference of its own model, beside a baseline.
+#[test]
+fn the_models_study_measures_each_model_in_each_shading_mode() {
+    let gpu = shadelab_render::Gpu::lavapipe().unwrap_or_else(|e| panic!("{e}"));
+    let plan = Plan {
+        scenes: vec![],
+        levels: vec![],
+        resolutions: vec![],
+        light_study: ("sphere", 16, (96, 54)),
+        light_counts: vec![],
+        resolution_study: ("sphere", 16),
+        study_resolutions: vec![],
+        model_study: ("default", 32, (160, 90)),
+        frames: 1,
+        warmup: 0,
+    };
+    let report = run_plan(&gpu, &plan, "test", |_| {});
+    let rows: Vec<_> = report.rows.iter().filter(|r| r.study == Study::Models).collect();
+    assert_eq!(rows.len(), 4 * (1 + 3), "four models × (baseline + three shading modes)");
+    for m in shadelab_model::ModelChoice::ALL_CHOICES {
+        let shaded: Vec<_> = rows.iter().filter(|r| r.model == Some(m)).collect();
+        assert_eq!(shaded.len(), 3, "{m}");
+        assert!(shaded.iter().all(|r| r.error.is_some_and(|e| e.rmse.is_finite() && e.rmse < 0.1)), "{m}");
+        // Phong shading draws each model closest to its exact image.
+        let rmse = |s: ShadingMode| shaded.iter().find(|r| r.shading == Some(s)).unwrap().error.unwrap().rmse;
+        assert!(rmse(ShadingMode::Phong) < rmse(ShadingMode::Flat), "{m}");
     }
 }

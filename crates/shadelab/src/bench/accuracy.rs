@@ -9,7 +9,7 @@ use crate::{Failure, cli, plots};
 use anyhow::Context;
 use shadelab_model::reference::{ReferenceImage, render_reference};
 use shadelab_model::scene_variants::{self, ANALYTIC_SCENES};
-use shadelab_model::{Scene, ShadingMode, SpecularModel};
+use shadelab_model::{ModelChoice, Scene, ShadingMode, SpecularModel};
 use shadelab_render::image_error::{self, ErrorStats};
 use shadelab_render::timing::{FrameTimer, TimeSource, median, quantile_sorted};
 use shadelab_render::{Gpu, Program, RenderSettings, Renderer, Target, target};
@@ -30,6 +30,9 @@ pub struct Plan {
     /// Cost per resolution step: this scene and level at these sizes.
     pub resolution_study: (&'static str, u32),
     pub study_resolutions: Vec<(u32, u32)>,
+    /// The four illumination models: this scene, level and resolution, each shading mode, no
+    /// cast shadows.
+    pub model_study: (&'static str, u32, (u32, u32)),
     pub frames: usize,
     pub warmup: usize,
 }
@@ -45,6 +48,7 @@ impl Plan {
             light_counts: vec![1, 2, 4, 8],
             resolution_study: ("default", 64),
             study_resolutions: vec![(160, 90), (320, 180), (640, 360), (1280, 720), (1920, 1080)],
+            model_study: ("default", 64, (640, 360)),
             frames: 50,
             warmup: 5,
         }
@@ -60,6 +64,7 @@ impl Plan {
             light_counts: vec![1, 2, 4, 8],
             resolution_study: ("default", 32),
             study_resolutions: vec![(160, 90), (320, 180), (640, 360)],
+            model_study: ("default", 32, (160, 90)),
             frames: 10,
             warmup: 2,
         }
@@ -75,6 +80,8 @@ pub enum Study {
     Lights,
     /// Cost per resolution step.
     Resolution,
+    /// The chapter's four illumination models, each shading mode.
+    Models,
 }
 
 impl Study {
@@ -83,6 +90,7 @@ impl Study {
             Study::Modes => "modes",
             Study::Lights => "lights",
             Study::Resolution => "resolution",
+            Study::Models => "models",
         }
     }
 }
@@ -100,6 +108,8 @@ pub struct Row {
     pub lights: usize,
     pub shading: Option<ShadingMode>,
     pub specular: Option<SpecularModel>,
+    /// The illumination model (`None` for the baseline).
+    pub model: Option<ModelChoice>,
     pub frames: usize,
     pub median_ms: f64,
     pub p10_ms: f64,
@@ -113,8 +123,9 @@ pub struct Row {
 
 impl Row {
     pub fn program(&self) -> String {
-        match (self.shading, self.specular) {
-            (Some(s), Some(p)) => format!("{s}/{p}"),
+        match (self.shading, self.specular, self.model) {
+            (Some(s), _, Some(m @ (ModelChoice::Lambert | ModelChoice::Sum))) => format!("{s}/{m}"),
+            (Some(s), Some(p), _) => format!("{s}/{p}"),
             _ => "baseline".into(),
         }
     }
@@ -137,6 +148,23 @@ struct Group {
     scene: Scene,
     level: u32,
     size: (u32, u32),
+    /// The models study's model (the others: the scene's, the Phong model).
+    model: Option<ModelChoice>,
+}
+
+impl Group {
+    /// The programs drawn: the baseline, then every shading mode × specular model, or for a
+    /// model of the models study every shading mode with the specular model it fixes.
+    fn programs(&self) -> Vec<Option<RenderSettings>> {
+        match self.model {
+            None => programs(),
+            Some(m) => {
+                let specular = m.split().1.unwrap_or(SpecularModel::CookTorrance);
+                let modes = ShadingMode::ALL_MODES.map(|s| Some(RenderSettings::new(s, specular)));
+                std::iter::once(None).chain(modes).collect()
+            }
+        }
+    }
 }
 
 /// The baseline (`None`: `Program::NullBaseline`), then every shading mode × specular model.
@@ -162,6 +190,7 @@ fn groups(plan: &Plan) -> Vec<Group> {
                     scene: scene_variants::at_level(&base(name), level),
                     level,
                     size,
+                    model: None,
                 });
             }
         }
@@ -169,7 +198,7 @@ fn groups(plan: &Plan) -> Vec<Group> {
     let (name, level, size) = plan.light_study;
     for &n in &plan.light_counts {
         let scene = scene_variants::with_point_lights(&scene_variants::at_level(&base(name), level), n);
-        out.push(Group { study: Study::Lights, name, scene, level, size });
+        out.push(Group { study: Study::Lights, name, scene, level, size, model: None });
     }
     let (name, level) = plan.resolution_study;
     for &size in &plan.study_resolutions {
@@ -179,7 +208,16 @@ fn groups(plan: &Plan) -> Vec<Group> {
             scene: scene_variants::at_level(&base(name), level),
             level,
             size,
+            model: None,
         });
+    }
+    let (name, level, size) = plan.model_study;
+    for m in ModelChoice::ALL_CHOICES {
+        // Without cast shadows, whose passes would dominate the models' own cost at small sizes.
+        let mut scene = scene_variants::at_level(&base(name), level);
+        scene.apply(&shadelab_model::Overrides::for_model(m));
+        scene.set_shadows(false);
+        out.push(Group { study: Study::Models, name, scene, level, size, model: Some(m) });
     }
     out
 }
@@ -189,16 +227,16 @@ pub fn run_plan(gpu: &Gpu, plan: &Plan, command: &str, mut progress: impl FnMut(
     let start = std::time::Instant::now();
     let mut r = Renderer::new(&gpu.device, &gpu.queue);
     let timer = FrameTimer::new(&gpu.device, &gpu.queue);
-    let programs = programs();
-    // The reference depends on the scene's lights, the size and the specular model, not on the
-    // level of detail: computed once per combination. The lights are keyed by their exact
-    // parameters: the study's ring of n point lights and a scene's own n lights are different.
+    // The reference depends on the scene's lights and model, the size and the specular model,
+    // not on the level of detail: computed once per combination. The lights are keyed by their
+    // exact parameters: the study's ring of n point lights and a scene's own n lights differ.
     let mut references: HashMap<(String, String, (u32, u32), SpecularModel), ReferenceImage> = HashMap::new();
     let mut rows = Vec::new();
     for g in groups(plan) {
         let (w, h) = g.size;
         let gs = r.upload(&g.scene).expect("the study scenes are analytic shapes, far below any buffer limit");
         let target = Target::new(&gpu.device, w, h, target::HDR_FORMAT);
+        let programs = g.programs();
         let draws: Vec<(Program, RenderSettings)> = programs
             .iter()
             .map(|s| match s {
@@ -212,7 +250,8 @@ pub fn run_plan(gpu: &Gpu, plan: &Plan, command: &str, mut progress: impl FnMut(
             let error = s.map(|s| {
                 r.render(&gs, &g.scene, &target, &s);
                 let image = target::read_back(&gpu.device, &gpu.queue, &target);
-                let key = (g.name.to_string(), format!("{:?}", g.scene.lights), g.size, s.specular);
+                let lit = format!("{:?} {:?}", g.scene.illumination, g.scene.lights);
+                let key = (g.name.to_string(), lit, g.size, s.specular);
                 let reference = references.entry(key).or_insert_with(|| render_reference(&g.scene, s.specular, w, h));
                 image_error::compare(&image, reference).stats
             });
@@ -227,6 +266,7 @@ pub fn run_plan(gpu: &Gpu, plan: &Plan, command: &str, mut progress: impl FnMut(
                 lights: g.scene.lights.len(),
                 shading: s.map(|s| s.shading),
                 specular: s.map(|s| s.specular),
+                model: s.map(|s| g.model.unwrap_or(ModelChoice::of(g.scene.illumination, s.specular))),
                 frames: plan.frames,
                 median_ms: m,
                 p10_ms: quantile_sorted(&samples[i], 0.1),
@@ -279,7 +319,7 @@ fn rmse(r: &Row) -> f64 {
 }
 
 /// The CSV header; one line per row follows.
-pub const CSV_HEADER: &str = "study,scene,level,triangles,width,height,lights,shading,specular,frames,median_ms,p10_ms,p90_ms,ratio_to_baseline,rmse,max_abs,flip_mean,share_off_1_255,pareto";
+pub const CSV_HEADER: &str = "study,scene,level,triangles,width,height,lights,shading,specular,frames,median_ms,p10_ms,p90_ms,ratio_to_baseline,rmse,max_abs,flip_mean,share_off_1_255,pareto,model";
 
 pub fn csv(report: &Report) -> String {
     let mut s = String::from(CSV_HEADER);
@@ -292,7 +332,7 @@ pub fn csv(report: &Report) -> String {
         let e = |f: fn(&ErrorStats) -> f64| r.error.as_ref().map_or(String::new(), |x| format!("{:.6e}", f(x)));
         let _ = writeln!(
             s,
-            "{},{},{},{},{},{},{},{},{},{},{:.4},{:.4},{:.4},{:.4},{},{},{},{},{}",
+            "{},{},{},{},{},{},{},{},{},{},{:.4},{:.4},{:.4},{:.4},{},{},{},{},{},{}",
             r.study.name(),
             r.scene,
             r.level,
@@ -311,7 +351,8 @@ pub fn csv(report: &Report) -> String {
             e(|x| x.max_abs),
             e(|x| x.flip_mean),
             e(|x| x.share_off),
-            r.pareto
+            r.pareto,
+            r.model.map_or("none".to_string(), |m| m.to_string())
         );
     }
     s
@@ -419,6 +460,12 @@ pub fn markdown(report: &Report) -> String {
         report.plan.resolution_study.0, report.plan.resolution_study.1
     );
     table(&mut s, report.rows.iter().filter(|r| r.study == Study::Resolution));
+    let _ = writeln!(
+        s,
+        "\n## The four illumination models ({} level {}, {}×{}, no cast shadows)\n\nEach model against the f64 reference of the same model: what each costs and how close each shading mode draws it.\n",
+        report.plan.model_study.0, report.plan.model_study.1, report.plan.model_study.2.0, report.plan.model_study.2.1
+    );
+    table(&mut s, report.rows.iter().filter(|r| r.study == Study::Models));
     s
 }
 

@@ -12,11 +12,16 @@ pub fn run(args: &cli::BenchEffectsArgs) -> Result<(), Failure> {
     use shadelab_render::{Program, Specialization};
     let (width, height) = args.size.pixels();
     let (frames, warmup) = (args.frames as usize, args.warmup as usize);
-    let scenes = args
+    let mut scenes = args
         .scenes
         .iter()
         .map(|name| cli::scene(&cli::SceneArgs { scene: name.clone(), ..cli::SceneArgs::default() }))
         .collect::<Result<Vec<_>, _>>()?;
+    if let Some(m) = args.model {
+        for s in &mut scenes {
+            s.apply(&shadelab_model::Overrides::for_model(m));
+        }
+    }
     let gpu = Gpu::headless(AdapterChoice::from_env()).context("opening a GPU adapter")?;
     let mut r = Renderer::new(&gpu.device, &gpu.queue);
     let target = Target::new(&gpu.device, width, height, shadelab_render::target::HDR_FORMAT);
@@ -25,7 +30,7 @@ pub fn run(args: &cli::BenchEffectsArgs) -> Result<(), Failure> {
     println!("# device: {}; time: {}", gpu.describe(), timer.source().label());
     println!("| scene | shading | pipeline | effects | median ms | p10–p90 ms | × specialized |");
     println!("|---|---|---|---|---:|---|---:|");
-    let specular = SpecularModel::CookTorrance;
+    let specular = args.model.and_then(|m| m.split().1).unwrap_or(SpecularModel::CookTorrance);
     for scene in &scenes {
         let gs = r.upload(scene).map_err(|e| Failure::Usage(format!("{}: {e}", scene.name)))?;
         let key = shadelab_model::effects::analyze(scene, specular).key;

@@ -186,6 +186,10 @@ pub struct BenchEffectsArgs {
     /// Scenes: built-in names or glTF files (repeat the flag for several).
     #[arg(long = "scene", default_value = "default", value_name = "NAME|PATH")]
     pub scenes: Vec<String>,
+    /// Light every scene with this illumination model (lambert, sum, phong, cook-torrance)
+    /// [default: each scene's, with Cook–Torrance specular].
+    #[arg(long, value_parser = values::named::<ModelChoice>())]
+    pub model: Option<ModelChoice>,
     #[command(flatten)]
     pub size: SizeArgs,
     #[arg(long, default_value = "50", value_parser = values::count(FRAMES),

@@ -6,6 +6,7 @@ pub mod cli;
 pub mod figures;
 pub mod lobe;
 pub mod plots;
+pub mod reference_views;
 pub mod render;
 pub mod sweep;
 pub mod viewer;

@@ -100,6 +100,15 @@ pub fn run(args: &cli::RenderArgs) -> Result<(), Failure> {
     if args.explain {
         print!("{}", explain(&scene, &settings));
     }
+    if (args.reference || args.difference) && !shadelab_model::scene_variants::is_analytic(&scene) {
+        return Err(Failure::Usage(
+            "--reference, --difference: only for scenes of analytic shapes (the reference knows their exact surface)"
+                .into(),
+        ));
+    }
+    if args.difference && kind != ImageKind::Png {
+        return Err(Failure::Usage("--difference: writes a .png error map".into()));
+    }
     if args.interpolation_difference && (kind != ImageKind::Png || settings.shading == ShadingMode::Flat) {
         return Err(Failure::Usage(
             "--interpolation-difference: writes a .png error map, of Gouraud or Phong shading (flat interpolates nothing)"
@@ -110,6 +119,9 @@ pub fn run(args: &cli::RenderArgs) -> Result<(), Failure> {
     log::info!("adapter: {}", gpu.describe());
     if args.interpolation_difference {
         return interpolation_difference(&gpu, &scene, (width, height), &settings, &args.output);
+    }
+    if args.reference || args.difference {
+        return crate::reference_views::run(&gpu, &scene, (width, height), &settings, args, kind);
     }
     let image = if factor {
         shadelab_render::render_shadow_factor(&gpu, &scene, (width, height), &settings)

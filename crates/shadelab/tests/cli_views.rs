@@ -265,3 +265,53 @@ fn lobe_prints_the_pixels_angles_and_writes_its_plots() {
         assert_eq!((o.status.code(), error_lines(&o).len()), (Some(2), 1), "{bad:?}: {:?}", error_lines(&o));
     }
 }
+
+/// `render --reference` writes the f64 reference of the same term, close to the GPU's;
+/// `--difference` writes the FLIP map of the two and prints its numbers; both refuse a scene the
+/// reference cannot draw exactly.
+#[test]
+fn render_reference_and_difference_give_each_term_its_reference() {
+    let dir = out_dir();
+    for term in ["diffuse", "specular", "shadow"] {
+        let path = |what: &str| dir.join(format!("ref-{term}-{what}.exr"));
+        let run = |extra: &[&str], out: &std::path::Path| {
+            let mut args =
+                vec!["render", "--term", term, "--width", "160", "--height", "90", "--output", out.to_str().unwrap()];
+            args.extend_from_slice(extra);
+            let o = shadelab(&args);
+            assert!(o.status.success(), "{term}: {}", String::from_utf8_lossy(&o.stderr));
+            o
+        };
+        run(&["--reference"], &path("reference"));
+        run(&[], &path("gpu"));
+        let (r, g) =
+            (image::open(path("reference")).unwrap().to_rgba32f(), image::open(path("gpu")).unwrap().to_rgba32f());
+        let mean =
+            r.pixels().zip(g.pixels()).map(|(a, b)| (a.0[1] - b.0[1]).abs() as f64).sum::<f64>() / (160.0 * 90.0);
+        // Silhouettes and shadow edges differ; the rest agrees (measured 2e-3 to 1.4e-2).
+        assert!(mean < 0.03, "{term}: mean |GPU − reference| {mean}");
+        assert!(r.as_raw() != g.as_raw(), "{term}: the reference is not the GPU's image");
+        let map = dir.join(format!("ref-{term}-difference.png"));
+        let o = run(&["--difference"], &map);
+        assert!(String::from_utf8_lossy(&o.stdout).contains("mean FLIP"), "{term}");
+        assert_eq!(image::open(&map).unwrap().width(), 160);
+    }
+    // A file mesh (one triangle) has no exact surface for the reference.
+    let mesh_path = dir.join("ref-triangle.gltf");
+    std::fs::write(&mesh_path, TRIANGLE_GLTF).unwrap();
+    let mesh = mesh_path.to_str().unwrap();
+    for bad in [
+        &["--scene", mesh, "--reference", "--output", "x.png"][..],
+        &["--reference", "--difference", "--output", "x.png"],
+        &["--difference", "--output", "x.exr"],
+        &["--reference", "--overlay", "normals", "--output", "x.png"],
+    ] {
+        let mut args = vec!["render"];
+        args.extend_from_slice(bad);
+        let o = shadelab(&args);
+        assert_eq!((o.status.code(), error_lines(&o).len()), (Some(2), 1), "{bad:?}: {:?}", error_lines(&o));
+    }
+}
+
+/// A glTF file of one triangle, its positions in a data URI.
+const TRIANGLE_GLTF: &str = r#"{"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],"nodes":[{"mesh":0}],"meshes":[{"primitives":[{"attributes":{"POSITION":0}}]}],"accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3","min":[0,0,0],"max":[1,1,0]}],"bufferViews":[{"buffer":0,"byteLength":36}],"buffers":[{"byteLength":36,"uri":"data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA"}]}"#;

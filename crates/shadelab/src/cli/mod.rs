@@ -301,6 +301,14 @@ pub struct RenderArgs {
     /// print its mean.
     #[arg(long)]
     pub interpolation_difference: bool,
+    /// Write the f64 ray-cast reference of the same scene and term instead of the GPU's image
+    /// (scenes of analytic shapes; with --term shadow, its exact factor).
+    #[arg(long, conflicts_with_all = ["difference", "interpolation_difference", "overlay"])]
+    pub reference: bool,
+    /// Write the FLIP error map (magma) of the GPU's image against the f64 reference instead of
+    /// the image (PNG; scenes of analytic shapes), and print RMSE, FLIP and the share off.
+    #[arg(long, conflicts_with_all = ["interpolation_difference", "overlay"])]
+    pub difference: bool,
     /// Draw over the image, comma-separated, depth-tested against the scene: terminator (the
     /// self-shadow boundary, cyan), normals (the smooth meshes' vertex normals, yellow), creases
     /// (the edges the crease-angle rule keeps sharp, orange).

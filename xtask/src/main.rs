@@ -70,24 +70,82 @@ fn test(extra: &[String]) -> ExitCode {
     };
     eprintln!("xtask: lavapipe at {}", icd.display());
     let mut cmd = Command::new(std::env::var("CARGO").unwrap_or_else(|_| "cargo".into()));
-    cmd.args(["test", "--release", "--workspace"]).args(extra);
+    // Every test binary runs even after one fails, so the summary counts them all.
+    cmd.args(["test", "--release", "--workspace", "--no-fail-fast"]).args(extra);
     // Only lavapipe is visible to the Vulkan loader (both variable names, old and new loaders),
     // and the tests and the binary ask for it by name as well.
     cmd.env("VK_DRIVER_FILES", &icd).env("VK_ICD_FILENAMES", &icd).env("SHADELAB_ADAPTER", "lavapipe");
     let xdg = runtime_dir();
     cmd.env("XDG_RUNTIME_DIR", &xdg);
-    if !run(&mut cmd) {
-        return ExitCode::FAILURE;
-    }
-    match viewer_smoke_test(&icd, &xdg) {
+    let (tests_ok, mut count) = run_counting(&mut cmd);
+    let smoke = viewer_smoke_test(&icd, &xdg);
+    match &smoke {
         Ok(()) => {
             eprintln!("xtask: viewer smoke test under Xvfb: passed");
-            ExitCode::SUCCESS
+            count.passed += 1;
         }
         Err(msg) => {
             eprintln!("xtask: viewer smoke test under Xvfb: FAILED: {msg}");
-            ExitCode::FAILURE
+            count.failed += 1;
         }
+    }
+    // The last line: every test binary's results and the smoke test, together.
+    println!("xtask: {} passed, {} failed", count.passed, count.failed);
+    if tests_ok && smoke.is_ok() { ExitCode::SUCCESS } else { ExitCode::FAILURE }
+}
+
+/// Tests counted from `cargo test`'s "test result:" lines.
+#[derive(Default, Debug, PartialEq)]
+struct Count {
+    passed: u64,
+    failed: u64,
+}
+
+impl Count {
+    /// Add one "test result: ok. 3 passed; 1 failed; …" line (other lines are ignored).
+    fn add_line(&mut self, line: &str) {
+        let Some(rest) = line.trim_start().strip_prefix("test result: ") else { return };
+        for part in rest.split(';') {
+            let words: Vec<&str> = part.split_whitespace().collect();
+            let n = |w: &str| w.parse::<u64>().ok();
+            match words.as_slice() {
+                [.., a, "passed"] => self.passed += n(a).unwrap_or(0),
+                [a, "failed"] => self.failed += n(a).unwrap_or(0),
+                _ => {}
+            }
+        }
+    }
+}
+
+/// Run `cmd`, passing its output through, and count its test results.
+fn run_counting(cmd: &mut Command) -> (bool, Count) {
+    use std::io::BufRead;
+    eprintln!("xtask: running {cmd:?}");
+    let mut count = Count::default();
+    let Ok(mut child) = cmd.stdout(std::process::Stdio::piped()).spawn() else {
+        return (false, count);
+    };
+    if let Some(out) = child.stdout.take() {
+        for line in std::io::BufReader::new(out).lines().map_while(Result::ok) {
+            println!("{line}");
+            count.add_line(&line);
+        }
+    }
+    (child.wait().is_ok_and(|s| s.success()), count)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn test_result_lines_are_counted() {
+        let mut c = Count::default();
+        c.add_line("test result: ok. 24 passed; 0 failed; 0 ignored; 0 measured; 0 filtered out; finished in 1.2s");
+        c.add_line("test result: FAILED. 3 passed; 2 failed; 0 ignored; 0 measured; 0 filtered out");
+        c.add_line("running 5 tests");
+        c.add_line("test a ... ok");
+        assert_eq!(c, Count { passed: 27, failed: 2 });
     }
 }
 

@@ -4,7 +4,31 @@ use clap::Parser;
 use shadelab::{EXIT_USAGE, Failure, bench, cli, figures, lobe, render, sweep, viewer};
 use std::process::ExitCode;
 
+/// Give Mesa a private `XDG_RUNTIME_DIR` when the environment has none: without one its window-system
+/// code prints "error: XDG_RUNTIME_DIR is invalid or not set" on every device open, even on
+/// success (headless renders, CI). A per-user folder under the temp dir, mode 0700, as the XDG
+/// spec asks of it.
+fn ensure_runtime_dir() {
+    if std::env::var_os("XDG_RUNTIME_DIR").is_some_and(|d| std::path::Path::new(&d).is_dir()) {
+        return;
+    }
+    let user = std::env::var("USER").unwrap_or_else(|_| "user".into());
+    let dir = std::env::temp_dir().join(format!("shadelab-xdg-{user}"));
+    if std::fs::create_dir_all(&dir).is_err() {
+        return;
+    }
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::PermissionsExt;
+        let _ = std::fs::set_permissions(&dir, std::fs::Permissions::from_mode(0o700));
+    }
+    // SAFETY: called first in main, before any other thread exists, so nothing reads the
+    // environment concurrently.
+    unsafe { std::env::set_var("XDG_RUNTIME_DIR", &dir) };
+}
+
 fn main() -> ExitCode {
+    ensure_runtime_dir();
     env_logger::Builder::from_env(env_logger::Env::default().default_filter_or("warn")).init();
     let cli = match cli::Cli::try_parse() {
         Ok(c) => c,

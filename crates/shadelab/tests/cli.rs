@@ -484,3 +484,19 @@ fn camera_picks_one_of_the_files_cameras() {
         error_lines(&o)
     );
 }
+
+/// A successful run says no "error:", even where `XDG_RUNTIME_DIR` is not set (the binary gives
+/// Mesa a private one).
+#[test]
+fn a_successful_render_is_quiet_without_xdg_runtime_dir() {
+    let png = out_dir().join("quiet.png");
+    let o = std::process::Command::new(env!("CARGO_BIN_EXE_shadelab"))
+        .args(["render", "--width", "64", "--height", "36", "--output", png.to_str().unwrap()])
+        .env("SHADELAB_ADAPTER", "lavapipe")
+        .env_remove("XDG_RUNTIME_DIR")
+        .output()
+        .unwrap();
+    assert!(o.status.success());
+    let stderr = String::from_utf8_lossy(&o.stderr);
+    assert!(!stderr.to_ascii_lowercase().contains("error"), "{stderr}");
+}

@@ -1,8 +1,10 @@
 //! `shadelab bench render`: the frame time of one scene for each shading mode × specular model,
-//! interleaved in one run.
+//! interleaved in one run with the null-shader baseline (the same geometry, no lighting), and
+//! each mode's time over the baseline's.
 
 use crate::{Failure, cli};
 use anyhow::Context;
+use shadelab_model::params::NamedValue;
 use shadelab_model::{ShadingMode, SpecularModel};
 use shadelab_render::timing::{FrameTimer, median, quantile_sorted};
 use shadelab_render::{AdapterChoice, Gpu, RenderSettings, Renderer, Target};
@@ -23,7 +25,10 @@ pub fn run(args: &cli::BenchRenderArgs) -> Result<(), Failure> {
             SpecularModel::ALL_MODELS.into_iter().map(move |specular| RenderSettings::new(shading, specular))
         })
         .collect();
-    let programs: Vec<_> = combos.iter().map(|s| (shadelab_render::Program::for_scene(&scene, s), *s)).collect();
+    // The baseline first, then every combination, frame by frame.
+    let programs: Vec<_> = std::iter::once((shadelab_render::Program::NullBaseline, RenderSettings::default()))
+        .chain(combos.iter().map(|s| (shadelab_render::Program::for_scene(&scene, s), *s)))
+        .collect();
     let mut samples = timer.interleaved(&mut r, &gs, &scene, &target, &programs, frames, warmup);
     println!(
         "# shadelab bench render — scene '{}', {}×{}, {} triangles, {} lights",
@@ -40,20 +45,27 @@ pub fn run(args: &cli::BenchRenderArgs) -> Result<(), Failure> {
         frames,
         warmup
     );
-    println!("| shading | specular | median ms | p10 ms | p90 ms | ratio to fastest |");
-    println!("|---|---|---:|---:|---:|---:|");
+    println!("| shading | specular | median ms | p10 ms | p90 ms | baseline ms | × baseline | ratio to fastest |");
+    println!("|---|---|---:|---:|---:|---:|---:|---:|");
     let medians: Vec<f64> = samples.iter_mut().map(|s| median(s)).collect();
-    let fastest = medians.iter().copied().fold(f64::INFINITY, f64::min);
-    for (i, s) in combos.iter().enumerate() {
+    let baseline = medians[0];
+    let fastest = medians[1..].iter().copied().fold(f64::INFINITY, f64::min);
+    let row = |name: (&str, &str), i: usize| {
         println!(
-            "| {} | {} | {:.3} | {:.3} | {:.3} | {:.2} |",
-            s.shading,
-            s.specular,
+            "| {} | {} | {:.3} | {:.3} | {:.3} | {:.3} | {:.2} | {:.2} |",
+            name.0,
+            name.1,
             medians[i],
             quantile_sorted(&samples[i], 0.1),
             quantile_sorted(&samples[i], 0.9),
+            baseline,
+            medians[i] / baseline,
             medians[i] / fastest
         );
+    };
+    row(("null baseline", "—"), 0);
+    for (i, s) in combos.iter().enumerate() {
+        row((s.shading.name(), s.specular.name()), i + 1);
     }
     Ok(())
 }

@@ -156,3 +156,31 @@ fn extreme_sizes_render() {
         assert_eq!(img.nonfinite_count(), 0);
     }
 }
+
+/// The viewer's timestamp ring times frames without waiting for them: a frame returns at once,
+/// its time arrives on a later collect, and every slot is reused many times over.
+#[test]
+fn the_timestamp_ring_times_frames_without_waiting() {
+    use shadelab_render::timestamp_ring::{RING_SLOTS, TimestampRing};
+    let g = gpu();
+    let scene = Scene::builtin("default").expect("built-in");
+    let mut r = shadelab_render::Renderer::new(&g.device, &g.queue);
+    let gs = r.upload(&scene).expect("upload");
+    let target = Target::new(&g.device, 160, 90, target::HDR_FORMAT);
+    let settings = settings(ShadingMode::Phong, SpecularModel::CookTorrance);
+    r.write_uniforms(&gs, &scene, &target, &settings);
+    let program = shadelab_render::Program::for_scene(&scene, &settings);
+    let mut ring = TimestampRing::new(&g.device, &g.queue);
+    assert!(ring.timed(), "lavapipe has timestamp queries");
+    assert_eq!(ring.frame(&mut r, &gs, &target, program), None, "nothing has been read back yet");
+    let mut times = Vec::new();
+    for _ in 0..3 * RING_SLOTS {
+        // More frames than slots in flight: the extra ones are drawn untimed, none waits.
+        for _ in 0..RING_SLOTS + 1 {
+            ring.frame(&mut r, &gs, &target, program);
+        }
+        g.device.poll(wgpu::PollType::wait_indefinitely()).expect("poll");
+        times.push(ring.collect(&g.device).expect("a time once the GPU is idle"));
+    }
+    assert!(times.iter().all(|t| t.is_finite() && *t > 0.0), "{times:?}");
+}

@@ -14,6 +14,7 @@ pub mod shaders;
 pub mod shadow_pass;
 pub mod sweep;
 pub mod target;
+pub mod timestamp_ring;
 pub mod timing;
 mod twins;
 pub mod uniforms;

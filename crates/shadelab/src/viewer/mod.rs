@@ -99,6 +99,8 @@ pub struct Viewer {
     egui_renderer: Arc<egui::mutex::RwLock<egui_wgpu::Renderer>>,
     view: Option<View>,
     timer: FrameTimer,
+    /// The scene pass's timestamps, read back without waiting (`TimestampRing`).
+    ring: shadelab_render::timestamp_ring::TimestampRing,
     frame_ms: Option<f64>,
     continuous: bool,
     selected_material: usize,
@@ -160,6 +162,7 @@ impl Viewer {
             settings: RenderSettings::default(),
             term: shadelab_model::terms::Term::All,
             timer: FrameTimer::new(&rs.device, &rs.queue),
+            ring: shadelab_render::timestamp_ring::TimestampRing::new(&rs.device, &rs.queue),
             renderer,
             gpu_scene,
             egui_renderer: rs.renderer.clone(),

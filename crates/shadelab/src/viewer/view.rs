@@ -78,7 +78,13 @@ impl Viewer {
         self.term.apply(&mut self.scene);
         self.renderer.write_uniforms(&self.gpu_scene, &self.scene, &view.target, &self.settings);
         let program = Program::for_scene(&self.scene, &self.settings);
-        self.frame_ms = Some(self.timer.frame(&mut self.renderer, &self.gpu_scene, &view.target, program));
+        // With timestamps the frame is timed in the ring and never waited for (the panel shows
+        // the newest time read back); without them the CPU's submit + wait is the only clock.
+        self.frame_ms = if self.ring.timed() {
+            self.ring.frame(&mut self.renderer, &self.gpu_scene, &view.target, program).or(self.frame_ms)
+        } else {
+            Some(self.timer.frame(&mut self.renderer, &self.gpu_scene, &view.target, program))
+        };
         self.boundary.draw(&self.renderer, &view.target, &self.scene);
         self.creases.draw(&self.renderer, &view.target, &self.scene);
         self.normals.draw(&self.renderer, &view.target, &self.scene);

@@ -3,7 +3,8 @@
 // specular, the Lambert rule or the four-term sum (models.wgsl); the f64 twin of `shade` is
 // crates/shadelab-model/src/lighting/shading.rs.
 // Flat: lit once per face at its centroid (cs_flat), the face's colour read by each of its
-// corners. Gouraud: lit at the vertices, colour interpolated.
+// corners. Gouraud: lit once per vertex (cs_gouraud), the colour read by the vertex stage and
+// interpolated.
 // Phong: normals interpolated, renormalized, lit per pixel.
 
 // Each pipeline's module holds only the effects its scene calls for: the `#if EFFECT_…` blocks
@@ -52,13 +53,16 @@ const NONFINITE_COLOR: vec3<f32> = vec3(1.0, 0.0, 1.0);
 @group(0) @binding(0) var<uniform> globals: Globals;
 @group(1) @binding(0) var<uniform> object: Object;
 
-// Flat shading's per-face pass (@group(3); binding 0 is the shadow pass's): cs_flat reads the
-// flat mesh's corners (FLAT_CORNER_FLOATS floats each, three per face) and writes one colour per
-// face; vs_flat reads that colour. Each dispatch binds one chunk of both.
+// The per-vertex modes' lighting passes (@group(3); binding 0 is the shadow pass's): a compute
+// pass lights each point once into `lit_colors_out` and the vertex stage reads `lit_colors`.
+// cs_flat reads the flat mesh's corners (FLAT_CORNER_FLOATS floats each, three per face) and
+// writes one colour per face; cs_gouraud reads the smooth vertices (SMOOTH_VERTEX_FLOATS floats
+// each) and writes one colour per vertex. Each dispatch binds one chunk of input and output.
 const FLAT_CORNER_FLOATS: u32 = 9u;
-@group(3) @binding(1) var<storage, read> flat_corners: array<f32>;
-@group(3) @binding(2) var<storage, read_write> face_colors_out: array<vec4<f32>>;
-@group(3) @binding(3) var<storage, read> face_colors: array<vec4<f32>>;
+const SMOOTH_VERTEX_FLOATS: u32 = 6u;
+@group(3) @binding(1) var<storage, read> lit_points: array<f32>;
+@group(3) @binding(2) var<storage, read_write> lit_colors_out: array<vec4<f32>>;
+@group(3) @binding(3) var<storage, read> lit_colors: array<vec4<f32>>;
 
 // The illumination model at world point `p` with (not necessarily unit) normal `n_in`; `pixel`
 // seeds the shadow filter's per-pixel rotation (read only with cast shadows). The Lambert rule's
@@ -168,21 +172,21 @@ struct PhongOut {
 @compute @workgroup_size(64)
 fn cs_flat(@builtin(global_invocation_id) gid: vec3<u32>) {
     let face = gid.x;
-    if (face >= arrayLength(&face_colors_out)) {
+    if (face >= arrayLength(&lit_colors_out)) {
         return;
     }
     let at = face * 3u * FLAT_CORNER_FLOATS;
-    let normal = vec3(flat_corners[at + 3u], flat_corners[at + 4u], flat_corners[at + 5u]);
-    let centroid = vec3(flat_corners[at + 6u], flat_corners[at + 7u], flat_corners[at + 8u]);
+    let normal = vec3(lit_points[at + 3u], lit_points[at + 4u], lit_points[at + 5u]);
+    let centroid = vec3(lit_points[at + 6u], lit_points[at + 7u], lit_points[at + 8u]);
     let c = to_world(centroid);
-    face_colors_out[face] = vec4(shade(c, normal_to_world(normal), vertex_seed(c)), 1.0);
+    lit_colors_out[face] = vec4(shade(c, normal_to_world(normal), vertex_seed(c)), 1.0);
 }
 
 @vertex
 fn vs_flat(in: FlatIn, @builtin(vertex_index) corner: u32) -> FlatOut {
     var out: FlatOut;
     out.clip = globals.view_proj * vec4(to_world(in.position), 1.0);
-    out.color = face_colors[corner / 3u].rgb;
+    out.color = lit_colors[corner / 3u].rgb;
     return out;
 }
 
@@ -191,18 +195,33 @@ fn fs_flat(in: FlatOut) -> @location(0) vec4<f32> {
     return finish(in.color);
 }
 
-// Gouraud's vertex stage, shared by its two interpolations.
-fn gouraud_vertex(in: SmoothIn) -> ColorOut {
+// One invocation per smooth vertex: the model at the vertex, the only evaluation Gouraud shading
+// makes. (A compute pass, not the vertex stage: llvmpipe runs vertex stages on one thread and
+// compute on all of its threads.)
+@compute @workgroup_size(64)
+fn cs_gouraud(@builtin(global_invocation_id) gid: vec3<u32>) {
+    let v = gid.x;
+    if (v >= arrayLength(&lit_colors_out)) {
+        return;
+    }
+    let at = v * SMOOTH_VERTEX_FLOATS;
+    let position = vec3(lit_points[at], lit_points[at + 1u], lit_points[at + 2u]);
+    let normal = vec3(lit_points[at + 3u], lit_points[at + 4u], lit_points[at + 5u]);
+    let p = to_world(position);
+    lit_colors_out[v] = vec4(shade(p, normal_to_world(normal), vertex_seed(p)), 1.0);
+}
+
+// Gouraud's vertex stage, shared by its two interpolations: the vertex's colour from cs_gouraud.
+fn gouraud_vertex(in: SmoothIn, vertex: u32) -> ColorOut {
     var out: ColorOut;
-    let p = to_world(in.position);
-    out.clip = globals.view_proj * vec4(p, 1.0);
-    out.color = shade(p, normal_to_world(in.normal), vertex_seed(p));
+    out.clip = globals.view_proj * vec4(to_world(in.position), 1.0);
+    out.color = lit_colors[vertex].rgb;
     return out;
 }
 
 @vertex
-fn vs_gouraud(in: SmoothIn) -> ColorOut {
-    return gouraud_vertex(in);
+fn vs_gouraud(in: SmoothIn, @builtin(vertex_index) vertex: u32) -> ColorOut {
+    return gouraud_vertex(in, vertex);
 }
 
 @fragment
@@ -254,8 +273,8 @@ fn screen_or_perspective(screen: vec3<f32>, perspective: vec3<f32>) -> vec3<f32>
 }
 
 @vertex
-fn vs_gouraud_screen(in: SmoothIn) -> ColorScreenOut {
-    let g = gouraud_vertex(in);
+fn vs_gouraud_screen(in: SmoothIn, @builtin(vertex_index) vertex: u32) -> ColorScreenOut {
+    let g = gouraud_vertex(in, vertex);
     return ColorScreenOut(g.clip, g.color, g.color);
 }
 

@@ -58,10 +58,11 @@ impl Renderer {
             .then(|| self.encode_shadow_passes(encoder, gpu_scene, timestamps));
         let mut begun = shadows.as_ref().is_some_and(|s| s.1);
         let flat = key.program.draws_flat_mesh();
-        if flat {
-            // The per-face pass is part of flat shading's cost: the first timestamp opens it.
+        let lit_pass = key.program.lighting_pass();
+        if let Some(entry) = lit_pass {
+            // The lighting pass is part of the mode's cost: the first timestamp opens it.
             let start = timestamps.filter(|_| !begun);
-            self.encode_flat_faces(encoder, gpu_scene, key.program, shadows.as_ref().map(|s| &s.0), start);
+            self.encode_lighting_pass(encoder, gpu_scene, key.program, entry, shadows.as_ref().map(|s| &s.0), start);
             begun |= start.is_some();
         }
         let pipeline = self.pipelines.pipeline(key);
@@ -100,6 +101,10 @@ impl Renderer {
                 pass.set_vertex_buffer(0, mesh.flat.slice(..));
                 pass.draw(0..mesh.flat_count, 0..1);
             } else {
+                if lit_pass.is_some() {
+                    let Some(vertices) = &gpu_scene.gouraud_vertices[i] else { continue };
+                    pass.set_bind_group(3, &vertices.colors_bind, &[]);
+                }
                 pass.set_vertex_buffer(0, mesh.smooth.slice(..));
                 pass.set_index_buffer(mesh.indices.slice(..), wgpu::IndexFormat::Uint32);
                 pass.draw_indexed(0..mesh.index_count, 0, 0..1);
@@ -107,19 +112,22 @@ impl Renderer {
         }
     }
 
-    /// Flat shading's per-face pass: each object's faces shaded once into its mesh's colours
-    /// (`flat_pass.rs`), with the uniforms last written and, with cast shadows, the maps.
-    fn encode_flat_faces(
+    /// The lighting pass `entry` of flat or Gouraud shading: each object's faces or vertices lit
+    /// once into its colours (`lighting_pass.rs`), with the uniforms last written and, with cast
+    /// shadows, the maps.
+    #[allow(clippy::too_many_arguments)]
+    fn encode_lighting_pass(
         &mut self,
         encoder: &mut wgpu::CommandEncoder,
         gpu_scene: &SceneGpu,
         program: Program,
+        entry: &'static str,
         maps: Option<&wgpu::BindGroup>,
         start: Option<(&wgpu::QuerySet, u32)>,
     ) {
-        let pipeline = self.pipelines.flat_pipeline(program.effects());
+        let pipeline = self.pipelines.lighting_pipeline(program.effects(), entry);
         let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
-            label: Some("shadelab flat faces"),
+            label: Some(entry),
             timestamp_writes: start.map(|(qs, i)| wgpu::ComputePassTimestampWrites {
                 query_set: qs,
                 beginning_of_pass_write_index: Some(i),
@@ -131,12 +139,13 @@ impl Renderer {
         if let Some(maps) = maps {
             pass.set_bind_group(2, maps, &[]);
         }
-        for (i, faces) in gpu_scene.flat_faces.iter().enumerate() {
+        let per_object = if program.draws_flat_mesh() { &gpu_scene.flat_faces } else { &gpu_scene.gouraud_vertices };
+        for (i, faces) in per_object.iter().enumerate() {
             let Some(faces) = faces else { continue };
             pass.set_bind_group(1, &gpu_scene.objects_bind, &[(i as u64 * gpu_scene.object_stride) as u32]);
             for (bind, n) in &faces.chunks {
                 pass.set_bind_group(3, bind, &[]);
-                pass.dispatch_workgroups(n.div_ceil(crate::flat_pass::FLAT_WORKGROUP), 1, 1);
+                pass.dispatch_workgroups(n.div_ceil(crate::lighting_pass::LIT_WORKGROUP), 1, 1);
             }
         }
     }

@@ -2,10 +2,10 @@
 //! pipeline per permutation (cached), capture to a linear float image, GPU timing. Knows nothing
 //! of egui.
 
-pub mod flat_pass;
 pub mod frame;
 pub mod gpu;
 pub mod image_error;
+pub mod lighting_pass;
 pub mod overlay_pass;
 pub mod pipelines;
 pub mod program;

@@ -28,12 +28,12 @@ pub struct Layouts {
     pub lit: wgpu::PipelineLayout,
     /// Globals, object and the shadow maps: programs with cast shadows.
     pub lit_shadows: wgpu::PipelineLayout,
-    /// The flat pipelines: also the face colours (group 3).
-    pub lit_flat: wgpu::PipelineLayout,
-    pub lit_shadows_flat: wgpu::PipelineLayout,
-    /// Flat shading's per-face pass, without and with the shadow maps.
-    pub flat_pass: wgpu::PipelineLayout,
-    pub flat_pass_shadows: wgpu::PipelineLayout,
+    /// The flat and Gouraud pipelines: also the lit colours (group 3).
+    pub lit_vertex: wgpu::PipelineLayout,
+    pub lit_shadows_vertex: wgpu::PipelineLayout,
+    /// The lighting passes, without and with the shadow maps.
+    pub lighting_pass: wgpu::PipelineLayout,
+    pub lighting_pass_shadows: wgpu::PipelineLayout,
     /// The shadow pass: object (group 1) and the layers' matrices (group 3).
     pub shadow_pass: wgpu::PipelineLayout,
 }
@@ -42,11 +42,11 @@ impl Layouts {
     /// The layout a program's pipeline uses: three bind groups with cast shadows, two without.
     pub fn for_program(&self, program: Program) -> &wgpu::PipelineLayout {
         let shadows = program.effects().has(Effect::CastShadows);
-        match (program.draws_flat_mesh(), shadows) {
+        match (program.lighting_pass().is_some(), shadows) {
             (false, false) => &self.lit,
             (false, true) => &self.lit_shadows,
-            (true, false) => &self.lit_flat,
-            (true, true) => &self.lit_shadows_flat,
+            (true, false) => &self.lit_vertex,
+            (true, true) => &self.lit_shadows_vertex,
         }
     }
 }
@@ -66,8 +66,8 @@ pub struct PipelineCache {
     layouts: Layouts,
     /// The shadow pass's depth-only pipeline, built on first use.
     shadow_pipeline: Option<wgpu::RenderPipeline>,
-    /// Flat shading's per-face compute pipelines, by effect set, built on first use.
-    flat_pipelines: HashMap<EffectKey, wgpu::ComputePipeline>,
+    /// The lighting passes' compute pipelines, by effect set and entry point, built on first use.
+    lighting_pipelines: HashMap<(EffectKey, &'static str), wgpu::ComputePipeline>,
     pipelines: HashMap<PipelineKey, wgpu::RenderPipeline>,
     pending: HashMap<PipelineKey, PendingBuild>,
     /// Build missing pipelines on a worker thread and draw with the uber pipeline meanwhile
@@ -88,7 +88,7 @@ impl PipelineCache {
             modules: HashMap::new(),
             layouts,
             shadow_pipeline: None,
-            flat_pipelines: HashMap::new(),
+            lighting_pipelines: HashMap::new(),
             pipelines: HashMap::new(),
             pending: HashMap::new(),
             build_in_background: false,
@@ -106,7 +106,7 @@ impl PipelineCache {
         self.modules.clear();
         self.pipelines.clear();
         self.shadow_pipeline = None;
-        self.flat_pipelines.clear();
+        self.lighting_pipelines.clear();
         self.pending.clear();
         Ok(())
     }
@@ -154,24 +154,20 @@ impl PipelineCache {
         self.shadow_pipeline.as_ref().expect("built above")
     }
 
-    /// The per-face compute pipeline of flat shading for an effect set, built on first use.
-    pub fn flat_pipeline(&mut self, effects: EffectKey) -> &wgpu::ComputePipeline {
-        if !self.flat_pipelines.contains_key(&effects) {
+    /// The lighting pass `entry` (`cs_flat`, `cs_gouraud`) for an effect set, built on first use.
+    pub fn lighting_pipeline(&mut self, effects: EffectKey, entry: &'static str) -> &wgpu::ComputePipeline {
+        if !self.lighting_pipelines.contains_key(&(effects, entry)) {
             let module = self.module(effects);
             let layout = if effects.has(Effect::CastShadows) {
-                &self.layouts.flat_pass_shadows
+                &self.layouts.lighting_pass_shadows
             } else {
-                &self.layouts.flat_pass
+                &self.layouts.lighting_pass
             };
-            let p = crate::flat_pass::build_pipeline(
-                &self.device,
-                layout,
-                &module,
-                &format!("flat faces [{}]", effects.label()),
-            );
-            self.flat_pipelines.insert(effects, p);
+            let label = format!("{entry} [{}]", effects.label());
+            let p = crate::lighting_pass::build_pipeline(&self.device, layout, &module, entry, &label);
+            self.lighting_pipelines.insert((effects, entry), p);
         }
-        &self.flat_pipelines[&effects]
+        &self.lighting_pipelines[&(effects, entry)]
     }
 
     /// Move pipelines finished on worker threads into the cache.

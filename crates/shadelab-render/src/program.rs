@@ -92,6 +92,15 @@ impl Program {
         }
     }
 
+    /// The entry point of the compute pass that lights its points before the scene pass
+    /// (flat and Gouraud shading, `lighting_pass.rs`); `None` for Phong shading and the baseline.
+    pub fn lighting_pass(self) -> Option<&'static str> {
+        match self {
+            Program::Lit { shading, .. } => crate::lighting_pass::entry_point(shading),
+            Program::NullBaseline => None,
+        }
+    }
+
     /// Whether it draws the flat (unindexed, per-face) mesh rather than the smooth one.
     pub fn draws_flat_mesh(self) -> bool {
         matches!(self, Program::Lit { shading: ShadingMode::Flat, .. })

@@ -15,7 +15,7 @@ pub struct Renderer {
     pub(crate) shadow_layout: wgpu::BindGroupLayout,
     /// @group(3) of the shadow pass: `ShadowCasters`.
     pub(crate) casters_layout: wgpu::BindGroupLayout,
-    /// @group(3) of flat shading's per-face pass and of the flat pipeline (`flat_pass.rs`).
+    /// @group(3) of the lighting passes and of the flat and Gouraud pipelines (`lighting_pass.rs`).
     pub(crate) flat_compute_layout: wgpu::BindGroupLayout,
     pub(crate) flat_colors_layout: wgpu::BindGroupLayout,
     /// Comparison samplers of the maps: bilinear 2×2 (Pcf, Poisson) and nearest (Hard).
@@ -50,8 +50,8 @@ impl Renderer {
         });
         let shadow_layout = crate::shadow_pass::maps_layout(device);
         let casters_layout = crate::shadow_pass::casters_layout(device);
-        let flat_compute_layout = crate::flat_pass::compute_layout(device);
-        let flat_colors_layout = crate::flat_pass::colors_layout(device);
+        let flat_compute_layout = crate::lighting_pass::compute_layout(device);
+        let flat_colors_layout = crate::lighting_pass::colors_layout(device);
         let layout = |label: &str, groups: &[Option<&wgpu::BindGroupLayout>]| {
             device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
                 label: Some(label),
@@ -65,19 +65,19 @@ impl Renderer {
                 "shadelab shadows",
                 &[Some(&globals_layout), Some(&object_layout), Some(&shadow_layout)],
             ),
-            lit_flat: layout(
+            lit_vertex: layout(
                 "shadelab flat",
                 &[Some(&globals_layout), Some(&object_layout), None, Some(&flat_colors_layout)],
             ),
-            lit_shadows_flat: layout(
+            lit_shadows_vertex: layout(
                 "shadelab flat shadows",
                 &[Some(&globals_layout), Some(&object_layout), Some(&shadow_layout), Some(&flat_colors_layout)],
             ),
-            flat_pass: layout(
+            lighting_pass: layout(
                 "shadelab flat faces",
                 &[Some(&globals_layout), Some(&object_layout), None, Some(&flat_compute_layout)],
             ),
-            flat_pass_shadows: layout(
+            lighting_pass_shadows: layout(
                 "shadelab flat faces shadows",
                 &[Some(&globals_layout), Some(&object_layout), Some(&shadow_layout), Some(&flat_compute_layout)],
             ),

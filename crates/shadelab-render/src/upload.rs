@@ -10,6 +10,7 @@ use std::collections::HashMap;
 /// A shape's meshes on the GPU.
 pub struct MeshGpu {
     pub smooth: wgpu::Buffer,
+    pub smooth_count: u32,
     pub indices: wgpu::Buffer,
     pub index_count: u32,
     pub flat: wgpu::Buffer,
@@ -22,8 +23,10 @@ pub struct SceneGpu {
     pub(crate) meshes: HashMap<(Shape, u32), MeshGpu>,
     /// Each object's mesh, in the scene's object order.
     pub(crate) objects: Vec<(Shape, u32)>,
-    /// Each object's flat-shading face colours (`flat_pass.rs`); `None` for an empty mesh.
-    pub(crate) flat_faces: Vec<Option<crate::flat_pass::FlatFaces>>,
+    /// Each object's colours of the lighting passes (`lighting_pass.rs`), flat shading's per
+    /// face and Gouraud's per vertex; `None` for an empty mesh.
+    pub(crate) flat_faces: Vec<Option<crate::lighting_pass::LitColors>>,
+    pub(crate) gouraud_vertices: Vec<Option<crate::lighting_pass::LitColors>>,
     pub(crate) globals: wgpu::Buffer,
     pub(crate) globals_bind: wgpu::BindGroup,
     pub(crate) objects_buf: wgpu::Buffer,
@@ -94,15 +97,20 @@ impl Renderer {
             }
             objects.push(k);
         }
-        // Flat shading's face colours, per object: objects share meshes, not their colours.
+        // The lighting passes' colours, per object: objects share meshes, not their colours.
+        use crate::lighting_pass::{FACE_BYTES, LitColors, VERTEX_BYTES};
         let layouts = (&self.flat_compute_layout, &self.flat_colors_layout);
-        let flat_faces = objects
-            .iter()
-            .map(|k| {
-                let m: &MeshGpu = &meshes[k];
-                crate::flat_pass::FlatFaces::new(device, layouts, &m.flat, m.flat_count as u64 / 3)
-            })
-            .collect();
+        let colors = |input: fn(&MeshGpu) -> (&wgpu::Buffer, u64), bytes| -> Vec<Option<LitColors>> {
+            objects
+                .iter()
+                .map(|k| {
+                    let (buffer, count) = input(&meshes[k]);
+                    LitColors::new(device, layouts, buffer, count, bytes)
+                })
+                .collect()
+        };
+        let flat_faces = colors(|m| (&m.flat, m.flat_count as u64 / 3), FACE_BYTES);
+        let gouraud_vertices = colors(|m| (&m.smooth, m.smooth_count as u64), VERTEX_BYTES);
         let triangle_count = scene.triangle_count();
         let globals = device.create_buffer(&wgpu::BufferDescriptor {
             label: Some("globals"),
@@ -139,6 +147,7 @@ impl Renderer {
             meshes,
             objects,
             flat_faces,
+            gouraud_vertices,
             globals,
             globals_bind,
             objects_buf,
@@ -184,10 +193,19 @@ impl MeshGpu {
         }
         let vertex = wgpu::BufferUsages::VERTEX;
         Ok(MeshGpu {
-            smooth: buffer_from_pieces(device, queue, "smooth vertices", vertex, counts[0], smooth),
+            // Also read as storage by the per-vertex pass (lighting_pass.rs).
+            smooth: buffer_from_pieces(
+                device,
+                queue,
+                "smooth vertices",
+                vertex | wgpu::BufferUsages::STORAGE,
+                counts[0],
+                smooth,
+            ),
+            smooth_count: counts[0] as u32,
             indices: buffer_from_pieces(device, queue, "indices", wgpu::BufferUsages::INDEX, counts[1], indices),
             index_count: counts[1] as u32,
-            // Also read as storage by the per-face pass (flat_pass.rs).
+            // Also read as storage by the per-face pass (lighting_pass.rs).
             flat: buffer_from_pieces(
                 device,
                 queue,

@@ -35,7 +35,7 @@ impl SmoothVertex {
 
 impl FlatVertex {
     /// Its vertex buffer layout: location 0, the position (the normal and the centroid are read
-    /// by the per-face pass, `flat_pass.rs`, as storage).
+    /// by the per-face pass, `lighting_pass.rs`, as storage).
     pub const LAYOUT: wgpu::VertexBufferLayout<'static> = wgpu::VertexBufferLayout {
         array_stride: size_of::<FlatVertex>() as u64,
         step_mode: wgpu::VertexStepMode::Vertex,

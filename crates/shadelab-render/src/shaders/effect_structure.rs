@@ -159,12 +159,11 @@ fn a_permutation_without_an_effect_has_no_code_for_it() {
             let module = parse(&src);
             let info = validate(&module);
             for shading in ShadingMode::ALL_MODES {
-                let (vs, fs) = entry_points(shading);
-                // Flat lights in its per-face compute pass, Gouraud in the vertex stage, Phong
-                // in the fragment stage.
+                let (_, fs) = entry_points(shading);
+                // Flat and Gouraud light in their compute passes, Phong in the fragment stage.
                 let ep = match shading {
-                    ShadingMode::Flat => crate::flat_pass::FLAT_ENTRY_POINT,
-                    ShadingMode::Gouraud => vs,
+                    ShadingMode::Flat => crate::lighting_pass::FLAT_ENTRY_POINT,
+                    ShadingMode::Gouraud => crate::lighting_pass::GOURAUD_ENTRY_POINT,
                     ShadingMode::Phong => fs,
                 };
                 let called: Vec<String> =
@@ -218,17 +217,22 @@ fn a_permutation_without_cast_shadows_has_no_shadow_bindings() {
     }
 }
 
-/// Flat shading evaluates the model once per face: its per-face pass reaches `shade`, and its
-/// vertex and fragment stages do not (they read the face's colour).
+/// Flat and Gouraud shading evaluate the model in their lighting passes only: `cs_flat` and
+/// `cs_gouraud` reach `shade`, their vertex and fragment stages (both interpolations) do not.
 #[test]
-fn flat_shading_shades_in_its_per_face_pass_only() {
+fn per_vertex_modes_shade_in_their_lighting_passes_only() {
+    use crate::lighting_pass::{FLAT_ENTRY_POINT, GOURAUD_ENTRY_POINT};
     let module = parse(&lighting_source_for(&raw_lighting_source(), EffectKey::UBER).unwrap());
     let calls = |ep: &str| -> bool {
         reachable(&module, ep).into_iter().any(|f| module.functions[f].name.as_deref() == Some("shade"))
     };
-    let (vs, fs) = entry_points(ShadingMode::Flat);
-    assert!(calls(crate::flat_pass::FLAT_ENTRY_POINT));
-    assert!(!calls(vs) && !calls(fs), "{vs} or {fs} shades");
-    let (gouraud, _) = entry_points(ShadingMode::Gouraud);
-    assert!(calls(gouraud), "the check can fail: Gouraud shades in its vertex stage");
+    assert!(calls(FLAT_ENTRY_POINT) && calls(GOURAUD_ENTRY_POINT));
+    for shading in [ShadingMode::Flat, ShadingMode::Gouraud] {
+        for interpolation in [shadelab_model::Interpolation::Perspective, shadelab_model::Interpolation::Screen] {
+            let (vs, fs) = crate::shaders::entry_points_with(shading, interpolation);
+            assert!(!calls(vs) && !calls(fs), "{vs} or {fs} shades");
+        }
+    }
+    let (_, phong) = entry_points(ShadingMode::Phong);
+    assert!(calls(phong), "the check can fail: Phong shading shades in its fragment stage");
 }

@@ -59,10 +59,13 @@ impl Renderer {
         let mut begun = shadows.as_ref().is_some_and(|s| s.1);
         let flat = key.program.draws_flat_mesh();
         let lit_pass = key.program.lighting_pass();
-        if let Some(entry) = lit_pass {
+        let layouts = (&self.flat_compute_layout, &self.flat_colors_layout);
+        let lit_colors = lit_pass.map(|_| gpu_scene.lit_colors(&self.device, layouts, flat));
+        if let (Some(entry), Some(colors)) = (lit_pass, lit_colors) {
             // The lighting pass is part of the mode's cost: the first timestamp opens it.
             let start = timestamps.filter(|_| !begun);
-            self.encode_lighting_pass(encoder, gpu_scene, key.program, entry, shadows.as_ref().map(|s| &s.0), start);
+            let maps = shadows.as_ref().map(|s| &s.0);
+            self.encode_lighting_pass(encoder, gpu_scene, key.program, entry, colors, maps, start);
             begun |= start.is_some();
         }
         let pipeline = self.pipelines.pipeline(key);
@@ -95,16 +98,15 @@ impl Renderer {
         for (i, k) in gpu_scene.objects.iter().enumerate() {
             let mesh = &gpu_scene.meshes[k];
             pass.set_bind_group(1, &gpu_scene.objects_bind, &[(i as u64 * gpu_scene.object_stride) as u32]);
+            if let Some(colors) = lit_colors {
+                // An empty mesh has no colours and nothing to draw.
+                let Some(c) = &colors[i] else { continue };
+                pass.set_bind_group(3, &c.colors_bind, &[]);
+            }
             if flat {
-                let Some(faces) = &gpu_scene.flat_faces[i] else { continue };
-                pass.set_bind_group(3, &faces.colors_bind, &[]);
                 pass.set_vertex_buffer(0, mesh.flat.slice(..));
                 pass.draw(0..mesh.flat_count, 0..1);
             } else {
-                if lit_pass.is_some() {
-                    let Some(vertices) = &gpu_scene.gouraud_vertices[i] else { continue };
-                    pass.set_bind_group(3, &vertices.colors_bind, &[]);
-                }
                 pass.set_vertex_buffer(0, mesh.smooth.slice(..));
                 pass.set_index_buffer(mesh.indices.slice(..), wgpu::IndexFormat::Uint32);
                 pass.draw_indexed(0..mesh.index_count, 0, 0..1);
@@ -122,6 +124,7 @@ impl Renderer {
         gpu_scene: &SceneGpu,
         program: Program,
         entry: &'static str,
+        per_object: &[Option<crate::lighting_pass::LitColors>],
         maps: Option<&wgpu::BindGroup>,
         start: Option<(&wgpu::QuerySet, u32)>,
     ) {
@@ -139,7 +142,6 @@ impl Renderer {
         if let Some(maps) = maps {
             pass.set_bind_group(2, maps, &[]);
         }
-        let per_object = if program.draws_flat_mesh() { &gpu_scene.flat_faces } else { &gpu_scene.gouraud_vertices };
         for (i, faces) in per_object.iter().enumerate() {
             let Some(faces) = faces else { continue };
             pass.set_bind_group(1, &gpu_scene.objects_bind, &[(i as u64 * gpu_scene.object_stride) as u32]);

@@ -54,11 +54,28 @@ pub fn render_shadow_factor(
     (width, height): (u32, u32),
     settings: &RenderSettings,
 ) -> Result<LinearImage, UploadError> {
-    let shadowed = render_image(gpu, scene, width, height, settings)?;
+    let mut r = Renderer::new(&gpu.device, &gpu.queue);
+    let gs = r.upload(scene)?;
+    let target = Target::new(&gpu.device, width, height, target::HDR_FORMAT);
+    Ok(shadow_factor_with(&mut r, &gs, scene, &target, settings))
+}
+
+/// The cast-shadow factor of `scene` drawn by `r` into `target` (an HDR target), the scene
+/// already uploaded as `gs`: the frame with its shadows and without, read back and divided.
+pub fn shadow_factor_with(
+    r: &mut Renderer,
+    gs: &SceneGpu,
+    scene: &shadelab_model::Scene,
+    target: &Target,
+    settings: &RenderSettings,
+) -> LinearImage {
+    r.render(gs, scene, target, settings);
+    let shadowed = target::read_back(&r.device, &r.queue, target);
     let mut off = scene.clone();
     off.set_shadows(false);
-    let unshadowed = render_image(gpu, &off, width, height, settings)?;
-    Ok(shadow_factor_image(&shadowed, &unshadowed))
+    r.render(gs, &off, target, settings);
+    let unshadowed = target::read_back(&r.device, &r.queue, target);
+    shadow_factor_image(&shadowed, &unshadowed)
 }
 
 /// The cast-shadow factor per pixel of two renders of the same frame, with cast shadows and

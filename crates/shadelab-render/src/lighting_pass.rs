@@ -80,8 +80,8 @@ pub fn chunk_points(limits: &wgpu::Limits, item_bytes: u64) -> u64 {
 }
 
 /// One object's colours of one pass and the bind groups that reach them.
+/// (The bind groups hold the colour buffer.)
 pub struct LitColors {
-    pub(crate) colors: wgpu::Buffer,
     /// Per chunk: the compute bind group and its point count.
     pub(crate) chunks: Vec<(wgpu::BindGroup, u32)>,
     /// The vertex stage's bind group (all the colours).
@@ -135,12 +135,7 @@ impl LitColors {
             layout: layouts.1,
             entries: &[wgpu::BindGroupEntry { binding: 3, resource: colors.as_entire_binding() }],
         });
-        Some(LitColors { colors, chunks, colors_bind })
-    }
-
-    /// Bytes of GPU memory the colours take.
-    pub fn bytes(&self) -> u64 {
-        self.colors.size()
+        Some(LitColors { chunks, colors_bind })
     }
 }
 

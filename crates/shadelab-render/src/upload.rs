@@ -24,9 +24,10 @@ pub struct SceneGpu {
     /// Each object's mesh, in the scene's object order.
     pub(crate) objects: Vec<(Shape, u32)>,
     /// Each object's colours of the lighting passes (`lighting_pass.rs`), flat shading's per
-    /// face and Gouraud's per vertex; `None` for an empty mesh.
-    pub(crate) flat_faces: Vec<Option<crate::lighting_pass::LitColors>>,
-    pub(crate) gouraud_vertices: Vec<Option<crate::lighting_pass::LitColors>>,
+    /// face and Gouraud's per vertex (`None` for an empty mesh), made by the first frame that
+    /// needs them: a scene drawn only with Phong shading never holds them.
+    flat_faces: std::sync::OnceLock<Vec<Option<crate::lighting_pass::LitColors>>>,
+    gouraud_vertices: std::sync::OnceLock<Vec<Option<crate::lighting_pass::LitColors>>>,
     pub(crate) globals: wgpu::Buffer,
     pub(crate) globals_bind: wgpu::BindGroup,
     pub(crate) objects_buf: wgpu::Buffer,
@@ -38,6 +39,34 @@ pub struct SceneGpu {
     /// The shadow maps, made by the first frame whose program has cast shadows
     /// (`shadow_pass.rs`); behind a lock because frames are written through `&SceneGpu`.
     pub(crate) shadows: std::sync::Mutex<Option<crate::shadow_pass::ShadowMaps>>,
+}
+
+impl SceneGpu {
+    /// The lighting pass's colours per object, flat shading's (`flat`) or Gouraud's, made on first
+    /// use: objects share meshes, not their colours.
+    pub(crate) fn lit_colors(
+        &self,
+        device: &wgpu::Device,
+        layouts: (&wgpu::BindGroupLayout, &wgpu::BindGroupLayout),
+        flat: bool,
+    ) -> &[Option<crate::lighting_pass::LitColors>] {
+        use crate::lighting_pass::{FACE_BYTES, LitColors, VERTEX_BYTES};
+        let cell = if flat { &self.flat_faces } else { &self.gouraud_vertices };
+        cell.get_or_init(|| {
+            self.objects
+                .iter()
+                .map(|k| {
+                    let m = &self.meshes[k];
+                    let (input, count, bytes) = if flat {
+                        (&m.flat, m.flat_count as u64 / 3, FACE_BYTES)
+                    } else {
+                        (&m.smooth, m.smooth_count as u64, VERTEX_BYTES)
+                    };
+                    LitColors::new(device, layouts, input, count, bytes)
+                })
+                .collect()
+        })
+    }
 }
 
 /// A scene the device cannot hold.
@@ -97,20 +126,6 @@ impl Renderer {
             }
             objects.push(k);
         }
-        // The lighting passes' colours, per object: objects share meshes, not their colours.
-        use crate::lighting_pass::{FACE_BYTES, LitColors, VERTEX_BYTES};
-        let layouts = (&self.flat_compute_layout, &self.flat_colors_layout);
-        let colors = |input: fn(&MeshGpu) -> (&wgpu::Buffer, u64), bytes| -> Vec<Option<LitColors>> {
-            objects
-                .iter()
-                .map(|k| {
-                    let (buffer, count) = input(&meshes[k]);
-                    LitColors::new(device, layouts, buffer, count, bytes)
-                })
-                .collect()
-        };
-        let flat_faces = colors(|m| (&m.flat, m.flat_count as u64 / 3), FACE_BYTES);
-        let gouraud_vertices = colors(|m| (&m.smooth, m.smooth_count as u64), VERTEX_BYTES);
         let triangle_count = scene.triangle_count();
         let globals = device.create_buffer(&wgpu::BufferDescriptor {
             label: Some("globals"),
@@ -146,8 +161,8 @@ impl Renderer {
         Ok(SceneGpu {
             meshes,
             objects,
-            flat_faces,
-            gouraud_vertices,
+            flat_faces: Default::default(),
+            gouraud_vertices: Default::default(),
             globals,
             globals_bind,
             objects_buf,

@@ -154,14 +154,7 @@ fn figures_writes_each_figure_and_the_commands_that_remake_it() {
 #[test]
 fn render_model_draws_each_of_the_four_models() {
     let dir = out_dir();
-    let render = |name: &str, extra: &[&str]| {
-        let path = dir.join(format!("model-{name}.exr"));
-        let mut args = vec!["render", "--width", "64", "--height", "36", "--output", path.to_str().unwrap()];
-        args.extend_from_slice(extra);
-        let o = shadelab(&args);
-        assert!(o.status.success(), "{name}: {}", String::from_utf8_lossy(&o.stderr));
-        image::open(&path).unwrap().to_rgba32f()
-    };
+    let render = |name: &str, extra: &[&str]| render_exr(&dir.join(format!("model-{name}.exr")), (64, 36), extra);
     let models = ["lambert", "sum", "phong", "cook-torrance"];
     let images: Vec<_> = models.iter().map(|m| render(m, &["--model", m])).collect();
     for i in 0..4 {
@@ -203,14 +196,7 @@ fn render_model_draws_each_of_the_four_models() {
 #[test]
 fn render_interpolation_screen_and_its_difference_map() {
     let dir = out_dir();
-    let exr = |name: &str, extra: &[&str]| {
-        let path = dir.join(format!("interp-{name}.exr"));
-        let mut args = vec!["render", "--width", "160", "--height", "90", "--output", path.to_str().unwrap()];
-        args.extend_from_slice(extra);
-        let o = shadelab(&args);
-        assert!(o.status.success(), "{name}: {}", String::from_utf8_lossy(&o.stderr));
-        image::open(&path).unwrap().to_rgba32f()
-    };
+    let exr = |name: &str, extra: &[&str]| render_exr(&dir.join(format!("interp-{name}.exr")), (160, 90), extra);
     for shading in ["gouraud", "phong"] {
         let screen = exr(&format!("{shading}-screen"), &["--shading", shading, "--interpolation", "screen"]);
         let perspective = exr(&format!("{shading}-perspective"), &["--shading", shading]);
@@ -311,6 +297,17 @@ fn render_reference_and_difference_give_each_term_its_reference() {
         let o = shadelab(&args);
         assert_eq!((o.status.code(), error_lines(&o).len()), (Some(2), 1), "{bad:?}: {:?}", error_lines(&o));
     }
+}
+
+/// `shadelab render` at `size` with `extra` flags into the EXR `path`, which it must write; read
+/// back as linear float.
+fn render_exr(path: &std::path::Path, size: (u32, u32), extra: &[&str]) -> image::Rgba32FImage {
+    let (w, h) = (size.0.to_string(), size.1.to_string());
+    let mut args = vec!["render", "--width", &w, "--height", &h, "--output", path.to_str().unwrap()];
+    args.extend_from_slice(extra);
+    let o = shadelab(&args);
+    assert!(o.status.success(), "{}: {}", path.display(), String::from_utf8_lossy(&o.stderr));
+    image::open(path).unwrap().to_rgba32f()
 }
 
 /// A glTF file of one triangle, its positions in a data URI.

@@ -126,10 +126,10 @@ pub fn analyze(scene: &Scene, specular: SpecularModel) -> Analysis {
         },
     );
     let max_rs = used.iter().map(|m| m.r_s).fold(0.0, f64::max);
-    let spec_reason = |model: SpecularModel| -> (bool, String) {
+    let spec_reason = |this: SpecularModel| -> (bool, String) {
         if !phong_model {
             (false, other_model.clone())
-        } else if specular != model {
+        } else if specular != this {
             (false, format!("the specular model is {specular}"))
         } else if !lit {
             (false, "no lights".into())

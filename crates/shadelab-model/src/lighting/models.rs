@@ -31,8 +31,10 @@ impl IlluminationModel {
     }
 }
 
+// Given in scene files only (`extras.shadelab.illumination`); the command line's `--model` takes
+// a `ModelChoice`.
 impl NamedValue for IlluminationModel {
-    const FLAG: &'static str = "--illumination";
+    const FLAG: &'static str = "illumination";
     const ALL: &'static [(&'static str, Self)] = &[
         ("phong", IlluminationModel::Phong),
         ("lambert", IlluminationModel::Lambert),

@@ -374,7 +374,7 @@ pub struct ModeArgs {
 impl ModeArgs {
     /// Each flag when given, else what the scene file records, else Phong shading with
     /// Cook–Torrance specular.
-    pub fn resolve(&self, file: SceneSettings) -> RenderSettings {
+    fn resolve(&self, file: SceneSettings) -> RenderSettings {
         let fixed = self.model.and_then(|m| m.split().1);
         RenderSettings {
             interpolation: self.interpolation,

@@ -1,6 +1,6 @@
 //! The viewer's shadow-factor view (`Term::Shadow`, V): the frame rendered with and without cast
 //! shadows at the difference view's size, their ratio per pixel as grey
-//! (`shadelab_render::shadow_factor_image`), shown in place of the frame. It is redrawn only when
+//! (`shadelab_render::shadow_factor_with`), shown in place of the frame. It is redrawn only when
 //! the scene, the mode or the size changes.
 
 use eframe::egui;
@@ -34,13 +34,7 @@ impl ShadowFactorView {
             return t.id();
         }
         let target = Target::new(&renderer.device, size.0, size.1, target::HDR_FORMAT);
-        renderer.render(gpu_scene, scene, &target, settings);
-        let shadowed = target::read_back(&renderer.device, &renderer.queue, &target);
-        let mut off = scene.clone();
-        off.set_shadows(false);
-        renderer.render(gpu_scene, &off, &target, settings);
-        let unshadowed = target::read_back(&renderer.device, &renderer.queue, &target);
-        let factor = shadelab_render::shadow_factor_image(&shadowed, &unshadowed);
+        let factor = shadelab_render::shadow_factor_with(renderer, gpu_scene, scene, &target, settings);
         let color = egui::ColorImage::from_rgb([size.0 as usize, size.1 as usize], &factor.to_srgb8());
         let texture = ctx.load_texture("cast-shadow factor", color, egui::TextureOptions::LINEAR);
         let id = texture.id();

@@ -147,9 +147,10 @@ case("child-out-of-range.gltf", "a node whose child does not exist", "node 0: ch
 case("stride-below-element.gltf", "byteStride 4 for 12-byte positions",
      "buffer view 0: byteStride 4 is less than the 12-byte elements",
      edited(lambda d: d["bufferViews"][0].update(byteStride=4)))
-case("sparse-accessor.gltf", "a sparse POSITION accessor", "accessor 0 is sparse (not supported)",
+case("sparse-accessor.gltf", "a sparse POSITION accessor whose 6 UNSIGNED_INT indices need more bytes than their view",
+     "accessor 0: sparse indices: 6 elements need 24 bytes from offset 0, buffer view 1 has 12",
      edited(lambda d: d["accessors"][0].update(sparse={
-         "count": 1, "indices": {"bufferView": 1, "componentType": 5123}, "values": {"bufferView": 0}})))
+         "count": 6, "indices": {"bufferView": 1, "componentType": 5125}, "values": {"bufferView": 0}})))
 case("indices-not-multiple-of-3.gltf", "5 indices for a triangle list", "5 indices is not a multiple of 3",
      embed(*base_parts(indices=[0, 1, 3, 0, 3])))
 case("normal-count-mismatch.gltf", "3 normals for 8 positions", "3 NORMALs for 8 POSITIONs",

@@ -102,6 +102,7 @@ pub fn figure_7_3_pyramid() -> Scene {
         camera: camera(DVec3::new(0.6, 2.4, 4.6), DVec3::new(0.0, 0.7, 0.0)),
         meshes: Vec::new(),
         illumination: Default::default(),
+        textures: Vec::new(),
     }
 }
 
@@ -152,6 +153,7 @@ pub fn gouraud_vs_phong() -> Scene {
         camera: camera(DVec3::new(0.0, 2.2, 4.6), DVec3::new(0.0, 0.8, 0.0)),
         meshes: Vec::new(),
         illumination: Default::default(),
+        textures: Vec::new(),
     }
 }
 
@@ -209,6 +211,8 @@ pub fn material_board() -> Scene {
             transmission,
             absorption,
             thickness: if transmission > 0.0 { 0.76 } else { 0.0 },
+            base_color_texture: None,
+            mu_tinted: [0.0; 3],
         };
         sphere(p.name.into(), mat, row_x(i, dielectrics.len()), 0.0);
     }
@@ -239,5 +243,6 @@ pub fn material_board() -> Scene {
         camera: camera(DVec3::new(0.0, 3.6, 4.4), DVec3::new(0.0, 0.2, 0.1)),
         meshes: Vec::new(),
         illumination: Default::default(),
+        textures: Vec::new(),
     }
 }

@@ -11,7 +11,7 @@ pub use shadow_rays::SHADOW_RAY_OFFSET_REL;
 
 use crate::lighting::shading::{shade, shade_with_visibility};
 use crate::params::SpecularModel;
-use crate::scene::{BACKGROUND, Scene};
+use crate::scene::{BACKGROUND, Material, Scene};
 use glam::DMat4;
 use intersect::trace;
 use shadow_rays::ShadowRays;
@@ -91,7 +91,15 @@ pub fn render_reference(scene: &Scene, specular: SpecularModel, width: u32, heig
                 continue;
             };
             let (p, n, eye) = (hit.point, hit.normal, scene.camera.eye);
-            let mat = &scene.materials[scene.objects[hit.object].material];
+            let material = &scene.materials[scene.objects[hit.object].material];
+            let owned;
+            let mat = if material.base_color_texture.is_some() || hit.vertex_color != [1.0; 3] {
+                let (color, mu) = material.surface_at(&scene.textures, hit.uv, hit.vertex_color);
+                owned = Material { color, mu, ..material.clone() };
+                &owned
+            } else {
+                material
+            };
             let mut hidden = 0u8;
             let lit = shade_with_visibility(
                 p,

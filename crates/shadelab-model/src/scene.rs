@@ -7,11 +7,13 @@
 mod builtin;
 mod camera;
 mod material;
+mod texture;
 
 pub use crate::lighting::lights::{LIGHT_STAND_OFF, Light, MAX_LIGHTS, SPOT_OUTER_CONE_DEFAULT};
 pub use builtin::{BUILTIN_SCENES, default_scene, single_shape_scene};
 pub use camera::{COMPOSED_ASPECT, Camera};
 pub use material::Material;
+pub use texture::{Filter, NONFINITE_UV, Sampler, Texture, TextureRef, UvTransform, Wrap, srgb_to_linear};
 
 use crate::params::*;
 use crate::shadows::{ShadowFilter, ShadowSettings};
@@ -98,6 +100,8 @@ pub struct Scene {
     pub meshes: Vec<crate::mesh::TriangleMesh>,
     /// The illumination model the scene is lit with (docs/model.md §3a).
     pub illumination: crate::params::IlluminationModel,
+    /// The materials' textures, indexed by `TextureRef::texture`.
+    pub textures: Vec<Texture>,
 }
 
 /// Background colour (linear RGB): dark enough for highlights to stand out, not black, so a blank

@@ -149,17 +149,7 @@ pub(super) fn load_buffers<'a>(
                 Cow::Borrowed(&bin[..declared as usize])
             }
             Some(uri) if uri.starts_with("data:") => {
-                let (head, payload) = uri.split_once(',').unwrap_or((uri, ""));
-                if !head.ends_with(";base64") {
-                    return Err(cx.invalid(format!("buffer {i}: only base64 data: URIs are read")));
-                }
-                let engine = base64::engine::GeneralPurpose::new(
-                    &base64::alphabet::STANDARD,
-                    base64::engine::GeneralPurposeConfig::new()
-                        .with_decode_padding_mode(base64::engine::DecodePaddingMode::Indifferent),
-                );
-                let mut data =
-                    engine.decode(payload).map_err(|e| cx.invalid(format!("buffer {i}: bad base64 data: {e}")))?;
+                let mut data = data_uri(cx, &format!("buffer {i}"), uri)?;
                 if declared > data.len() as u64 {
                     return Err(cx.invalid(format!(
                         "buffer {i}: byteLength {declared} but its data: URI holds {} bytes",
@@ -169,34 +159,62 @@ pub(super) fn load_buffers<'a>(
                 data.truncate(declared as usize);
                 Cow::Owned(data)
             }
-            Some(uri) => Cow::Owned(read_external(cx, i, uri, declared, base_dir)?),
+            Some(uri) => Cow::Owned(read_external(cx, &format!("buffer {i}"), uri, declared, base_dir)?),
         };
         out.push(data);
     }
     Ok(out)
 }
 
+/// The bytes of a base64 `data:` URI (buffers and images).
+pub(super) fn data_uri(cx: &Cx, what: &str, uri: &str) -> Result<Vec<u8>, GltfError> {
+    let (head, payload) = uri.split_once(',').unwrap_or((uri, ""));
+    if !head.ends_with(";base64") {
+        return Err(cx.invalid(format!("{what}: only base64 data: URIs are read")));
+    }
+    let engine = base64::engine::GeneralPurpose::new(
+        &base64::alphabet::STANDARD,
+        base64::engine::GeneralPurposeConfig::new()
+            .with_decode_padding_mode(base64::engine::DecodePaddingMode::Indifferent),
+    );
+    engine.decode(payload).map_err(|e| cx.invalid(format!("{what}: bad base64 data: {e}")))
+}
+
+/// A whole external file named by a relative URI (an image), refused when it is longer than
+/// `limit` bytes.
+pub(super) fn read_external_whole(
+    cx: &Cx,
+    what: &str,
+    uri: &str,
+    limit: u64,
+    base_dir: Option<&Path>,
+) -> Result<Vec<u8>, GltfError> {
+    let len = base_dir.and_then(|d| std::fs::metadata(d.join(percent_decode(uri))).ok()).map_or(0, |m| m.len());
+    if len > limit {
+        return Err(cx.too_large(format!("{what}: '{uri}' has {len} bytes, more than the limit of {limit}")));
+    }
+    read_external(cx, what, uri, len, base_dir)
+}
+
 /// An external buffer file: a relative path (percent-decoded), at least `declared` bytes long;
 /// only `declared` bytes are read.
-fn read_external(cx: &Cx, i: usize, uri: &str, declared: u64, base_dir: Option<&Path>) -> Result<Vec<u8>, GltfError> {
+fn read_external(cx: &Cx, what: &str, uri: &str, declared: u64, base_dir: Option<&Path>) -> Result<Vec<u8>, GltfError> {
     if uri.split(['/', '\\']).next().is_some_and(|first| first.contains(':')) {
-        return Err(cx.invalid(format!("buffer {i}: '{uri}' is neither a data: URI nor a relative file path")));
+        return Err(cx.invalid(format!("{what}: '{uri}' is neither a data: URI nor a relative file path")));
     }
     let Some(dir) = base_dir else {
-        return Err(cx.invalid(format!("buffer {i}: external file '{uri}' cannot be read from memory")));
+        return Err(cx.invalid(format!("{what}: external file '{uri}' cannot be read from memory")));
     };
     let path = dir.join(percent_decode(uri));
-    let file = std::fs::File::open(&path).map_err(|e| cx.invalid(format!("buffer {i}: cannot read '{uri}': {e}")))?;
+    let file = std::fs::File::open(&path).map_err(|e| cx.invalid(format!("{what}: cannot read '{uri}': {e}")))?;
     let len = file.metadata().map(|m| m.len()).unwrap_or(0);
     if len < declared {
-        return Err(cx.invalid(format!("buffer {i}: '{uri}' has {len} bytes, byteLength says {declared}")));
+        return Err(cx.invalid(format!("{what}: '{uri}' has {len} bytes, byteLength says {declared}")));
     }
     let mut data = Vec::with_capacity(declared as usize);
-    file.take(declared)
-        .read_to_end(&mut data)
-        .map_err(|e| cx.invalid(format!("buffer {i}: cannot read '{uri}': {e}")))?;
+    file.take(declared).read_to_end(&mut data).map_err(|e| cx.invalid(format!("{what}: cannot read '{uri}': {e}")))?;
     if (data.len() as u64) < declared {
-        return Err(cx.invalid(format!("buffer {i}: '{uri}' ended after {} bytes of {declared}", data.len())));
+        return Err(cx.invalid(format!("{what}: '{uri}' ended after {} bytes of {declared}", data.len())));
     }
     Ok(data)
 }
@@ -262,6 +280,16 @@ impl Writer {
         let offset = self.bin.len();
         self.bin.extend_from_slice(bytes);
         self.views.push(json!({ "buffer": 0, "byteOffset": offset, "byteLength": bytes.len(), "target": target }));
+        self.views.len() - 1
+    }
+
+    /// Append an image's bytes as a buffer view (no target), padded so that what follows stays
+    /// 4-byte aligned; returns the view's index.
+    pub(super) fn image_view(&mut self, bytes: &[u8]) -> usize {
+        let offset = self.bin.len();
+        self.bin.extend_from_slice(bytes);
+        self.bin.resize(self.bin.len().next_multiple_of(4), 0);
+        self.views.push(json!({ "buffer": 0, "byteOffset": offset, "byteLength": bytes.len() }));
         self.views.len() - 1
     }
 }

@@ -8,6 +8,7 @@ use super::{ATTENUATION_COLOR_MIN, DEFAULT_IOR, DIELECTRIC_MU_MAX, GltfError, di
 use crate::params::{ParamRange, PhongExponent};
 use crate::scene::{Material, Scene};
 use gltf::json;
+use gltf::json::validation::Checked;
 use serde::{Deserialize, Serialize};
 use serde_json::{Value, json};
 
@@ -45,19 +46,45 @@ struct MaterialExtras {
     a: Option<Rgb<Absorption>>,
     /// Thickness d.
     d: Option<Num<Thickness>>,
+    /// The part of μ the base colour sets (`Material::mu_tinted`).
+    mu_t: Option<Rgb<Mu>>,
 }
 
 impl Reader<'_> {
-    /// Every material of the file, in order (a base colour texture is a warning: only the factor
-    /// is used).
+    /// Every material of the file, in order, with its base colour texture; the textures and
+    /// properties not drawn yet are warned about.
     pub(super) fn materials(&mut self, scene: &mut Scene) -> Result<(), GltfError> {
-        let mut textured = 0;
-        for (i, m) in self.root.materials.iter().enumerate() {
-            textured += usize::from(m.pbr_metallic_roughness.base_color_texture.is_some());
-            scene.materials.push(self.material(i, m)?);
+        let root = self.root;
+        let mut unused: Vec<&str> = Vec::new();
+        for (i, m) in root.materials.iter().enumerate() {
+            let mut mat = self.material(i, m)?;
+            if let Some(info) = &m.pbr_metallic_roughness.base_color_texture {
+                mat.base_color_texture = self.texture_ref(scene, info, &format!("material {i}: baseColorTexture"))?;
+                if mat.base_color_texture.is_some() && m.pbr_metallic_roughness.metallic_factor.0 > 0.0 {
+                    self.cx.warn(format!("material {i}: the base colour texture tints C only, not a metal's μ"));
+                }
+            }
+            let pbr = &m.pbr_metallic_roughness;
+            for (has, what) in [
+                (pbr.metallic_roughness_texture.is_some(), "metallicRoughnessTexture"),
+                (m.normal_texture.is_some(), "normalTexture"),
+                (m.occlusion_texture.is_some(), "occlusionTexture"),
+                (m.emissive_texture.is_some(), "emissiveTexture"),
+                (m.emissive_factor.0.iter().any(|&e| e != 0.0), "emissiveFactor"),
+                (
+                    !matches!(m.alpha_mode, Checked::Valid(json::material::AlphaMode::Opaque)),
+                    "alphaMode (drawn opaque)",
+                ),
+                (pbr.base_color_factor.0[3] < 1.0, "baseColorFactor alpha (drawn opaque)"),
+            ] {
+                if has && !unused.contains(&what) {
+                    unused.push(what);
+                }
+            }
+            scene.materials.push(mat);
         }
-        if textured > 0 {
-            self.cx.warn(format!("{textured} material(s) have a base colour texture: only the factor is used"));
+        if !unused.is_empty() {
+            self.cx.warn(format!("material properties not drawn yet: {}", unused.join(", ")));
         }
         Ok(())
     }
@@ -90,6 +117,8 @@ impl Reader<'_> {
         }
         if let Some(v) = ex.mu {
             mat.mu = v.0;
+            // A file with the exact μ states its tinted part too (none when it does not say).
+            mat.mu_tinted = ex.mu_t.map_or([0.0; 3], |t| t.0);
         }
         set(&mut mat.r_s, ex.r_s);
         set(&mut mat.r_d, ex.r_d);
@@ -153,6 +182,8 @@ pub(super) fn pbr_material(m: &json::Material) -> Material {
         transmission,
         absorption,
         thickness,
+        base_color_texture: None,
+        mu_tinted: base.map(|c| c * metallic),
     }
 }
 
@@ -209,6 +240,7 @@ pub(super) fn write_material(m: &Material, extensions_used: &mut Vec<&'static st
         t: Some(m.transmission.into()),
         a: Some(m.absorption.into()),
         d: Some(m.thickness.into()),
+        mu_t: Some(m.mu_tinted.into()),
     };
     let mut out = json!({
         "name": m.name,
@@ -219,6 +251,9 @@ pub(super) fn write_material(m: &Material, extensions_used: &mut Vec<&'static st
         },
         "extras": extras::shadelab(&ex),
     });
+    if let Some(t) = &m.base_color_texture {
+        out["pbrMetallicRoughness"]["baseColorTexture"] = super::textures::texture_info(t, extensions_used);
+    }
     if !ext.is_empty() {
         out["extensions"] = Value::Object(ext);
     }

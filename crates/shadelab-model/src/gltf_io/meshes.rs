@@ -11,6 +11,7 @@ use super::{GltfError, MAX_TRIANGLES};
 use crate::mesh::{MeshData, TriangleMesh};
 use crate::params;
 use crate::scene::{Object, Scene, Shape};
+use glam::DVec3;
 use gltf::json;
 use gltf::json::validation::Checked;
 use serde::{Deserialize, Serialize};
@@ -61,6 +62,7 @@ impl Reader<'_> {
     }
 
     fn read_prim(&mut self, mi: usize, pi: usize) -> Result<Option<Prim>, GltfError> {
+        use json::accessor::Type;
         use json::mesh::{Mode, Semantic};
         let root = self.root;
         let mesh = &root.meshes[mi];
@@ -78,11 +80,8 @@ impl Reader<'_> {
             .attributes
             .get(&Checked::Valid(Semantic::Positions))
             .ok_or_else(|| self.cx.invalid(format!("{what}: no POSITION attribute")))?;
-        let positions = self.vec3s(pos.value(), &format!("{what}: POSITION"))?;
-        if let Some(k) = positions.iter().position(|p| !p.is_finite()) {
-            return Err(self.cx.invalid(format!("{what}: POSITION {k} is not finite ({})", positions[k])));
-        }
-        let normals = match prim.attributes.get(&Checked::Valid(Semantic::Normals)) {
+        let mut positions = self.vec3s(pos.value(), &format!("{what}: POSITION"))?;
+        let mut normals = match prim.attributes.get(&Checked::Valid(Semantic::Normals)) {
             Some(n) => {
                 let n = self.vec3s(n.value(), &format!("{what}: NORMAL"))?;
                 if n.len() != positions.len() {
@@ -96,6 +95,38 @@ impl Reader<'_> {
             }
             None => None,
         };
+        self.morph(mesh, prim, &what, &mut positions, normals.as_mut())?;
+        if let Some(k) = positions.iter().position(|p| !p.is_finite()) {
+            return Err(self.cx.invalid(format!("{what}: POSITION {k} is not finite ({})", positions[k])));
+        }
+        let n = positions.len();
+        let uvs = match prim.attributes.get(&Checked::Valid(Semantic::TexCoords(0))) {
+            Some(a) => Some(self.per_vertex::<2>(a.value(), &format!("{what}: TEXCOORD_0"), &[Type::Vec2], n)?),
+            None => None,
+        };
+        let colors = match prim.attributes.get(&Checked::Valid(Semantic::Colors(0))) {
+            Some(a) => {
+                let c = self.per_vertex::<3>(a.value(), &format!("{what}: COLOR_0"), &[Type::Vec3, Type::Vec4], n)?;
+                if c.iter().flatten().any(|x| !x.is_finite()) {
+                    self.cx.warn(format!("{what}: a COLOR_0 value is not finite: drawn as white"));
+                }
+                // Colours are linear RGB in [0, 1] (glTF 2.0 §3.7.2.1); alpha is not used (opaque).
+                Some(c.into_iter().map(|c| c.map(|x| if x.is_finite() { x.clamp(0.0, 1.0) } else { 1.0 })).collect())
+            }
+            None => None,
+        };
+        let read: [Semantic; 5] =
+            [Semantic::Positions, Semantic::Normals, Semantic::TexCoords(0), Semantic::Colors(0), Semantic::Tangents];
+        for name in prim.attributes.keys().filter_map(|k| match k {
+            Checked::Valid(s) if !read.contains(s) => Some(s.to_string()),
+            Checked::Valid(_) => None,
+            Checked::Invalid => Some("an unknown attribute".to_string()),
+        }) {
+            self.cx.warn(format!("{what}: attribute {name} is not used"));
+        }
+        if prim.attributes.contains_key(&Checked::Valid(Semantic::Tangents)) {
+            self.cx.warn(format!("{what}: TANGENT is not used (no normal textures yet)"));
+        }
         let corners = self.corners(prim, positions.len(), &what)?;
         let tris: Vec<[u32; 3]> = match mode {
             Mode::Triangles => {
@@ -128,10 +159,76 @@ impl Reader<'_> {
         }
         let name = mesh.name.clone().unwrap_or_else(|| format!("mesh {mi}"));
         let name = if mesh.primitives.len() > 1 { format!("{name} #{pi}") } else { name };
-        let tm = TriangleMesh { name, positions, normals, indices: tris };
+        let tm = TriangleMesh { name, positions, normals, indices: tris, uvs, colors }.with_attributes_kept();
         let analytic = self.analytic_shape(&mesh.extras, &tm, &what)?;
         self.file_meshes.push((tm, None));
         Ok(Some(Prim { mesh: self.file_meshes.len() - 1, material, analytic }))
+    }
+
+    /// An attribute with one element per vertex, as f32 (the GPU's precision).
+    fn per_vertex<const N: usize>(
+        &self,
+        index: usize,
+        what: &str,
+        types: &[json::accessor::Type],
+        vertices: usize,
+    ) -> Result<Vec<[f32; N]>, GltfError> {
+        let v = self.floats::<N>(index, what, types)?;
+        if v.len() != vertices {
+            return Err(self.cx.invalid(format!("{what}: {} values for {vertices} POSITIONs", v.len())));
+        }
+        Ok(v.into_iter().map(|e| e.map(|x| x as f32)).collect())
+    }
+
+    /// Morph targets at the mesh's default weights (glTF 2.0 §3.7.2.2): each target's POSITION and
+    /// NORMAL offsets, times its weight, added to the base. A node's own `weights` are not read.
+    fn morph(
+        &mut self,
+        mesh: &json::Mesh,
+        prim: &json::mesh::Primitive,
+        what: &str,
+        positions: &mut [DVec3],
+        mut normals: Option<&mut Vec<DVec3>>,
+    ) -> Result<(), GltfError> {
+        let Some(targets) = prim.targets.as_ref().filter(|t| !t.is_empty()) else { return Ok(()) };
+        let weights = mesh.weights.as_deref().unwrap_or(&[]);
+        if weights.len() != targets.len() && !weights.is_empty() {
+            return Err(self.cx.invalid(format!(
+                "{what}: {} morph targets but {} mesh weights",
+                targets.len(),
+                weights.len()
+            )));
+        }
+        for (k, t) in targets.iter().enumerate() {
+            let w = weights.get(k).copied().unwrap_or(0.0) as f64;
+            if !w.is_finite() {
+                return Err(self.cx.invalid(format!("{what}: morph weight {k} is not finite")));
+            }
+            if t.tangents.is_some() {
+                self.cx.warn(format!("{what}: morph target {k}: TANGENT offsets are not used"));
+            }
+            if w == 0.0 {
+                continue;
+            }
+            let add = |acc: Option<json::Index<json::Accessor>>, to: &mut [DVec3], name: &str| {
+                let Some(acc) = acc else { return Ok(()) };
+                let d = self.vec3s(acc.value(), &format!("{what}: morph target {k} {name}"))?;
+                if d.len() != to.len() {
+                    return Err(self.cx.invalid(format!(
+                        "{what}: morph target {k} {name}: {} offsets for {} vertices",
+                        d.len(),
+                        to.len()
+                    )));
+                }
+                to.iter_mut().zip(d).for_each(|(p, d)| *p += w * d);
+                Ok(())
+            };
+            add(t.positions, positions, "POSITION")?;
+            if let Some(n) = normals.as_deref_mut() {
+                add(t.normals, n, "NORMAL")?;
+            }
+        }
+        Ok(())
     }
 
     /// `extras.shadelab.shape`/`tessellation` of a mesh shadelab wrote: the analytic shape it
@@ -172,7 +269,17 @@ pub(super) fn write_mesh(
     o: &Object,
 ) -> Option<Value> {
     let key = (o.shape, if matches!(o.shape, Shape::Mesh(_)) { 0 } else { o.tessellation });
-    let mut prim = geometry.entry(key).or_insert_with(|| primitive(w, &scene.mesh_data(o))).clone()?;
+    let file_mesh = match o.shape {
+        Shape::Mesh(i) => scene.meshes.get(i).filter(|m| m.uvs.is_some() || m.colors.is_some()),
+        _ => None,
+    };
+    let mut prim = geometry
+        .entry(key)
+        .or_insert_with(|| match file_mesh {
+            Some(m) => attributed_primitive(w, m),
+            None => primitive(w, &scene.mesh_data(o)),
+        })
+        .clone()?;
     prim["material"] = json!(o.material);
     let mut mesh = json!({ "name": o.name, "primitives": [prim] });
     if !matches!(o.shape, Shape::Mesh(_)) {
@@ -197,4 +304,26 @@ fn primitive(w: &mut Writer, m: &MeshData) -> Option<Value> {
     let nrm = w.normals(&normals);
     let idx = w.indices(&m.indices);
     Some(json!({ "attributes": { "POSITION": pos, "NORMAL": nrm }, "indices": idx, "mode": TRIANGLES }))
+}
+
+/// A primitive for a file mesh with texture coordinates or colours: its own vertices, indices and
+/// attributes as they are (normals when it has usable ones). `None` for an empty mesh.
+fn attributed_primitive(w: &mut Writer, m: &TriangleMesh) -> Option<Value> {
+    if m.indices.is_empty() {
+        return None;
+    }
+    let positions: Vec<[f32; 3]> = m.positions.iter().map(|p| p.as_vec3().to_array()).collect();
+    let mut attributes = json!({ "POSITION": w.positions(&positions) });
+    if m.has_usable_normals() {
+        let normals: Vec<[f32; 3]> = (0..m.positions.len()).map(|i| m.smooth_vertex(i).normal).collect();
+        attributes["NORMAL"] = json!(w.normals(&normals));
+    }
+    if let Some(uv) = &m.uvs {
+        attributes["TEXCOORD_0"] = json!(w.attribute(uv));
+    }
+    if let Some(c) = &m.colors {
+        attributes["COLOR_0"] = json!(w.attribute(c));
+    }
+    let indices: Vec<u32> = m.indices.iter().flatten().copied().collect();
+    Some(json!({ "attributes": attributes, "indices": w.indices(&indices), "mode": TRIANGLES }))
 }

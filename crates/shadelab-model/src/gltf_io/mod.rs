@@ -41,7 +41,7 @@
 //!
 //! | where | keys |
 //! |---|---|
-//! | material | `C`, `m`, `h` (number or `"mirror"`), `mu`, `r_s`, `r_d`, `r_a`, `t`, `a`, `d` |
+//! | material | `C`, `m`, `h` (number or `"mirror"`), `mu`, `mu_t` (the part of μ the base colour sets), `r_s`, `r_d`, `r_a`, `t`, `a`, `d` |
 //! | `KHR_lights_punctual` light | `I_L`, `color`, `alpha`, `falloff_form` (`quadratic`/`linear`), `d0`, `position`, `direction`, `inner_cone`, `outer_cone`, `range` |
 //! | scene | `ambient` (`I_amb`), `shading`, `specular` |
 //! | mesh | `shape`, `tessellation` (an analytic shape; loaded back as it when the triangles still match) |
@@ -74,11 +74,13 @@ mod meshes;
 mod nodes;
 mod scene_file;
 pub mod synthetic;
+mod textures;
 
 pub(crate) use container::glb_container;
 pub use scene_file::{
     load_scene, load_scene_from_bytes, load_scene_from_slice, save_scene, scene_to_glb, scene_to_gltf_json,
 };
+pub use textures::{MAX_IMAGE_FILE_BYTES, MAX_TEXTURE_BYTES, MAX_TEXTURE_SIDE};
 
 use crate::params::{ShadingMode, SpecularModel};
 use crate::scene::{Camera, Scene};

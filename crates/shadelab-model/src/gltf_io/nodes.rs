@@ -214,6 +214,8 @@ fn bake(mesh: &TriangleMesh, m: &DMat4) -> TriangleMesh {
         normals: mesh.normals.as_ref().map(|ns| ns.iter().map(|&n| nm * n).collect()),
         // A mirror reverses the winding.
         indices: mesh.indices.iter().map(|t| if flip { [t[0], t[2], t[1]] } else { *t }).collect(),
+        uvs: mesh.uvs.clone(),
+        colors: mesh.colors.clone(),
     }
 }
 

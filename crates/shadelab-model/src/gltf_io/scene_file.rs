@@ -27,6 +27,8 @@ pub const SUPPORTED_EXTENSIONS: &[&str] = &[
     "KHR_materials_specular",
     "KHR_materials_transmission",
     "KHR_materials_volume",
+    "KHR_mesh_quantization",
+    "KHR_texture_transform",
 ];
 
 /// `extras.shadelab` of the glTF scene (fields in the order they are checked).
@@ -86,15 +88,23 @@ pub fn load_scene_from_bytes(bytes: &[u8], name: &str, base_dir: Option<&Path>) 
     if !ignored.is_empty() {
         cx.warn(format!("optional extension(s) not supported, ignored: {}", ignored.join(", ")));
     }
-    for (what, n) in
-        [("animation", root.animations.len()), ("skin", root.skins.len()), ("texture", root.textures.len())]
-    {
+    for (what, n) in [("animation", root.animations.len()), ("skin", root.skins.len())] {
         if n > 0 {
             cx.warn(format!("{n} {what}(s) ignored"));
         }
     }
     let buffers = load_buffers(&cx, &root, bin, base_dir)?;
-    Reader { cx, root: &root, buffers, prims: HashMap::new(), file_meshes: Vec::new() }.scene()
+    Reader {
+        cx,
+        root: &root,
+        buffers,
+        base_dir,
+        prims: HashMap::new(),
+        file_meshes: Vec::new(),
+        textures: HashMap::new(),
+        texture_bytes: 0,
+    }
+    .scene()
 }
 
 /// Where errors and warnings go: the file's name and what was noticed on the way.
@@ -131,6 +141,12 @@ pub(super) struct Reader<'a> {
     pub(super) prims: HashMap<(usize, usize), Option<Prim>>,
     /// Meshes read, with the index each got in `Scene::meshes` once an object uses it untransformed.
     pub(super) file_meshes: Vec<(TriangleMesh, Option<usize>)>,
+    /// Where external buffer and image files are read from (`None`: from memory, refused).
+    pub(super) base_dir: Option<&'a Path>,
+    /// glTF texture → its index in `Scene::textures` (`None`: not usable, warned about).
+    pub(super) textures: HashMap<usize, Option<usize>>,
+    /// Decoded texture bytes so far, against `MAX_TEXTURE_BYTES`.
+    pub(super) texture_bytes: u64,
 }
 
 impl Reader<'_> {
@@ -182,6 +198,7 @@ impl Reader<'_> {
             },
             meshes: Vec::new(),
             illumination: Default::default(),
+            textures: Vec::new(),
         };
         self.materials(&mut scene)?;
         let mut default_material = None;
@@ -307,9 +324,15 @@ fn document(scene: &Scene, settings: &SceneSettings) -> (Value, Vec<u8>) {
         "meshes": meshes,
         "materials": materials,
         "cameras": [camera],
-        "accessors": w.accessors,
-        "bufferViews": w.views,
     });
+    if !scene.textures.is_empty() {
+        let (images, samplers, textures) = super::textures::write_textures(scene, |b| w.image_view(b));
+        root["images"] = images;
+        root["samplers"] = samplers;
+        root["textures"] = textures;
+    }
+    root["accessors"] = json!(w.accessors);
+    root["bufferViews"] = json!(w.views);
     if !extensions_used.is_empty() {
         root["extensionsUsed"] = json!(extensions_used);
     }

@@ -22,6 +22,10 @@ pub struct TriangleMesh {
     /// Triangles as indices into `positions` (and `normals`), counter-clockwise seen from the
     /// front (glTF 2.0 §3.7.2.1). Every index is below `positions.len()` (the loader checks).
     pub indices: Vec<[u32; 3]>,
+    /// Texture coordinates per vertex (glTF `TEXCOORD_0`), if the file has them.
+    pub uvs: Option<Vec<[f32; 2]>>,
+    /// Linear RGB colour per vertex that multiplies `C` (glTF `COLOR_0`), if the file has one.
+    pub colors: Option<Vec<[f32; 3]>>,
 }
 
 impl TriangleMesh {
@@ -32,6 +36,8 @@ impl TriangleMesh {
             positions: triangles.iter().flatten().copied().collect(),
             normals: normals.map(|n| n.iter().flatten().copied().collect()),
             indices: (0..triangles.len() as u32).map(|k| [3 * k, 3 * k + 1, 3 * k + 2]).collect(),
+            uvs: None,
+            colors: None,
         }
     }
 
@@ -54,6 +60,35 @@ impl TriangleMesh {
     /// Every triangle's corners.
     pub fn triangles(&self) -> impl ExactSizeIterator<Item = [DVec3; 3]> + '_ {
         (0..self.indices.len()).map(|k| self.triangle(k))
+    }
+
+    /// This mesh with its vertex attributes (texture coordinates, colours) kept at every corner:
+    /// as it is when its normals can be used as they are; else a triangle soup whose corners
+    /// carry the normals [`Self::build`] gives them (the crease-angle rule, or the face normal for
+    /// an unusable file normal), which re-indexes vertices and would lose the attributes.
+    pub fn with_attributes_kept(self) -> TriangleMesh {
+        if (self.uvs.is_none() && self.colors.is_none()) || self.has_usable_normals() {
+            return self;
+        }
+        let Ok(built) = self.build() else { return self };
+        if built.indices.len() != 3 * self.indices.len() {
+            return self;
+        }
+        let corners = || self.indices.iter().flatten().map(|&i| i as usize);
+        TriangleMesh {
+            name: self.name.clone(),
+            positions: corners().map(|i| self.positions[i]).collect(),
+            normals: Some(
+                built
+                    .indices
+                    .iter()
+                    .map(|&v| DVec3::from(built.smooth_vertices[v as usize].normal.map(f64::from)))
+                    .collect(),
+            ),
+            indices: (0..self.indices.len() as u32).map(|k| [3 * k, 3 * k + 1, 3 * k + 2]).collect(),
+            uvs: self.uvs.as_ref().map(|u| corners().map(|i| u[i]).collect()),
+            colors: self.colors.as_ref().map(|c| corners().map(|i| c[i]).collect()),
+        }
     }
 
     /// The smooth and flat meshes: the file's normals for the smooth vertices when it has them,
@@ -138,6 +173,38 @@ mod tests {
     use super::*;
     use crate::mesh::triangles;
     use crate::scene::Shape;
+
+    #[test]
+    fn attributes_stay_at_their_corners_when_the_normals_come_from_the_crease_rule() {
+        let tris = triangles(Shape::Cube, 1);
+        let mut m = TriangleMesh::from_soup("cube", &tris, None);
+        // Weld the soup: 8 vertices, as a file stores a cube, each with its own colour.
+        let mut ids: Vec<DVec3> = Vec::new();
+        for t in m.indices.iter_mut() {
+            for c in t.iter_mut() {
+                let p = m.positions[*c as usize];
+                *c = ids.iter().position(|q| *q == p).unwrap_or_else(|| {
+                    ids.push(p);
+                    ids.len() - 1
+                }) as u32;
+            }
+        }
+        m.positions = ids;
+        m.colors = Some((0..m.positions.len()).map(|i| [i as f32, 0.0, 0.0]).collect());
+        let before = m.clone();
+        let kept = m.with_attributes_kept();
+        assert!(kept.has_usable_normals());
+        for k in 0..before.triangle_count() {
+            assert_eq!(kept.triangle(k), before.triangle(k));
+            for c in 0..3 {
+                let (a, b) = (kept.indices[k][c] as usize, before.indices[k][c] as usize);
+                assert_eq!(kept.colors.as_ref().unwrap()[a], before.colors.as_ref().unwrap()[b]);
+            }
+            // A cube's faces meet at 90°: past the crease angle, each corner has its face's normal.
+            let face = face_normal(&before.triangle(k)).unwrap();
+            assert!(kept.corner_normals(k).unwrap().iter().all(|n| (*n - face).length() < 1e-6));
+        }
+    }
 
     #[test]
     fn normals_of_another_length_than_the_positions_are_no_normals() {

@@ -28,6 +28,21 @@ pub(crate) struct SurfaceHit {
     /// World unit normal of the surface's geometry (a triangle's face normal; the exact normal of
     /// an analytic shape): the side a shadow ray leaves from.
     pub geometric_normal: DVec3,
+    /// The file mesh's texture coordinates and vertex colour at the point, interpolated as the
+    /// GPU does (barycentric in object space is perspective-correct); (0, 0) and white elsewhere.
+    pub uv: [f64; 2],
+    pub vertex_color: [f64; 3],
+}
+
+/// Where a ray meets a file's mesh: ray parameter, shading and face normals, the triangle and the
+/// barycentric weights of its corners 1 and 2.
+type MeshHit = (f64, DVec3, DVec3, usize, f64, f64);
+
+/// A per-vertex attribute of triangle `k` interpolated at barycentric `(u, v)`.
+fn interpolate<const N: usize>(values: &[[f32; N]], tri: [u32; 3], u: f64, v: f64) -> [f64; N] {
+    let at = |c: usize| values[tri[c] as usize].map(f64::from);
+    let (a, b, c) = (at(0), at(1), at(2));
+    std::array::from_fn(|i| a[i] * (1.0 - u - v) + b[i] * u + c[i] * v)
 }
 
 /// The ray parameters where a ray enters and leaves a convex polyhedron
@@ -172,8 +187,8 @@ fn intersect_triangle(t: &[DVec3; 3], o: DVec3, dir: DVec3) -> Option<(f64, f64,
 /// fine for the small meshes the reference is used on): ray parameter, shading normal (the
 /// file's corner normals interpolated, or the face normal; it faces the ray's origin side as the
 /// face's winding says, no flipping) and face normal.
-fn intersect_mesh(mesh: &TriangleMesh, o: DVec3, dir: DVec3) -> Option<(f64, DVec3, DVec3)> {
-    let mut best: Option<(f64, DVec3, DVec3)> = None;
+fn intersect_mesh(mesh: &TriangleMesh, o: DVec3, dir: DVec3) -> Option<MeshHit> {
+    let mut best: Option<MeshHit> = None;
     for k in 0..mesh.triangle_count() {
         let t = &mesh.triangle(k);
         let Some((tt, u, v)) = intersect_triangle(t, o, dir) else { continue };
@@ -185,7 +200,7 @@ fn intersect_mesh(mesh: &TriangleMesh, o: DVec3, dir: DVec3) -> Option<(f64, DVe
             Some(c) => safe_normalize(c[0] * (1.0 - u - v) + c[1] * u + c[2] * v, face),
             None => face,
         };
-        best = Some((tt, n, face));
+        best = Some((tt, n, face, k, u, v));
     }
     best
 }
@@ -193,26 +208,42 @@ fn intersect_mesh(mesh: &TriangleMesh, o: DVec3, dir: DVec3) -> Option<(f64, DVe
 /// The nearest hit of a world ray among the scene's objects (`inverses`: each object's inverse
 /// transform).
 pub(super) fn trace(scene: &Scene, inverses: &[DMat4], o: DVec3, dir: DVec3) -> Option<SurfaceHit> {
-    let mut best: Option<(f64, usize, DVec3, DVec3)> = None;
+    let mut best: Option<(f64, usize, DVec3, DVec3, [f64; 2], [f64; 3])> = None;
     for (i, (obj, inv)) in scene.objects.iter().zip(inverses).enumerate() {
         let (lo, ld) = (inv.transform_point3(o), inv.transform_vector3(dir));
         let hit = match obj.shape {
-            Shape::Mesh(m) => scene.meshes.get(m).and_then(|mesh| intersect_mesh(mesh, lo, ld)),
-            shape => intersect_shape(shape, lo, ld).map(|(t, n)| (t, n, n)),
+            Shape::Mesh(m) => scene.meshes.get(m).and_then(|mesh| {
+                let (t, n, face, k, u, v) = intersect_mesh(mesh, lo, ld)?;
+                let tri = mesh.indices[k];
+                let uv = mesh
+                    .uvs
+                    .as_ref()
+                    .filter(|a| a.len() == mesh.positions.len())
+                    .map_or([0.0; 2], |uvs| interpolate(uvs, tri, u, v));
+                let color = mesh
+                    .colors
+                    .as_ref()
+                    .filter(|a| a.len() == mesh.positions.len())
+                    .map_or([1.0; 3], |c| interpolate(c, tri, u, v));
+                Some((t, n, face, uv, color))
+            }),
+            shape => intersect_shape(shape, lo, ld).map(|(t, n)| (t, n, n, [0.0; 2], [1.0; 3])),
         };
-        if let Some((t, n, face)) = hit
+        if let Some((t, n, face, uv, color)) = hit
             && best.is_none_or(|b| t < b.0)
         {
-            best = Some((t, i, n, face));
+            best = Some((t, i, n, face, uv, color));
         }
     }
-    best.map(|(t, i, n, face)| {
+    best.map(|(t, i, n, face, uv, vertex_color)| {
         let to_world = scene.objects[i].transform.normal_matrix();
         SurfaceHit {
             object: i,
             point: o + dir * t,
             normal: (to_world * n).normalize(),
             geometric_normal: safe_normalize(to_world * face, DVec3::Y),
+            uv,
+            vertex_color,
         }
     })
 }

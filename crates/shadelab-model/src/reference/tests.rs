@@ -45,6 +45,7 @@ fn stage(objects: Vec<Object>, lights: Vec<Light>) -> Scene {
         },
         meshes: Vec::new(),
         illumination: Default::default(),
+        textures: Vec::new(),
     }
 }
 

@@ -147,6 +147,7 @@ pub fn default_scene() -> Scene {
         camera: default_camera(),
         meshes: Vec::new(),
         illumination: Default::default(),
+        textures: Vec::new(),
     }
 }
 
@@ -208,5 +209,6 @@ pub fn single_shape_scene(name: &str, shape: Shape, tessellation: u32) -> Scene 
         camera: Camera { eye: DVec3::new(0.0, 2.2, 4.6), target: DVec3::new(0.0, 0.8, 0.0), ..default_camera() },
         meshes: Vec::new(),
         illumination: Default::default(),
+        textures: Vec::new(),
     }
 }

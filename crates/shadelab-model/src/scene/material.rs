@@ -29,6 +29,13 @@ pub struct Material {
     pub absorption: [f64; 3],
     /// Thickness `d` of the material for that absorption (docs/model.md §7). Stored, not rendered yet.
     pub thickness: f64,
+    /// Base colour texture: `C` is multiplied by its linear RGB per point (glTF
+    /// `baseColorTexture`, docs/textures.md).
+    pub base_color_texture: Option<super::TextureRef>,
+    /// The part of μ the base colour sets (glTF's metallic M times its base colour factor): the
+    /// base colour texture and vertex colours scale it as they scale `C`. 0 for the built-in
+    /// materials.
+    pub mu_tinted: [f64; 3],
 }
 
 impl Default for Material {
@@ -45,6 +52,31 @@ impl Default for Material {
             transmission: 0.0,
             absorption: [0.0; 3],
             thickness: 0.0,
+            base_color_texture: None,
+            mu_tinted: [0.0; 3],
         }
+    }
+}
+
+impl Material {
+    /// The surface colour `C` and reflectance μ at a point with texture coordinates `uv` and
+    /// vertex colour `vertex_color`: with `t` = the vertex colour times the base colour texture's
+    /// linear RGB there, `C·t` and `μ + μ_tinted·(t − 1)` (glTF's base colour scales the
+    /// diffuse colour and a metal's F0 alike). A texture index past `textures` counts as none.
+    pub fn surface_at(
+        &self,
+        textures: &[super::Texture],
+        uv: [f64; 2],
+        vertex_color: [f64; 3],
+    ) -> ([f64; 3], [f64; 3]) {
+        let texel = self
+            .base_color_texture
+            .and_then(|r| textures.get(r.texture).map(|t| t.sample(r.transform.apply(uv))))
+            .unwrap_or([1.0; 4]);
+        let t: [f64; 3] = std::array::from_fn(|i| vertex_color[i] * texel[i]);
+        (
+            std::array::from_fn(|i| self.color[i] * t[i]),
+            std::array::from_fn(|i| (self.mu[i] + self.mu_tinted[i] * (t[i] - 1.0)).clamp(0.0, 1.0)),
+        )
     }
 }

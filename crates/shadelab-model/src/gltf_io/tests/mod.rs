@@ -9,6 +9,7 @@ mod materials;
 mod meshes;
 mod nodes;
 mod scene_file;
+mod textures;
 
 use super::*;
 use crate::assets::ASSET_SCENES;

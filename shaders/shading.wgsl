@@ -44,7 +44,11 @@ struct Object {
     mirror: u32,
     // The four-term sum's 1 − t (glTF's transmission factor; 0 is opaque).
     transmission: f32,
-    _pad1: u32,
+    // KHR_texture_transform of the base colour texture: rotation, and offset.xy, scale.zw.
+    uv_rotation: f32,
+    // rgb: the part of μ the base colour sets (surface.wgsl).
+    mu_tinted: vec4<f32>,
+    uv_offset_scale: vec4<f32>,
 }
 
 const FLAG_DEBUG_NONFINITE: u32 = 1u;
@@ -67,15 +71,15 @@ const SMOOTH_VERTEX_FLOATS: u32 = 6u;
 // The illumination model at world point `p` with (not necessarily unit) normal `n_in`; `pixel`
 // seeds the shadow filter's per-pixel rotation (read only with cast shadows). The Lambert rule's
 // fill and the sum's transmitted term are not shadowed (see the twin's shade_with_visibility).
-fn shade(p: vec3<f32>, n_in: vec3<f32>, pixel: vec2<f32>) -> vec3<f32> {
+fn shade(p: vec3<f32>, n_in: vec3<f32>, surface: Surface, pixel: vec2<f32>) -> vec3<f32> {
     let v = safe_normalize(globals.camera_pos.xyz - p, vec3(0.0, 1.0, 0.0));
     // A zero normal (e.g. interpolated between opposite vertex normals) faces the viewer.
     let n = safe_normalize(n_in, v);
-    let c = object.color.rgb;
+    let c = surface.c;
     // The Fresnel index is used by Cook–Torrance only.
     var v_index = vec3(1.0);
 #if EFFECT_SPECULAR_COOK_TORRANCE
-    v_index = fresnel_v_from_mu(object.mu.rgb);
+    v_index = fresnel_v_from_mu(surface.mu);
 #endif
     var total = vec3(0.0);
 #if EFFECT_AMBIENT
@@ -121,6 +125,29 @@ fn shade(p: vec3<f32>, n_in: vec3<f32>, pixel: vec2<f32>) -> vec3<f32> {
     return total;
 }
 
+// The object's material untinted: C, and μ where Cook–Torrance reads it.
+fn object_surface() -> Surface {
+    var mu = vec3(0.0);
+#if EFFECT_SPECULAR_COOK_TORRANCE
+    mu = object.mu.rgb;
+#endif
+    return Surface(object.color.rgb, mu);
+}
+
+// The material at a pixel: tinted by the interpolated vertex colour and the base colour texture
+// where the permutation has them.
+fn pixel_surface(uv: vec2<f32>, tint: vec3<f32>) -> Surface {
+    var t = vec3(1.0);
+#if EFFECT_VERTEX_COLORS
+    t *= vertex_tint(tint);
+#endif
+#if EFFECT_BASE_COLOR_TEXTURE
+    t *= base_color_texel(texture_uv(uv, object.uv_offset_scale.xy, object.uv_rotation, object.uv_offset_scale.zw));
+#endif
+    let s = object_surface();
+    return tinted_surface(s.c, s.mu, object.mu_tinted.rgb, t);
+}
+
 fn finish(color: vec3<f32>) -> vec4<f32> {
     if ((globals.flags & FLAG_DEBUG_NONFINITE) != 0u && any_nonfinite(color)) {
         return vec4(NONFINITE_COLOR, 1.0);
@@ -145,6 +172,12 @@ fn vertex_seed(p: vec3<f32>) -> vec2<f32> {
 struct SmoothIn {
     @location(0) position: vec3<f32>,
     @location(1) normal: vec3<f32>,
+#if EFFECT_BASE_COLOR_TEXTURE
+    @location(2) uv: vec2<f32>,
+#endif
+#if EFFECT_VERTEX_COLORS
+    @location(3) tint: vec3<f32>,
+#endif
 }
 
 struct FlatIn {
@@ -165,6 +198,12 @@ struct PhongOut {
     @builtin(position) clip: vec4<f32>,
     @location(0) world_pos: vec3<f32>,
     @location(1) world_normal: vec3<f32>,
+#if EFFECT_BASE_COLOR_TEXTURE
+    @location(2) uv: vec2<f32>,
+#endif
+#if EFFECT_VERTEX_COLORS
+    @location(3) tint: vec3<f32>,
+#endif
 }
 
 // One invocation per face: the model at the face's centroid with its normal (its first corner
@@ -179,7 +218,7 @@ fn cs_flat(@builtin(global_invocation_id) gid: vec3<u32>) {
     let normal = vec3(lit_points[at + 3u], lit_points[at + 4u], lit_points[at + 5u]);
     let centroid = vec3(lit_points[at + 6u], lit_points[at + 7u], lit_points[at + 8u]);
     let c = to_world(centroid);
-    lit_colors_out[face] = vec4(shade(c, normal_to_world(normal), vertex_seed(c)), 1.0);
+    lit_colors_out[face] = vec4(shade(c, normal_to_world(normal), object_surface(), vertex_seed(c)), 1.0);
 }
 
 @vertex
@@ -208,7 +247,7 @@ fn cs_gouraud(@builtin(global_invocation_id) gid: vec3<u32>) {
     let position = vec3(lit_points[at], lit_points[at + 1u], lit_points[at + 2u]);
     let normal = vec3(lit_points[at + 3u], lit_points[at + 4u], lit_points[at + 5u]);
     let p = to_world(position);
-    lit_colors_out[v] = vec4(shade(p, normal_to_world(normal), vertex_seed(p)), 1.0);
+    lit_colors_out[v] = vec4(shade(p, normal_to_world(normal), object_surface(), vertex_seed(p)), 1.0);
 }
 
 // Gouraud's vertex stage, shared by its two interpolations: the vertex's colour from cs_gouraud.
@@ -235,6 +274,12 @@ fn phong_vertex(in: SmoothIn) -> PhongOut {
     out.world_pos = to_world(in.position);
     out.clip = globals.view_proj * vec4(out.world_pos, 1.0);
     out.world_normal = normal_to_world(in.normal);
+#if EFFECT_BASE_COLOR_TEXTURE
+    out.uv = in.uv;
+#endif
+#if EFFECT_VERTEX_COLORS
+    out.tint = in.tint;
+#endif
     return out;
 }
 
@@ -245,7 +290,15 @@ fn vs_phong(in: SmoothIn) -> PhongOut {
 
 @fragment
 fn fs_phong(in: PhongOut) -> @location(0) vec4<f32> {
-    return finish(shade(in.world_pos, in.world_normal, in.clip.xy));
+    var uv = vec2(0.0);
+    var tint = vec3(1.0);
+#if EFFECT_BASE_COLOR_TEXTURE
+    uv = in.uv;
+#endif
+#if EFFECT_VERTEX_COLORS
+    tint = in.tint;
+#endif
+    return finish(shade(in.world_pos, in.world_normal, pixel_surface(uv, tint), in.clip.xy));
 }
 
 // The chapter's interpolation (docs/model.md §8): linear in screen space along the scanlines, as
@@ -265,6 +318,14 @@ struct PhongScreenOut {
     @location(1) @interpolate(linear) world_normal: vec3<f32>,
     @location(2) world_pos_perspective: vec3<f32>,
     @location(3) world_normal_perspective: vec3<f32>,
+#if EFFECT_BASE_COLOR_TEXTURE
+    @location(4) @interpolate(linear) uv: vec2<f32>,
+    @location(5) uv_perspective: vec2<f32>,
+#endif
+#if EFFECT_VERTEX_COLORS
+    @location(6) @interpolate(linear) tint: vec3<f32>,
+    @location(7) tint_perspective: vec3<f32>,
+#endif
 }
 
 // The screen-space value, or the perspective-correct one where it is not finite.
@@ -286,14 +347,36 @@ fn fs_gouraud_screen(in: ColorScreenOut) -> @location(0) vec4<f32> {
 @vertex
 fn vs_phong_screen(in: SmoothIn) -> PhongScreenOut {
     let o = phong_vertex(in);
-    return PhongScreenOut(o.clip, o.world_pos, o.world_normal, o.world_pos, o.world_normal);
+    var out: PhongScreenOut;
+    out.clip = o.clip;
+    out.world_pos = o.world_pos;
+    out.world_normal = o.world_normal;
+    out.world_pos_perspective = o.world_pos;
+    out.world_normal_perspective = o.world_normal;
+#if EFFECT_BASE_COLOR_TEXTURE
+    out.uv = o.uv;
+    out.uv_perspective = o.uv;
+#endif
+#if EFFECT_VERTEX_COLORS
+    out.tint = o.tint;
+    out.tint_perspective = o.tint;
+#endif
+    return out;
 }
 
 @fragment
 fn fs_phong_screen(in: PhongScreenOut) -> @location(0) vec4<f32> {
     let p = screen_or_perspective(in.world_pos, in.world_pos_perspective);
     let n = screen_or_perspective(in.world_normal, in.world_normal_perspective);
-    return finish(shade(p, n, in.clip.xy));
+    var uv = vec2(0.0);
+    var tint = vec3(1.0);
+#if EFFECT_BASE_COLOR_TEXTURE
+    uv = select(in.uv, in.uv_perspective, any_nonfinite(vec3(in.uv, 0.0)));
+#endif
+#if EFFECT_VERTEX_COLORS
+    tint = screen_or_perspective(in.tint, in.tint_perspective);
+#endif
+    return finish(shade(p, n, pixel_surface(uv, tint), in.clip.xy));
 }
 
 // The null-shader baseline of the cost study: the same geometry, vertex fetch, transform and

@@ -24,4 +24,4 @@ pub mod terms;
 pub use params::{
     FalloffForm, IlluminationModel, Interpolation, LightKind, ModelChoice, PhongExponent, ShadingMode, SpecularModel,
 };
-pub use scene::{Camera, Light, Material, Object, Overrides, Scene, Shape, Transform};
+pub use scene::{Camera, Filter, Light, Material, Object, Overrides, Scene, Shape, Texture, Transform, Wrap};

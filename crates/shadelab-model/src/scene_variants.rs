@@ -18,6 +18,24 @@ pub fn is_analytic(scene: &Scene) -> bool {
         .all(|o| matches!(o.shape, Shape::Sphere | Shape::Cylinder | Shape::Cube | Shape::Plane | Shape::Pyramid))
 }
 
+/// Most file-mesh triangles a scene may have for the reference to render it: the ray-caster tests
+/// every triangle per ray, so 10⁴ triangles at 640×360 are about 2·10⁹ ray–triangle tests.
+pub const REFERENCE_MESH_TRIANGLES: usize = 10_000;
+
+/// Whether the f64 reference renders the scene: analytic shapes exactly, and file meshes (their
+/// triangles are the file's exact surface) of at most `REFERENCE_MESH_TRIANGLES` in all.
+pub fn reference_covers(scene: &Scene) -> bool {
+    let mesh_triangles: usize = scene
+        .objects
+        .iter()
+        .filter_map(|o| match o.shape {
+            Shape::Mesh(i) => Some(scene.meshes.get(i).map_or(0, |m| m.triangle_count())),
+            _ => None,
+        })
+        .sum();
+    mesh_triangles <= REFERENCE_MESH_TRIANGLES
+}
+
 /// A planar face gets `level / PLANAR_CELLS_PER_LEVEL` cells per side, so that the coarsest
 /// level (8 segments around a sphere) is one quad per face and the finest (512) is 64 × 64: a
 /// face under a point light needs vertices inside it for Gouraud shading to see the falloff, but

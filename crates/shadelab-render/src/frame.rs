@@ -50,6 +50,8 @@ impl Renderer {
         program: Program,
         timestamps: Option<(&wgpu::QuerySet, u32)>,
     ) {
+        // A scene without texture coordinates or vertex colours has no buffer for them to read.
+        let program = if gpu_scene.has_surfaces { program } else { program.without_surfaces() };
         let key = self.pipelines.ready_key(PipelineKey { program, color_format: target.format });
         let shadows = key
             .program
@@ -92,12 +94,14 @@ impl Renderer {
         });
         pass.set_pipeline(pipeline);
         pass.set_bind_group(0, &gpu_scene.globals_bind, &[]);
+        let fx = key.program.effects();
+        let surfaces = fx.has(Effect::BaseColorTexture) || fx.has(Effect::VertexColors);
         if let Some((maps, _)) = &shadows {
             pass.set_bind_group(2, maps, &[]);
         }
         for (i, k) in gpu_scene.objects.iter().enumerate() {
             let mesh = &gpu_scene.meshes[k];
-            pass.set_bind_group(1, &gpu_scene.objects_bind, &[(i as u64 * gpu_scene.object_stride) as u32]);
+            pass.set_bind_group(1, gpu_scene.object_bind(i), &[(i as u64 * gpu_scene.object_stride) as u32]);
             if let Some(colors) = lit_colors {
                 // An empty mesh has no colours and nothing to draw.
                 let Some(c) = &colors[i] else { continue };
@@ -108,6 +112,9 @@ impl Renderer {
                 pass.draw(0..mesh.flat_count, 0..1);
             } else {
                 pass.set_vertex_buffer(0, mesh.smooth.slice(..));
+                if surfaces && let Some(s) = &mesh.surface {
+                    pass.set_vertex_buffer(1, s.slice(..));
+                }
                 pass.set_index_buffer(mesh.indices.slice(..), wgpu::IndexFormat::Uint32);
                 pass.draw_indexed(0..mesh.index_count, 0, 0..1);
             }
@@ -144,7 +151,7 @@ impl Renderer {
         }
         for (i, faces) in per_object.iter().enumerate() {
             let Some(faces) = faces else { continue };
-            pass.set_bind_group(1, &gpu_scene.objects_bind, &[(i as u64 * gpu_scene.object_stride) as u32]);
+            pass.set_bind_group(1, gpu_scene.object_bind(i), &[(i as u64 * gpu_scene.object_stride) as u32]);
             for (bind, n) in &faces.chunks {
                 pass.set_bind_group(3, bind, &[]);
                 pass.dispatch_workgroups(n.div_ceil(crate::lighting_pass::LIT_WORKGROUP), 1, 1);

@@ -14,6 +14,7 @@ pub mod shaders;
 pub mod shadow_pass;
 pub mod sweep;
 pub mod target;
+mod textures;
 pub mod timestamp_ring;
 pub mod timing;
 mod twins;

@@ -6,7 +6,7 @@
 
 use crate::program::Program;
 use crate::shaders;
-use crate::vertex::{FlatVertex, SmoothVertex};
+use crate::vertex::{FlatVertex, SmoothVertex, SurfaceVertex};
 use shadelab_model::effects::{Effect, EffectKey};
 use std::collections::HashMap;
 use std::time::{Duration, Instant};
@@ -222,16 +222,15 @@ fn build_pipeline(
         Program::NullBaseline => shaders::BASELINE_ENTRY_POINTS,
     };
     let options = wgpu::PipelineCompilationOptions::default();
-    let buffers = [Some(if key.program.draws_flat_mesh() { FlatVertex::LAYOUT } else { SmoothVertex::LAYOUT })];
+    let effects = key.program.effects();
+    let surface = SurfaceVertex::layout(effects.has(Effect::BaseColorTexture), effects.has(Effect::VertexColors));
+    let first = if key.program.draws_flat_mesh() { FlatVertex::LAYOUT } else { SmoothVertex::LAYOUT };
+    let buffers = [Some(first), surface];
+    let buffers = if buffers[1].is_some() { &buffers[..] } else { &buffers[..1] };
     device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
         label: Some(&key.program.label()),
         layout: Some(layout),
-        vertex: wgpu::VertexState {
-            module,
-            entry_point: Some(vs),
-            compilation_options: options.clone(),
-            buffers: &buffers,
-        },
+        vertex: wgpu::VertexState { module, entry_point: Some(vs), compilation_options: options.clone(), buffers },
         primitive: wgpu::PrimitiveState {
             topology: wgpu::PrimitiveTopology::TriangleList,
             // Every mesh is closed or seen from its front, but no culling keeps a wrong

@@ -1,7 +1,7 @@
 //! What a draw runs: the per-frame render settings, and the [`Program`] they resolve to for a
 //! scene (the lit shader of one shading mode and effect set, or the null-shader baseline).
 
-use shadelab_model::effects::{self, EffectKey};
+use shadelab_model::effects::{self, Effect, EffectKey};
 use shadelab_model::{Interpolation, Scene, ShadingMode, SpecularModel};
 
 /// Which effect permutation draws a scene (resolved by [`Program::for_scene`]).
@@ -46,6 +46,14 @@ impl Default for RenderSettings {
     }
 }
 
+/// The effects drawn per pixel only, the base colour texture and vertex colours, are left out of
+/// flat and Gouraud shading, which light per face or per vertex with the material's own colour
+/// (docs/textures.md).
+pub fn per_pixel_only(shading: ShadingMode, effects: EffectKey) -> EffectKey {
+    let p = Program::Lit { shading, effects, interpolation: Interpolation::Perspective };
+    if shading == ShadingMode::Phong { effects } else { p.without_surfaces().effects() }
+}
+
 /// The shader program a draw runs. Plain `Copy + Hash`: with the target's colour format it is
 /// the pipeline cache's key.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -70,7 +78,20 @@ impl Program {
         // Flat shading interpolates nothing: one program whatever the setting.
         let interpolation =
             if settings.shading == ShadingMode::Flat { Interpolation::Perspective } else { settings.interpolation };
-        Program::Lit { shading: settings.shading, effects, interpolation }
+        Program::Lit { shading: settings.shading, effects: per_pixel_only(settings.shading, effects), interpolation }
+    }
+
+    /// The same program without the base colour texture and vertex colours (for a scene that has
+    /// no surface attributes to read: the uber program drawing it).
+    pub fn without_surfaces(self) -> Program {
+        match self {
+            Program::Lit { shading, effects, interpolation } => Program::Lit {
+                shading,
+                effects: effects.without(Effect::BaseColorTexture).without(Effect::VertexColors),
+                interpolation,
+            },
+            Program::NullBaseline => Program::NullBaseline,
+        }
     }
 
     /// The effects the shader module contains (none for the baseline).
@@ -86,7 +107,7 @@ impl Program {
     pub fn uber(self) -> Program {
         match self {
             Program::Lit { shading, interpolation, .. } => {
-                Program::Lit { shading, effects: EffectKey::UBER, interpolation }
+                Program::Lit { shading, effects: per_pixel_only(shading, EffectKey::UBER), interpolation }
             }
             Program::NullBaseline => Program::NullBaseline,
         }

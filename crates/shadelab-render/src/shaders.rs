@@ -8,7 +8,7 @@
 use shadelab_model::effects::EffectKey;
 
 /// `(file name, source)` in the order they are concatenated.
-pub const FILES: [(&str, &str); 7] = [
+pub const FILES: [(&str, &str); 8] = [
     ("common.wgsl", include_str!("../../../shaders/common.wgsl")),
     ("brdf.wgsl", include_str!("../../../shaders/brdf.wgsl")),
     ("models.wgsl", include_str!("../../../shaders/models.wgsl")),
@@ -17,6 +17,8 @@ pub const FILES: [(&str, &str); 7] = [
     ("shadow_math.wgsl", include_str!("../../../shaders/shadow_math.wgsl")),
     // Only in permutations with cast shadows (the whole file is one `#if EFFECT_CAST_SHADOWS`).
     ("shadows.wgsl", include_str!("../../../shaders/shadows.wgsl")),
+    // C and μ at a point: the material tinted by vertex colours and textures.
+    ("surface.wgsl", include_str!("../../../shaders/surface.wgsl")),
     ("shading.wgsl", include_str!("../../../shaders/shading.wgsl")),
 ];
 

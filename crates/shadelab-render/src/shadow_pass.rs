@@ -370,7 +370,7 @@ impl Renderer {
                     for (i, k) in gpu_scene.objects.iter().enumerate() {
                         let mesh = &gpu_scene.meshes[k];
                         let offset = (i as u64 * gpu_scene.object_stride) as u32;
-                        pass.set_bind_group(1, &gpu_scene.objects_bind, &[offset]);
+                        pass.set_bind_group(1, gpu_scene.object_bind(i), &[offset]);
                         pass.set_vertex_buffer(0, mesh.smooth.slice(..));
                         pass.set_index_buffer(mesh.indices.slice(..), wgpu::IndexFormat::Uint32);
                         pass.draw_indexed(0..mesh.index_count, 0, layer..layer + 1);

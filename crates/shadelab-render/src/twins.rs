@@ -9,7 +9,7 @@ use shadelab_model::params::NamedValue;
 use shadelab_model::{FalloffForm, IlluminationModel, LightKind, SpecularModel};
 
 /// Each WGSL file and the source of its f64 twin.
-const TWINS: [(&str, &str); 7] = [
+const TWINS: [(&str, &str); 8] = [
     ("common.wgsl", include_str!("../../shadelab-model/src/lighting/common.rs")),
     ("brdf.wgsl", include_str!("../../shadelab-model/src/lighting/brdf.rs")),
     ("models.wgsl", include_str!("../../shadelab-model/src/lighting/models.rs")),
@@ -30,14 +30,24 @@ const TWINS: [(&str, &str); 7] = [
             include_str!("../../shadelab-model/src/shadows/cascades.rs")
         ),
     ),
+    (
+        "surface.wgsl",
+        concat!(
+            include_str!("../../shadelab-model/src/scene/material.rs"),
+            include_str!("../../shadelab-model/src/scene/texture.rs")
+        ),
+    ),
     ("shading.wgsl", include_str!("../../shadelab-model/src/lighting/shading.rs")),
 ];
 
 /// WGSL functions with no f64 twin, by file, and why. (Entry points are left out by naga's list:
 /// they are the GPU's stages, whose f64 counterpart is `reference::render_reference`.)
-const NO_TWIN: [(&str, &str, &str); 15] = [
+const NO_TWIN: [(&str, &str, &str); 18] = [
     ("common.wgsl", "is_nonfinite", "the NaN/∞ test on f32 bits; f64 code uses f64::is_finite"),
     ("common.wgsl", "any_nonfinite", "the debug view's test of a colour, built on is_nonfinite"),
+    ("surface.wgsl", "base_color_texel", "samples the GPU texture; its f64 side is scene::Texture::sample"),
+    ("shading.wgsl", "object_surface", "the uniforms' material; the reference reads scene::Material"),
+    ("shading.wgsl", "pixel_surface", "the interpolants' tint; its f64 side is Material::surface_at"),
     ("shading.wgsl", "finish", "the debug view that paints non-finite pixels; the reference has none"),
     ("shading.wgsl", "to_world", "the object transform; its f64 side is scene::Transform::matrix"),
     ("shading.wgsl", "normal_to_world", "the normal transform; its f64 side is Transform::normal_matrix"),

@@ -54,7 +54,12 @@ pub struct ObjectUniform {
     pub h: f32,
     pub mirror: u32,
     pub transmission: f32,
-    pub _pad1: u32,
+    /// `KHR_texture_transform` rotation of the base colour texture.
+    pub uv_rotation: f32,
+    /// The part of μ the base colour sets (`Material::mu_tinted`).
+    pub mu_tinted: [f32; 4],
+    /// The texture transform's offset (xy) and scale (zw).
+    pub uv_offset_scale: [f32; 4],
 }
 
 /// One light's shadow map as `shadows.wgsl`'s `ShadowLight` reads it (zeroed: no shadow).
@@ -133,6 +138,7 @@ impl GlobalsUniform {
 impl ObjectUniform {
     pub fn new(object: &Object, material: &Material) -> Self {
         let nm = glam::DMat4::from_mat3(object.transform.normal_matrix());
+        let t = material.base_color_texture.map(|r| r.transform).unwrap_or_default();
         ObjectUniform {
             model: object.transform.matrix().as_mat4().to_cols_array_2d(),
             normal_matrix: nm.as_mat4().to_cols_array_2d(),
@@ -145,7 +151,9 @@ impl ObjectUniform {
             h: material.h.value() as f32,
             mirror: material.h.is_mirror() as u32,
             transmission: material.transmission as f32,
-            _pad1: 0,
+            uv_rotation: t.rotation as f32,
+            mu_tinted: rgb(material.mu_tinted, 0.0),
+            uv_offset_scale: [t.offset[0], t.offset[1], t.scale[0], t.scale[1]].map(|x| x as f32),
         }
     }
 }

@@ -15,6 +15,9 @@ pub struct MeshGpu {
     pub index_count: u32,
     pub flat: wgpu::Buffer,
     pub flat_count: u32,
+    /// Each smooth vertex's texture coordinates and colour (`SurfaceVertex`), in scenes that
+    /// have any: the textured and vertex-coloured permutations read it.
+    pub surface: Option<wgpu::Buffer>,
 }
 
 /// A scene uploaded to the GPU: meshes (shared between objects of the same shape and
@@ -31,7 +34,13 @@ pub struct SceneGpu {
     pub(crate) globals: wgpu::Buffer,
     pub(crate) globals_bind: wgpu::BindGroup,
     pub(crate) objects_buf: wgpu::Buffer,
-    pub(crate) objects_bind: wgpu::BindGroup,
+    /// The object group (uniforms, base colour texture, sampler): 0 with a white texel for
+    /// objects without a texture, `k + 1` for scene texture `k`.
+    pub(crate) objects_binds: Vec<wgpu::BindGroup>,
+    /// Which of `objects_binds` each object uses.
+    pub(crate) object_bind_of: Vec<usize>,
+    /// Whether the meshes have surface buffers (`MeshGpu::surface`).
+    pub(crate) has_surfaces: bool,
     /// Bytes between two objects' uniforms (`ObjectUniform` rounded up to the device's offset
     /// alignment).
     pub(crate) object_stride: u64,
@@ -42,6 +51,11 @@ pub struct SceneGpu {
 }
 
 impl SceneGpu {
+    /// Object `i`'s bind group (@group(1)), set with its uniforms' dynamic offset.
+    pub(crate) fn object_bind(&self, i: usize) -> &wgpu::BindGroup {
+        &self.objects_binds[self.object_bind_of[i]]
+    }
+
     /// The lighting pass's colours per object, flat shading's (`flat`) or Gouraud's, made on first
     /// use: objects share meshes, not their colours.
     pub(crate) fn lit_colors(
@@ -85,6 +99,7 @@ impl Renderer {
         let device = &self.device;
         let mut meshes = HashMap::new();
         let mut objects = Vec::new();
+        let surfaces = crate::textures::scene_has_surfaces(scene);
         for o in &scene.objects {
             let k = (o.shape, o.tessellation);
             // `Shape::Mesh(i)` keys by its index: each file mesh is built once (its normals, else
@@ -122,6 +137,20 @@ impl Renderer {
                         )?
                     }
                 };
+                let mut mesh = mesh;
+                if surfaces {
+                    // The file's vertices are the smooth vertices only on the first path above.
+                    let m = file_mesh.filter(|m| m.has_usable_normals() && m.check_finite().is_ok());
+                    let count = mesh.smooth_count as usize;
+                    mesh.surface = Some(buffer_from_pieces(
+                        device,
+                        &self.queue,
+                        "surface attributes",
+                        wgpu::BufferUsages::VERTEX,
+                        count,
+                        |r, out| out.extend(r.map(|i| crate::textures::surface_vertex(m, i))),
+                    ));
+                }
                 e.insert(mesh);
             }
             objects.push(k);
@@ -146,18 +175,29 @@ impl Renderer {
             layout: &self.globals_layout,
             entries: &[wgpu::BindGroupEntry { binding: 0, resource: globals.as_entire_binding() }],
         });
-        let objects_bind = device.create_bind_group(&wgpu::BindGroupDescriptor {
-            label: Some("objects"),
-            layout: &self.object_layout,
-            entries: &[wgpu::BindGroupEntry {
-                binding: 0,
-                resource: wgpu::BindingResource::Buffer(wgpu::BufferBinding {
-                    buffer: &objects_buf,
-                    offset: 0,
-                    size: wgpu::BufferSize::new(size_of::<ObjectUniform>() as u64),
-                }),
-            }],
-        });
+        let white = shadelab_model::Texture::solid("white", [255; 4]);
+        let objects_binds = std::iter::once(&white)
+            .chain(&scene.textures)
+            .map(|t| {
+                let (view, sampler) = crate::textures::upload(device, &self.queue, t);
+                device.create_bind_group(&wgpu::BindGroupDescriptor {
+                    label: Some("objects"),
+                    layout: &self.object_layout,
+                    entries: &[
+                        wgpu::BindGroupEntry {
+                            binding: 0,
+                            resource: wgpu::BindingResource::Buffer(wgpu::BufferBinding {
+                                buffer: &objects_buf,
+                                offset: 0,
+                                size: wgpu::BufferSize::new(size_of::<ObjectUniform>() as u64),
+                            }),
+                        },
+                        wgpu::BindGroupEntry { binding: 1, resource: wgpu::BindingResource::TextureView(&view) },
+                        wgpu::BindGroupEntry { binding: 2, resource: wgpu::BindingResource::Sampler(&sampler) },
+                    ],
+                })
+            })
+            .collect();
         Ok(SceneGpu {
             meshes,
             objects,
@@ -166,7 +206,9 @@ impl Renderer {
             globals,
             globals_bind,
             objects_buf,
-            objects_bind,
+            objects_binds,
+            object_bind_of: crate::textures::bind_of_objects(scene),
+            has_surfaces: surfaces,
             object_stride,
             triangle_count,
             shadows: std::sync::Mutex::new(None),
@@ -230,6 +272,7 @@ impl MeshGpu {
                 flat,
             ),
             flat_count: counts[2] as u32,
+            surface: None,
         })
     }
 }

@@ -21,6 +21,45 @@ pub struct FlatVertex {
     pub centroid: [f32; 3],
 }
 
+/// A smooth vertex's surface attributes, in a second vertex buffer that only the permutations
+/// with a base colour texture or vertex colours read: texture coordinates and the vertex colour.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
+pub struct SurfaceVertex {
+    pub uv: [f32; 2],
+    pub color: [f32; 3],
+}
+
+impl Default for SurfaceVertex {
+    /// No texture coordinates and no tint.
+    fn default() -> Self {
+        SurfaceVertex { uv: [0.0; 2], color: [1.0; 3] }
+    }
+}
+
+const SURFACE_UV: [wgpu::VertexAttribute; 1] = wgpu::vertex_attr_array![2 => Float32x2];
+const SURFACE_COLOR: [wgpu::VertexAttribute; 1] =
+    [wgpu::VertexAttribute { format: wgpu::VertexFormat::Float32x3, offset: 8, shader_location: 3 }];
+const SURFACE_BOTH: [wgpu::VertexAttribute; 2] = [SURFACE_UV[0], SURFACE_COLOR[0]];
+
+impl SurfaceVertex {
+    /// Its buffer layout with the attributes a permutation reads (locations 2 uv, 3 colour),
+    /// `None` when it reads neither.
+    pub fn layout(uv: bool, color: bool) -> Option<wgpu::VertexBufferLayout<'static>> {
+        let attributes: &'static [wgpu::VertexAttribute] = match (uv, color) {
+            (false, false) => return None,
+            (true, false) => &SURFACE_UV,
+            (false, true) => &SURFACE_COLOR,
+            (true, true) => &SURFACE_BOTH,
+        };
+        Some(wgpu::VertexBufferLayout {
+            array_stride: size_of::<SurfaceVertex>() as u64,
+            step_mode: wgpu::VertexStepMode::Vertex,
+            attributes,
+        })
+    }
+}
+
 const SMOOTH_ATTRS: [wgpu::VertexAttribute; 2] = wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3];
 const FLAT_ATTRS: [wgpu::VertexAttribute; 1] = wgpu::vertex_attr_array![0 => Float32x3];
 

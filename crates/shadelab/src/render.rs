@@ -100,11 +100,11 @@ pub fn run(args: &cli::RenderArgs) -> Result<(), Failure> {
     if args.explain {
         print!("{}", explain(&scene, &settings));
     }
-    if (args.reference || args.difference) && !shadelab_model::scene_variants::is_analytic(&scene) {
-        return Err(Failure::Usage(
-            "--reference, --difference: only for scenes of analytic shapes (the reference knows their exact surface)"
-                .into(),
-        ));
+    if (args.reference || args.difference) && !shadelab_model::scene_variants::reference_covers(&scene) {
+        return Err(Failure::Usage(format!(
+            "--reference, --difference: only for scenes of analytic shapes and file meshes of at most {} triangles in all (REFERENCE_MESH_TRIANGLES: the reference tests every triangle per ray)",
+            shadelab_model::scene_variants::REFERENCE_MESH_TRIANGLES
+        )));
     }
     if args.difference && kind != ImageKind::Png {
         return Err(Failure::Usage("--difference: writes a .png error map".into()));

@@ -197,6 +197,10 @@ pub fn analyze(scene: &Scene, specular: SpecularModel) -> Analysis {
     }
     let (cascades, why) = shadow_cascades(scene, lights, on);
     a.decide(Effect::ShadowCascades, cascades, why);
+    let (textured, why) = base_color_texture(scene);
+    a.decide(Effect::BaseColorTexture, textured, why);
+    let (colored, why) = vertex_colors(scene);
+    a.decide(Effect::VertexColors, colored, why);
     let transmitting: Vec<_> = used.iter().filter(|m| m.transmission > 0.0).collect();
     a.note(
         Effect::Transmission,
@@ -223,6 +227,49 @@ pub fn analyze(scene: &Scene, specular: SpecularModel) -> Analysis {
     };
     a.note(Effect::Absorption, state, reason);
     a
+}
+
+/// The file mesh object `o` shows, if it is one.
+fn file_mesh<'s>(scene: &'s Scene, o: &crate::scene::Object) -> Option<&'s crate::mesh::TriangleMesh> {
+    match o.shape {
+        crate::scene::Shape::Mesh(i) => scene.meshes.get(i),
+        _ => None,
+    }
+}
+
+/// The base colour texture is sampled when some object's material has one and its mesh has the
+/// texture coordinates to sample it with (without them the loader has said so; the factor alone
+/// is drawn).
+fn base_color_texture(scene: &Scene) -> (bool, String) {
+    let textured = scene
+        .objects
+        .iter()
+        .filter(|o| {
+            scene
+                .materials
+                .get(o.material)
+                .and_then(|m| m.base_color_texture)
+                .is_some_and(|t| t.texture < scene.textures.len())
+        })
+        .collect::<Vec<_>>();
+    let sampled = textured.iter().filter(|o| file_mesh(scene, o).is_some_and(|m| m.uvs.is_some())).count();
+    if textured.is_empty() {
+        (false, "no material has a base colour texture".into())
+    } else if sampled == 0 {
+        (false, format!("{} object(s) have a textured material but no texture coordinates", textured.len()))
+    } else {
+        (true, format!("{sampled} object(s) have a base colour texture and texture coordinates"))
+    }
+}
+
+/// Vertex colours are interpolated when some object's mesh has them.
+fn vertex_colors(scene: &Scene) -> (bool, String) {
+    let n = scene.objects.iter().filter(|o| file_mesh(scene, o).is_some_and(|m| m.colors.is_some())).count();
+    if n == 0 {
+        (false, "no mesh has vertex colours".into())
+    } else {
+        (true, format!("{n} object(s) have vertex colours"))
+    }
 }
 
 /// Cast shadows are on when some light casts them and some object can hide another surface from

@@ -245,6 +245,24 @@ declare_effects! {
         members: &[],
     },
     /// Light transmitted through a material: analysed, not simulated yet (docs/model.md §7).
+    /// The base colour texture sampled per pixel (docs/textures.md): C and the tinted part of μ.
+    BaseColorTexture {
+        explain: "base colour texture",
+        name: "base colour texture",
+        label: "texture",
+        define: Some("EFFECT_BASE_COLOR_TEXTURE"),
+        functions: &["texture_uv", "base_color_texel"],
+        members: &[("Object", "uv_offset_scale"), ("Object", "uv_rotation")],
+    },
+    /// Vertex colours (glTF `COLOR_0`) interpolated and multiplied into C (docs/textures.md).
+    VertexColors {
+        explain: "vertex colours",
+        name: "vertex colours",
+        label: "vcolor",
+        define: Some("EFFECT_VERTEX_COLORS"),
+        functions: &["vertex_tint"],
+        members: &[],
+    },
     Transmission {
         explain: "transmission",
         name: "transmission",
@@ -466,7 +484,7 @@ mod tests {
         assert_eq!(format!("{k:?}"), "EffectKey(diffuse+cook-torrance+point+range)");
         assert_eq!(
             EffectKey::UBER.without(Effect::Ambient).label(),
-            "diffuse+phong+cook-torrance+lambert+sum+it+dir+point+quad+linear+spot+range+shadows+hard+pcf+poisson+cascades"
+            "diffuse+phong+cook-torrance+lambert+sum+it+dir+point+quad+linear+spot+range+shadows+hard+pcf+poisson+cascades+texture+vcolor"
         );
         assert_eq!(Effect::SpecularPhong.to_string(), "Phong specular (V·R)^h");
     }

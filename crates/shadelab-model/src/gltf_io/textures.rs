@@ -171,9 +171,12 @@ impl Reader<'_> {
             }
         };
         if !min_same {
+            let min = match s.min_filter {
+                Some(Checked::Valid(m)) => format!("{m:?}"),
+                _ => "?".into(),
+            };
             warnings.push(format!(
-                "{what}: minFilter {:?} is drawn as magFilter {filter:?} at full resolution (no mipmaps yet)",
-                s.min_filter.as_ref().and_then(|m| if let Checked::Valid(m) = m { Some(*m) } else { None })
+                "{what}: minFilter {min} is drawn as magFilter {filter:?} at full resolution (no mipmaps yet)"
             ));
         }
         for w in warnings {

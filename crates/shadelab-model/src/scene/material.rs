@@ -60,9 +60,8 @@ impl Default for Material {
 
 impl Material {
     /// The surface colour `C` and reflectance μ at a point with texture coordinates `uv` and
-    /// vertex colour `vertex_color`: with `t` = the vertex colour times the base colour texture's
-    /// linear RGB there, `C·t` and `μ + μ_tinted·(t − 1)` (glTF's base colour scales the
-    /// diffuse colour and a metal's F0 alike). A texture index past `textures` counts as none.
+    /// vertex colour `vertex_color` ([`tinted_surface`] with `t` = the vertex colour times the
+    /// base colour texture's linear RGB there). A texture index past `textures` counts as none.
     pub fn surface_at(
         &self,
         textures: &[super::Texture],
@@ -73,10 +72,22 @@ impl Material {
             .base_color_texture
             .and_then(|r| textures.get(r.texture).map(|t| t.sample(r.transform.apply(uv))))
             .unwrap_or([1.0; 4]);
-        let t: [f64; 3] = std::array::from_fn(|i| vertex_color[i] * texel[i]);
-        (
-            std::array::from_fn(|i| self.color[i] * t[i]),
-            std::array::from_fn(|i| (self.mu[i] + self.mu_tinted[i] * (t[i] - 1.0)).clamp(0.0, 1.0)),
-        )
+        let tint = vertex_tint(vertex_color);
+        tinted_surface(self.color, self.mu, self.mu_tinted, std::array::from_fn(|i| tint[i] * texel[i]))
     }
+}
+
+/// `C·t` and `μ + μ_t·(t − 1)`, μ clamped to [0, 1]: glTF's base colour scales the diffuse colour
+/// and a metal's F0 alike (twin of `tinted_surface` in shaders/surface.wgsl).
+pub fn tinted_surface(c: [f64; 3], mu: [f64; 3], mu_tinted: [f64; 3], t: [f64; 3]) -> ([f64; 3], [f64; 3]) {
+    (
+        std::array::from_fn(|i| c[i] * t[i]),
+        std::array::from_fn(|i| (mu[i] + mu_tinted[i] * (t[i] - 1.0)).clamp(0.0, 1.0)),
+    )
+}
+
+/// A vertex colour as a tint: clamped to [0, 1], a non-finite channel white (twin of `vertex_tint`
+/// in shaders/surface.wgsl).
+pub fn vertex_tint(color: [f64; 3]) -> [f64; 3] {
+    color.map(|c| if c.is_finite() { c.clamp(0.0, 1.0) } else { 1.0 })
 }

@@ -68,10 +68,16 @@ impl UvTransform {
 
     /// The transformed coordinate (the extension's matrix `T·R·S`).
     pub fn apply(&self, uv: [f64; 2]) -> [f64; 2] {
-        let (s, c) = self.rotation.sin_cos();
-        let (x, y) = (uv[0] * self.scale[0], uv[1] * self.scale[1]);
-        [c * x + s * y + self.offset[0], -s * x + c * y + self.offset[1]]
+        texture_uv(uv, self.offset, self.rotation, self.scale)
     }
+}
+
+/// `KHR_texture_transform`: `offset + R(rotation)·(scale ⊙ uv)`, R turning +u towards −v (twin of
+/// `texture_uv` in shaders/surface.wgsl).
+pub fn texture_uv(uv: [f64; 2], offset: [f64; 2], rotation: f64, scale: [f64; 2]) -> [f64; 2] {
+    let (s, c) = rotation.sin_cos();
+    let (x, y) = (uv[0] * scale[0], uv[1] * scale[1]);
+    [c * x + s * y + offset[0], -s * x + c * y + offset[1]]
 }
 
 /// A material's use of a texture: which one, and the transform of its coordinates.
@@ -88,8 +94,8 @@ pub fn srgb_to_linear(v: u8) -> f64 {
     if c <= 0.04045 { c / 12.92 } else { ((c + 0.055) / 1.055).powf(2.4) }
 }
 
-/// A texture coordinate that is not finite samples here: the first texel (a NaN must not reach an
-/// index, and the GPU gives some texel too).
+/// A texture coordinate that is not finite samples here (a NaN must not reach an index; the GPU
+/// uses the same value, shaders/surface.wgsl).
 pub const NONFINITE_UV: f64 = 0.0;
 
 /// Texel index `i` (any integer) brought into `0..n` by the wrap mode.

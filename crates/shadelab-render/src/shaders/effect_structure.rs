@@ -166,6 +166,8 @@ fn a_permutation_without_an_effect_has_no_code_for_it() {
                     ShadingMode::Gouraud => crate::lighting_pass::GOURAUD_ENTRY_POINT,
                     ShadingMode::Phong => fs,
                 };
+                // The effects drawn per pixel only are in no per-vertex mode's lighting pass.
+                let present = present && crate::program::per_pixel_only(shading, EffectKey::NONE.with(e)).has(e);
                 let called: Vec<String> =
                     reachable(&module, ep).into_iter().filter_map(|f| module.functions[f].name.clone()).collect();
                 for f in e.functions() {

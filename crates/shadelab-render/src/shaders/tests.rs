@@ -57,7 +57,7 @@ fn uniform_layouts_match_wgsl() {
     );
     assert_eq!(
         wgsl_layout(&module, "Object"),
-        rust_layout!(ObjectUniform: model, normal_matrix, color, mu, r_s, r_d, r_a, m, h, mirror, transmission, _pad1)
+        rust_layout!(ObjectUniform: model, normal_matrix, color, mu, r_s, r_d, r_a, m, h, mirror, transmission, uv_rotation, mu_tinted, uv_offset_scale)
     );
     assert_eq!(
         wgsl_layout(&module, "ShadowLight"),

@@ -106,8 +106,10 @@ impl Program {
     /// The baseline has no stand-in (it is itself).
     pub fn uber(self) -> Program {
         match self {
+            // Without the surface effects: a scene may have no surface buffers to bind, and the
+            // stand-in draws the material's factor for the moment the real pipeline builds.
             Program::Lit { shading, interpolation, .. } => {
-                Program::Lit { shading, effects: per_pixel_only(shading, EffectKey::UBER), interpolation }
+                Program::Lit { shading, effects: EffectKey::UBER, interpolation }.without_surfaces()
             }
             Program::NullBaseline => Program::NullBaseline,
         }

@@ -282,12 +282,29 @@ fn render_reference_and_difference_give_each_term_its_reference() {
         assert!(String::from_utf8_lossy(&o.stdout).contains("mean FLIP"), "{term}");
         assert_eq!(image::open(&map).unwrap().width(), 160);
     }
-    // A file mesh (one triangle) has no exact surface for the reference.
+    // A small file mesh (one triangle) is its own exact surface: the reference renders it.
     let mesh_path = dir.join("ref-triangle.gltf");
     std::fs::write(&mesh_path, TRIANGLE_GLTF).unwrap();
-    let mesh = mesh_path.to_str().unwrap();
+    let out = dir.join("ref-triangle.png");
+    let o = shadelab(&[
+        "render",
+        "--scene",
+        mesh_path.to_str().unwrap(),
+        "--reference",
+        "--width",
+        "64",
+        "--height",
+        "36",
+        "--output",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{:?}", error_lines(&o));
+    // One of more triangles than the reference tests per ray is refused.
+    let big_path = dir.join("ref-big.glb");
+    std::fs::write(&big_path, shadelab_model::gltf_io::synthetic::sphere_glb(20_000, true).0).unwrap();
+    let big = big_path.to_str().unwrap();
     for bad in [
-        &["--scene", mesh, "--reference", "--output", "x.png"][..],
+        &["--scene", big, "--reference", "--output", "x.png"][..],
         &["--reference", "--difference", "--output", "x.png"],
         &["--difference", "--output", "x.exr"],
         &["--reference", "--overlay", "normals", "--output", "x.png"],

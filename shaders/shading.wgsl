@@ -13,7 +13,8 @@
 
 struct Globals {
     view_proj: mat4x4<f32>,
-    // xyz: eye position.
+    // The eye, homogeneous: (position, 1) for a perspective camera, (−forward, 0) for an
+    // orthographic one; the view vector is camera_pos.xyz − p·camera_pos.w.
     camera_pos: vec4<f32>,
     // rgb: ambient intensity I_amb.
     ambient: vec4<f32>,
@@ -72,7 +73,7 @@ const SMOOTH_VERTEX_FLOATS: u32 = 6u;
 // seeds the shadow filter's per-pixel rotation (read only with cast shadows). The Lambert rule's
 // fill and the sum's transmitted term are not shadowed (see the twin's shade_with_visibility).
 fn shade(p: vec3<f32>, n_in: vec3<f32>, surface: Surface, pixel: vec2<f32>) -> vec3<f32> {
-    let v = safe_normalize(globals.camera_pos.xyz - p, vec3(0.0, 1.0, 0.0));
+    let v = safe_normalize(globals.camera_pos.xyz - p * globals.camera_pos.w, vec3(0.0, 1.0, 0.0));
     // A zero normal (e.g. interpolated between opposite vertex normals) faces the viewer.
     let n = safe_normalize(n_in, v);
     let c = surface.c;

@@ -8,9 +8,10 @@ struct Surface {
 }
 
 // C·t and μ + μ_t·(t − 1), μ clamped to [0, 1]: glTF's base colour scales the diffuse colour and
-// a metal's F0 alike (μ_t is the part of μ the base colour sets).
+// a metal's F0 alike (μ_t is the part of μ the base colour sets). Evaluated as (μ − μ_t) + μ_t·t,
+// which is exact for a metal (μ = μ_t) at any t, where the printed form cancels to f32 noise.
 fn tinted_surface(c: vec3<f32>, mu: vec3<f32>, mu_tinted: vec3<f32>, t: vec3<f32>) -> Surface {
-    return Surface(c * t, clamp(mu + mu_tinted * (t - vec3(1.0)), vec3(0.0), vec3(1.0)));
+    return Surface(c * t, clamp((mu - mu_tinted) + mu_tinted * t, vec3(0.0), vec3(1.0)));
 }
 
 #if EFFECT_VERTEX_COLORS

@@ -129,6 +129,16 @@ fn sweep(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workgroups)
     outputs[base + COL_SHADOW_TEXEL_WORLD] = texel;
     put_rgb(base + COL_SHADOW_MAP_COORD, shadow_map_coord(sm, to_p + n * (SHADOW_NORMAL_OFFSET_TEXELS * texel)));
     outputs[base + COL_SHADOW_ORTHO_TEXEL_WORLD] = shadow_ortho_texel_world(sm, SWEEP_SHADOW_RESOLUTION);
+
+    // The surface at a tint of m in every channel, μ's tinted part μ itself (a metal); the raw
+    // normal as a vertex colour (outside [0, 1]); d and α as texture coordinates, transformed by
+    // the offset (d0, d), a rotation of 4m right angles and the scale (h, d).
+    let s = tinted_surface(SWEEP_COLOR, mu, mu, vec3(m));
+    put_rgb(base + COL_TINTED_SURFACE_C, s.c);
+    put_rgb(base + COL_TINTED_SURFACE_MU, s.mu);
+    put_rgb(base + COL_VERTEX_TINT, vertex_tint(n_raw));
+    let uv = texture_uv(vec2(d, a_row.x), vec2(a_row.y, d), 4.0 * m * SWEEP_CONE_PER_M, vec2(h_row.x, d));
+    put_rgb(base + COL_TEXTURE_UV, vec3(uv, 0.0));
 }
 
 // A colour's three channels into consecutive outputs from `at`.

@@ -163,6 +163,50 @@ case("infinite-translation.gltf", "a translation of 1e39 (beyond f32)", "invalid
      edited(lambda d: d["nodes"][0].update(translation=[1e39, 0, 0])))
 
 
+def png_header(width, height):
+    """A PNG (valid CRCs) declaring width × height RGBA8: whole pixel data for a small image; for a
+    large one an IDAT with one row's start only, as a hostile file would declare more than it holds."""
+    import zlib
+
+    def chunk(kind, data):
+        return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data))
+    ihdr = struct.pack(">IIBBBBB", width, height, 8, 6, 0, 0, 0)
+    rows = b"".join(b"\0" + b"\xff" * (4 * width) for _ in range(height)) if width * height <= 64 else b"\0" * 16
+    return (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", ihdr) + chunk(b"IDAT", zlib.compress(rows))
+            + chunk(b"IEND", b""))
+
+
+def textured(image, sampler=None, texture_index=0):
+    """The base cube with a material whose base colour texture is `image` (a glTF image object)."""
+    def fn(d):
+        d["materials"] = [{"pbrMetallicRoughness": {"baseColorTexture": {"index": texture_index}}}]
+        d["meshes"][0]["primitives"][0]["material"] = 0
+        d["textures"] = [{"source": 0} if sampler is None else {"source": 0, "sampler": sampler}]
+        d["images"] = [image]
+    return fn
+
+
+case("texture-index-out-of-range.gltf", "a base colour texture index past the textures",
+     "material 0: baseColorTexture: texture 3 does not exist",
+     edited(textured({"uri": "data:image/png;base64," + base64.b64encode(png_header(1, 1)).decode()},
+                     texture_index=3)))
+case("image-huge-declared.gltf", "a PNG whose header declares 100000 × 100000 pixels",
+     "image 0: 100000×100000 pixels, outside 1..=8192 per side (MAX_TEXTURE_SIDE)",
+     edited(textured({"uri": "data:image/png;base64," + base64.b64encode(png_header(100000, 100000)).decode()})))
+case("image-view-past-buffer.gltf", "an image in a buffer view that ends past its buffer",
+     "buffer view 2: bytes 0..4000 are past the end of buffer 0",
+     edited(lambda d: (textured({"bufferView": 2, "mimeType": "image/png"})(d),
+                       d["bufferViews"].append({"buffer": 0, "byteOffset": 0, "byteLength": 4000}))))
+case("sampler-out-of-range.gltf", "a texture whose sampler does not exist",
+     "texture 0: sampler 5 does not exist",
+     edited(textured({"uri": "data:image/png;base64," + base64.b64encode(png_header(1, 1)).decode()}, sampler=5)))
+case("sparse-indices-not-increasing.gltf", "a sparse accessor whose indices go back",
+     "is not increasing or not below the count 8",
+     edited(lambda d: d["accessors"][0].update(sparse={
+         "count": 2, "indices": {"bufferView": 1, "componentType": 5123}, "values": {"bufferView": 0}}),
+         indices=[3, 1, 3, 0, 3, 2]))
+
+
 def overflow(d):
     d["nodes"] = [{"scale": [1e38, 1e38, 1e38], "children": [i + 1]} for i in range(9)] + [{"mesh": 0}]
 

@@ -184,3 +184,25 @@ fn the_timestamp_ring_times_frames_without_waiting() {
     }
     assert!(times.iter().all(|t| t.is_finite() && *t > 0.0), "{times:?}");
 }
+
+/// An orthographic camera draws orthographically: the GPU's image is as close to the f64
+/// reference (parallel rays, one view direction) as the perspective camera's is to its own, and
+/// far from the perspective reference.
+#[test]
+fn an_orthographic_camera_matches_its_reference() {
+    use shadelab_model::reference::render_reference;
+    use shadelab_render::image_error::compare;
+    let (w, h) = (320, 180);
+    let s = settings(ShadingMode::Phong, SpecularModel::CookTorrance);
+    let persp = Scene::builtin("default").unwrap();
+    let mut ortho = persp.clone();
+    ortho.camera.orthographic = Some(2.2);
+    let error = |gpu_scene: &Scene, reference_scene: &Scene| {
+        let img = render_image(gpu(), gpu_scene, w, h, &s).unwrap();
+        compare(&img, &render_reference(reference_scene, SpecularModel::CookTorrance, w, h)).stats.rmse
+    };
+    let own = error(&persp, &persp);
+    let ortho_own = error(&ortho, &ortho);
+    assert!(ortho_own <= 2.0 * own, "orthographic RMSE {ortho_own}, perspective {own}");
+    assert!(error(&ortho, &persp) > 10.0 * ortho_own);
+}

@@ -134,21 +134,6 @@ fn run_counting(cmd: &mut Command) -> (bool, Count) {
     (child.wait().is_ok_and(|s| s.success()), count)
 }
 
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn test_result_lines_are_counted() {
-        let mut c = Count::default();
-        c.add_line("test result: ok. 24 passed; 0 failed; 0 ignored; 0 measured; 0 filtered out; finished in 1.2s");
-        c.add_line("test result: FAILED. 3 passed; 2 failed; 0 ignored; 0 measured; 0 filtered out");
-        c.add_line("running 5 tests");
-        c.add_line("test a ... ok");
-        assert_eq!(c, Count { passed: 27, failed: 2 });
-    }
-}
-
 /// `XDG_RUNTIME_DIR` for the tests: the caller's, or a private one (Mesa's window-system code
 /// complains on every device open without one).
 fn runtime_dir() -> PathBuf {
@@ -220,4 +205,19 @@ fn viewer_smoke_test(icd: &Path, xdg: &Path) -> Result<(), String> {
     }
     eprintln!("xtask: {} is {}×{} with {} distinct colours", shot.display(), img.width(), img.height(), distinct.len());
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn test_result_lines_are_counted() {
+        let mut c = Count::default();
+        c.add_line("test result: ok. 24 passed; 0 failed; 0 ignored; 0 measured; 0 filtered out; finished in 1.2s");
+        c.add_line("test result: FAILED. 3 passed; 2 failed; 0 ignored; 0 measured; 0 filtered out");
+        c.add_line("running 5 tests");
+        c.add_line("test a ... ok");
+        assert_eq!(c, Count { passed: 27, failed: 2 });
+    }
 }

@@ -36,7 +36,7 @@ pub const ASSET_SCENES: [AssetScene; 3] = [
 ];
 
 fn camera(eye: DVec3, target: DVec3) -> Camera {
-    Camera { eye, target, up: DVec3::Y, fov_y_deg: 40.0, near: 0.1, far: 50.0 }
+    Camera { eye, target, up: DVec3::Y, fov_y_deg: 40.0, near: 0.1, far: 50.0, orthographic: None }
 }
 
 fn ground(tessellation: u32, color: [f64; 3]) -> (Object, Material) {

@@ -70,6 +70,10 @@ pub const D0_MIN: f64 = 1e-3;
 /// scale), and the ramp's slope is at most 1e3.
 pub const SPOT_COS_SPAN_MIN: f64 = 1e-3;
 
+/// A texture coordinate that is not finite samples here (u or v alone): a NaN must not reach a
+/// texel index, and 0 is a coordinate every wrap mode maps inside the image.
+pub const NONFINITE_UV: f64 = 0.0;
+
 /// All guards by name, in the order they are declared (used by the WGSL ↔ Rust equality test and
 /// by the README table).
 pub const ALL: &[(&str, f64)] = &[
@@ -86,4 +90,5 @@ pub const ALL: &[(&str, f64)] = &[
     ("LIGHT_DIST_MIN", LIGHT_DIST_MIN),
     ("D0_MIN", D0_MIN),
     ("SPOT_COS_SPAN_MIN", SPOT_COS_SPAN_MIN),
+    ("NONFINITE_UV", NONFINITE_UV),
 ];

@@ -60,7 +60,8 @@ pub fn pick(scene: &Scene, (x, y): (u32, u32), (width, height): (u32, u32)) -> O
     let (o, dir) = scene.camera.ray(x, y, width, height);
     let hit = crate::reference::trace_ray(scene, &inverses, o, dir)?;
     let material = scene.materials.get(scene.objects[hit.object].material)?.clone();
-    let v = safe_normalize(scene.camera.eye - hit.point, DVec3::Y);
+    let e = scene.camera.eye_h();
+    let v = safe_normalize(e.truncate() - hit.point * e.w, DVec3::Y);
     let n = safe_normalize(hit.normal, v);
     let lights = scene.lights.iter().take(MAX_LIGHTS).map(|l| light_sample(l, hit.point, n)).collect();
     Some(Pick { pixel: (x, y), object: hit.object, material, point: hit.point, n, v, lights })
@@ -174,7 +175,7 @@ mod tests {
         let lit = crate::lighting::shading::shade(
             p.point,
             p.n,
-            scene.camera.eye,
+            scene.camera.eye_h(),
             &p.material,
             &scene.lights,
             scene.ambient,

@@ -90,7 +90,7 @@ pub fn render_reference(scene: &Scene, specular: SpecularModel, width: u32, heig
                 img.hidden.push(0);
                 continue;
             };
-            let (p, n, eye) = (hit.point, hit.normal, scene.camera.eye);
+            let (p, n, eye) = (hit.point, hit.normal, scene.camera.eye_h());
             let material = &scene.materials[scene.objects[hit.object].material];
             let owned;
             let mat = if material.base_color_texture.is_some() || hit.vertex_color != [1.0; 3] {

@@ -27,7 +27,7 @@ pub use pipelines::{PipelineCache, PipelineKey};
 pub use program::{Program, RenderSettings, Specialization};
 pub use renderer::Renderer;
 pub use target::{LinearImage, Target};
-pub use upload::{SceneGpu, UploadError};
+pub use upload::{SceneGpu, UploadError, Uploader};
 
 /// Render a scene offscreen to a linear float image with the program `settings` resolve for it
 /// ([`Program::for_scene`]): the path `shadelab render` and the image tests share. Fails only for

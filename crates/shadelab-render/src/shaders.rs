@@ -15,10 +15,10 @@ pub const FILES: [(&str, &str); 8] = [
     ("lights.wgsl", include_str!("../../../shaders/lights.wgsl")),
     // The shadow projection math, without bindings (the sweep runs it): with cast shadows only.
     ("shadow_math.wgsl", include_str!("../../../shaders/shadow_math.wgsl")),
-    // Only in permutations with cast shadows (the whole file is one `#if EFFECT_CAST_SHADOWS`).
-    ("shadows.wgsl", include_str!("../../../shaders/shadows.wgsl")),
     // C and μ at a point: the material tinted by vertex colours and textures.
     ("surface.wgsl", include_str!("../../../shaders/surface.wgsl")),
+    // Only in permutations with cast shadows (the whole file is one `#if EFFECT_CAST_SHADOWS`).
+    ("shadows.wgsl", include_str!("../../../shaders/shadows.wgsl")),
     ("shading.wgsl", include_str!("../../../shaders/shading.wgsl")),
 ];
 
@@ -65,11 +65,11 @@ fn uber_defines() -> Vec<&'static str> {
     EffectKey::UBER.defines()
 }
 
-/// Constants, guards and the lighting terms with every effect, without bindings or entry points
-/// (for compute passes that evaluate the terms directly): `common`, `brdf`, `models`, `lights`
-/// and `shadow_math`.
+/// Constants, guards and the lighting terms with every effect, without entry points (for compute
+/// passes that evaluate the terms directly; the one texture binding of `surface` goes unused):
+/// `common`, `brdf`, `models`, `lights`, `shadow_math` and `surface`.
 pub fn terms_source() -> String {
-    let raw = FILES[..5].iter().map(|(_, s)| *s).collect::<Vec<_>>().join("\n");
+    let raw = FILES[..6].iter().map(|(_, s)| *s).collect::<Vec<_>>().join("\n");
     preprocess(&raw, &uber_defines()).expect("the shipped WGSL preprocesses")
 }
 

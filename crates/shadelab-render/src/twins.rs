@@ -24,17 +24,17 @@ const TWINS: [(&str, &str); 8] = [
         ),
     ),
     (
-        "shadows.wgsl",
-        concat!(
-            include_str!("../../shadelab-model/src/shadows.rs"),
-            include_str!("../../shadelab-model/src/shadows/cascades.rs")
-        ),
-    ),
-    (
         "surface.wgsl",
         concat!(
             include_str!("../../shadelab-model/src/scene/material.rs"),
             include_str!("../../shadelab-model/src/scene/texture.rs")
+        ),
+    ),
+    (
+        "shadows.wgsl",
+        concat!(
+            include_str!("../../shadelab-model/src/shadows.rs"),
+            include_str!("../../shadelab-model/src/shadows/cascades.rs")
         ),
     ),
     ("shading.wgsl", include_str!("../../shadelab-model/src/lighting/shading.rs")),
@@ -144,8 +144,8 @@ fn wgsl_guards_equal_rust_guards() {
         let w = wgsl_constant(&module, name).unwrap_or_else(|| panic!("{name} missing from common.wgsl"));
         assert_eq!(w as f32, *value as f32, "{name}: WGSL {w} vs Rust {value}");
     }
-    // Every f32 constant of common.wgsl is a guard with its reason in guards.rs.
-    for (name, ty) in wgsl_consts(wgsl_file("common.wgsl")) {
+    // Every f32 constant of common.wgsl and surface.wgsl is a guard with its reason in guards.rs.
+    for (name, ty) in ["common.wgsl", "surface.wgsl"].into_iter().flat_map(|f| wgsl_consts(wgsl_file(f))) {
         if ty == "f32" {
             assert!(shadelab_model::guards::ALL.iter().any(|(g, _)| *g == name), "{name} is not in guards::ALL");
         }

@@ -124,7 +124,7 @@ impl GlobalsUniform {
         }
         GlobalsUniform {
             view_proj: scene.camera.view_proj(width, height).to_cols_array_2d(),
-            camera_pos: scene.camera.eye.as_vec3().extend(1.0).to_array(),
+            camera_pos: scene.camera.eye_h().as_vec4().to_array(),
             ambient: rgb(scene.ambient, 1.0),
             light_count: scene.lights.len().min(MAX_LIGHTS) as u32,
             flags,

@@ -92,7 +92,34 @@ pub enum UploadError {
     BufferTooLarge { object: String, what: &'static str, bytes: u64, limit: u64 },
 }
 
+/// What uploading a scene needs of a renderer, apart from it: a worker thread can upload while
+/// the renderer draws the old scene (the viewer's loading).
+#[derive(Clone)]
+pub struct Uploader {
+    device: wgpu::Device,
+    queue: wgpu::Queue,
+    globals_layout: wgpu::BindGroupLayout,
+    object_layout: wgpu::BindGroupLayout,
+}
+
 impl Renderer {
+    /// The uploader of this renderer's device and layouts.
+    pub fn uploader(&self) -> Uploader {
+        Uploader {
+            device: self.device.clone(),
+            queue: self.queue.clone(),
+            globals_layout: self.globals_layout.clone(),
+            object_layout: self.object_layout.clone(),
+        }
+    }
+
+    /// Upload a scene's meshes and uniforms ([`Uploader::upload`]).
+    pub fn upload(&self, scene: &Scene) -> Result<SceneGpu, UploadError> {
+        self.uploader().upload(scene)
+    }
+}
+
+impl Uploader {
     /// Upload a scene's meshes and uniforms. A mesh whose vertex or index buffer would be larger
     /// than the device allows (`max_buffer_size`) is an error, not a GPU validation failure.
     pub fn upload(&self, scene: &Scene) -> Result<SceneGpu, UploadError> {

@@ -17,6 +17,19 @@ fn harness() -> Harness<'static, Viewer> {
 }
 
 /// Pixels of the scene area (left of the panel) that differ by more than 8 in any channel.
+/// Frames until the file being opened is shown (or refused), at most 60 s.
+fn wait_loaded(h: &mut Harness<'static, Viewer>) -> u32 {
+    let mut frames = 0;
+    let start = std::time::Instant::now();
+    while h.state().loading() && start.elapsed() < std::time::Duration::from_secs(60) {
+        h.run_steps(1);
+        frames += 1;
+        std::thread::sleep(std::time::Duration::from_millis(10));
+    }
+    assert!(!h.state().loading(), "still loading after 60 s");
+    frames
+}
+
 fn changed_view_pixels(a: &image::RgbaImage, b: &image::RgbaImage) -> usize {
     let view_width = a.width() * 6 / 10;
     (0..a.height())
@@ -188,12 +201,12 @@ fn open_and_save_scene_files() {
     let before = h.state_mut().scene_mut().clone();
     let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
     h.state_mut().open_file(&root.join("tests/gltf-corpus/index-past-vertex-count.gltf"));
-    h.run_steps(2);
+    wait_loaded(&mut h);
     let (msg, is_error) = h.state().message().cloned().expect("a message");
     assert!(is_error && msg.contains("index-past-vertex-count.gltf") && !msg.contains('\n'), "{msg}");
     assert_eq!(*h.state_mut().scene_mut(), before, "a bad file leaves the scene as it was");
     h.state_mut().open_file(&root.join("assets/material-board.gltf"));
-    h.run_steps(2);
+    wait_loaded(&mut h);
     assert!(!h.state().message().unwrap().1, "{:?}", h.state().message());
     let board = h.state_mut().scene_mut().clone();
     assert_ne!(board, before);
@@ -268,6 +281,7 @@ fn a_files_cameras_are_offered_in_a_menu() {
     // The built-in scene has one camera: no menu.
     assert!(h.query_by_label("from above").is_none());
     h.state_mut().open_file(&path);
+    wait_loaded(&mut h);
     h.run_steps(3);
     let before = h.render().expect("render");
     let eye = h.state_mut().scene_mut().camera.eye;
@@ -426,4 +440,35 @@ fn clicking_a_pixel_shows_its_lobe_and_angles() {
     }
     assert!(h.query_by_label_contains("Cook–Torrance F·D·G/(N·V): max").is_some());
     h.render().expect("render").save(concat!(env!("CARGO_TARGET_TMPDIR"), "/lobe-window.png")).unwrap();
+}
+
+/// A large file opens on a worker thread: the panel shows a progress bar and a cancel button,
+/// frames keep coming and the old scene stays on show until the new one is ready; cancelling
+/// keeps the old scene.
+#[test]
+fn a_large_file_opens_with_progress_and_can_be_cancelled() {
+    let dir = std::path::PathBuf::from(env!("CARGO_TARGET_TMPDIR"));
+    let path = dir.join("viewer-large-sphere.glb");
+    let (bytes, triangles) = shadelab_model::gltf_io::synthetic::sphere_glb(2_000_000, false);
+    std::fs::write(&path, bytes).unwrap();
+    let mut h = harness();
+    let before = h.state_mut().scene_mut().clone();
+    // Cancelled (the first load, the slowest: nothing cached): the scene on show stays.
+    h.state_mut().open_file(&path);
+    h.run_steps(1);
+    assert!(h.state().loading());
+    assert!(h.query_by_label_contains("viewer-large-sphere.glb").is_some(), "the bar names the file");
+    h.get_by_label("cancel").click();
+    h.run_steps(2);
+    assert!(!h.state().loading());
+    assert!(h.state().message().unwrap().0.contains("cancelled opening"), "{:?}", h.state().message());
+    assert_eq!(*h.state_mut().scene_mut(), before);
+    // Opened: the old scene is drawn, frame after frame, until the new one is ready.
+    h.state_mut().open_file(&path);
+    let start = std::time::Instant::now();
+    let frames = wait_loaded(&mut h);
+    eprintln!("{frames} frames drawn while {triangles} triangles loaded in {:.2} s", start.elapsed().as_secs_f64());
+    assert!(frames >= 3, "{frames} frames while loading");
+    assert!(!h.state().message().unwrap().1, "{:?}", h.state().message());
+    assert_eq!(h.state_mut().scene_mut().triangle_count(), triangles);
 }

@@ -328,6 +328,9 @@ fn shadow_cascades(scene: &Scene, lights: &[crate::scene::Light], shadows: bool)
     if !lights.iter().filter(directional).any(|l| l.shadow.cascades) {
         return (false, "every directional light's cascades setting is off".into());
     }
+    if scene.camera.orthographic.is_some() {
+        return (false, "the camera is orthographic: a pixel covers the same area at every depth".into());
+    }
     let Some((near, far)) = view_depth_range(scene) else {
         return (false, "no object in view".into());
     };

@@ -37,6 +37,9 @@ struct CameraExtras {
     far: Option<Number>,
     target: Option<Vec3>,
     up: Option<Vec3>,
+    /// An orthographic camera's half height (left out for a perspective camera).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    ymag: Option<Number>,
 }
 
 impl Reader<'_> {
@@ -74,7 +77,7 @@ impl Reader<'_> {
         }
         let forward = forward.normalize();
         let far_auto = ((eye - center).length() + radius) * 2.0;
-        let (fov, near, far) = match (&c.perspective, &c.orthographic) {
+        let (fov, near, far, orthographic) = match (&c.perspective, &c.orthographic) {
             (Some(p), _) => {
                 let yfov = p.yfov as f64;
                 if !(yfov > 0.0 && yfov < std::f64::consts::PI) {
@@ -90,17 +93,36 @@ impl Reader<'_> {
                     // Infinite projection: far enough for the whole scene.
                     None => far_auto.max(near * 10.0),
                 };
-                (yfov.to_degrees(), near, far)
+                (yfov.to_degrees(), near, far, None)
             }
-            _ => {
-                self.cx.warn(format!("{what} is orthographic: shown in perspective ({FALLBACK_FOV_Y_DEG}°)"));
-                let near = (far_auto * 1e-3).max(1e-3);
-                (FALLBACK_FOV_Y_DEG, near, far_auto.max(near * 10.0))
+            (None, Some(o)) => {
+                // glTF 2.0 §5.13: ymag > 0 (half the height), 0 ≤ znear < zfar.
+                let (ymag, near, far) = (o.ymag as f64, o.znear as f64, o.zfar as f64);
+                if !(ymag > 0.0 && ymag.is_finite()) {
+                    return Err(self.cx.invalid(format!("{what}: ymag {ymag} is not a positive number")));
+                }
+                if !(near >= 0.0 && far > near && far.is_finite()) {
+                    return Err(self
+                        .cx
+                        .invalid(format!("{what}: znear {near}, zfar {far}: 0 ≤ znear < zfar is required")));
+                }
+                if (o.xmag as f64 / ymag - COMPOSED_ASPECT).abs() > 1e-3 {
+                    self.cx.warn(format!("{what}: xmag/ymag is not the image's aspect: the width follows the image"));
+                }
+                (FALLBACK_FOV_Y_DEG, near, far, Some(ymag))
             }
+            (None, None) => return Err(self.cx.invalid(format!("{what} has neither perspective nor orthographic"))),
         };
         let depth = (center - eye).dot(forward).max(radius * 0.1).max(1e-3);
-        let mut camera =
-            Camera { eye, target: eye + forward * depth, up: up_node.normalize(), fov_y_deg: fov, near, far };
+        let mut camera = Camera {
+            eye,
+            target: eye + forward * depth,
+            up: up_node.normalize(),
+            fov_y_deg: fov,
+            near,
+            far,
+            orthographic,
+        };
         // The exact eye, the orbit pivot and the up vector shadelab wrote, when they still agree
         // with the node.
         let ex: CameraExtras = extras::read(&self.cx, &c.extras, &what)?;
@@ -115,6 +137,11 @@ impl Reader<'_> {
             {
                 *field = v;
             }
+        }
+        if let (Some(Number(v)), Some(h)) = (ex.ymag, camera.orthographic.as_mut())
+            && agrees(DVec3::splat(v), DVec3::splat(*h))
+        {
+            *h = v;
         }
         let eye = camera.eye;
         if let Some(Vec3(t)) = ex.target
@@ -146,6 +173,7 @@ pub(super) fn framing_camera(center: DVec3, radius: f64) -> Camera {
         fov_y_deg: fov,
         near: (dist - radius).max(dist * 1e-3) * 0.5,
         far: (dist + radius) * 2.0,
+        orthographic: None,
     }
 }
 
@@ -166,17 +194,26 @@ pub(super) fn write_camera(c: &Camera) -> (Value, Value) {
         far: Some(Number(c.far)),
         target: Some(Vec3(c.target)),
         up: Some(Vec3(c.up)),
+        ymag: c.orthographic.map(Number),
     };
-    let camera = json!({
-        "name": "camera",
-        "type": "perspective",
-        "perspective": {
-            "yfov": num(c.fov_y_deg.to_radians()),
-            "znear": num(c.near),
-            "zfar": num(c.far),
-            "aspectRatio": num(COMPOSED_ASPECT),
-        },
-        "extras": extras::shadelab(&ex),
-    });
+    let camera = match c.orthographic {
+        Some(h) => json!({
+            "name": "camera",
+            "type": "orthographic",
+            "orthographic": { "xmag": num(h * COMPOSED_ASPECT), "ymag": num(h), "znear": num(c.near), "zfar": num(c.far) },
+            "extras": extras::shadelab(&ex),
+        }),
+        None => json!({
+            "name": "camera",
+            "type": "perspective",
+            "perspective": {
+                "yfov": num(c.fov_y_deg.to_radians()),
+                "znear": num(c.near),
+                "zfar": num(c.far),
+                "aspectRatio": num(COMPOSED_ASPECT),
+            },
+            "extras": extras::shadelab(&ex),
+        }),
+    };
     (node, camera)
 }

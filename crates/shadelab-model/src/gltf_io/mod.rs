@@ -46,7 +46,7 @@
 //! | scene | `ambient` (`I_amb`), `shading`, `specular` |
 //! | mesh | `shape`, `tessellation` (an analytic shape; loaded back as it when the triangles still match) |
 //! | node | `translation`, `rotation_y`, `scale` (exact f64 transform) |
-//! | camera | `eye`, `target` (orbit pivot), `up`, `fov_y_deg`, `near`, `far` |
+//! | camera | `eye`, `target` (orbit pivot), `up`, `fov_y_deg`, `near`, `far`, `ymag` (orthographic) |
 //!
 //! Every key is optional and range-checked like the command line's flags; a value out of range is
 //! an error. Placement values (node, light position/direction, camera) are used only when they

@@ -195,6 +195,7 @@ impl Reader<'_> {
                 fov_y_deg: FALLBACK_FOV_Y_DEG,
                 near: 0.1,
                 far: 100.0,
+                orthographic: None,
             },
             meshes: Vec::new(),
             illumination: Default::default(),

@@ -8,7 +8,7 @@ use super::common::safe_normalize;
 use super::lights::{Light, MAX_LIGHTS, light_sample};
 use super::models::{IlluminationModel, lambert_rule_fill, lambert_rule_lit, sum_contribution, transmitted_term};
 use crate::scene::Material;
-use glam::DVec3;
+use glam::{DVec3, DVec4};
 
 /// The illumination model `model` at world point `p` with (not necessarily unit) normal `n_in`,
 /// seen from `eye`, every light reaching it; for the Phong model (docs/model.md §3)
@@ -17,7 +17,7 @@ use glam::DVec3;
 pub fn shade(
     p: DVec3,
     n_in: DVec3,
-    eye: DVec3,
+    eye: DVec4,
     mat: &Material,
     lights: &[Light],
     ambient: [f64; 3],
@@ -38,7 +38,7 @@ pub fn shade(
 pub fn shade_with_visibility(
     p: DVec3,
     n_in: DVec3,
-    eye: DVec3,
+    eye: DVec4,
     mat: &Material,
     lights: &[Light],
     ambient: [f64; 3],
@@ -46,7 +46,8 @@ pub fn shade_with_visibility(
     model: IlluminationModel,
     mut visibility: impl FnMut(usize, &Light, DVec3) -> f64,
 ) -> [f64; 3] {
-    let v = safe_normalize(eye - p, DVec3::Y);
+    // The view vector: toward the eye (w = 1), or the orthographic camera's one direction (w = 0).
+    let v = safe_normalize(eye.truncate() - p * eye.w, DVec3::Y);
     let n = safe_normalize(n_in, v);
     let v_index = mat.mu.map(fresnel_v_from_mu);
     let c = mat.color;

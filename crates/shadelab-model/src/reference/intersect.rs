@@ -208,7 +208,9 @@ fn intersect_mesh(mesh: &TriangleMesh, o: DVec3, dir: DVec3) -> Option<MeshHit> 
 /// The nearest hit of a world ray among the scene's objects (`inverses`: each object's inverse
 /// transform).
 pub(super) fn trace(scene: &Scene, inverses: &[DMat4], o: DVec3, dir: DVec3) -> Option<SurfaceHit> {
-    let mut best: Option<(f64, usize, DVec3, DVec3, [f64; 2], [f64; 3])> = None;
+    // Ray parameter, object, shading and face normals, texture coordinates, vertex colour.
+    type Best = (f64, usize, DVec3, DVec3, [f64; 2], [f64; 3]);
+    let mut best: Option<Best> = None;
     for (i, (obj, inv)) in scene.objects.iter().zip(inverses).enumerate() {
         let (lo, ld) = (inv.transform_point3(o), inv.transform_vector3(dir));
         let hit = match obj.shape {

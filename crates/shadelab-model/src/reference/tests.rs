@@ -42,6 +42,7 @@ fn stage(objects: Vec<Object>, lights: Vec<Light>) -> Scene {
             fov_y_deg: 30.0,
             near: 0.1,
             far: 50.0,
+            orthographic: None,
         },
         meshes: Vec::new(),
         illumination: Default::default(),

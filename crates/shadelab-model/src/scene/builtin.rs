@@ -37,6 +37,7 @@ pub(super) fn default_camera() -> Camera {
         fov_y_deg: 40.0,
         near: 0.1,
         far: 50.0,
+        orthographic: None,
     }
 }
 

@@ -78,11 +78,12 @@ impl Material {
 }
 
 /// `C·t` and `μ + μ_t·(t − 1)`, μ clamped to [0, 1]: glTF's base colour scales the diffuse colour
-/// and a metal's F0 alike (twin of `tinted_surface` in shaders/surface.wgsl).
+/// and a metal's F0 alike (twin of `tinted_surface` in shaders/surface.wgsl). Evaluated as
+/// `(μ − μ_t) + μ_t·t`, exact for a metal (μ = μ_t) at any t, where the printed form cancels.
 pub fn tinted_surface(c: [f64; 3], mu: [f64; 3], mu_tinted: [f64; 3], t: [f64; 3]) -> ([f64; 3], [f64; 3]) {
     (
         std::array::from_fn(|i| c[i] * t[i]),
-        std::array::from_fn(|i| (mu[i] + mu_tinted[i] * (t[i] - 1.0)).clamp(0.0, 1.0)),
+        std::array::from_fn(|i| ((mu[i] - mu_tinted[i]) + mu_tinted[i] * t[i]).clamp(0.0, 1.0)),
     )
 }
 

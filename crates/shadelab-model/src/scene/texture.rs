@@ -2,6 +2,7 @@
 //! the f64 sampling the reference uses, the same texel centres, wrap modes and filter as the GPU's
 //! sampler over an `Rgba8UnormSrgb` texture (sRGB decoded per texel, then filtered in linear).
 
+use crate::guards::NONFINITE_UV;
 use std::sync::Arc;
 
 /// How a texture coordinate outside [0, 1] is brought back (glTF `wrapS`/`wrapT`).
@@ -93,10 +94,6 @@ pub fn srgb_to_linear(v: u8) -> f64 {
     let c = v as f64 / 255.0;
     if c <= 0.04045 { c / 12.92 } else { ((c + 0.055) / 1.055).powf(2.4) }
 }
-
-/// A texture coordinate that is not finite samples here (a NaN must not reach an index; the GPU
-/// uses the same value, shaders/surface.wgsl).
-pub const NONFINITE_UV: f64 = 0.0;
 
 /// Texel index `i` (any integer) brought into `0..n` by the wrap mode.
 fn wrap_index(i: i64, n: u32, wrap: Wrap) -> u32 {

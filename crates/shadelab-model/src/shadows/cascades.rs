@@ -84,6 +84,10 @@ fn ray_box(o: DVec3, d: DVec3, lo: DVec3, hi: DVec3) -> Option<(f64, f64)> {
 /// depth ratio of at most [`SHADOW_CASCADE_DEPTH_RATIO`], at most [`SHADOW_CASCADES_MAX`]; 1
 /// (one map fitted to the scene) when the view's ratio is within it.
 pub fn cascade_count(scene: &Scene) -> u32 {
+    // An orthographic view's pixels cover the same area at every depth: one map serves it.
+    if scene.camera.orthographic.is_some() {
+        return 1;
+    }
     view_depth_range(scene).map_or(1, |(near, far)| cascades_for_depths(near, far))
 }
 

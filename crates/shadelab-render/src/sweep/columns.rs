@@ -30,7 +30,7 @@ pub struct Column {
 const D_MAX: f64 = 1.0 / (4.0 * M_MIN * M_MIN);
 
 /// Every column in the order the kernel writes them (and the report lists them).
-pub const COLUMNS: [Column; 21] = [
+pub const COLUMNS: [Column; 25] = [
     col("diffuse_lambert", "DIFFUSE_LAMBERT", 1, 1.0, "N·L of unit vectors"),
     col("specular_phong", "SPECULAR_PHONG", 1, 1.0, "(V·R)^h with V·R clamped to [0, 1]"),
     col("d_beckmann", "D_BECKMANN", 1, D_MAX, "peak 1/(4 m²) at m = M_MIN"),
@@ -67,6 +67,13 @@ pub const COLUMNS: [Column; 21] = [
         ..col("shadow_map_coord", "SHADOW_MAP_COORD", 3, f64::INFINITY, "finite; outside [0, 1] off the map")
     },
     col("shadow_ortho_texel_world", "SHADOW_ORTHO_TEXEL_WORLD", 1, f64::INFINITY, "a world length: finite"),
+    col("tinted_surface (C)", "TINTED_SURFACE_C", 3, 1.0, "C·t with C and t in [0, 1]"),
+    col("tinted_surface (μ)", "TINTED_SURFACE_MU", 3, 1.0, "μ + μ_t·(t − 1) clamped to [0, 1]"),
+    col("vertex_tint", "VERTEX_TINT", 3, 1.0, "clamped to [0, 1], non-finite white"),
+    Column {
+        signed: true,
+        ..col("texture_uv", "TEXTURE_UV", 3, f64::INFINITY, "finite: offset + R·(scale ⊙ uv), no bound of its own")
+    },
 ];
 
 const fn col(name: &'static str, wgsl: &'static str, channels: usize, bound: f64, why_bound: &'static str) -> Column {
@@ -166,6 +173,10 @@ const SHADOW_FACE: usize = offset("SHADOW_FACE");
 const SHADOW_TEXEL_WORLD: usize = offset("SHADOW_TEXEL_WORLD");
 const SHADOW_MAP_COORD: usize = offset("SHADOW_MAP_COORD");
 const SHADOW_ORTHO_TEXEL_WORLD: usize = offset("SHADOW_ORTHO_TEXEL_WORLD");
+const TINTED_SURFACE_C: usize = offset("TINTED_SURFACE_C");
+const TINTED_SURFACE_MU: usize = offset("TINTED_SURFACE_MU");
+const VERTEX_TINT: usize = offset("VERTEX_TINT");
+const TEXTURE_UV: usize = offset("TEXTURE_UV");
 
 /// The f64 reference of the kernel's outputs for one combination's inputs.
 ///
@@ -246,6 +257,15 @@ pub(super) fn reference(
     let q = to_p + n * (shadows::SHADOW_NORMAL_OFFSET_TEXELS as f64 * texel);
     rgb(&mut out, SHADOW_MAP_COORD, shadows::shadow_map_coord(shadow.dmat4(), q).to_array());
     out[SHADOW_ORTHO_TEXEL_WORLD] = shadows::shadow_ortho_texel_world(shadow.dmat4(), SWEEP_SHADOW_RESOLUTION);
+    // The surface at a tint of m in every channel, μ's tinted part μ itself (a metal); the raw
+    // normal as a vertex colour (outside [0, 1]); d and α as texture coordinates, transformed by
+    // the offset (d0, d), a rotation of 4m right angles and the scale (h, d).
+    let (c, mu_t) = shadelab_model::scene::tinted_surface(SWEEP_COLOR, mu, mu, [m; 3]);
+    rgb(&mut out, TINTED_SURFACE_C, c);
+    rgb(&mut out, TINTED_SURFACE_MU, mu_t);
+    rgb(&mut out, VERTEX_TINT, shadelab_model::scene::vertex_tint(n_raw.to_array()));
+    let uv = shadelab_model::scene::texture_uv([d, alpha], [d0, d], 4.0 * m * SWEEP_CONE_PER_M, [h, d]);
+    rgb(&mut out, TEXTURE_UV, [uv[0], uv[1], 0.0]);
     out
 }
 

@@ -34,32 +34,6 @@ pub fn native_file_picker() -> FilePicker {
 }
 
 impl Viewer {
-    /// Open a glTF 2.0 file (the path field, or a file dropped on the window). A bad file leaves
-    /// the current scene as it is and shows the loader's one-line error.
-    pub fn open_file(&mut self, path: &std::path::Path) {
-        match shadelab_model::gltf_io::load_scene(path) {
-            Ok(loaded) => {
-                let mut text = format!("opened {}", path.display());
-                for w in &loaded.warnings {
-                    text.push_str(&format!("\nwarning: {w}"));
-                }
-                let settings = loaded.settings;
-                if let Err(e) = self.show_loaded(loaded, &path.display().to_string()) {
-                    self.message = Some((e, true));
-                    return;
-                }
-                if let Some(m) = settings.shading {
-                    self.settings.shading = m;
-                }
-                if let Some(m) = settings.specular {
-                    self.settings.specular = m;
-                }
-                self.message = Some((text, false));
-            }
-            Err(e) => self.message = Some((e.to_string(), true)),
-        }
-    }
-
     /// Write the scene as shown (parameters, camera, shading mode, specular model) to a glTF file.
     pub fn save_scene(&mut self, path: &std::path::Path) {
         let settings = shadelab_model::gltf_io::SceneSettings {

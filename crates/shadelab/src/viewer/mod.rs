@@ -3,11 +3,12 @@
 //! at the side edits the model, never wgpu objects. This file holds the viewer's state, its
 //! start from the command line, the scenes it shows and its keys; the concerns live beside it:
 //! the orbit camera (`orbit`), the view (`view`), the panel's sections (`panel/`), files
-//! (`files`), the scripted run (`scripting`), what is drawn over the view (`overlays`), the
+//! (`files`), opening a file on a worker thread (`loading`), the scripted run (`scripting`), what is drawn over the view (`overlays`), the
 //! difference view (`difference`) and the lights' shadow maps (`shadow_maps`).
 
 mod difference;
 mod files;
+mod loading;
 mod lobe;
 mod orbit;
 mod overlays;
@@ -135,6 +136,8 @@ pub struct Viewer {
     camera_choice: usize,
     /// A dialog on show: what it is for, and where its answer arrives.
     picking: Option<(FileRequest, std::sync::mpsc::Receiver<Option<PathBuf>>)>,
+    /// A file being opened on a worker thread (`loading.rs`).
+    loading: Option<loading::Loading>,
 }
 
 impl Viewer {
@@ -188,6 +191,7 @@ impl Viewer {
             cameras: vec![("the scene's camera".into(), scene_camera)],
             camera_choice: 0,
             picking: None,
+            loading: None,
         })
     }
 
@@ -294,11 +298,17 @@ impl Viewer {
     /// Show a scene loaded from a file (or a built-in one through `cli::load`), with its cameras;
     /// its shading mode and specular model are the caller's to apply.
     pub fn show_loaded(&mut self, loaded: LoadedScene, name: &str) -> Result<(), String> {
+        let gpu_scene = self.renderer.upload(&loaded.scene).map_err(|e| format!("{name}: {e}"))?;
+        self.show_loaded_on_gpu(loaded, gpu_scene, name);
+        Ok(())
+    }
+
+    /// [`Self::show_loaded`] for a scene already on the GPU (uploaded by the loading worker).
+    fn show_loaded_on_gpu(&mut self, loaded: LoadedScene, gpu_scene: SceneGpu, name: &str) {
         let first = loaded.scene.camera;
-        self.show_scene(loaded.scene, name)?;
+        self.show_scene_on_gpu(loaded.scene, gpu_scene, name);
         self.cameras = loaded.cameras;
         self.camera_choice = self.cameras.iter().position(|(_, c)| *c == first).unwrap_or(0);
-        Ok(())
     }
 
     /// Look through camera `i` of the scene (ignored when there is no such camera).
@@ -313,7 +323,13 @@ impl Viewer {
 
     /// Show a scene; one the GPU cannot hold leaves the current scene as it is.
     fn show_scene(&mut self, s: Scene, name: &str) -> Result<(), String> {
-        self.gpu_scene = self.renderer.upload(&s).map_err(|e| format!("{name}: {e}"))?;
+        let gpu_scene = self.renderer.upload(&s).map_err(|e| format!("{name}: {e}"))?;
+        self.show_scene_on_gpu(s, gpu_scene, name);
+        Ok(())
+    }
+
+    fn show_scene_on_gpu(&mut self, s: Scene, gpu_scene: SceneGpu, name: &str) {
+        self.gpu_scene = gpu_scene;
         self.cameras = vec![("the scene's camera".into(), s.camera)];
         self.camera_choice = 0;
         self.base_camera = s.camera;
@@ -322,7 +338,6 @@ impl Viewer {
         self.shadow_maps.scene_replaced(s.lights.len());
         self.scene = s;
         self.scene_name = name.into();
-        Ok(())
     }
 
     fn keyboard(&mut self, ctx: &egui::Context) {
@@ -362,6 +377,7 @@ impl eframe::App for Viewer {
         self.keyboard(&ctx);
         self.dropped_files(&ctx);
         self.poll_file_dialog(&ctx);
+        self.poll_loading(&ctx);
         egui::Panel::right("parameters").resizable(true).default_size(340.0).show(ui, |ui| {
             egui::ScrollArea::vertical().show(ui, |ui| self.panel(ui));
         });

@@ -39,7 +39,14 @@ impl Orbit {
     /// The camera looking from the orbit at its target, with `base`'s lens.
     pub fn camera(&self, base: &Camera) -> Camera {
         let dir = DVec3::new(self.pitch.cos() * self.yaw.sin(), self.pitch.sin(), self.pitch.cos() * self.yaw.cos());
-        Camera { eye: self.target + dir * self.distance, target: self.target, ..*base }
+        // An orthographic view zooms by its height: the same share of it as the distance.
+        let base_distance = (base.eye - base.target).length().max(1e-9);
+        Camera {
+            eye: self.target + dir * self.distance,
+            target: self.target,
+            orthographic: base.orthographic.map(|h| h * self.distance / base_distance),
+            ..*base
+        }
     }
 
     /// Follow the pointer over the view (`response`); a double click goes back to `base`.

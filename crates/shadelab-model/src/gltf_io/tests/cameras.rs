@@ -25,3 +25,33 @@ fn every_camera_is_listed_the_first_is_the_scenes() {
     assert_eq!(s.cameras.len(), 1);
     assert_eq!(s.cameras[0].1, s.scene.camera);
 }
+
+/// An orthographic camera is read as one (its half height, near and far), written back as one,
+/// and its bad values are one-line errors.
+#[test]
+fn orthographic_cameras_are_read_and_written() {
+    let ortho = |o: Value| {
+        triangle(json!({
+            "scenes": [{ "nodes": [0, 1] }],
+            "nodes": [{ "mesh": 0 }, { "camera": 0, "translation": [0.0, 0.0, 5.0] }],
+            "cameras": [{ "type": "orthographic", "orthographic": o }],
+        }))
+    };
+    let s = load(&ortho(json!({ "xmag": 16.0 / 9.0 * 2.5, "ymag": 2.5, "znear": 0.0, "zfar": 20.0 })));
+    let c = s.scene.camera;
+    assert_eq!((c.orthographic, c.near, c.far), (Some(2.5), 0.0, 20.0));
+    assert!(!s.warnings.iter().any(|w| w.contains("orthographic") || w.contains("xmag")), "{:?}", s.warnings);
+    let again = load(scene_to_gltf_json(&s.scene, &s.settings).as_bytes()).scene;
+    assert_eq!(again.camera.orthographic, Some(2.5));
+    near(again.camera.eye, c.eye, "eye");
+    // A square xmag/ymag is drawn at the image's aspect, and said.
+    let s = load(&ortho(json!({ "xmag": 1.0, "ymag": 1.0, "znear": 0.1, "zfar": 20.0 })));
+    assert!(s.warnings.iter().any(|w| w.contains("xmag/ymag")), "{:?}", s.warnings);
+    for (o, want) in [
+        (json!({ "xmag": 1.0, "ymag": 0.0, "znear": 0.1, "zfar": 20.0 }), "camera 0: ymag 0 is not a positive number"),
+        (json!({ "xmag": 1.0, "ymag": 1.0, "znear": 5.0, "zfar": 2.0 }), "0 ≤ znear < zfar is required"),
+    ] {
+        let e = load_scene_from_slice(&ortho(o)).expect_err("an error").to_string();
+        assert!(e.contains(want), "{e}");
+    }
+}

@@ -41,5 +41,6 @@ impl Viewer {
                 ui.spinner();
             }
         });
+        self.loading_ui(ui);
     }
 }

@@ -80,9 +80,56 @@ pub fn with_point_lights(scene: &Scene, n: usize) -> Scene {
     s
 }
 
+/// Side of the checker texture of [`with_textured_floor`], in texels, and of its squares.
+pub const CHECKER_TEXELS: u32 = 64;
+pub const CHECKER_SQUARE_TEXELS: u32 = 8;
+/// Times the checker repeats across the floor.
+pub const CHECKER_REPEATS: f64 = 4.0;
+
+/// The scene with its floor (its first plane) made a file mesh at `level`'s tessellation whose
+/// texture coordinates carry a bilinear checker texture (made here, no file), repeating
+/// `CHECKER_REPEATS` times: a textured scene for the accuracy study that the reference renders.
+pub fn with_textured_floor(scene: &Scene, level: u32) -> Scene {
+    use crate::scene::{Texture, TextureRef};
+    let mut s = scene.clone();
+    let Some(i) = s.objects.iter().position(|o| o.shape == Shape::Plane) else { return s };
+    let n = tessellation_at_level(Shape::Plane, level, 1);
+    let tris = crate::mesh::triangles(Shape::Plane, n);
+    let normals: Vec<[DVec3; 3]> = tris.iter().map(|_| [DVec3::Y; 3]).collect();
+    let mut mesh = crate::mesh::TriangleMesh::from_soup("textured floor", &tris, Some(&normals));
+    let uv = |p: &DVec3| [((p.x + 1.0) * 0.5 * CHECKER_REPEATS) as f32, ((p.z + 1.0) * 0.5 * CHECKER_REPEATS) as f32];
+    mesh.uvs = Some(mesh.positions.iter().map(uv).collect());
+    s.meshes.push(mesh);
+    let side = CHECKER_TEXELS;
+    let rgba8: Vec<u8> = (0..side * side)
+        .flat_map(|k| {
+            let (x, y) = (k % side / CHECKER_SQUARE_TEXELS, k / side / CHECKER_SQUARE_TEXELS);
+            let v = if (x + y) % 2 == 0 { 230 } else { 40 };
+            [v, v, v, 255]
+        })
+        .collect();
+    s.textures.push(Texture { width: side, height: side, rgba8: rgba8.into(), ..Texture::solid("checker", [0; 4]) });
+    let mut material = s.materials[s.objects[i].material].clone();
+    material.base_color_texture = Some(TextureRef { texture: s.textures.len() - 1, ..Default::default() });
+    s.materials.push(material);
+    s.objects[i].material = s.materials.len() - 1;
+    s.objects[i].shape = Shape::Mesh(s.meshes.len() - 1);
+    s
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_textured_floor_is_a_textured_mesh_the_reference_renders() {
+        let s = with_textured_floor(&Scene::builtin("default").unwrap(), 64);
+        let floor = s.objects.iter().find(|o| matches!(o.shape, Shape::Mesh(_))).expect("a mesh floor");
+        assert!(s.materials[floor.material].base_color_texture.is_some());
+        assert!(reference_covers(&s) && !is_analytic(&s));
+        let a = crate::effects::analyze(&s, crate::SpecularModel::CookTorrance);
+        assert!(a.key.has(crate::effects::Effect::BaseColorTexture));
+    }
 
     #[test]
     fn analytic_scenes_exist() {

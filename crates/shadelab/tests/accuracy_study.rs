@@ -18,6 +18,7 @@ fn each_light_count_is_measured_against_its_own_reference() {
         resolution_study: ("sphere", 64),
         study_resolutions: vec![],
         model_study: ("sphere", 16, (96, 54)),
+        texture_study: ("sphere", 8, (48, 27)),
         frames: 1,
         warmup: 0,
     };
@@ -49,6 +50,7 @@ fn the_models_study_measures_each_model_in_each_shading_mode() {
         resolution_study: ("sphere", 16),
         study_resolutions: vec![],
         model_study: ("default", 32, (160, 90)),
+        texture_study: ("sphere", 8, (48, 27)),
         frames: 1,
         warmup: 0,
     };
@@ -63,4 +65,32 @@ fn the_models_study_measures_each_model_in_each_shading_mode() {
         let rmse = |s: ShadingMode| shaded.iter().find(|r| r.shading == Some(s)).unwrap().error.unwrap().rmse;
         assert!(rmse(ShadingMode::Phong) < rmse(ShadingMode::Flat), "{m}");
     }
+}
+
+/// The texture study draws the textured floor in each shading mode against the reference that
+/// samples the texture: Phong shading, which samples it, is far closer than the per-vertex modes,
+/// which draw the factor.
+#[test]
+fn the_texture_study_shows_what_the_per_vertex_modes_leave_out() {
+    let gpu = shadelab_render::Gpu::lavapipe().unwrap_or_else(|e| panic!("{e}"));
+    let plan = Plan {
+        scenes: vec![],
+        levels: vec![],
+        resolutions: vec![],
+        light_study: ("sphere", 16, (96, 54)),
+        light_counts: vec![],
+        resolution_study: ("sphere", 16),
+        study_resolutions: vec![],
+        model_study: ("sphere", 8, (48, 27)),
+        texture_study: ("default", 32, (160, 90)),
+        frames: 1,
+        warmup: 0,
+    };
+    let report = run_plan(&gpu, &plan, "test", |_| {});
+    let rows: Vec<_> = report.rows.iter().filter(|r| r.study == shadelab::bench::accuracy::Study::Textures).collect();
+    assert_eq!(rows.len(), 1 + 3, "baseline + three shading modes");
+    let rmse = |s: ShadingMode| rows.iter().find(|r| r.shading == Some(s)).unwrap().error.unwrap().rmse;
+    let (phong, gouraud) = (rmse(ShadingMode::Phong), rmse(ShadingMode::Gouraud));
+    eprintln!("textured floor RMSE: Phong {phong:.2e}, Gouraud {gouraud:.2e}, flat {:.2e}", rmse(ShadingMode::Flat));
+    assert!(phong * 3.0 < gouraud && phong * 3.0 < rmse(ShadingMode::Flat), "{phong} vs {gouraud}");
 }

@@ -33,6 +33,9 @@ pub struct Plan {
     /// The four illumination models: this scene, level and resolution, each shading mode, no
     /// cast shadows.
     pub model_study: (&'static str, u32, (u32, u32)),
+    /// A base colour texture: this scene with its floor a textured mesh
+    /// (`scene_variants::with_textured_floor`) at this level and resolution, each shading mode.
+    pub texture_study: (&'static str, u32, (u32, u32)),
     pub frames: usize,
     pub warmup: usize,
 }
@@ -49,6 +52,7 @@ impl Plan {
             resolution_study: ("default", 64),
             study_resolutions: vec![(160, 90), (320, 180), (640, 360), (1280, 720), (1920, 1080)],
             model_study: ("default", 64, (640, 360)),
+            texture_study: ("default", 64, (640, 360)),
             frames: 50,
             warmup: 5,
         }
@@ -65,6 +69,7 @@ impl Plan {
             resolution_study: ("default", 32),
             study_resolutions: vec![(160, 90), (320, 180), (640, 360)],
             model_study: ("default", 32, (160, 90)),
+            texture_study: ("default", 32, (160, 90)),
             frames: 10,
             warmup: 2,
         }
@@ -82,6 +87,8 @@ pub enum Study {
     Resolution,
     /// The chapter's four illumination models, each shading mode.
     Models,
+    /// A textured floor, each shading mode.
+    Textures,
 }
 
 impl Study {
@@ -91,6 +98,7 @@ impl Study {
             Study::Lights => "lights",
             Study::Resolution => "resolution",
             Study::Models => "models",
+            Study::Textures => "textures",
         }
     }
 }
@@ -156,6 +164,10 @@ impl Group {
     /// The programs drawn: the baseline, then every shading mode × specular model, or for a
     /// model of the models study every shading mode with the specular model it fixes.
     fn programs(&self) -> Vec<Option<RenderSettings>> {
+        if self.study == Study::Textures {
+            let modes = ShadingMode::ALL_MODES.map(|s| Some(RenderSettings::new(s, SpecularModel::CookTorrance)));
+            return std::iter::once(None).chain(modes).collect();
+        }
         match self.model {
             None => programs(),
             Some(m) => {
@@ -219,8 +231,14 @@ fn groups(plan: &Plan) -> Vec<Group> {
         scene.set_shadows(false);
         out.push(Group { study: Study::Models, name, scene, level, size, model: Some(m) });
     }
+    let (name, level, size) = plan.texture_study;
+    let scene = scene_variants::with_textured_floor(&scene_variants::at_level(&base(name), level), level);
+    out.push(Group { study: Study::Textures, name: TEXTURED_FLOOR, scene, level, size, model: None });
     out
 }
+
+/// The name of the texture study's scene in the rows (its own reference: not the plain scene's).
+const TEXTURED_FLOOR: &str = "default, textured floor";
 
 /// Run the study. `progress` is told each finished group.
 pub fn run_plan(gpu: &Gpu, plan: &Plan, command: &str, mut progress: impl FnMut(&str)) -> Report {
@@ -466,6 +484,14 @@ pub fn markdown(report: &Report) -> String {
         report.plan.model_study.0, report.plan.model_study.1, report.plan.model_study.2.0, report.plan.model_study.2.1
     );
     table(&mut s, report.rows.iter().filter(|r| r.study == Study::Models));
+    let (_, level, (w, h)) = report.plan.texture_study;
+    let _ = writeln!(
+        s,
+        "\n## A base colour texture ({TEXTURED_FLOOR}, level {level}, {w}×{h})\n\nThe floor a mesh with a {n}² bilinear checker repeated {r} times, against the reference that samples it the same way: Phong shading samples it per pixel; flat and Gouraud shading draw the material's factor (docs/textures.md), and their error shows what that leaves out.\n",
+        n = scene_variants::CHECKER_TEXELS,
+        r = scene_variants::CHECKER_REPEATS,
+    );
+    table(&mut s, report.rows.iter().filter(|r| r.study == Study::Textures));
     s
 }
 

@@ -238,7 +238,7 @@ fn groups(plan: &Plan) -> Vec<Group> {
 }
 
 /// The name of the texture study's scene in the rows (its own reference: not the plain scene's).
-const TEXTURED_FLOOR: &str = "default, textured floor";
+const TEXTURED_FLOOR: &str = "default with a textured floor";
 
 /// Run the study. `progress` is told each finished group.
 pub fn run_plan(gpu: &Gpu, plan: &Plan, command: &str, mut progress: impl FnMut(&str)) -> Report {

@@ -138,6 +138,12 @@ fn object_surface() -> Surface {
 // The material at a pixel: tinted by the interpolated vertex colour and the base colour texture
 // where the permutation has them.
 fn pixel_surface(uv: vec2<f32>, tint: vec3<f32>) -> Surface {
+    let s = object_surface();
+    return tinted_surface(s.c, s.mu, object.mu_tinted.rgb, pixel_tint(uv, tint));
+}
+
+// The tint t of C at a pixel: the interpolated vertex colour times the base colour texture.
+fn pixel_tint(uv: vec2<f32>, tint: vec3<f32>) -> vec3<f32> {
     var t = vec3(1.0);
 #if EFFECT_VERTEX_COLORS
     t *= vertex_tint(tint);
@@ -145,8 +151,45 @@ fn pixel_surface(uv: vec2<f32>, tint: vec3<f32>) -> Surface {
 #if EFFECT_BASE_COLOR_TEXTURE
     t *= base_color_texel(texture_uv(uv, object.uv_offset_scale.xy, object.uv_rotation, object.uv_offset_scale.zw));
 #endif
+    return t;
+}
+
+// Whether the per-vertex modes split their colours: with a texture or vertex colours C is tinted
+// per pixel, and since every model is affine in C (I = C ⊙ A + B), the lighting pass writes the
+// part C scales, C ⊙ A, and B, and the fragment stage draws t ⊙ (C ⊙ A) + B. (μ keeps its
+// untinted value there: its tint is drawn in Phong shading only.)
+fn lit_split() -> bool {
+    var split = false;
+#if EFFECT_BASE_COLOR_TEXTURE||EFFECT_VERTEX_COLORS
+    split = true;
+#endif
+    return split;
+}
+
+// The lighting pass's colours of point `i`: the model, or with lit_split() C ⊙ A at 2i and B at
+// 2i + 1.
+fn write_lit(i: u32, p: vec3<f32>, n: vec3<f32>, seed: vec2<f32>) {
     let s = object_surface();
-    return tinted_surface(s.c, s.mu, object.mu_tinted.rgb, t);
+    if (lit_split()) {
+        let b = shade(p, n, Surface(vec3(0.0), s.mu), seed);
+        lit_colors_out[2u * i] = vec4(shade(p, n, s, seed) - b, 1.0);
+        lit_colors_out[2u * i + 1u] = vec4(b, 1.0);
+    } else {
+        lit_colors_out[i] = vec4(shade(p, n, s, seed), 1.0);
+    }
+}
+
+// Points the lighting pass's chunk holds.
+fn lit_count() -> u32 {
+    return arrayLength(&lit_colors_out) / select(1u, 2u, lit_split());
+}
+
+// Point `i`'s colours for the vertex stage: (the model or C ⊙ A, B or 0).
+fn read_lit(i: u32) -> array<vec3<f32>, 2> {
+    if (lit_split()) {
+        return array(lit_colors[2u * i].rgb, lit_colors[2u * i + 1u].rgb);
+    }
+    return array(lit_colors[i].rgb, vec3(0.0));
 }
 
 fn finish(color: vec3<f32>) -> vec4<f32> {
@@ -183,16 +226,41 @@ struct SmoothIn {
 
 struct FlatIn {
     @location(0) position: vec3<f32>,
+#if EFFECT_BASE_COLOR_TEXTURE
+    @location(2) uv: vec2<f32>,
+#endif
+#if EFFECT_VERTEX_COLORS
+    @location(3) tint: vec3<f32>,
+#endif
 }
 
+// The per-vertex modes' outputs: the colour (with a split, C ⊙ A), its rest B, and what tints C.
 struct ColorOut {
     @builtin(position) clip: vec4<f32>,
     @location(0) color: vec3<f32>,
+#if EFFECT_BASE_COLOR_TEXTURE||EFFECT_VERTEX_COLORS
+    @location(1) rest: vec3<f32>,
+#endif
+#if EFFECT_BASE_COLOR_TEXTURE
+    @location(2) uv: vec2<f32>,
+#endif
+#if EFFECT_VERTEX_COLORS
+    @location(3) tint: vec3<f32>,
+#endif
 }
 
 struct FlatOut {
     @builtin(position) clip: vec4<f32>,
     @location(0) @interpolate(flat) color: vec3<f32>,
+#if EFFECT_BASE_COLOR_TEXTURE||EFFECT_VERTEX_COLORS
+    @location(1) @interpolate(flat) rest: vec3<f32>,
+#endif
+#if EFFECT_BASE_COLOR_TEXTURE
+    @location(2) uv: vec2<f32>,
+#endif
+#if EFFECT_VERTEX_COLORS
+    @location(3) tint: vec3<f32>,
+#endif
 }
 
 struct PhongOut {
@@ -212,27 +280,49 @@ struct PhongOut {
 @compute @workgroup_size(64)
 fn cs_flat(@builtin(global_invocation_id) gid: vec3<u32>) {
     let face = gid.x;
-    if (face >= arrayLength(&lit_colors_out)) {
+    if (face >= lit_count()) {
         return;
     }
     let at = face * 3u * FLAT_CORNER_FLOATS;
     let normal = vec3(lit_points[at + 3u], lit_points[at + 4u], lit_points[at + 5u]);
     let centroid = vec3(lit_points[at + 6u], lit_points[at + 7u], lit_points[at + 8u]);
     let c = to_world(centroid);
-    lit_colors_out[face] = vec4(shade(c, normal_to_world(normal), object_surface(), vertex_seed(c)), 1.0);
+    write_lit(face, c, normal_to_world(normal), vertex_seed(c));
 }
 
 @vertex
 fn vs_flat(in: FlatIn, @builtin(vertex_index) corner: u32) -> FlatOut {
     var out: FlatOut;
     out.clip = globals.view_proj * vec4(to_world(in.position), 1.0);
-    out.color = lit_colors[corner / 3u].rgb;
+    let lit = read_lit(corner / 3u);
+    out.color = lit[0];
+#if EFFECT_BASE_COLOR_TEXTURE||EFFECT_VERTEX_COLORS
+    out.rest = lit[1];
+#endif
+#if EFFECT_BASE_COLOR_TEXTURE
+    out.uv = in.uv;
+#endif
+#if EFFECT_VERTEX_COLORS
+    out.tint = in.tint;
+#endif
     return out;
 }
 
 @fragment
 fn fs_flat(in: FlatOut) -> @location(0) vec4<f32> {
-    return finish(in.color);
+    var color = in.color;
+#if EFFECT_BASE_COLOR_TEXTURE||EFFECT_VERTEX_COLORS
+    var uv = vec2(0.0);
+    var tint = vec3(1.0);
+#if EFFECT_BASE_COLOR_TEXTURE
+    uv = in.uv;
+#endif
+#if EFFECT_VERTEX_COLORS
+    tint = in.tint;
+#endif
+    color = pixel_tint(uv, tint) * in.color + in.rest;
+#endif
+    return finish(color);
 }
 
 // One invocation per smooth vertex: the model at the vertex, the only evaluation Gouraud shading
@@ -241,22 +331,49 @@ fn fs_flat(in: FlatOut) -> @location(0) vec4<f32> {
 @compute @workgroup_size(64)
 fn cs_gouraud(@builtin(global_invocation_id) gid: vec3<u32>) {
     let v = gid.x;
-    if (v >= arrayLength(&lit_colors_out)) {
+    if (v >= lit_count()) {
         return;
     }
     let at = v * SMOOTH_VERTEX_FLOATS;
     let position = vec3(lit_points[at], lit_points[at + 1u], lit_points[at + 2u]);
     let normal = vec3(lit_points[at + 3u], lit_points[at + 4u], lit_points[at + 5u]);
     let p = to_world(position);
-    lit_colors_out[v] = vec4(shade(p, normal_to_world(normal), object_surface(), vertex_seed(p)), 1.0);
+    write_lit(v, p, normal_to_world(normal), vertex_seed(p));
 }
 
 // Gouraud's vertex stage, shared by its two interpolations: the vertex's colour from cs_gouraud.
 fn gouraud_vertex(in: SmoothIn, vertex: u32) -> ColorOut {
     var out: ColorOut;
     out.clip = globals.view_proj * vec4(to_world(in.position), 1.0);
-    out.color = lit_colors[vertex].rgb;
+    let lit = read_lit(vertex);
+    out.color = lit[0];
+#if EFFECT_BASE_COLOR_TEXTURE||EFFECT_VERTEX_COLORS
+    out.rest = lit[1];
+#endif
+#if EFFECT_BASE_COLOR_TEXTURE
+    out.uv = in.uv;
+#endif
+#if EFFECT_VERTEX_COLORS
+    out.tint = in.tint;
+#endif
     return out;
+}
+
+// Gouraud's colour at a pixel: the interpolated colour, tinted where it is split.
+fn gouraud_pixel(in: ColorOut) -> vec3<f32> {
+    var color = in.color;
+#if EFFECT_BASE_COLOR_TEXTURE||EFFECT_VERTEX_COLORS
+    var uv = vec2(0.0);
+    var tint = vec3(1.0);
+#if EFFECT_BASE_COLOR_TEXTURE
+    uv = in.uv;
+#endif
+#if EFFECT_VERTEX_COLORS
+    tint = in.tint;
+#endif
+    color = pixel_tint(uv, tint) * in.color + in.rest;
+#endif
+    return color;
 }
 
 @vertex
@@ -266,7 +383,7 @@ fn vs_gouraud(in: SmoothIn, @builtin(vertex_index) vertex: u32) -> ColorOut {
 
 @fragment
 fn fs_gouraud(in: ColorOut) -> @location(0) vec4<f32> {
-    return finish(in.color);
+    return finish(gouraud_pixel(in));
 }
 
 // Phong shading's vertex stage, shared by its two interpolations.
@@ -311,6 +428,18 @@ struct ColorScreenOut {
     @builtin(position) clip: vec4<f32>,
     @location(0) @interpolate(linear) color: vec3<f32>,
     @location(1) color_perspective: vec3<f32>,
+#if EFFECT_BASE_COLOR_TEXTURE||EFFECT_VERTEX_COLORS
+    @location(2) @interpolate(linear) rest: vec3<f32>,
+    @location(3) rest_perspective: vec3<f32>,
+#endif
+#if EFFECT_BASE_COLOR_TEXTURE
+    @location(4) @interpolate(linear) uv: vec2<f32>,
+    @location(5) uv_perspective: vec2<f32>,
+#endif
+#if EFFECT_VERTEX_COLORS
+    @location(6) @interpolate(linear) tint: vec3<f32>,
+    @location(7) tint_perspective: vec3<f32>,
+#endif
 }
 
 struct PhongScreenOut {
@@ -337,12 +466,40 @@ fn screen_or_perspective(screen: vec3<f32>, perspective: vec3<f32>) -> vec3<f32>
 @vertex
 fn vs_gouraud_screen(in: SmoothIn, @builtin(vertex_index) vertex: u32) -> ColorScreenOut {
     let g = gouraud_vertex(in, vertex);
-    return ColorScreenOut(g.clip, g.color, g.color);
+    var out: ColorScreenOut;
+    out.clip = g.clip;
+    out.color = g.color;
+    out.color_perspective = g.color;
+#if EFFECT_BASE_COLOR_TEXTURE||EFFECT_VERTEX_COLORS
+    out.rest = g.rest;
+    out.rest_perspective = g.rest;
+#endif
+#if EFFECT_BASE_COLOR_TEXTURE
+    out.uv = g.uv;
+    out.uv_perspective = g.uv;
+#endif
+#if EFFECT_VERTEX_COLORS
+    out.tint = g.tint;
+    out.tint_perspective = g.tint;
+#endif
+    return out;
 }
 
 @fragment
 fn fs_gouraud_screen(in: ColorScreenOut) -> @location(0) vec4<f32> {
-    return finish(screen_or_perspective(in.color, in.color_perspective));
+    var g: ColorOut;
+    g.clip = in.clip;
+    g.color = screen_or_perspective(in.color, in.color_perspective);
+#if EFFECT_BASE_COLOR_TEXTURE||EFFECT_VERTEX_COLORS
+    g.rest = screen_or_perspective(in.rest, in.rest_perspective);
+#endif
+#if EFFECT_BASE_COLOR_TEXTURE
+    g.uv = select(in.uv, in.uv_perspective, any_nonfinite(vec3(in.uv, 0.0)));
+#endif
+#if EFFECT_VERTEX_COLORS
+    g.tint = screen_or_perspective(in.tint, in.tint_perspective);
+#endif
+    return finish(gouraud_pixel(g));
 }
 
 @vertex

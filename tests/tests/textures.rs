@@ -80,22 +80,48 @@ fn sparse_positions_take_effect_on_the_gpu() {
     assert!(same < 2e-3 && rmse(&s.scene, &dense) > 20.0 * same, "{same}");
 }
 
+/// Flat and Gouraud shading light per face and per vertex and tint C per pixel: BoxTextured's
+/// faces are flat, so both draw the texture almost as the reference does, far closer than the
+/// factor alone. The chapter's screen-space interpolation draws it too, with texture coordinates
+/// linear on the screen: the affine warp across each triangle's diagonal, far from the
+/// perspective-correct image.
 #[test]
-fn per_vertex_modes_and_untextured_scenes_carry_no_texture_code() {
+fn per_vertex_modes_tint_per_pixel() {
     let Some(s) = sample("BoxTextured.gltf") else { return };
+    let reference = render_reference(&s.scene, SpecularModel::CookTorrance, SIZE.0, SIZE.1);
+    let mut plain = s.scene.clone();
+    plain.materials[0].base_color_texture = None;
+    let rmse = |shading, interpolation, scene: &shadelab_model::Scene| {
+        let settings = RenderSettings { interpolation, ..RenderSettings::new(shading, SpecularModel::CookTorrance) };
+        assert!(Program::for_scene(&s.scene, &settings).effects().has(Effect::BaseColorTexture));
+        let img = render_image(gpu(), scene, SIZE.0, SIZE.1, &settings).unwrap();
+        compare(&img, &reference).stats.rmse
+    };
+    use shadelab_model::Interpolation::{Perspective, Screen};
     for shading in [ShadingMode::Flat, ShadingMode::Gouraud] {
-        let p = Program::for_scene(&s.scene, &RenderSettings::new(shading, SpecularModel::CookTorrance));
-        assert!(!p.effects().has(Effect::BaseColorTexture), "{}", p.label());
-        // And they still draw (the factor alone), finite.
-        let img =
-            render_image(gpu(), &s.scene, 64, 36, &RenderSettings::new(shading, SpecularModel::CookTorrance)).unwrap();
-        assert!(img.pixels.iter().flatten().all(|c| c.is_finite()));
+        let (with, without) = (rmse(shading, Perspective, &s.scene), rmse(shading, Perspective, &plain));
+        eprintln!("{shading:?}: RMSE {with:.2e} with the texture, {without:.2e} without");
+        assert!(with * 10.0 < without, "{shading:?}: {with} with, {without} without");
     }
+    let perspective = rmse(ShadingMode::Gouraud, Perspective, &s.scene);
+    let (screen, without) = (rmse(ShadingMode::Gouraud, Screen, &s.scene), rmse(ShadingMode::Gouraud, Screen, &plain));
+    eprintln!("Gouraud, screen-space: RMSE {screen:.2e} with the texture, {without:.2e} without");
+    assert!(screen * 2.0 < without && screen > 10.0 * perspective, "{screen} vs {without}, {perspective}");
+}
+
+/// A scene without texture coordinates or colours has no surface code, and the uber program
+/// draws it too (with nothing to bind).
+#[test]
+fn untextured_scenes_carry_no_texture_code() {
     let plain = shadelab_model::Scene::builtin("default").unwrap();
     let p = Program::for_scene(&plain, &phong());
     assert!(!p.effects().has(Effect::BaseColorTexture) && !p.effects().has(Effect::VertexColors));
-    // The uber program draws a scene without surface attributes (none to bind) as well.
-    let uber = RenderSettings { specialization: shadelab_render::Specialization::Uber, ..phong() };
-    let img = render_image(gpu(), &plain, 64, 36, &uber).unwrap();
-    assert!(img.pixels.iter().flatten().all(|c| c.is_finite()));
+    for shading in ShadingMode::ALL_MODES {
+        let uber = RenderSettings {
+            specialization: shadelab_render::Specialization::Uber,
+            ..RenderSettings::new(shading, SpecularModel::CookTorrance)
+        };
+        let img = render_image(gpu(), &plain, 64, 36, &uber).unwrap();
+        assert!(img.pixels.iter().flatten().all(|c| c.is_finite()), "{shading:?}");
+    }
 }

@@ -62,7 +62,9 @@ impl Renderer {
         let flat = key.program.draws_flat_mesh();
         let lit_pass = key.program.lighting_pass();
         let layouts = (&self.flat_compute_layout, &self.flat_colors_layout);
-        let lit_colors = lit_pass.map(|_| gpu_scene.lit_colors(&self.device, layouts, flat));
+        let fx = key.program.effects();
+        let surfaces = fx.has(Effect::BaseColorTexture) || fx.has(Effect::VertexColors);
+        let lit_colors = lit_pass.map(|_| gpu_scene.lit_colors(&self.device, layouts, flat, surfaces));
         if let (Some(entry), Some(colors)) = (lit_pass, lit_colors) {
             // The lighting pass is part of the mode's cost: the first timestamp opens it.
             let start = timestamps.filter(|_| !begun);
@@ -94,8 +96,6 @@ impl Renderer {
         });
         pass.set_pipeline(pipeline);
         pass.set_bind_group(0, &gpu_scene.globals_bind, &[]);
-        let fx = key.program.effects();
-        let surfaces = fx.has(Effect::BaseColorTexture) || fx.has(Effect::VertexColors);
         if let Some((maps, _)) = &shadows {
             pass.set_bind_group(2, maps, &[]);
         }
@@ -109,6 +109,9 @@ impl Renderer {
             }
             if flat {
                 pass.set_vertex_buffer(0, mesh.flat.slice(..));
+                if surfaces && let Some(s) = &mesh.flat_surface {
+                    pass.set_vertex_buffer(1, s.slice(..));
+                }
                 pass.draw(0..mesh.flat_count, 0..1);
             } else {
                 pass.set_vertex_buffer(0, mesh.smooth.slice(..));

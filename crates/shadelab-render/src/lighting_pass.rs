@@ -89,25 +89,28 @@ pub struct LitColors {
 }
 
 impl LitColors {
-    /// The colour buffer and bind groups for `count` points of `item_bytes` each in `input`;
-    /// `None` for an empty mesh (nothing to light or draw).
+    /// The colour buffer and bind groups for `count` points of `item_bytes` each in `input`,
+    /// `per_point` colours each (2: split, `lit_split` in the WGSL); `None` for an empty mesh
+    /// (nothing to light or draw).
     pub(crate) fn new(
         device: &wgpu::Device,
         layouts: (&wgpu::BindGroupLayout, &wgpu::BindGroupLayout),
         input: &wgpu::Buffer,
         count: u64,
         item_bytes: u64,
+        per_point: u64,
     ) -> Option<LitColors> {
         if count == 0 {
             return None;
         }
+        let color_bytes = COLOR_BYTES * per_point;
         let colors = device.create_buffer(&wgpu::BufferDescriptor {
             label: Some("lit colours"),
-            size: count * COLOR_BYTES,
+            size: count * color_bytes,
             usage: wgpu::BufferUsages::STORAGE,
             mapped_at_creation: false,
         });
-        let per = chunk_points(&device.limits(), item_bytes);
+        let per = chunk_points(&device.limits(), item_bytes.max(color_bytes));
         let range = |buffer, first: u64, n: u64, bytes: u64| {
             wgpu::BindingResource::Buffer(wgpu::BufferBinding {
                 buffer,
@@ -124,7 +127,7 @@ impl LitColors {
                     layout: layouts.0,
                     entries: &[
                         wgpu::BindGroupEntry { binding: 1, resource: range(input, first, n, item_bytes) },
-                        wgpu::BindGroupEntry { binding: 2, resource: range(&colors, first, n, COLOR_BYTES) },
+                        wgpu::BindGroupEntry { binding: 2, resource: range(&colors, first, n, color_bytes) },
                     ],
                 });
                 (bind, n as u32)

@@ -46,14 +46,6 @@ impl Default for RenderSettings {
     }
 }
 
-/// The effects drawn per pixel only, the base colour texture and vertex colours, are left out of
-/// flat and Gouraud shading, which light per face or per vertex with the material's own colour
-/// (docs/textures.md).
-pub fn per_pixel_only(shading: ShadingMode, effects: EffectKey) -> EffectKey {
-    let p = Program::Lit { shading, effects, interpolation: Interpolation::Perspective };
-    if shading == ShadingMode::Phong { effects } else { p.without_surfaces().effects() }
-}
-
 /// The shader program a draw runs. Plain `Copy + Hash`: with the target's colour format it is
 /// the pipeline cache's key.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -78,7 +70,7 @@ impl Program {
         // Flat shading interpolates nothing: one program whatever the setting.
         let interpolation =
             if settings.shading == ShadingMode::Flat { Interpolation::Perspective } else { settings.interpolation };
-        Program::Lit { shading: settings.shading, effects: per_pixel_only(settings.shading, effects), interpolation }
+        Program::Lit { shading: settings.shading, effects, interpolation }
     }
 
     /// The same program without the base colour texture and vertex colours (for a scene that has

@@ -23,7 +23,7 @@ pub const FILES: [(&str, &str); 8] = [
 ];
 
 /// Keep or cut the `#if NAME` / `#else` / `#endif` blocks of a WGSL source: a block is kept when
-/// `NAME` is among `defines`. Blocks nest. Cut lines become empty lines, so line numbers in
+/// `NAME` is among `defines` (`#if A||B`: when either is). Blocks nest. Cut lines become empty lines, so line numbers in
 /// naga's messages stay those of the files. Any other line starting with `#` is an error.
 pub fn preprocess(source: &str, defines: &[&str]) -> Result<String, String> {
     // Per open block: (this branch is kept, the enclosing block is kept, line of the #if).
@@ -35,7 +35,10 @@ pub fn preprocess(source: &str, defines: &[&str]) -> Result<String, String> {
         if let Some(rest) = t.strip_prefix('#') {
             let mut words = rest.split_whitespace();
             match (words.next(), words.next(), words.next()) {
-                (Some("if"), Some(name), None) => stack.push((defines.contains(&name), keeping, i + 1)),
+                // `#if A||B`: kept when any of the names is defined.
+                (Some("if"), Some(names), None) => {
+                    stack.push((names.split("||").any(|n| defines.contains(&n)), keeping, i + 1))
+                }
                 (Some("else"), None, None) => match stack.last_mut() {
                     Some(b) => b.0 = !b.0,
                     None => return Err(format!("line {}: #else without #if", i + 1)),

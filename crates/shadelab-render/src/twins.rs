@@ -42,12 +42,18 @@ const TWINS: [(&str, &str); 8] = [
 
 /// WGSL functions with no f64 twin, by file, and why. (Entry points are left out by naga's list:
 /// they are the GPU's stages, whose f64 counterpart is `reference::render_reference`.)
-const NO_TWIN: [(&str, &str, &str); 18] = [
+const NO_TWIN: [(&str, &str, &str); 24] = [
     ("common.wgsl", "is_nonfinite", "the NaN/∞ test on f32 bits; f64 code uses f64::is_finite"),
     ("common.wgsl", "any_nonfinite", "the debug view's test of a colour, built on is_nonfinite"),
     ("surface.wgsl", "base_color_texel", "samples the GPU texture; its f64 side is scene::Texture::sample"),
     ("shading.wgsl", "object_surface", "the uniforms' material; the reference reads scene::Material"),
     ("shading.wgsl", "pixel_surface", "the interpolants' tint; its f64 side is Material::surface_at"),
+    ("shading.wgsl", "pixel_tint", "the interpolants' tint; its f64 side is Material::surface_at"),
+    ("shading.wgsl", "lit_split", "the per-vertex modes' colour layout; the reference lights every pixel"),
+    ("shading.wgsl", "write_lit", "the lighting pass's output; the reference lights every pixel exactly"),
+    ("shading.wgsl", "lit_count", "the lighting pass's chunk size; the reference has no passes"),
+    ("shading.wgsl", "read_lit", "the vertex stage's input; the reference lights every pixel exactly"),
+    ("shading.wgsl", "gouraud_pixel", "Gouraud's interpolated colour; the reference lights every pixel"),
     ("shading.wgsl", "finish", "the debug view that paints non-finite pixels; the reference has none"),
     ("shading.wgsl", "to_world", "the object transform; its f64 side is scene::Transform::matrix"),
     ("shading.wgsl", "normal_to_world", "the normal transform; its f64 side is Transform::normal_matrix"),

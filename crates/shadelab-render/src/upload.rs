@@ -18,6 +18,8 @@ pub struct MeshGpu {
     /// Each smooth vertex's texture coordinates and colour (`SurfaceVertex`), in scenes that
     /// have any: the textured and vertex-coloured permutations read it.
     pub surface: Option<wgpu::Buffer>,
+    /// The same per corner of the flat mesh.
+    pub flat_surface: Option<wgpu::Buffer>,
 }
 
 /// A scene uploaded to the GPU: meshes (shared between objects of the same shape and
@@ -29,8 +31,8 @@ pub struct SceneGpu {
     /// Each object's colours of the lighting passes (`lighting_pass.rs`), flat shading's per
     /// face and Gouraud's per vertex (`None` for an empty mesh), made by the first frame that
     /// needs them: a scene drawn only with Phong shading never holds them.
-    flat_faces: std::sync::OnceLock<Vec<Option<crate::lighting_pass::LitColors>>>,
-    gouraud_vertices: std::sync::OnceLock<Vec<Option<crate::lighting_pass::LitColors>>>,
+    /// Indexed by `2·flat + split` (split: two colours a point, the textured permutations').
+    lit: [std::sync::OnceLock<Vec<Option<crate::lighting_pass::LitColors>>>; 4],
     pub(crate) globals: wgpu::Buffer,
     pub(crate) globals_bind: wgpu::BindGroup,
     pub(crate) objects_buf: wgpu::Buffer,
@@ -63,9 +65,10 @@ impl SceneGpu {
         device: &wgpu::Device,
         layouts: (&wgpu::BindGroupLayout, &wgpu::BindGroupLayout),
         flat: bool,
+        split: bool,
     ) -> &[Option<crate::lighting_pass::LitColors>] {
         use crate::lighting_pass::{FACE_BYTES, LitColors, VERTEX_BYTES};
-        let cell = if flat { &self.flat_faces } else { &self.gouraud_vertices };
+        let cell = &self.lit[2 * flat as usize + split as usize];
         cell.get_or_init(|| {
             self.objects
                 .iter()
@@ -76,7 +79,7 @@ impl SceneGpu {
                     } else {
                         (&m.smooth, m.smooth_count as u64, VERTEX_BYTES)
                     };
-                    LitColors::new(device, layouts, input, count, bytes)
+                    LitColors::new(device, layouts, input, count, bytes, if split { 2 } else { 1 })
                 })
                 .collect()
         })
@@ -177,6 +180,20 @@ impl Uploader {
                         count,
                         |r, out| out.extend(r.map(|i| crate::textures::surface_vertex(m, i))),
                     ));
+                    // Corner 3k + c of the flat mesh is corner c of triangle k.
+                    mesh.flat_surface = Some(buffer_from_pieces(
+                        device,
+                        &self.queue,
+                        "flat surface attributes",
+                        wgpu::BufferUsages::VERTEX,
+                        mesh.flat_count as usize,
+                        |r, out| {
+                            out.extend(r.map(|c| {
+                                let v = m.map(|m| m.indices[c / 3][c % 3] as usize);
+                                v.map_or_else(Default::default, |v| crate::textures::surface_vertex(m, v))
+                            }))
+                        },
+                    ));
                 }
                 e.insert(mesh);
             }
@@ -228,8 +245,7 @@ impl Uploader {
         Ok(SceneGpu {
             meshes,
             objects,
-            flat_faces: Default::default(),
-            gouraud_vertices: Default::default(),
+            lit: Default::default(),
             globals,
             globals_bind,
             objects_buf,
@@ -300,6 +316,7 @@ impl MeshGpu {
             ),
             flat_count: counts[2] as u32,
             surface: None,
+            flat_surface: None,
         })
     }
 }

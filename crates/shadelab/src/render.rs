@@ -87,7 +87,6 @@ pub fn run(args: &cli::RenderArgs) -> Result<(), Failure> {
     let whole = scene;
     let scene = args.term.scene(&whole);
     let settings = RenderSettings { debug_nonfinite: args.debug_nonfinite, ..mode };
-    warn_per_pixel_only(&scene, &settings);
     let (width, height) = args.size.pixels();
     let kind = image_kind(&args.output)?;
     let factor = args.term == shadelab_model::terms::Term::Shadow;
@@ -215,24 +214,4 @@ pub fn save(image: &LinearImage, path: &Path, kind: ImageKind) -> anyhow::Result
         }
     }
     Ok(())
-}
-
-/// A warning when the scene has textures or vertex colours that the chosen shading mode does not
-/// draw (flat and Gouraud shading light with the material's factor, docs/textures.md).
-pub(crate) fn warn_per_pixel_only(scene: &shadelab_model::Scene, settings: &RenderSettings) {
-    use shadelab_model::effects::Effect;
-    let wanted = shadelab_model::effects::analyze(scene, settings.specular).key;
-    let drawn = shadelab_render::Program::for_scene(scene, settings).effects();
-    let dropped: Vec<&str> = [Effect::BaseColorTexture, Effect::VertexColors]
-        .into_iter()
-        .filter(|e| wanted.has(*e) && !drawn.has(*e))
-        .map(|e| e.name())
-        .collect();
-    if !dropped.is_empty() {
-        log::warn!(
-            "{}: drawn in Phong shading only; {:?} shading uses the material's factor",
-            dropped.join(" and "),
-            settings.shading
-        );
-    }
 }

@@ -60,9 +60,6 @@ impl Reader<'_> {
             let mut mat = self.material(i, m)?;
             if let Some(info) = &m.pbr_metallic_roughness.base_color_texture {
                 mat.base_color_texture = self.texture_ref(scene, info, &format!("material {i}: baseColorTexture"))?;
-                if mat.base_color_texture.is_some() && m.pbr_metallic_roughness.metallic_factor.0 > 0.0 {
-                    self.cx.warn(format!("material {i}: the base colour texture tints C only, not a metal's μ"));
-                }
             }
             let pbr = &m.pbr_metallic_roughness;
             for (has, what) in [

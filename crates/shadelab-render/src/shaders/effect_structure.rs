@@ -19,7 +19,8 @@ fn validate(m: &naga::Module) -> naga::valid::ModuleInfo {
 #[test]
 fn wgsl_blocks_are_the_declared_defines() {
     let raw = raw_lighting_source();
-    let in_wgsl: BTreeSet<&str> = raw.lines().filter_map(|l| l.trim().strip_prefix("#if ")).map(str::trim).collect();
+    let in_wgsl: BTreeSet<&str> =
+        raw.lines().filter_map(|l| l.trim().strip_prefix("#if ")).flat_map(|n| n.trim().split("||")).collect();
     let declared: BTreeSet<&str> = DECLARED.iter().filter_map(|d| d.define).collect();
     assert_eq!(in_wgsl, declared, "the WGSL's #if names against the declared defines");
     for d in DECLARED {
@@ -176,14 +177,17 @@ fn a_permutation_without_an_effect_has_no_code_for_it() {
                     ShadingMode::Gouraud => crate::lighting_pass::GOURAUD_ENTRY_POINT,
                     ShadingMode::Phong => fs,
                 };
-                // The effects drawn per pixel only are in no per-vertex mode's lighting pass.
-                let present = present && crate::program::per_pixel_only(shading, EffectKey::NONE.with(e)).has(e);
-                let called: Vec<String> =
-                    reachable(&module, ep).into_iter().filter_map(|f| module.functions[f].name.clone()).collect();
+                // A per-vertex mode tints C in its fragment stage: both stages count.
+                let eps = if ep == fs { vec![ep] } else { vec![ep, fs] };
+                let called: Vec<String> = eps
+                    .iter()
+                    .flat_map(|ep| reachable(&module, ep))
+                    .filter_map(|f| module.functions[f].name.clone())
+                    .collect();
                 for f in e.functions() {
                     assert_eq!(called.iter().any(|c| c == f), present, "{} {ep}: call to {f}", key.label());
                 }
-                let read = members_read(&module, &info, ep);
+                let read: Vec<(String, String)> = eps.iter().flat_map(|ep| members_read(&module, &info, ep)).collect();
                 for (st, m) in e.members() {
                     let found = read.iter().any(|(a, b)| a == st && b == m);
                     assert_eq!(found, present, "{} {ep}: {st}.{m} read = {found}", key.label());

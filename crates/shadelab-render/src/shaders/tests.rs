@@ -25,6 +25,9 @@ fn preprocessor_keeps_and_cuts_blocks() {
     assert!(preprocess("#endif\n", &[]).unwrap_err().contains("#endif without #if"));
     assert!(preprocess("#else\n", &[]).unwrap_err().contains("#else without #if"));
     assert!(preprocess("#ifdef X\n#endif", &[]).unwrap_err().contains("unknown directive"));
+    // Either of two names keeps a block.
+    let either = |defs: &[&str]| preprocess("#if X||Y\nb\n#endif", defs).unwrap().contains('b');
+    assert!(either(&["X"]) && either(&["Y"]) && either(&["X", "Y"]) && !either(&["Z"]));
 }
 
 /// (size, [(field, offset)]) of a WGSL struct as naga lays it out.

@@ -487,7 +487,7 @@ pub fn markdown(report: &Report) -> String {
     let (_, level, (w, h)) = report.plan.texture_study;
     let _ = writeln!(
         s,
-        "\n## A base colour texture ({TEXTURED_FLOOR}, level {level}, {w}×{h})\n\nThe floor a mesh with a {n}² bilinear checker repeated {r} times, against the reference that samples it the same way: Phong shading samples it per pixel; flat and Gouraud shading draw the material's factor (docs/textures.md), and their error shows what that leaves out.\n",
+        "\n## A base colour texture ({TEXTURED_FLOOR}, level {level}, {w}×{h})\n\nThe floor a mesh with a {n}² bilinear checker repeated {r} times, against the reference that samples it the same way: every mode samples it per pixel; flat and Gouraud shading light per face or vertex and tint per pixel (docs/textures.md).\n",
         n = scene_variants::CHECKER_TEXELS,
         r = scene_variants::CHECKER_REPEATS,
     );

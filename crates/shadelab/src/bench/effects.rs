@@ -40,10 +40,7 @@ pub fn run(args: &cli::BenchEffectsArgs) -> Result<(), Failure> {
                 ("specialized".to_string(), RenderSettings { specialization: Specialization::Specialized, ..base }),
                 ("uber".to_string(), RenderSettings { specialization: Specialization::Uber, ..base }),
             ];
-            // Only the effects this mode's program holds (flat and Gouraud leave the per-pixel
-            // texture and vertex colours out).
-            let drawn = Program::for_scene(scene, &base).effects();
-            for e in key.effects().into_iter().filter(|e| drawn.has(*e)) {
+            for e in key.effects() {
                 programs.push((
                     format!("without {}", e.name()),
                     RenderSettings { specialization: Specialization::Fixed(key.without(e)), ..base },

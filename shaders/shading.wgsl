@@ -310,19 +310,19 @@ fn vs_flat(in: FlatIn, @builtin(vertex_index) corner: u32) -> FlatOut {
 
 @fragment
 fn fs_flat(in: FlatOut) -> @location(0) vec4<f32> {
-    var color = in.color;
+    var g: ColorOut;
+    g.clip = in.clip;
+    g.color = in.color;
 #if EFFECT_BASE_COLOR_TEXTURE||EFFECT_VERTEX_COLORS
-    var uv = vec2(0.0);
-    var tint = vec3(1.0);
+    g.rest = in.rest;
+#endif
 #if EFFECT_BASE_COLOR_TEXTURE
-    uv = in.uv;
+    g.uv = in.uv;
 #endif
 #if EFFECT_VERTEX_COLORS
-    tint = in.tint;
+    g.tint = in.tint;
 #endif
-    color = pixel_tint(uv, tint) * in.color + in.rest;
-#endif
-    return finish(color);
+    return finish(per_vertex_pixel(g));
 }
 
 // One invocation per smooth vertex: the model at the vertex, the only evaluation Gouraud shading
@@ -359,8 +359,9 @@ fn gouraud_vertex(in: SmoothIn, vertex: u32) -> ColorOut {
     return out;
 }
 
-// Gouraud's colour at a pixel: the interpolated colour, tinted where it is split.
-fn gouraud_pixel(in: ColorOut) -> vec3<f32> {
+// The per-vertex modes' colour at a pixel: the face's or interpolated colour, tinted where it is
+// split (t ⊙ (C ⊙ A) + B).
+fn per_vertex_pixel(in: ColorOut) -> vec3<f32> {
     var color = in.color;
 #if EFFECT_BASE_COLOR_TEXTURE||EFFECT_VERTEX_COLORS
     var uv = vec2(0.0);
@@ -383,7 +384,7 @@ fn vs_gouraud(in: SmoothIn, @builtin(vertex_index) vertex: u32) -> ColorOut {
 
 @fragment
 fn fs_gouraud(in: ColorOut) -> @location(0) vec4<f32> {
-    return finish(gouraud_pixel(in));
+    return finish(per_vertex_pixel(in));
 }
 
 // Phong shading's vertex stage, shared by its two interpolations.
@@ -499,7 +500,7 @@ fn fs_gouraud_screen(in: ColorScreenOut) -> @location(0) vec4<f32> {
 #if EFFECT_VERTEX_COLORS
     g.tint = screen_or_perspective(in.tint, in.tint_perspective);
 #endif
-    return finish(gouraud_pixel(g));
+    return finish(per_vertex_pixel(g));
 }
 
 @vertex

@@ -80,6 +80,7 @@ pub fn render_reference(scene: &Scene, specular: SpecularModel, width: u32, heig
         hidden: Vec::with_capacity(n),
         unshadowed: Vec::with_capacity(n),
     };
+    let mut tinted: Vec<Material> = scene.materials.clone();
     for y in 0..height {
         for x in 0..width {
             let (o, dir) = scene.camera.ray(x, y, width, height);
@@ -91,12 +92,14 @@ pub fn render_reference(scene: &Scene, specular: SpecularModel, width: u32, heig
                 continue;
             };
             let (p, n, eye) = (hit.point, hit.normal, scene.camera.eye_h());
-            let material = &scene.materials[scene.objects[hit.object].material];
-            let owned;
+            let mi = scene.objects[hit.object].material;
+            let material = &scene.materials[mi];
+            // The point's C and μ in a copy of its material (the copies are made once, not per pixel).
             let mat = if material.base_color_texture.is_some() || hit.vertex_color != [1.0; 3] {
                 let (color, mu) = material.surface_at(&scene.textures, hit.uv, hit.vertex_color);
-                owned = Material { color, mu, ..material.clone() };
-                &owned
+                let m = &mut tinted[mi];
+                (m.color, m.mu) = (color, mu);
+                &*m
             } else {
                 material
             };

@@ -200,6 +200,12 @@ impl Scene {
         }
     }
 
+    /// Object `o`'s base colour texture, when its material has one that exists.
+    pub fn base_color_texture(&self, o: &Object) -> Option<TextureRef> {
+        let r = self.materials.get(o.material)?.base_color_texture?;
+        (r.texture < self.textures.len()).then_some(r)
+    }
+
     /// Total triangle count once tessellated.
     pub fn triangle_count(&self) -> usize {
         self.objects.iter().map(|o| self.object_triangle_count(o)).sum()

@@ -73,18 +73,7 @@ pub(crate) fn upload(device: &wgpu::Device, queue: &wgpu::Queue, t: &Texture) ->
 /// Which of the object bind groups each object uses: 0 for no texture (a white texel), `k + 1`
 /// for the scene's texture `k`.
 pub(crate) fn bind_of_objects(scene: &Scene) -> Vec<usize> {
-    scene
-        .objects
-        .iter()
-        .map(|o| {
-            scene
-                .materials
-                .get(o.material)
-                .and_then(|m| m.base_color_texture)
-                .filter(|r| r.texture < scene.textures.len())
-                .map_or(0, |r| r.texture + 1)
-        })
-        .collect()
+    scene.objects.iter().map(|o| scene.base_color_texture(o).map_or(0, |r| r.texture + 1)).collect()
 }
 
 /// Whether any mesh of the scene has surface attributes (then every mesh gets a surface buffer:

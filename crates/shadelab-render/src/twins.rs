@@ -53,7 +53,7 @@ const NO_TWIN: [(&str, &str, &str); 24] = [
     ("shading.wgsl", "write_lit", "the lighting pass's output; the reference lights every pixel exactly"),
     ("shading.wgsl", "lit_count", "the lighting pass's chunk size; the reference has no passes"),
     ("shading.wgsl", "read_lit", "the vertex stage's input; the reference lights every pixel exactly"),
-    ("shading.wgsl", "gouraud_pixel", "Gouraud's interpolated colour; the reference lights every pixel"),
+    ("shading.wgsl", "per_vertex_pixel", "the per-vertex modes' tinted colour; the reference lights every pixel"),
     ("shading.wgsl", "finish", "the debug view that paints non-finite pixels; the reference has none"),
     ("shading.wgsl", "to_world", "the object transform; its f64 side is scene::Transform::matrix"),
     ("shading.wgsl", "normal_to_world", "the normal transform; its f64 side is Transform::normal_matrix"),

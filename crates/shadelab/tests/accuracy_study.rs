@@ -41,19 +41,7 @@ fn each_light_count_is_measured_against_its_own_reference() {
 #[test]
 fn the_models_study_measures_each_model_in_each_shading_mode() {
     let gpu = shadelab_render::Gpu::lavapipe().unwrap_or_else(|e| panic!("{e}"));
-    let plan = Plan {
-        scenes: vec![],
-        levels: vec![],
-        resolutions: vec![],
-        light_study: ("sphere", 16, (96, 54)),
-        light_counts: vec![],
-        resolution_study: ("sphere", 16),
-        study_resolutions: vec![],
-        model_study: ("default", 32, (160, 90)),
-        texture_study: ("sphere", 8, (48, 27)),
-        frames: 1,
-        warmup: 0,
-    };
+    let plan = Plan { model_study: ("default", 32, (160, 90)), ..studies_only() };
     let report = run_plan(&gpu, &plan, "test", |_| {});
     let rows: Vec<_> = report.rows.iter().filter(|r| r.study == Study::Models).collect();
     assert_eq!(rows.len(), 4 * (1 + 3), "four models × (baseline + three shading modes)");
@@ -74,19 +62,7 @@ fn the_models_study_measures_each_model_in_each_shading_mode() {
 #[test]
 fn the_texture_study_measures_each_mode_with_its_texture() {
     let gpu = shadelab_render::Gpu::lavapipe().unwrap_or_else(|e| panic!("{e}"));
-    let plan = Plan {
-        scenes: vec![],
-        levels: vec![],
-        resolutions: vec![],
-        light_study: ("sphere", 16, (96, 54)),
-        light_counts: vec![],
-        resolution_study: ("sphere", 16),
-        study_resolutions: vec![],
-        model_study: ("sphere", 8, (48, 27)),
-        texture_study: ("default", 32, (160, 90)),
-        frames: 1,
-        warmup: 0,
-    };
+    let plan = Plan { texture_study: ("default", 32, (160, 90)), ..studies_only() };
     let report = run_plan(&gpu, &plan, "test", |_| {});
     let rows: Vec<_> = report.rows.iter().filter(|r| r.study == shadelab::bench::accuracy::Study::Textures).collect();
     assert_eq!(rows.len(), 1 + 3, "baseline + three shading modes");
@@ -95,4 +71,22 @@ fn the_texture_study_measures_each_mode_with_its_texture() {
     eprintln!("textured floor RMSE: Phong {phong:.2e}, Gouraud {gouraud:.2e}, flat {flat:.2e}");
     assert!(phong <= gouraud && phong <= flat, "{phong} vs {gouraud}, {flat}");
     assert!(gouraud < 0.05 && flat < 0.05, "the per-vertex modes draw the texture: {gouraud}, {flat}");
+}
+
+/// A plan of one frame per program whose modes, light and resolution parts are empty and whose
+/// models and texture parts are tiny: a test sets the part it measures.
+fn studies_only() -> Plan {
+    Plan {
+        scenes: vec![],
+        levels: vec![],
+        resolutions: vec![],
+        light_study: ("sphere", 16, (96, 54)),
+        light_counts: vec![],
+        resolution_study: ("sphere", 16),
+        study_resolutions: vec![],
+        model_study: ("sphere", 8, (48, 27)),
+        texture_study: ("sphere", 8, (48, 27)),
+        frames: 1,
+        warmup: 0,
+    }
 }

@@ -241,17 +241,7 @@ fn file_mesh<'s>(scene: &'s Scene, o: &crate::scene::Object) -> Option<&'s crate
 /// texture coordinates to sample it with (without them the loader has said so; the factor alone
 /// is drawn).
 fn base_color_texture(scene: &Scene) -> (bool, String) {
-    let textured = scene
-        .objects
-        .iter()
-        .filter(|o| {
-            scene
-                .materials
-                .get(o.material)
-                .and_then(|m| m.base_color_texture)
-                .is_some_and(|t| t.texture < scene.textures.len())
-        })
-        .collect::<Vec<_>>();
+    let textured: Vec<_> = scene.objects.iter().filter(|o| scene.base_color_texture(o).is_some()).collect();
     let sampled = textured.iter().filter(|o| file_mesh(scene, o).is_some_and(|m| m.uvs.is_some())).count();
     if textured.is_empty() {
         (false, "no material has a base colour texture".into())

@@ -50,6 +50,19 @@ struct Object {
     // rgb: the part of μ the base colour sets (surface.wgsl).
     mu_tinted: vec4<f32>,
     uv_offset_scale: vec4<f32>,
+    // rgb: M·F0, the dielectric share of μ the metallic factor replaced (surface.wgsl).
+    metallic_f0: vec4<f32>,
+    // rgb: emission E.
+    emission: vec4<f32>,
+    // The metallic–roughness, occlusion and emissive textures' transforms: offset.xy, scale.zw;
+    // their rotations in uv_rotations.xyz.
+    metal_roughness_uv: vec4<f32>,
+    occlusion_uv: vec4<f32>,
+    emissive_uv: vec4<f32>,
+    uv_rotations: vec4<f32>,
+    // Which of the material's texture slots hold a texture (MAP_… in surface.wgsl).
+    maps: u32,
+    occlusion_strength: f32,
 }
 
 const FLAG_DEBUG_NONFINITE: u32 = 1u;
@@ -84,7 +97,7 @@ fn shade(p: vec3<f32>, n_in: vec3<f32>, surface: Surface, pixel: vec2<f32>) -> v
 #endif
     var total = vec3(0.0);
 #if EFFECT_AMBIENT
-    total += globals.ambient.rgb * object.r_a * c;
+    total += globals.ambient.rgb * surface.r_a * c;
 #endif
 #if EFFECT_LAMBERT_RULE
     // The Lambert rule's I: the brightest light at the point, per channel, in [0, 1].
@@ -114,32 +127,55 @@ fn shade(p: vec3<f32>, n_in: vec3<f32>, surface: Surface, pixel: vec2<f32>) -> v
         }
 #endif
         total += visibility * light_contribution(
-            s.l, s.radiance, n, v, c, object.r_s, object.r_d, object.m, object.h, object.mirror != 0u,
+            s.l, s.radiance, n, v, c, object.r_s, object.r_d, surface.m, surface.h, surface.mirror,
             v_index, globals.specular_model,
         );
     }
 #if EFFECT_LAMBERT_RULE
     if (globals.illumination == ILLUMINATION_LAMBERT) {
-        total += lambert_rule_fill(object.r_a * c, i_max);
+        total += lambert_rule_fill(surface.r_a * c, i_max);
     }
 #endif
     return total;
 }
 
-// The object's material untinted: C, and μ where Cook–Torrance reads it.
+// The object's material untinted: C, μ where Cook–Torrance reads it, m, h and r_a.
 fn object_surface() -> Surface {
     var mu = vec3(0.0);
 #if EFFECT_SPECULAR_COOK_TORRANCE
     mu = object.mu.rgb;
 #endif
-    return Surface(object.color.rgb, mu);
+    return Surface(object.color.rgb, mu, object.m, object.h, object.mirror != 0u, object.r_a);
 }
 
-// The material at a pixel: tinted by the interpolated vertex colour and the base colour texture
-// where the permutation has them.
+// The material at a pixel: its metallic–roughness texel's metal and roughness scales, the tint
+// of the interpolated vertex colour and base colour texture, and its occlusion texel, where the
+// permutation has them and the object's material has the texture.
 fn pixel_surface(uv: vec2<f32>, tint: vec3<f32>) -> Surface {
-    let s = object_surface();
-    return tinted_surface(s.c, s.mu, object.mu_tinted.rgb, pixel_tint(uv, tint));
+    var s = object_surface();
+    var mu_tinted = object.mu_tinted.rgb;
+#if EFFECT_METAL_ROUGHNESS_TEXTURE
+    if ((object.maps & MAP_METAL_ROUGHNESS) != 0u) {
+        let x = metal_roughness_texel(texture_uv(uv, object.metal_roughness_uv.xy, object.uv_rotations.x, object.metal_roughness_uv.zw));
+        let k = metallic_scaled(s.c, s.mu, mu_tinted, object.metallic_f0.rgb, x.b);
+        s.c = k.c;
+        s.mu = k.mu;
+        mu_tinted = k.mu_tinted;
+        s.m = roughness_scaled(s.m, x.g);
+        s.h = phong_h_from_m(s.m);
+        s.mirror = s.m <= 0.0;
+    }
+#endif
+    let t = tinted_surface(s.c, s.mu, mu_tinted, pixel_tint(uv, tint));
+    s.c = t.c;
+    s.mu = t.mu;
+#if EFFECT_OCCLUSION_TEXTURE
+    if ((object.maps & MAP_OCCLUSION) != 0u) {
+        let occ = occlusion_texel(texture_uv(uv, object.occlusion_uv.xy, object.uv_rotations.y, object.occlusion_uv.zw));
+        s.r_a = occluded(s.r_a, occ, object.occlusion_strength);
+    }
+#endif
+    return s;
 }
 
 // The tint t of C at a pixel: the interpolated vertex colour times the base colour texture.
@@ -152,6 +188,22 @@ fn pixel_tint(uv: vec2<f32>, tint: vec3<f32>) -> vec3<f32> {
     t *= base_color_texel(texture_uv(uv, object.uv_offset_scale.xy, object.uv_rotation, object.uv_offset_scale.zw));
 #endif
     return t;
+}
+
+// The light a pixel emits: E, times the emissive texture where the material has one; added to
+// the model's I in every mode (it is not lit, so the per-vertex modes add it per pixel exactly).
+fn pixel_emission(uv: vec2<f32>) -> vec3<f32> {
+    var e = vec3(0.0);
+#if EFFECT_EMISSION
+    var texel = vec3(1.0);
+#if EFFECT_EMISSIVE_TEXTURE
+    if ((object.maps & MAP_EMISSIVE) != 0u) {
+        texel = emissive_texel(texture_uv(uv, object.emissive_uv.xy, object.uv_rotations.z, object.emissive_uv.zw));
+    }
+#endif
+    e = emitted(object.emission.rgb, texel);
+#endif
+    return e;
 }
 
 // Whether the per-vertex modes split their colours: with a texture or vertex colours C is tinted
@@ -171,7 +223,9 @@ fn lit_split() -> bool {
 fn write_lit(i: u32, p: vec3<f32>, n: vec3<f32>, seed: vec2<f32>) {
     let s = object_surface();
     if (lit_split()) {
-        let b = shade(p, n, Surface(vec3(0.0), s.mu), seed);
+        var dark = s;
+        dark.c = vec3(0.0);
+        let b = shade(p, n, dark, seed);
         lit_colors_out[2u * i] = vec4(shade(p, n, s, seed) - b, 1.0);
         lit_colors_out[2u * i + 1u] = vec4(b, 1.0);
     } else {
@@ -216,7 +270,7 @@ fn vertex_seed(p: vec3<f32>) -> vec2<f32> {
 struct SmoothIn {
     @location(0) position: vec3<f32>,
     @location(1) normal: vec3<f32>,
-#if EFFECT_BASE_COLOR_TEXTURE
+#if TEXTURE_COORDS
     @location(2) uv: vec2<f32>,
 #endif
 #if EFFECT_VERTEX_COLORS
@@ -226,7 +280,7 @@ struct SmoothIn {
 
 struct FlatIn {
     @location(0) position: vec3<f32>,
-#if EFFECT_BASE_COLOR_TEXTURE
+#if TEXTURE_COORDS
     @location(2) uv: vec2<f32>,
 #endif
 #if EFFECT_VERTEX_COLORS
@@ -241,7 +295,7 @@ struct ColorOut {
 #if EFFECT_BASE_COLOR_TEXTURE||EFFECT_VERTEX_COLORS
     @location(1) rest: vec3<f32>,
 #endif
-#if EFFECT_BASE_COLOR_TEXTURE
+#if TEXTURE_COORDS
     @location(2) uv: vec2<f32>,
 #endif
 #if EFFECT_VERTEX_COLORS
@@ -255,7 +309,7 @@ struct FlatOut {
 #if EFFECT_BASE_COLOR_TEXTURE||EFFECT_VERTEX_COLORS
     @location(1) @interpolate(flat) rest: vec3<f32>,
 #endif
-#if EFFECT_BASE_COLOR_TEXTURE
+#if TEXTURE_COORDS
     @location(2) uv: vec2<f32>,
 #endif
 #if EFFECT_VERTEX_COLORS
@@ -267,7 +321,7 @@ struct PhongOut {
     @builtin(position) clip: vec4<f32>,
     @location(0) world_pos: vec3<f32>,
     @location(1) world_normal: vec3<f32>,
-#if EFFECT_BASE_COLOR_TEXTURE
+#if TEXTURE_COORDS
     @location(2) uv: vec2<f32>,
 #endif
 #if EFFECT_VERTEX_COLORS
@@ -299,7 +353,7 @@ fn vs_flat(in: FlatIn, @builtin(vertex_index) corner: u32) -> FlatOut {
 #if EFFECT_BASE_COLOR_TEXTURE||EFFECT_VERTEX_COLORS
     out.rest = lit[1];
 #endif
-#if EFFECT_BASE_COLOR_TEXTURE
+#if TEXTURE_COORDS
     out.uv = in.uv;
 #endif
 #if EFFECT_VERTEX_COLORS
@@ -316,7 +370,7 @@ fn fs_flat(in: FlatOut) -> @location(0) vec4<f32> {
 #if EFFECT_BASE_COLOR_TEXTURE||EFFECT_VERTEX_COLORS
     g.rest = in.rest;
 #endif
-#if EFFECT_BASE_COLOR_TEXTURE
+#if TEXTURE_COORDS
     g.uv = in.uv;
 #endif
 #if EFFECT_VERTEX_COLORS
@@ -350,7 +404,7 @@ fn gouraud_vertex(in: SmoothIn, vertex: u32) -> ColorOut {
 #if EFFECT_BASE_COLOR_TEXTURE||EFFECT_VERTEX_COLORS
     out.rest = lit[1];
 #endif
-#if EFFECT_BASE_COLOR_TEXTURE
+#if TEXTURE_COORDS
     out.uv = in.uv;
 #endif
 #if EFFECT_VERTEX_COLORS
@@ -363,18 +417,18 @@ fn gouraud_vertex(in: SmoothIn, vertex: u32) -> ColorOut {
 // split (t ⊙ (C ⊙ A) + B).
 fn per_vertex_pixel(in: ColorOut) -> vec3<f32> {
     var color = in.color;
-#if EFFECT_BASE_COLOR_TEXTURE||EFFECT_VERTEX_COLORS
     var uv = vec2(0.0);
-    var tint = vec3(1.0);
-#if EFFECT_BASE_COLOR_TEXTURE
+#if TEXTURE_COORDS
     uv = in.uv;
 #endif
+#if EFFECT_BASE_COLOR_TEXTURE||EFFECT_VERTEX_COLORS
+    var tint = vec3(1.0);
 #if EFFECT_VERTEX_COLORS
     tint = in.tint;
 #endif
     color = pixel_tint(uv, tint) * in.color + in.rest;
 #endif
-    return color;
+    return color + pixel_emission(uv);
 }
 
 @vertex
@@ -393,7 +447,7 @@ fn phong_vertex(in: SmoothIn) -> PhongOut {
     out.world_pos = to_world(in.position);
     out.clip = globals.view_proj * vec4(out.world_pos, 1.0);
     out.world_normal = normal_to_world(in.normal);
-#if EFFECT_BASE_COLOR_TEXTURE
+#if TEXTURE_COORDS
     out.uv = in.uv;
 #endif
 #if EFFECT_VERTEX_COLORS
@@ -411,13 +465,13 @@ fn vs_phong(in: SmoothIn) -> PhongOut {
 fn fs_phong(in: PhongOut) -> @location(0) vec4<f32> {
     var uv = vec2(0.0);
     var tint = vec3(1.0);
-#if EFFECT_BASE_COLOR_TEXTURE
+#if TEXTURE_COORDS
     uv = in.uv;
 #endif
 #if EFFECT_VERTEX_COLORS
     tint = in.tint;
 #endif
-    return finish(shade(in.world_pos, in.world_normal, pixel_surface(uv, tint), in.clip.xy));
+    return finish(shade(in.world_pos, in.world_normal, pixel_surface(uv, tint), in.clip.xy) + pixel_emission(uv));
 }
 
 // The chapter's interpolation (docs/model.md §8): linear in screen space along the scanlines, as
@@ -433,7 +487,7 @@ struct ColorScreenOut {
     @location(2) @interpolate(linear) rest: vec3<f32>,
     @location(3) rest_perspective: vec3<f32>,
 #endif
-#if EFFECT_BASE_COLOR_TEXTURE
+#if TEXTURE_COORDS
     @location(4) @interpolate(linear) uv: vec2<f32>,
     @location(5) uv_perspective: vec2<f32>,
 #endif
@@ -449,7 +503,7 @@ struct PhongScreenOut {
     @location(1) @interpolate(linear) world_normal: vec3<f32>,
     @location(2) world_pos_perspective: vec3<f32>,
     @location(3) world_normal_perspective: vec3<f32>,
-#if EFFECT_BASE_COLOR_TEXTURE
+#if TEXTURE_COORDS
     @location(4) @interpolate(linear) uv: vec2<f32>,
     @location(5) uv_perspective: vec2<f32>,
 #endif
@@ -475,7 +529,7 @@ fn vs_gouraud_screen(in: SmoothIn, @builtin(vertex_index) vertex: u32) -> ColorS
     out.rest = g.rest;
     out.rest_perspective = g.rest;
 #endif
-#if EFFECT_BASE_COLOR_TEXTURE
+#if TEXTURE_COORDS
     out.uv = g.uv;
     out.uv_perspective = g.uv;
 #endif
@@ -494,7 +548,7 @@ fn fs_gouraud_screen(in: ColorScreenOut) -> @location(0) vec4<f32> {
 #if EFFECT_BASE_COLOR_TEXTURE||EFFECT_VERTEX_COLORS
     g.rest = screen_or_perspective(in.rest, in.rest_perspective);
 #endif
-#if EFFECT_BASE_COLOR_TEXTURE
+#if TEXTURE_COORDS
     g.uv = select(in.uv, in.uv_perspective, any_nonfinite(vec3(in.uv, 0.0)));
 #endif
 #if EFFECT_VERTEX_COLORS
@@ -512,7 +566,7 @@ fn vs_phong_screen(in: SmoothIn) -> PhongScreenOut {
     out.world_normal = o.world_normal;
     out.world_pos_perspective = o.world_pos;
     out.world_normal_perspective = o.world_normal;
-#if EFFECT_BASE_COLOR_TEXTURE
+#if TEXTURE_COORDS
     out.uv = o.uv;
     out.uv_perspective = o.uv;
 #endif
@@ -529,13 +583,13 @@ fn fs_phong_screen(in: PhongScreenOut) -> @location(0) vec4<f32> {
     let n = screen_or_perspective(in.world_normal, in.world_normal_perspective);
     var uv = vec2(0.0);
     var tint = vec3(1.0);
-#if EFFECT_BASE_COLOR_TEXTURE
+#if TEXTURE_COORDS
     uv = select(in.uv, in.uv_perspective, any_nonfinite(vec3(in.uv, 0.0)));
 #endif
 #if EFFECT_VERTEX_COLORS
     tint = screen_or_perspective(in.tint, in.tint_perspective);
 #endif
-    return finish(shade(p, n, pixel_surface(uv, tint), in.clip.xy));
+    return finish(shade(p, n, pixel_surface(uv, tint), in.clip.xy) + pixel_emission(uv));
 }
 
 // The null-shader baseline of the cost study: the same geometry, vertex fetch, transform and

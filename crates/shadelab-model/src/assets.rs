@@ -213,6 +213,8 @@ pub fn material_board() -> Scene {
             thickness: if transmission > 0.0 { 0.76 } else { 0.0 },
             base_color_texture: None,
             mu_tinted: [0.0; 3],
+            emission: [0.0; 3],
+            maps: Default::default(),
         };
         sphere(p.name.into(), mat, row_x(i, dielectrics.len()), 0.0);
     }

@@ -94,15 +94,17 @@ pub fn render_reference(scene: &Scene, specular: SpecularModel, width: u32, heig
             let (p, n, eye) = (hit.point, hit.normal, scene.camera.eye_h());
             let mi = scene.objects[hit.object].material;
             let material = &scene.materials[mi];
-            // The point's C and μ in a copy of its material (the copies are made once, not per pixel).
-            let mat = if material.base_color_texture.is_some() || hit.vertex_color != [1.0; 3] {
-                let (color, mu) = material.surface_at(&scene.textures, hit.uv, hit.vertex_color);
+            // The point's parameters in a copy of its material (the copies are made once, not per
+            // pixel); its emission is added to whatever the model gives.
+            let (mat, emission) = if material.varies(hit.vertex_color) {
+                let at = material.surface_at(&scene.textures, hit.uv, hit.vertex_color);
                 let m = &mut tinted[mi];
-                (m.color, m.mu) = (color, mu);
-                &*m
+                (m.color, m.mu, m.m, m.h, m.r_a) = (at.color, at.mu, at.m, at.h, at.r_a);
+                (&*m, at.emission)
             } else {
-                material
+                (material, material.emission)
             };
+            let emit = |c: [f64; 3]| -> [f64; 3] { std::array::from_fn(|i| c[i] + emission[i]) };
             let mut hidden = 0u8;
             let lit = shade_with_visibility(
                 p,
@@ -122,12 +124,12 @@ pub fn render_reference(scene: &Scene, specular: SpecularModel, width: u32, heig
                     }
                 },
             );
-            img.pixels.push(lit);
-            img.unshadowed.push(if hidden == 0 {
+            img.pixels.push(emit(lit));
+            img.unshadowed.push(emit(if hidden == 0 {
                 lit
             } else {
                 shade(p, n, eye, mat, &scene.lights, scene.ambient, specular, scene.illumination)
-            });
+            }));
             img.object.push(Some(hit.object));
             img.hidden.push(hidden);
         }

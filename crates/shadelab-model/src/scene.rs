@@ -12,8 +12,11 @@ mod texture;
 pub use crate::lighting::lights::{LIGHT_STAND_OFF, Light, MAX_LIGHTS, SPOT_OUTER_CONE_DEFAULT};
 pub use builtin::{BUILTIN_SCENES, default_scene, single_shape_scene};
 pub use camera::{COMPOSED_ASPECT, Camera};
-pub use material::{Material, tinted_surface, vertex_tint};
-pub use texture::{Filter, Sampler, Texture, TextureRef, UvTransform, Wrap, srgb_to_linear, texture_uv};
+pub use material::{
+    Material, MaterialMaps, MetalRoughnessMap, OcclusionMap, SurfacePoint, emitted, metallic_scaled, occluded,
+    phong_h_from_m, roughness_scaled, tinted_surface, vertex_tint,
+};
+pub use texture::{ColorSpace, Filter, Sampler, Texture, TextureRef, UvTransform, Wrap, srgb_to_linear, texture_uv};
 
 use crate::params::*;
 use crate::shadows::{ShadowFilter, ShadowSettings};

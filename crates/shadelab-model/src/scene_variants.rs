@@ -117,6 +117,63 @@ pub fn with_textured_floor(scene: &Scene, level: u32) -> Scene {
     s
 }
 
+/// An image of `side`² texels, each `f(x, y)` as RGBA8.
+fn image(name: &str, side: u32, f: impl Fn(u32, u32) -> [u8; 4]) -> crate::scene::Texture {
+    let rgba8: Vec<u8> = (0..side * side).flat_map(|k| f(k % side, k / side)).collect();
+    crate::scene::Texture {
+        width: side,
+        height: side,
+        rgba8: rgba8.into(),
+        ..crate::scene::Texture::solid(name, [0; 4])
+    }
+}
+
+/// glTF's F0 of a dielectric of index 1.5, which the textured floor's metal falls back to.
+const FLOOR_F0: f64 = 0.04;
+/// The textured floor's emission E where its emissive texture is white.
+pub const FLOOR_EMISSION: [f64; 3] = [0.3, 0.15, 0.05];
+
+/// [`with_textured_floor`] whose floor also has the other glTF textures, made here: a glTF metal
+/// (metallic factor 1, F0 0.04) whose metallic–roughness texture turns bands of it into a rough
+/// dielectric, an occlusion texture darkening its ambient towards each checker square's edges,
+/// and an emissive texture of diagonal stripes (E = `FLOOR_EMISSION`).
+pub fn with_material_maps(scene: &Scene, level: u32) -> Scene {
+    use crate::scene::{MetalRoughnessMap, OcclusionMap, TextureRef};
+    let mut s = with_textured_floor(scene, level);
+    let Some(mi) = s.objects.iter().find(|o| matches!(o.shape, Shape::Mesh(_))).map(|o| o.material) else { return s };
+    let side = CHECKER_TEXELS;
+    let band = 2 * CHECKER_SQUARE_TEXELS;
+    let next = s.textures.len();
+    // Green: roughness scale, blue: metal scale (bands of polished metal and rough dielectric).
+    s.textures.push(image(
+        "metal bands",
+        side,
+        |x, _| if (x / band).is_multiple_of(2) { [0, 90, 255, 255] } else { [0, 255, 0, 255] },
+    ));
+    // Red: occlusion, 1 at each square's centre and 0.25 at its edges.
+    let square = CHECKER_SQUARE_TEXELS as f64;
+    s.textures.push(image("occlusion", side, |x, y| {
+        let d = |c: u32| ((c as f64 % square) + 0.5 - square / 2.0).abs() / (square / 2.0);
+        let occ = 1.0 - 0.75 * d(x).max(d(y));
+        [(occ * 255.0).round() as u8, 0, 0, 255]
+    }));
+    s.textures.push(image(
+        "emissive stripes",
+        side,
+        |x, y| if ((x + y) / 6).is_multiple_of(4) { [255; 4] } else { [0, 0, 0, 255] },
+    ));
+    let m = &mut s.materials[mi];
+    let base = m.color;
+    (m.color, m.mu, m.mu_tinted) = ([0.0; 3], base, base);
+    m.r_a = 1.0;
+    m.emission = FLOOR_EMISSION;
+    let r = |texture| TextureRef { texture, ..Default::default() };
+    m.maps.metal_roughness = Some(MetalRoughnessMap { texture: r(next), metallic_f0: [FLOOR_F0; 3] });
+    m.maps.occlusion = Some(OcclusionMap { texture: r(next + 1), strength: 1.0 });
+    m.maps.emissive = Some(r(next + 2));
+    s
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -129,6 +186,26 @@ mod tests {
         assert!(reference_covers(&s) && !is_analytic(&s));
         let a = crate::effects::analyze(&s, crate::SpecularModel::CookTorrance);
         assert!(a.key.has(crate::effects::Effect::BaseColorTexture));
+    }
+
+    #[test]
+    fn the_material_maps_floor_calls_for_every_texture_effect() {
+        use crate::effects::Effect;
+        let s = with_material_maps(&Scene::builtin("default").unwrap(), 32);
+        let a = crate::effects::analyze(&s, crate::SpecularModel::CookTorrance);
+        for e in [
+            Effect::BaseColorTexture,
+            Effect::MetalRoughnessTexture,
+            Effect::OcclusionTexture,
+            Effect::Emission,
+            Effect::EmissiveTexture,
+        ] {
+            assert!(a.key.has(e), "{e}");
+        }
+        // Without them the scene needs none of them.
+        let plain = Scene::builtin("default").unwrap();
+        let a = crate::effects::analyze(&plain, crate::SpecularModel::CookTorrance);
+        assert!(!a.key.samples_textures() && !a.key.has(Effect::Emission));
     }
 
     #[test]

@@ -28,7 +28,7 @@ impl Renderer {
         self.queue.write_buffer(&gpu_scene.globals, 0, bytemuck::bytes_of(&g));
         let mut bytes = vec![0u8; (gpu_scene.object_stride as usize) * scene.objects.len()];
         for (i, o) in scene.objects.iter().enumerate() {
-            let u = ObjectUniform::new(o, &scene.materials[o.material]);
+            let u = ObjectUniform::new(scene, o);
             let at = i * gpu_scene.object_stride as usize;
             bytes[at..at + size_of::<ObjectUniform>()].copy_from_slice(bytemuck::bytes_of(&u));
         }
@@ -63,8 +63,11 @@ impl Renderer {
         let lit_pass = key.program.lighting_pass();
         let layouts = (&self.flat_compute_layout, &self.flat_colors_layout);
         let fx = key.program.effects();
-        let surfaces = fx.has(Effect::BaseColorTexture) || fx.has(Effect::VertexColors);
-        let lit_colors = lit_pass.map(|_| gpu_scene.lit_colors(&self.device, layouts, flat, surfaces));
+        // The surface buffer feeds any texture's coordinates and the vertex colours; the lighting
+        // pass splits its colours when C is tinted per pixel.
+        let surfaces = fx.samples_textures() || fx.has(Effect::VertexColors);
+        let split = fx.has(Effect::BaseColorTexture) || fx.has(Effect::VertexColors);
+        let lit_colors = lit_pass.map(|_| gpu_scene.lit_colors(&self.device, layouts, flat, split));
         if let (Some(entry), Some(colors)) = (lit_pass, lit_colors) {
             // The lighting pass is part of the mode's cost: the first timestamp opens it.
             let start = timestamps.filter(|_| !begun);

@@ -4,6 +4,9 @@
 use shadelab_model::effects::{self, Effect, EffectKey};
 use shadelab_model::{Interpolation, Scene, ShadingMode, SpecularModel};
 
+/// The effects that change the lighting itself per pixel: drawn in Phong shading only.
+pub const PER_PIXEL_LIGHTING: [Effect; 2] = [Effect::MetalRoughnessTexture, Effect::OcclusionTexture];
+
 /// Which effect permutation draws a scene (resolved by [`Program::for_scene`]).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 pub enum Specialization {
@@ -63,6 +66,11 @@ impl Program {
     /// `settings.specialization` picks (the scene's analysis, all of them, or a given set).
     pub fn for_scene(scene: &Scene, settings: &RenderSettings) -> Program {
         let effects = match settings.specialization {
+            // The metallic–roughness and occlusion textures vary the lighting per pixel, which
+            // flat and Gouraud shading compute per face or vertex: Phong shading draws them.
+            Specialization::Specialized if settings.shading != ShadingMode::Phong => {
+                effects::analyze(scene, settings.specular).key.without_all(&PER_PIXEL_LIGHTING)
+            }
             Specialization::Specialized => effects::analyze(scene, settings.specular).key,
             Specialization::Uber => EffectKey::UBER,
             Specialization::Fixed(k) => k,
@@ -73,13 +81,13 @@ impl Program {
         Program::Lit { shading: settings.shading, effects, interpolation }
     }
 
-    /// The same program without the base colour texture and vertex colours (for a scene that has
+    /// The same program without the textures and vertex colours (for a scene that has
     /// no surface attributes to read: the uber program drawing it).
     pub fn without_surfaces(self) -> Program {
         match self {
             Program::Lit { shading, effects, interpolation } => Program::Lit {
                 shading,
-                effects: effects.without(Effect::BaseColorTexture).without(Effect::VertexColors),
+                effects: effects.without_all(&effects::TEXTURE_EFFECTS).without(Effect::VertexColors),
                 interpolation,
             },
             Program::NullBaseline => Program::NullBaseline,

@@ -46,10 +46,8 @@ impl Renderer {
         });
         let object_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("object"),
-            entries: &{
-                let [texture, sampler] = crate::textures::layout_entries();
-                [uniform_entry(true, size_of::<ObjectUniform>() as u64), texture, sampler]
-            },
+            entries: &[vec![uniform_entry(true, size_of::<ObjectUniform>() as u64)], crate::textures::layout_entries()]
+                .concat(),
         });
         let shadow_layout = crate::shadow_pass::maps_layout(device);
         let casters_layout = crate::shadow_pass::casters_layout(device);

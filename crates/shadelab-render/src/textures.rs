@@ -1,31 +1,68 @@
-//! A scene's textures on the GPU (docs/textures.md): each an `Rgba8UnormSrgb` image with its
-//! sampler, bound beside the object uniforms (@group(1), bindings 1 and 2), and the per-vertex
-//! surface attributes (texture coordinates, vertex colours) the textured permutations read.
+//! A scene's textures on the GPU (docs/textures.md): each image uploaded once as `Rgba8Unorm`,
+//! viewed as `Rgba8UnormSrgb` where a material reads it as colour; per material, the textures
+//! of its four slots with their samplers, bound beside the object uniforms (@group(1)); and the
+//! per-vertex surface attributes (texture coordinates, vertex colours) the textured permutations
+//! read.
 
 use crate::vertex::SurfaceVertex;
 use shadelab_model::mesh::TriangleMesh;
-use shadelab_model::{Filter, Scene, Texture, Wrap};
+use shadelab_model::scene::ColorSpace;
+use shadelab_model::{Filter, Object, Scene, Texture, Wrap};
 
-/// The object group's layout entries for the base colour texture and its sampler.
-pub(crate) fn layout_entries() -> [wgpu::BindGroupLayoutEntry; 2] {
+/// The material texture slots, in binding order: slot k is bound at `1 + 2k` (texture) and
+/// `2 + 2k` (sampler), and read as the colour space it names.
+pub(crate) const SLOTS: [(&str, ColorSpace); 4] = [
+    ("base colour", ColorSpace::Srgb),
+    ("metallic–roughness", ColorSpace::Linear),
+    ("occlusion", ColorSpace::Linear),
+    ("emissive", ColorSpace::Srgb),
+];
+
+/// Bit k of `ObjectUniform::maps`: the object's material has slot k's texture (surface.wgsl's
+/// `MAP_…` constants).
+pub(crate) const MAP_BITS: [u32; 4] = [1, 2, 4, 8];
+
+/// The textures of an object's material, by slot: scene texture indices, `None` for a slot
+/// without one (or with an index past the scene's textures).
+pub(crate) type SlotTextures = [Option<usize>; 4];
+
+/// Object `o`'s textures by slot.
+pub(crate) fn object_slots(scene: &Scene, o: &Object) -> SlotTextures {
+    let Some(m) = scene.materials.get(o.material) else { return [None; 4] };
+    let maps = &m.maps;
     [
-        wgpu::BindGroupLayoutEntry {
-            binding: 1,
-            visibility: wgpu::ShaderStages::FRAGMENT,
-            ty: wgpu::BindingType::Texture {
-                sample_type: wgpu::TextureSampleType::Float { filterable: true },
-                view_dimension: wgpu::TextureViewDimension::D2,
-                multisampled: false,
-            },
-            count: None,
-        },
-        wgpu::BindGroupLayoutEntry {
-            binding: 2,
-            visibility: wgpu::ShaderStages::FRAGMENT,
-            ty: wgpu::BindingType::Sampler(wgpu::SamplerBindingType::Filtering),
-            count: None,
-        },
+        m.base_color_texture.map(|r| r.texture),
+        maps.metal_roughness.map(|r| r.texture.texture),
+        maps.occlusion.map(|r| r.texture.texture),
+        maps.emissive.map(|r| r.texture),
     ]
+    .map(|t| t.filter(|&i| i < scene.textures.len()))
+}
+
+/// The object group's layout entries for the four slots' textures and samplers.
+pub(crate) fn layout_entries() -> Vec<wgpu::BindGroupLayoutEntry> {
+    (0..SLOTS.len() as u32)
+        .flat_map(|k| {
+            [
+                wgpu::BindGroupLayoutEntry {
+                    binding: 1 + 2 * k,
+                    visibility: wgpu::ShaderStages::FRAGMENT,
+                    ty: wgpu::BindingType::Texture {
+                        sample_type: wgpu::TextureSampleType::Float { filterable: true },
+                        view_dimension: wgpu::TextureViewDimension::D2,
+                        multisampled: false,
+                    },
+                    count: None,
+                },
+                wgpu::BindGroupLayoutEntry {
+                    binding: 2 + 2 * k,
+                    visibility: wgpu::ShaderStages::FRAGMENT,
+                    ty: wgpu::BindingType::Sampler(wgpu::SamplerBindingType::Filtering),
+                    count: None,
+                },
+            ]
+        })
+        .collect()
 }
 
 fn address(w: Wrap) -> wgpu::AddressMode {
@@ -36,8 +73,29 @@ fn address(w: Wrap) -> wgpu::AddressMode {
     }
 }
 
-/// A texture's image and sampler on the GPU, level 0 only (as the f64 reference samples it).
-pub(crate) fn upload(device: &wgpu::Device, queue: &wgpu::Queue, t: &Texture) -> (wgpu::TextureView, wgpu::Sampler) {
+/// A texture on the GPU: its image viewed as colour (sRGB decoded per texel) and as data, and
+/// its sampler, level 0 only (as the f64 reference samples it).
+pub(crate) struct GpuTexture {
+    srgb: wgpu::TextureView,
+    linear: wgpu::TextureView,
+    sampler: wgpu::Sampler,
+}
+
+impl GpuTexture {
+    pub(crate) fn view(&self, space: ColorSpace) -> &wgpu::TextureView {
+        match space {
+            ColorSpace::Srgb => &self.srgb,
+            ColorSpace::Linear => &self.linear,
+        }
+    }
+
+    pub(crate) fn sampler(&self) -> &wgpu::Sampler {
+        &self.sampler
+    }
+}
+
+/// Upload texture `t` once, with both views.
+pub(crate) fn upload(device: &wgpu::Device, queue: &wgpu::Queue, t: &Texture) -> GpuTexture {
     let size = wgpu::Extent3d { width: t.width, height: t.height, depth_or_array_layers: 1 };
     let texture = device.create_texture(&wgpu::TextureDescriptor {
         label: Some(&t.name),
@@ -45,9 +103,9 @@ pub(crate) fn upload(device: &wgpu::Device, queue: &wgpu::Queue, t: &Texture) ->
         mip_level_count: 1,
         sample_count: 1,
         dimension: wgpu::TextureDimension::D2,
-        format: wgpu::TextureFormat::Rgba8UnormSrgb,
+        format: wgpu::TextureFormat::Rgba8Unorm,
         usage: wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST,
-        view_formats: &[],
+        view_formats: &[wgpu::TextureFormat::Rgba8UnormSrgb],
     });
     queue.write_texture(
         texture.as_image_copy(),
@@ -67,13 +125,29 @@ pub(crate) fn upload(device: &wgpu::Device, queue: &wgpu::Queue, t: &Texture) ->
         min_filter: filter,
         ..Default::default()
     });
-    (texture.create_view(&Default::default()), sampler)
+    let srgb = texture.create_view(&wgpu::TextureViewDescriptor {
+        format: Some(wgpu::TextureFormat::Rgba8UnormSrgb),
+        ..Default::default()
+    });
+    GpuTexture { srgb, linear: texture.create_view(&Default::default()), sampler }
 }
 
-/// Which of the object bind groups each object uses: 0 for no texture (a white texel), `k + 1`
-/// for the scene's texture `k`.
-pub(crate) fn bind_of_objects(scene: &Scene) -> Vec<usize> {
-    scene.objects.iter().map(|o| scene.base_color_texture(o).map_or(0, |r| r.texture + 1)).collect()
+/// The distinct slot sets of the scene's objects (the first is the empty set, for objects with
+/// no texture: white texels) and which one each object uses: one object bind group per set.
+pub(crate) fn bind_sets(scene: &Scene) -> (Vec<SlotTextures>, Vec<usize>) {
+    let mut sets: Vec<SlotTextures> = vec![[None; 4]];
+    let of = scene
+        .objects
+        .iter()
+        .map(|o| {
+            let s = object_slots(scene, o);
+            sets.iter().position(|x| *x == s).unwrap_or_else(|| {
+                sets.push(s);
+                sets.len() - 1
+            })
+        })
+        .collect();
+    (sets, of)
 }
 
 /// Whether any mesh of the scene has surface attributes (then every mesh gets a surface buffer:

@@ -5,8 +5,9 @@
 
 use bytemuck::{Pod, Zeroable};
 use shadelab_model::scene::MAX_LIGHTS;
+use shadelab_model::scene::UvTransform;
 use shadelab_model::shadows::MAX_SHADOW_LAYERS;
-use shadelab_model::{Light, Material, Object, Scene, SpecularModel};
+use shadelab_model::{Light, Object, Scene, SpecularModel};
 
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Pod, Zeroable)]
@@ -60,6 +61,21 @@ pub struct ObjectUniform {
     pub mu_tinted: [f32; 4],
     /// The texture transform's offset (xy) and scale (zw).
     pub uv_offset_scale: [f32; 4],
+    /// `MetalRoughnessMap::metallic_f0`.
+    pub metallic_f0: [f32; 4],
+    /// Emission E.
+    pub emission: [f32; 4],
+    /// The metallic–roughness, occlusion and emissive textures' transforms: offset (xy) and
+    /// scale (zw) each; their rotations are `uv_rotations`.
+    pub metal_roughness_uv: [f32; 4],
+    pub occlusion_uv: [f32; 4],
+    pub emissive_uv: [f32; 4],
+    /// Rotations of the metallic–roughness, occlusion and emissive textures (x, y, z).
+    pub uv_rotations: [f32; 4],
+    /// Which slots' textures the material has (`textures::MAP_BITS`).
+    pub maps: u32,
+    pub occlusion_strength: f32,
+    pub _pad: [f32; 2],
 }
 
 /// One light's shadow map as `shadows.wgsl`'s `ShadowLight` reads it (zeroed: no shadow).
@@ -136,9 +152,20 @@ impl GlobalsUniform {
 }
 
 impl ObjectUniform {
-    pub fn new(object: &Object, material: &Material) -> Self {
+    /// Object `object` of `scene` with its material's parameters and textures.
+    pub fn new(scene: &Scene, object: &Object) -> Self {
+        let material = &scene.materials[object.material];
         let nm = glam::DMat4::from_mat3(object.transform.normal_matrix());
         let t = material.base_color_texture.map(|r| r.transform).unwrap_or_default();
+        let maps = &material.maps;
+        let transforms = [
+            maps.metal_roughness.map(|r| r.texture.transform),
+            maps.occlusion.map(|r| r.texture.transform),
+            maps.emissive.map(|r| r.transform),
+        ]
+        .map(Option::unwrap_or_default);
+        let offset_scale = |t: &UvTransform| [t.offset[0], t.offset[1], t.scale[0], t.scale[1]].map(|x| x as f32);
+        let slots = crate::textures::object_slots(scene, object);
         ObjectUniform {
             model: object.transform.matrix().as_mat4().to_cols_array_2d(),
             normal_matrix: nm.as_mat4().to_cols_array_2d(),
@@ -153,7 +180,17 @@ impl ObjectUniform {
             transmission: material.transmission as f32,
             uv_rotation: t.rotation as f32,
             mu_tinted: rgb(material.mu_tinted, 0.0),
-            uv_offset_scale: [t.offset[0], t.offset[1], t.scale[0], t.scale[1]].map(|x| x as f32),
+            uv_offset_scale: offset_scale(&t),
+            metallic_f0: rgb(maps.metal_roughness.map_or([0.0; 3], |m| m.metallic_f0), 0.0),
+            emission: rgb(material.emission, 0.0),
+            metal_roughness_uv: offset_scale(&transforms[0]),
+            occlusion_uv: offset_scale(&transforms[1]),
+            emissive_uv: offset_scale(&transforms[2]),
+            uv_rotations: [transforms[0].rotation, transforms[1].rotation, transforms[2].rotation, 0.0]
+                .map(|x| x as f32),
+            maps: slots.iter().zip(crate::textures::MAP_BITS).filter(|(s, _)| s.is_some()).map(|(_, b)| b).sum(),
+            occlusion_strength: maps.occlusion.map_or(0.0, |o| o.strength) as f32,
+            _pad: [0.0; 2],
         }
     }
 }

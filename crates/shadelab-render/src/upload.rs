@@ -36,8 +36,8 @@ pub struct SceneGpu {
     pub(crate) globals: wgpu::Buffer,
     pub(crate) globals_bind: wgpu::BindGroup,
     pub(crate) objects_buf: wgpu::Buffer,
-    /// The object group (uniforms, base colour texture, sampler): 0 with a white texel for
-    /// objects without a texture, `k + 1` for scene texture `k`.
+    /// The object groups (uniforms, each slot's texture and sampler), one per distinct set of
+    /// textures (`textures::bind_sets`): 0 with white texels for objects without any.
     pub(crate) objects_binds: Vec<wgpu::BindGroup>,
     /// Which of `objects_binds` each object uses.
     pub(crate) object_bind_of: Vec<usize>,
@@ -219,26 +219,38 @@ impl Uploader {
             layout: &self.globals_layout,
             entries: &[wgpu::BindGroupEntry { binding: 0, resource: globals.as_entire_binding() }],
         });
-        let white = shadelab_model::Texture::solid("white", [255; 4]);
-        let objects_binds = std::iter::once(&white)
-            .chain(&scene.textures)
-            .map(|t| {
-                let (view, sampler) = crate::textures::upload(device, &self.queue, t);
+        // Each texture uploaded once; a slot without one reads a white texel (the identity of
+        // every slot's rule).
+        let white = crate::textures::upload(device, &self.queue, &shadelab_model::Texture::solid("white", [255; 4]));
+        let textures: Vec<_> = scene.textures.iter().map(|t| crate::textures::upload(device, &self.queue, t)).collect();
+        let (sets, object_bind_of) = crate::textures::bind_sets(scene);
+        let objects_binds = sets
+            .iter()
+            .map(|set| {
+                let mut entries = vec![wgpu::BindGroupEntry {
+                    binding: 0,
+                    resource: wgpu::BindingResource::Buffer(wgpu::BufferBinding {
+                        buffer: &objects_buf,
+                        offset: 0,
+                        size: wgpu::BufferSize::new(size_of::<ObjectUniform>() as u64),
+                    }),
+                }];
+                for (k, (slot, (_, space))) in set.iter().zip(crate::textures::SLOTS).enumerate() {
+                    let t = slot.map_or(&white, |i| &textures[i]);
+                    let k = k as u32;
+                    entries.push(wgpu::BindGroupEntry {
+                        binding: 1 + 2 * k,
+                        resource: wgpu::BindingResource::TextureView(t.view(space)),
+                    });
+                    entries.push(wgpu::BindGroupEntry {
+                        binding: 2 + 2 * k,
+                        resource: wgpu::BindingResource::Sampler(t.sampler()),
+                    });
+                }
                 device.create_bind_group(&wgpu::BindGroupDescriptor {
                     label: Some("objects"),
                     layout: &self.object_layout,
-                    entries: &[
-                        wgpu::BindGroupEntry {
-                            binding: 0,
-                            resource: wgpu::BindingResource::Buffer(wgpu::BufferBinding {
-                                buffer: &objects_buf,
-                                offset: 0,
-                                size: wgpu::BufferSize::new(size_of::<ObjectUniform>() as u64),
-                            }),
-                        },
-                        wgpu::BindGroupEntry { binding: 1, resource: wgpu::BindingResource::TextureView(&view) },
-                        wgpu::BindGroupEntry { binding: 2, resource: wgpu::BindingResource::Sampler(&sampler) },
-                    ],
+                    entries: &entries,
                 })
             })
             .collect();
@@ -250,7 +262,7 @@ impl Uploader {
             globals_bind,
             objects_buf,
             objects_binds,
-            object_bind_of: crate::textures::bind_of_objects(scene),
+            object_bind_of,
             has_surfaces: surfaces,
             object_stride,
             triangle_count,

@@ -111,7 +111,7 @@ pub fn analyze(scene: &Scene, specular: SpecularModel) -> Analysis {
     let model = scene.illumination;
     let phong_model = model == IlluminationModel::Phong;
     let other_model = format!("the illumination model is {model}, which has its own terms");
-    let max_rd = used.iter().map(|m| m.r_d * m.color.iter().cloned().fold(0.0, f64::max)).fold(0.0, f64::max);
+    let max_rd = used.iter().map(|m| m.r_d * m.max_color().iter().cloned().fold(0.0, f64::max)).fold(0.0, f64::max);
     a.decide(
         Effect::Diffuse,
         phong_model && lit && max_rd > 0.0,
@@ -201,6 +201,14 @@ pub fn analyze(scene: &Scene, specular: SpecularModel) -> Analysis {
     a.decide(Effect::BaseColorTexture, textured, why);
     let (colored, why) = vertex_colors(scene);
     a.decide(Effect::VertexColors, colored, why);
+    let (on, why) = texture_map(scene, "metallic–roughness texture", |m| m.maps.metal_roughness.map(|t| t.texture));
+    a.decide(Effect::MetalRoughnessTexture, on, why);
+    let (on, why) = texture_map(scene, "occlusion texture", |m| m.maps.occlusion.map(|t| t.texture));
+    a.decide(Effect::OcclusionTexture, on, why);
+    let (on, why) = emission(scene);
+    a.decide(Effect::Emission, on, why);
+    let (on, why) = emissive_texture(scene);
+    a.decide(Effect::EmissiveTexture, on, why);
     let transmitting: Vec<_> = used.iter().filter(|m| m.transmission > 0.0).collect();
     a.note(
         Effect::Transmission,
@@ -241,15 +249,48 @@ fn file_mesh<'s>(scene: &'s Scene, o: &crate::scene::Object) -> Option<&'s crate
 /// texture coordinates to sample it with (without them the loader has said so; the factor alone
 /// is drawn).
 fn base_color_texture(scene: &Scene) -> (bool, String) {
-    let textured: Vec<_> = scene.objects.iter().filter(|o| scene.base_color_texture(o).is_some()).collect();
+    texture_map(scene, "base colour texture", |m| m.base_color_texture)
+}
+
+/// A material texture (`what`, found by `slot`) is sampled when some object's material has one
+/// that exists and its mesh has texture coordinates to sample it with (without them the loader has
+/// said so; the material's own parameter is drawn).
+fn texture_map(
+    scene: &Scene,
+    what: &str,
+    slot: impl Fn(&crate::scene::Material) -> Option<crate::scene::TextureRef>,
+) -> (bool, String) {
+    let has = |o: &&crate::scene::Object| {
+        scene.materials.get(o.material).and_then(&slot).is_some_and(|r| r.texture < scene.textures.len())
+    };
+    let textured: Vec<_> = scene.objects.iter().filter(has).collect();
     let sampled = textured.iter().filter(|o| file_mesh(scene, o).is_some_and(|m| m.uvs.is_some())).count();
     if textured.is_empty() {
-        (false, "no material has a base colour texture".into())
+        (false, format!("no material has a {what}"))
     } else if sampled == 0 {
-        (false, format!("{} object(s) have a textured material but no texture coordinates", textured.len()))
+        (false, format!("{} object(s) have a material with a {what} but no texture coordinates", textured.len()))
     } else {
-        (true, format!("{sampled} object(s) have a base colour texture and texture coordinates"))
+        (true, format!("{sampled} object(s) have a {what} and texture coordinates"))
     }
+}
+
+/// Emission is added when some object's material emits (E > 0 in some channel).
+fn emission(scene: &Scene) -> (bool, String) {
+    let n = scene.objects.iter().filter(|o| emits(scene, o)).count();
+    if n == 0 { (false, "no material emits (E = 0)".into()) } else { (true, format!("{n} object(s) emit light E > 0")) }
+}
+
+fn emits(scene: &Scene, o: &crate::scene::Object) -> bool {
+    scene.materials.get(o.material).is_some_and(|m| m.emission.iter().any(|e| *e > 0.0))
+}
+
+/// The emissive texture is sampled where it can change something: on an emitting material.
+fn emissive_texture(scene: &Scene) -> (bool, String) {
+    let (on, why) = texture_map(scene, "emissive texture", |m| m.maps.emissive);
+    if on && !scene.objects.iter().any(|o| emits(scene, o) && scene.materials[o.material].maps.emissive.is_some()) {
+        return (false, "every material with an emissive texture has E = 0: the texture scales nothing".into());
+    }
+    (on, why)
 }
 
 /// Vertex colours are interpolated when some object's mesh has them.

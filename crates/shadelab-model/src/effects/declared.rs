@@ -244,14 +244,13 @@ declare_effects! {
         functions: &["shadow_cascade", "shadow_ortho_texel_world"],
         members: &[],
     },
-    /// Light transmitted through a material: analysed, not simulated yet (docs/model.md §7).
     /// The base colour texture sampled per pixel (docs/textures.md): C and the tinted part of μ.
     BaseColorTexture {
         explain: "base colour texture",
         name: "base colour texture",
         label: "texture",
         define: Some("EFFECT_BASE_COLOR_TEXTURE"),
-        functions: &["texture_uv", "base_color_texel"],
+        functions: &["base_color_texel"],
         members: &[("Object", "uv_offset_scale"), ("Object", "uv_rotation")],
     },
     /// Vertex colours (glTF `COLOR_0`) interpolated and multiplied into C (docs/textures.md).
@@ -263,6 +262,45 @@ declare_effects! {
         functions: &["vertex_tint"],
         members: &[],
     },
+    /// glTF's metallic–roughness texture sampled per pixel (docs/textures.md): its metal scale
+    /// moves C and μ between the dielectric and the metal, its roughness scale m (and h with it).
+    MetalRoughnessTexture {
+        explain: "metallic–roughness texture",
+        name: "metallic–roughness texture",
+        label: "mrtex",
+        define: Some("EFFECT_METAL_ROUGHNESS_TEXTURE"),
+        functions: &["metal_roughness_texel", "metallic_scaled", "roughness_scaled", "phong_h_from_m"],
+        members: &[("Object", "metallic_f0"), ("Object", "metal_roughness_uv")],
+    },
+    /// glTF's occlusion texture sampled per pixel: it scales the ambient reflectance r_a
+    /// (docs/textures.md).
+    OcclusionTexture {
+        explain: "occlusion texture",
+        name: "occlusion texture",
+        label: "aotex",
+        define: Some("EFFECT_OCCLUSION_TEXTURE"),
+        functions: &["occlusion_texel", "occluded"],
+        members: &[("Object", "occlusion_strength"), ("Object", "occlusion_uv")],
+    },
+    /// Emitted light E added to the model's I (glTF `emissiveFactor`, docs/textures.md).
+    Emission {
+        explain: "emission E",
+        name: "emission",
+        label: "emit",
+        define: Some("EFFECT_EMISSION"),
+        functions: &["emitted"],
+        members: &[("Object", "emission")],
+    },
+    /// glTF's emissive texture sampled per pixel: its colour scales E (docs/textures.md).
+    EmissiveTexture {
+        explain: "emissive texture",
+        name: "emissive texture",
+        label: "emittex",
+        define: Some("EFFECT_EMISSIVE_TEXTURE"),
+        functions: &["emissive_texel"],
+        members: &[("Object", "emissive_uv")],
+    },
+    /// Light transmitted through a material: analysed, not simulated yet (docs/model.md §7).
     Transmission {
         explain: "transmission",
         name: "transmission",
@@ -282,6 +320,14 @@ declare_effects! {
         members: &[],
     },
 }
+
+/// The effects that sample a material texture at the pixel's texture coordinates.
+pub const TEXTURE_EFFECTS: [Effect; 4] =
+    [Effect::BaseColorTexture, Effect::MetalRoughnessTexture, Effect::OcclusionTexture, Effect::EmissiveTexture];
+
+/// The preprocessor name defined when a permutation samples some texture: the texture
+/// coordinates' vertex attribute and interpolant.
+pub const TEXTURE_COORDS: &str = "TEXTURE_COORDS";
 
 /// How many declared effects are simulated (have a define).
 const fn simulated_count() -> usize {
@@ -387,14 +433,29 @@ impl EffectKey {
         EffectKey(self.0 & !e.bit())
     }
 
+    /// The key with each of `effects` taken out.
+    pub fn without_all(self, effects: &[Effect]) -> EffectKey {
+        effects.iter().fold(self, |k, e| k.without(*e))
+    }
+
     /// The effects present, in declaration order.
     pub fn effects(&self) -> Vec<Effect> {
         Effect::ALL.into_iter().filter(|e| self.has(*e)).collect()
     }
 
-    /// The preprocessor names defined for this permutation.
+    /// The preprocessor names defined for this permutation: its effects', and
+    /// [`TEXTURE_COORDS`] when one of them samples a texture.
     pub fn defines(&self) -> Vec<&'static str> {
-        self.effects().into_iter().filter_map(Effect::define).collect()
+        let mut out: Vec<&'static str> = self.effects().into_iter().filter_map(Effect::define).collect();
+        if self.samples_textures() {
+            out.push(TEXTURE_COORDS);
+        }
+        out
+    }
+
+    /// Whether the permutation samples some texture (it then reads texture coordinates).
+    pub fn samples_textures(&self) -> bool {
+        TEXTURE_EFFECTS.iter().any(|e| self.has(*e))
     }
 
     /// A short label, e.g. `diffuse+cook-torrance+ambient+dir+point+quad`; `uber` and `none` for
@@ -427,7 +488,12 @@ mod tests {
 
     #[test]
     fn keys_and_defines() {
-        assert_eq!(EffectKey::UBER.defines().len(), Effect::ALL.len());
+        assert_eq!(EffectKey::UBER.defines().len(), Effect::ALL.len() + 1);
+        assert!(EffectKey::UBER.defines().contains(&TEXTURE_COORDS));
+        for e in TEXTURE_EFFECTS {
+            assert!(EffectKey::NONE.with(e).defines().contains(&TEXTURE_COORDS), "{e}");
+        }
+        assert!(!EffectKey::UBER.without_all(&TEXTURE_EFFECTS).defines().contains(&TEXTURE_COORDS));
         assert!(EffectKey::NONE.defines().is_empty());
         for e in Effect::ALL {
             assert!(!EffectKey::UBER.without(e).has(e));
@@ -484,7 +550,7 @@ mod tests {
         assert_eq!(format!("{k:?}"), "EffectKey(diffuse+cook-torrance+point+range)");
         assert_eq!(
             EffectKey::UBER.without(Effect::Ambient).label(),
-            "diffuse+phong+cook-torrance+lambert+sum+it+dir+point+quad+linear+spot+range+shadows+hard+pcf+poisson+cascades+texture+vcolor"
+            "diffuse+phong+cook-torrance+lambert+sum+it+dir+point+quad+linear+spot+range+shadows+hard+pcf+poisson+cascades+texture+vcolor+mrtex+aotex+emit+emittex"
         );
         assert_eq!(Effect::SpecularPhong.to_string(), "Phong specular (V·R)^h");
     }

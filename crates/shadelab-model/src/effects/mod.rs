@@ -7,4 +7,4 @@ mod analyze;
 mod declared;
 
 pub use analyze::{ABSORPTION_LINEAR_BELOW, ABSORPTION_NEGLECT_BELOW, Analysis, Decision, analyze};
-pub use declared::{DECLARED, Declaration, Effect, EffectKey};
+pub use declared::{DECLARED, Declaration, Effect, EffectKey, TEXTURE_COORDS, TEXTURE_EFFECTS};

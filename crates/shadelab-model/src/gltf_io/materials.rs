@@ -6,7 +6,7 @@ use super::extras::{self, Absorption, Mu, Num, Phong, Rgb, Roughness, Thickness,
 use super::scene_file::{Reader, num, rgb};
 use super::{ATTENUATION_COLOR_MIN, DEFAULT_IOR, DIELECTRIC_MU_MAX, GltfError, dielectric_f0, m_from_roughness};
 use crate::params::{ParamRange, PhongExponent};
-use crate::scene::{Material, Scene};
+use crate::scene::{Material, MetalRoughnessMap, OcclusionMap, Scene};
 use gltf::json;
 use gltf::json::validation::Checked;
 use serde::{Deserialize, Serialize};
@@ -48,6 +48,12 @@ struct MaterialExtras {
     d: Option<Num<Thickness>>,
     /// The part of μ the base colour sets (`Material::mu_tinted`).
     mu_t: Option<Rgb<Mu>>,
+    /// Emission E, exactly (glTF's `emissiveFactor` is f32).
+    #[serde(rename = "E", skip_serializing_if = "Option::is_none")]
+    emission: Option<Rgb<Unit>>,
+    /// `M·F0` of a metallic–roughness texture (`MetalRoughnessMap::metallic_f0`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    mf0: Option<Rgb<Mu>>,
 }
 
 impl Reader<'_> {
@@ -57,17 +63,32 @@ impl Reader<'_> {
         let root = self.root;
         let mut unused: Vec<&str> = Vec::new();
         for (i, m) in root.materials.iter().enumerate() {
-            let mut mat = self.material(i, m)?;
-            if let Some(info) = &m.pbr_metallic_roughness.base_color_texture {
-                mat.base_color_texture = self.texture_ref(scene, info, &format!("material {i}: baseColorTexture"))?;
-            }
+            let (mut mat, mf0) = self.material(i, m)?;
             let pbr = &m.pbr_metallic_roughness;
+            let slot = |name: &str| format!("material {i}: {name}");
+            if let Some(info) = &pbr.base_color_texture {
+                mat.base_color_texture = self.texture_ref(scene, info, &slot("baseColorTexture"))?;
+            }
+            if let Some(info) = &pbr.metallic_roughness_texture {
+                mat.maps.metal_roughness = self
+                    .texture_ref(scene, info, &slot("metallicRoughnessTexture"))?
+                    .map(|texture| MetalRoughnessMap { texture, metallic_f0: mf0 });
+            }
+            if let Some(o) = &m.occlusion_texture {
+                let info = plain_info(o.index, o.tex_coord);
+                let strength = (o.strength.0 as f64).clamp(0.0, 1.0);
+                if !o.strength.0.is_finite() {
+                    return Err(self.cx.invalid(slot("occlusionTexture: strength is not finite")));
+                }
+                mat.maps.occlusion = self
+                    .texture_ref(scene, &info, &slot("occlusionTexture"))?
+                    .map(|texture| OcclusionMap { texture, strength });
+            }
+            if let Some(info) = &m.emissive_texture {
+                mat.maps.emissive = self.texture_ref(scene, info, &slot("emissiveTexture"))?;
+            }
             for (has, what) in [
-                (pbr.metallic_roughness_texture.is_some(), "metallicRoughnessTexture"),
                 (m.normal_texture.is_some(), "normalTexture"),
-                (m.occlusion_texture.is_some(), "occlusionTexture"),
-                (m.emissive_texture.is_some(), "emissiveTexture"),
-                (m.emissive_factor.0.iter().any(|&e| e != 0.0), "emissiveFactor"),
                 (
                     !matches!(m.alpha_mode, Checked::Valid(json::material::AlphaMode::Opaque)),
                     "alphaMode (drawn opaque)",
@@ -86,7 +107,8 @@ impl Reader<'_> {
         Ok(())
     }
 
-    fn material(&self, i: usize, m: &json::Material) -> Result<Material, GltfError> {
+    /// Material `i` from its factors and extras, and its `M·F0` for a metallic–roughness texture.
+    fn material(&self, i: usize, m: &json::Material) -> Result<(Material, [f64; 3]), GltfError> {
         let what = format!("material {i}");
         let pbr = &m.pbr_metallic_roughness;
         let finite = pbr.base_color_factor.0.iter().all(|c| c.is_finite())
@@ -95,7 +117,11 @@ impl Reader<'_> {
         if !finite {
             return Err(self.cx.invalid(format!("{what}: a pbrMetallicRoughness factor is not finite")));
         }
+        if m.emissive_factor.0.iter().any(|e| !e.is_finite()) {
+            return Err(self.cx.invalid(format!("{what}: emissiveFactor is not finite")));
+        }
         let mut mat = pbr_material(m);
+        let mut mf0 = metallic_f0(m);
         mat.name = m.name.clone().unwrap_or(what.clone());
         let ex: MaterialExtras = extras::read(&self.cx, &m.extras, &what)?;
         let set = |field: &mut f64, v: Option<Num<Unit>>| {
@@ -127,8 +153,40 @@ impl Reader<'_> {
         if let Some(v) = ex.d {
             mat.thickness = v.0;
         }
-        Ok(mat)
+        if let Some(v) = ex.emission {
+            mat.emission = v.0;
+        }
+        if let Some(v) = ex.mf0 {
+            mf0 = v.0;
+        }
+        Ok((mat, mf0))
     }
+}
+
+/// A `textureInfo` for the normal and occlusion slots, whose own extensions the glTF crate does
+/// not read (their `KHR_texture_transform` is not applied; docs/scene-files.md says so).
+fn plain_info(index: json::Index<json::Texture>, tex_coord: u32) -> json::texture::Info {
+    json::texture::Info { index, tex_coord, extensions: None, extras: Default::default() }
+}
+
+/// glTF's F0 of a material's dielectric part (ior and `KHR_materials_specular`).
+fn material_f0(m: &json::Material) -> [f64; 3] {
+    let ext = m.extensions.as_ref();
+    let ior = ext.and_then(|e| e.ior.as_ref()).map_or(DEFAULT_IOR, |i| i.ior.0 as f64);
+    // KHR_materials_ior: ior ≥ 1, or 0 (F0 = 1); anything else is read as the default.
+    let ior = if ior == 0.0 || (ior >= 1.0 && ior.is_finite()) { ior } else { DEFAULT_IOR };
+    let (spec, spec_color) = ext
+        .and_then(|e| e.specular.as_ref())
+        .map_or((1.0, [1.0; 3]), |s| (s.specular_factor.0 as f64, s.specular_color_factor.0.map(f64::from)));
+    let sane = |x: f64| if x.is_finite() { x.max(0.0) } else { 1.0 };
+    dielectric_f0(ior, sane(spec), spec_color.map(sane))
+}
+
+/// `M·F0`: the share of μ the metallic factor took from the dielectric F0, which a
+/// metallic–roughness texel's metal scale below 1 gives back.
+fn metallic_f0(m: &json::Material) -> [f64; 3] {
+    let metallic = (m.pbr_metallic_roughness.metallic_factor.0 as f64).clamp(0.0, 1.0);
+    material_f0(m).map(|f| f * metallic)
 }
 
 /// glTF's default material: every property at its default (glTF 2.0 §3.9.6).
@@ -144,14 +202,7 @@ pub(super) fn pbr_material(m: &json::Material) -> Material {
     let metallic = (pbr.metallic_factor.0 as f64).clamp(0.0, 1.0);
     let roughness = (pbr.roughness_factor.0 as f64).clamp(0.0, 1.0);
     let ext = m.extensions.as_ref();
-    let ior = ext.and_then(|e| e.ior.as_ref()).map_or(DEFAULT_IOR, |i| i.ior.0 as f64);
-    // KHR_materials_ior: ior ≥ 1, or 0 (F0 = 1); anything else is read as the default.
-    let ior = if ior == 0.0 || (ior >= 1.0 && ior.is_finite()) { ior } else { DEFAULT_IOR };
-    let (spec, spec_color) = ext
-        .and_then(|e| e.specular.as_ref())
-        .map_or((1.0, [1.0; 3]), |s| (s.specular_factor.0 as f64, s.specular_color_factor.0.map(f64::from)));
-    let sane = |x: f64| if x.is_finite() { x.max(0.0) } else { 1.0 };
-    let f0 = dielectric_f0(ior, sane(spec), spec_color.map(sane));
+    let f0 = material_f0(m);
     let mu = [0, 1, 2].map(|c| (f0[c] * (1.0 - metallic) + base[c] * metallic).clamp(0.0, 1.0));
     let m_rough = m_from_roughness(roughness);
     let transmission =
@@ -181,6 +232,8 @@ pub(super) fn pbr_material(m: &json::Material) -> Material {
         thickness,
         base_color_texture: None,
         mu_tinted: base.map(|c| c * metallic),
+        emission: m.emissive_factor.0.map(|e| (e as f64).clamp(0.0, 1.0)),
+        maps: Default::default(),
     }
 }
 
@@ -238,6 +291,8 @@ pub(super) fn write_material(m: &Material, extensions_used: &mut Vec<&'static st
         a: Some(m.absorption.into()),
         d: Some(m.thickness.into()),
         mu_t: Some(m.mu_tinted.into()),
+        emission: (m.emission != [0.0; 3]).then(|| m.emission.into()),
+        mf0: m.maps.metal_roughness.map(|mr| mr.metallic_f0.into()),
     };
     let mut out = json!({
         "name": m.name,
@@ -248,8 +303,22 @@ pub(super) fn write_material(m: &Material, extensions_used: &mut Vec<&'static st
         },
         "extras": extras::shadelab(&ex),
     });
+    let info = super::textures::texture_info;
     if let Some(t) = &m.base_color_texture {
-        out["pbrMetallicRoughness"]["baseColorTexture"] = super::textures::texture_info(t, extensions_used);
+        out["pbrMetallicRoughness"]["baseColorTexture"] = info(t, extensions_used);
+    }
+    if let Some(mr) = &m.maps.metal_roughness {
+        out["pbrMetallicRoughness"]["metallicRoughnessTexture"] = info(&mr.texture, extensions_used);
+    }
+    if let Some(o) = &m.maps.occlusion {
+        // The occlusion slot's transform is not read back (see `plain_info`): written plain.
+        out["occlusionTexture"] = json!({ "index": o.texture.texture, "strength": num(o.strength) });
+    }
+    if let Some(t) = &m.maps.emissive {
+        out["emissiveTexture"] = info(t, extensions_used);
+    }
+    if m.emission != [0.0; 3] {
+        out["emissiveFactor"] = rgb(m.emission);
     }
     if !ext.is_empty() {
         out["extensions"] = Value::Object(ext);

@@ -1,6 +1,7 @@
 //! Surface materials: the parameters of the chapter's model per surface (docs/model.md §3, §5,
 //! §7).
 
+use super::{ColorSpace, Texture, TextureRef};
 use crate::params::PhongExponent;
 
 /// Surface material of the chapter's model (docs/model.md §3, §5).
@@ -36,6 +37,52 @@ pub struct Material {
     /// base colour texture and vertex colours scale it as they scale `C`. 0 for the built-in
     /// materials.
     pub mu_tinted: [f64; 3],
+    /// Emitted radiance `E`, linear RGB, added to the model's `I` (glTF `emissiveFactor`).
+    pub emission: [f64; 3],
+    /// The textures that vary the model's other parameters per point (glTF's metallic–roughness,
+    /// occlusion, emissive and normal textures; docs/textures.md).
+    pub maps: MaterialMaps,
+}
+
+/// A material's textures beyond the base colour. Each is optional; a point without one uses the
+/// material's own parameter.
+#[derive(Clone, Copy, Debug, PartialEq, Default)]
+pub struct MaterialMaps {
+    /// glTF's `metallicRoughnessTexture`: its blue channel scales the metallic factor, its green
+    /// channel the roughness.
+    pub metal_roughness: Option<MetalRoughnessMap>,
+    /// glTF's `occlusionTexture`: its red channel scales the ambient reflectance `r_a`.
+    pub occlusion: Option<OcclusionMap>,
+    /// glTF's `emissiveTexture`: its (sRGB) colour scales the emission `E`.
+    pub emissive: Option<TextureRef>,
+}
+
+/// The metallic–roughness texture and what the metallic scale needs beside the material.
+#[derive(Clone, Copy, Debug, PartialEq, Default)]
+pub struct MetalRoughnessMap {
+    pub texture: TextureRef,
+    /// `M·F0`: the dielectric F0 share of μ that the metallic factor M replaced (glTF's
+    /// `μ = lerp(F0, base, M)`); a texel's metal scale b < 1 gives part of it back.
+    pub metallic_f0: [f64; 3],
+}
+
+/// The occlusion texture and glTF's `strength`.
+#[derive(Clone, Copy, Debug, PartialEq, Default)]
+pub struct OcclusionMap {
+    pub texture: TextureRef,
+    /// In [0, 1]: 0 leaves `r_a` as it is, 1 scales it by the texel.
+    pub strength: f64,
+}
+
+/// A material's parameters at one point (what [`Material::surface_at`] gives the reference).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SurfacePoint {
+    pub color: [f64; 3],
+    pub mu: [f64; 3],
+    pub m: f64,
+    pub h: PhongExponent,
+    pub r_a: f64,
+    pub emission: [f64; 3],
 }
 
 impl Default for Material {
@@ -54,27 +101,107 @@ impl Default for Material {
             thickness: 0.0,
             base_color_texture: None,
             mu_tinted: [0.0; 3],
+            emission: [0.0; 3],
+            maps: MaterialMaps::default(),
         }
     }
 }
 
 impl Material {
-    /// The surface colour `C` and reflectance μ at a point with texture coordinates `uv` and
-    /// vertex colour `vertex_color` ([`tinted_surface`] with `t` = the vertex colour times the
-    /// base colour texture's linear RGB there). A texture index past `textures` counts as none.
-    pub fn surface_at(
-        &self,
-        textures: &[super::Texture],
-        uv: [f64; 2],
-        vertex_color: [f64; 3],
-    ) -> ([f64; 3], [f64; 3]) {
-        let texel = self
-            .base_color_texture
-            .and_then(|r| textures.get(r.texture).map(|t| t.sample(r.transform.apply(uv))))
-            .unwrap_or([1.0; 4]);
-        let tint = vertex_tint(vertex_color);
-        tinted_surface(self.color, self.mu, self.mu_tinted, std::array::from_fn(|i| tint[i] * texel[i]))
+    /// Whether a point's parameters can differ from the material's (a texture, or vertex colours
+    /// `vertex_color` other than white).
+    pub fn varies(&self, vertex_color: [f64; 3]) -> bool {
+        self.base_color_texture.is_some() || self.maps != MaterialMaps::default() || vertex_color != [1.0; 3]
     }
+
+    /// The largest C a point of the material can have: a metallic–roughness texel's metal scale
+    /// gives a metal's base colour back to C ([`metallic_scaled`] at b = 0), so a metal with
+    /// that texture can still be diffuse.
+    pub fn max_color(&self) -> [f64; 3] {
+        let back = if self.maps.metal_roughness.is_some() { self.mu_tinted } else { [0.0; 3] };
+        std::array::from_fn(|i| self.color[i] + back[i])
+    }
+
+    /// The material at a point with texture coordinates `uv` and vertex colour `vertex_color`:
+    /// C and μ tinted by the vertex colour and base colour texture ([`tinted_surface`]), after
+    /// the metallic–roughness texel's metal scale ([`metallic_scaled`]); m scaled by its
+    /// roughness ([`roughness_scaled`]) and h following m ([`phong_h_from_m`]); `r_a` by the
+    /// occlusion texel ([`occluded`]); E by the emissive texel ([`emitted`]). A texture index
+    /// past `textures` counts as none.
+    pub fn surface_at(&self, textures: &[Texture], uv: [f64; 2], vertex_color: [f64; 3]) -> SurfacePoint {
+        let sample = |r: &TextureRef, space| textures.get(r.texture).map(|t| t.sample_as(r.transform.apply(uv), space));
+        let texel = self.base_color_texture.and_then(|r| sample(&r, ColorSpace::Srgb)).unwrap_or([1.0; 4]);
+        let tint = vertex_tint(vertex_color);
+        let t = std::array::from_fn(|i| tint[i] * texel[i]);
+        let (mut c, mut mu, mut mu_t) = (self.color, self.mu, self.mu_tinted);
+        let (mut m, mut h) = (self.m, self.h);
+        if let Some(mr) = &self.maps.metal_roughness
+            && let Some(x) = sample(&mr.texture, ColorSpace::Linear)
+        {
+            (c, mu, mu_t) = metallic_scaled(c, mu, mu_t, mr.metallic_f0, x[2]);
+            m = roughness_scaled(m, x[1]);
+            h = PhongExponent::from_m(m);
+        }
+        let (color, mu) = tinted_surface(c, mu, mu_t, t);
+        let r_a = match &self.maps.occlusion {
+            Some(o) => {
+                sample(&o.texture, ColorSpace::Linear).map_or(self.r_a, |x| occluded(self.r_a, x[0], o.strength))
+            }
+            None => self.r_a,
+        };
+        let emissive = self.maps.emissive.and_then(|r| sample(&r, ColorSpace::Srgb)).unwrap_or([1.0; 4]);
+        let emission = emitted(self.emission, [emissive[0], emissive[1], emissive[2]]);
+        SurfacePoint { color, mu, m, h, r_a, emission }
+    }
+}
+
+/// The material's C, μ and tinted μ at a metallic–roughness texel whose metal scale (blue) is
+/// `b`, so that glTF's metallic is `M·b`: `C + μ_t·(1 − b)`, `μ + (M·F0 − μ_t)·(1 − b)`, `μ_t·b`
+/// (twin of `metallic_scaled` in shaders/surface.wgsl). At b = 1 the material is unchanged;
+/// at b = 0 it is the dielectric with the same base colour.
+pub fn metallic_scaled(
+    c: [f64; 3],
+    mu: [f64; 3],
+    mu_tinted: [f64; 3],
+    metallic_f0: [f64; 3],
+    b: f64,
+) -> ([f64; 3], [f64; 3], [f64; 3]) {
+    let b = if b.is_finite() { b.clamp(0.0, 1.0) } else { 1.0 };
+    let k = 1.0 - b;
+    (
+        std::array::from_fn(|i| c[i] + mu_tinted[i] * k),
+        std::array::from_fn(|i| mu[i] + (metallic_f0[i] - mu_tinted[i]) * k),
+        mu_tinted.map(|t| t * b),
+    )
+}
+
+/// Roughness m at a texel whose roughness scale (green) is `g`: glTF's roughness is `r·g`, and
+/// m = r², so `m·g²`, in [0, 1] (twin of `roughness_scaled` in shaders/surface.wgsl).
+pub fn roughness_scaled(m: f64, g: f64) -> f64 {
+    let g = if g.is_finite() { g.clamp(0.0, 1.0) } else { 1.0 };
+    (m * g * g).clamp(0.0, 1.0)
+}
+
+/// The Phong exponent a point's roughness implies, `2/m² − 2` in [1, H_MAX], the mirror's H_MAX
+/// at m = 0 (twin of `phong_h_from_m` in shaders/surface.wgsl; the rule is
+/// `PhongExponent::from_m`).
+pub fn phong_h_from_m(m: f64) -> f64 {
+    PhongExponent::from_m(m).value()
+}
+
+/// Ambient reflectance under an occlusion texel `occ` (red) of strength `strength`:
+/// `r_a·(1 + strength·(occ − 1))`, glTF's occlusion rule (twin of `occluded` in
+/// shaders/surface.wgsl).
+pub fn occluded(r_a: f64, occ: f64, strength: f64) -> f64 {
+    let occ = if occ.is_finite() { occ.clamp(0.0, 1.0) } else { 1.0 };
+    let strength = if strength.is_finite() { strength.clamp(0.0, 1.0) } else { 1.0 };
+    r_a * (1.0 + strength * (occ - 1.0))
+}
+
+/// Emission E scaled by an emissive texel's linear colour (twin of `emitted` in
+/// shaders/surface.wgsl).
+pub fn emitted(e: [f64; 3], texel: [f64; 3]) -> [f64; 3] {
+    std::array::from_fn(|i| e[i] * if texel[i].is_finite() { texel[i].clamp(0.0, 1.0) } else { 1.0 })
 }
 
 /// `C·t` and `μ + μ_t·(t − 1)`, μ clamped to [0, 1]: glTF's base colour scales the diffuse colour
@@ -91,4 +218,58 @@ pub fn tinted_surface(c: [f64; 3], mu: [f64; 3], mu_tinted: [f64; 3], t: [f64; 3
 /// in shaders/surface.wgsl).
 pub fn vertex_tint(color: [f64; 3]) -> [f64; 3] {
     color.map(|c| if c.is_finite() { c.clamp(0.0, 1.0) } else { 1.0 })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_metal_scale_of_one_changes_nothing_and_zero_gives_the_dielectric() {
+        // glTF base 0.6, metallic 0.75, F0 0.04: C = 0.15, μ_t = 0.45, μ = 0.01 + 0.45.
+        let (c, mu, mu_t, mf0) = ([0.15; 3], [0.46; 3], [0.45; 3], [0.03; 3]);
+        assert_eq!(metallic_scaled(c, mu, mu_t, mf0, 1.0), (c, mu, mu_t));
+        let (c0, mu0, t0) = metallic_scaled(c, mu, mu_t, mf0, 0.0);
+        for i in 0..3 {
+            assert!((c0[i] - 0.6).abs() < 1e-12 && (mu0[i] - 0.04).abs() < 1e-12 && t0[i] == 0.0);
+        }
+        // A non-finite texel counts as 1 (the material as it is).
+        assert_eq!(metallic_scaled(c, mu, mu_t, mf0, f64::NAN), (c, mu, mu_t));
+    }
+
+    #[test]
+    fn roughness_occlusion_and_emission_follow_gltf() {
+        assert!((roughness_scaled(0.25, 0.5) - 0.0625).abs() < 1e-15);
+        assert_eq!(roughness_scaled(0.25, 2.0), 0.25);
+        assert_eq!(phong_h_from_m(0.0), crate::guards::H_MAX);
+        assert_eq!(phong_h_from_m(1.0), 1.0);
+        assert_eq!(occluded(0.8, 0.5, 1.0), 0.4);
+        assert_eq!(occluded(0.8, 0.5, 0.0), 0.8);
+        assert_eq!(occluded(0.8, f64::NAN, 1.0), 0.8);
+        assert_eq!(emitted([0.5; 3], [1.0, 0.5, f64::INFINITY]), [0.5, 0.25, 0.5]);
+    }
+
+    #[test]
+    fn surface_at_applies_each_map() {
+        let tex = |rgba| Texture::solid("t", rgba);
+        let textures = [tex([0, 128, 0, 255]), tex([64, 0, 0, 255]), tex([255, 255, 255, 255])];
+        let r = |texture| TextureRef { texture, ..Default::default() };
+        let plain = Material { emission: [0.2; 3], ..Material::default() };
+        let at = plain.surface_at(&textures, [0.5; 2], [1.0; 3]);
+        assert_eq!((at.m, at.r_a, at.emission, at.h), (plain.m, plain.r_a, [0.2; 3], plain.h));
+        let mut mapped = plain.clone();
+        mapped.maps = MaterialMaps {
+            metal_roughness: Some(MetalRoughnessMap { texture: r(0), metallic_f0: [0.04; 3] }),
+            occlusion: Some(OcclusionMap { texture: r(1), strength: 1.0 }),
+            emissive: Some(r(2)),
+        };
+        let at = mapped.surface_at(&textures, [0.5; 2], [1.0; 3]);
+        let g = 128.0 / 255.0;
+        assert!((at.m - plain.m * g * g).abs() < 1e-12, "{}", at.m);
+        assert_eq!(at.h, PhongExponent::from_m(at.m));
+        assert!((at.r_a - plain.r_a * 64.0 / 255.0).abs() < 1e-12);
+        assert_eq!(at.emission, [0.2; 3]);
+        // b = 0: the μ_t-free built-in material gets M·F0 back in μ.
+        assert!((at.mu[0] - (plain.mu[0] + 0.04)).abs() < 1e-12);
+    }
 }

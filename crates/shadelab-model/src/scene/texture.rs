@@ -81,6 +81,14 @@ pub fn texture_uv(uv: [f64; 2], offset: [f64; 2], rotation: f64, scale: [f64; 2]
     [c * x + s * y + offset[0], -s * x + c * y + offset[1]]
 }
 
+/// How a texture's bytes are read: glTF's colour textures (base colour, emissive) are
+/// sRGB-encoded, its data textures (metallic–roughness, occlusion, normal) are linear.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ColorSpace {
+    Srgb,
+    Linear,
+}
+
 /// A material's use of a texture: which one, and the transform of its coordinates.
 #[derive(Clone, Copy, Debug, PartialEq, Default)]
 pub struct TextureRef {
@@ -121,16 +129,26 @@ impl Texture {
         }
     }
 
-    /// Texel `(x, y)` as linear RGB and alpha.
-    fn texel(&self, x: u32, y: u32) -> [f64; 4] {
+    /// Texel `(x, y)`: RGB decoded from sRGB (colour) or read as stored (data), and alpha.
+    fn texel(&self, x: u32, y: u32, space: ColorSpace) -> [f64; 4] {
         let at = 4 * (y as usize * self.width as usize + x as usize);
         let p = &self.rgba8[at..at + 4];
-        [srgb_to_linear(p[0]), srgb_to_linear(p[1]), srgb_to_linear(p[2]), p[3] as f64 / 255.0]
+        let rgb = |v: u8| match space {
+            ColorSpace::Srgb => srgb_to_linear(v),
+            ColorSpace::Linear => v as f64 / 255.0,
+        };
+        [rgb(p[0]), rgb(p[1]), rgb(p[2]), p[3] as f64 / 255.0]
+    }
+
+    /// The texture at `uv` read as colour (sRGB decoded per texel), as the GPU samples an
+    /// `Rgba8UnormSrgb` view at level 0.
+    pub fn sample(&self, uv: [f64; 2]) -> [f64; 4] {
+        self.sample_as(uv, ColorSpace::Srgb)
     }
 
     /// The texture at `uv` as the GPU samples it at level 0: texel centres at `(i + ½)/n`, the
-    /// wrap mode per axis, nearest or bilinear in linear colour.
-    pub fn sample(&self, uv: [f64; 2]) -> [f64; 4] {
+    /// wrap mode per axis, nearest or bilinear, after each texel is decoded as `space` says.
+    pub fn sample_as(&self, uv: [f64; 2], space: ColorSpace) -> [f64; 4] {
         let uv = uv.map(|c| if c.is_finite() { c } else { NONFINITE_UV });
         // Far outside [0, 1] f64 keeps no fraction; such a coordinate repeats the same texels.
         let (x, y) = (uv[0] * self.width as f64, uv[1] * self.height as f64);
@@ -138,7 +156,7 @@ impl Texture {
         match self.sampler.filter {
             Filter::Nearest => {
                 let (i, j) = (x.floor() as i64, y.floor() as i64);
-                self.texel(wrap_index(i, self.width, ws), wrap_index(j, self.height, wt))
+                self.texel(wrap_index(i, self.width, ws), wrap_index(j, self.height, wt), space)
             }
             Filter::Linear => {
                 let (x, y) = (x - 0.5, y - 0.5);
@@ -147,7 +165,12 @@ impl Texture {
                 let (i, j) = (i as i64, j as i64);
                 let (i0, i1) = (wrap_index(i, self.width, ws), wrap_index(i.saturating_add(1), self.width, ws));
                 let (j0, j1) = (wrap_index(j, self.height, wt), wrap_index(j.saturating_add(1), self.height, wt));
-                let (a, b, c, d) = (self.texel(i0, j0), self.texel(i1, j0), self.texel(i0, j1), self.texel(i1, j1));
+                let (a, b, c, d) = (
+                    self.texel(i0, j0, space),
+                    self.texel(i1, j0, space),
+                    self.texel(i0, j1, space),
+                    self.texel(i1, j1, space),
+                );
                 std::array::from_fn(|k| {
                     (a[k] * (1.0 - fx) + b[k] * fx) * (1.0 - fy) + (c[k] * (1.0 - fx) + d[k] * fx) * fy
                 })

@@ -21,7 +21,9 @@ fn wgsl_blocks_are_the_declared_defines() {
     let raw = raw_lighting_source();
     let in_wgsl: BTreeSet<&str> =
         raw.lines().filter_map(|l| l.trim().strip_prefix("#if ")).flat_map(|n| n.trim().split("||")).collect();
-    let declared: BTreeSet<&str> = DECLARED.iter().filter_map(|d| d.define).collect();
+    // The effects' defines, and the one derived from them (texture coordinates).
+    let declared: BTreeSet<&str> =
+        DECLARED.iter().filter_map(|d| d.define).chain([shadelab_model::effects::TEXTURE_COORDS]).collect();
     assert_eq!(in_wgsl, declared, "the WGSL's #if names against the declared defines");
     for d in DECLARED {
         assert_eq!(d.define.is_some(), Effect::ALL.contains(&d.effect), "{}", d.effect);
@@ -36,7 +38,14 @@ const INSIDE_SHADOWS: [Effect; 4] =
     [Effect::ShadowFilterHard, Effect::ShadowFilterPcf, Effect::ShadowFilterPoisson, Effect::ShadowCascades];
 
 /// The effects of a surface's texture and vertex colours (surface.wgsl), independent of the rest.
-const SURFACE: [Effect; 2] = [Effect::BaseColorTexture, Effect::VertexColors];
+const SURFACE: [Effect; 6] = [
+    Effect::BaseColorTexture,
+    Effect::VertexColors,
+    Effect::MetalRoughnessTexture,
+    Effect::OcclusionTexture,
+    Effect::Emission,
+    Effect::EmissiveTexture,
+];
 
 /// The keys of every subset of `effects`.
 fn subsets(effects: &[Effect]) -> Vec<EffectKey> {
@@ -184,6 +193,10 @@ fn a_permutation_without_an_effect_has_no_code_for_it() {
                     .flat_map(|ep| reachable(&module, ep))
                     .filter_map(|f| module.functions[f].name.clone())
                     .collect();
+                // The metallic–roughness and occlusion textures vary per-pixel lighting: the
+                // per-vertex modes never reach them, even in a permutation that has them.
+                let present =
+                    present && (shading == ShadingMode::Phong || !crate::program::PER_PIXEL_LIGHTING.contains(&e));
                 for f in e.functions() {
                     assert_eq!(called.iter().any(|c| c == f), present, "{} {ep}: call to {f}", key.label());
                 }
@@ -251,4 +264,25 @@ fn per_vertex_modes_shade_in_their_lighting_passes_only() {
     }
     let (_, phong) = entry_points(ShadingMode::Phong);
     assert!(calls(phong), "the check can fail: Phong shading shades in its fragment stage");
+}
+
+/// The texture coordinates belong to no one texture: a permutation holds them (the transform,
+/// the guarded sample, the interpolant) exactly when it samples some texture.
+#[test]
+fn texture_coordinates_only_where_a_texture_is_sampled() {
+    use shadelab_model::effects::TEXTURE_EFFECTS;
+    let raw = raw_lighting_source();
+    let without = EffectKey::UBER.without_all(&TEXTURE_EFFECTS);
+    let mut keys = vec![(EffectKey::UBER, true), (without, false), (EffectKey::NONE, false)];
+    keys.extend(TEXTURE_EFFECTS.map(|e| (without.with(e), true)));
+    for (key, present) in keys {
+        let module = parse(&lighting_source_for(&raw, key).unwrap());
+        let has = |name: &str| module.functions.iter().any(|(_, f)| f.name.as_deref() == Some(name));
+        assert_eq!(has("texture_uv") && has("sample_slot"), present, "{}", key.label());
+        let interpolant = module.types.iter().any(|(_, t)| match &t.inner {
+            naga::TypeInner::Struct { members, .. } => members.iter().any(|m| m.name.as_deref() == Some("uv")),
+            _ => false,
+        });
+        assert_eq!(interpolant, present, "{}: a uv interpolant", key.label());
+    }
 }

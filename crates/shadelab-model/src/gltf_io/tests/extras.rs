@@ -51,6 +51,7 @@ fn extras_are_written_and_read_by_the_same_types() {
         ..Light::spot(DVec3::new(0.5, 3.0, 1.0), DVec3::new(0.1, -1.0, 0.2), [1.0, 0.9, 0.8], 4.0, 0.3, (0.1, 0.4))
     };
     scene.materials[1].h = PhongExponent::Mirror;
+    scene.materials[0].emission = [0.25, 0.5, 1.0];
     scene.lights[0].shadow = crate::shadows::ShadowSettings {
         casts: false,
         resolution: 300,
@@ -60,7 +61,9 @@ fn extras_are_written_and_read_by_the_same_types() {
     let settings = SceneSettings { shading: Some(ShadingMode::Flat), specular: Some(SpecularModel::CookTorrance) };
     let doc: Value = serde_json::from_str(&scene_to_gltf_json(&scene, &settings)).unwrap();
     let keys = |v: &Value| v["extras"]["shadelab"].as_object().unwrap().keys().cloned().collect::<Vec<_>>().join(" ");
-    assert_eq!(keys(&doc["materials"][0]), "C a d h m mu mu_t r_a r_d r_s t");
+    // E only where the material emits, mf0 only with a metallic–roughness texture (tests/textures.rs).
+    assert_eq!(keys(&doc["materials"][0]), "C E a d h m mu mu_t r_a r_d r_s t");
+    assert_eq!(keys(&doc["materials"][1]), "C a d h m mu mu_t r_a r_d r_s t");
     assert_eq!(doc["materials"][1]["extras"]["shadelab"]["h"], json!("mirror"));
     assert_eq!(
         keys(&doc["extensions"]["KHR_lights_punctual"]["lights"][0]),

@@ -166,8 +166,8 @@ fn a_texture_in_a_file_is_sampled_by_the_reference() {
     let s = load(&textured_triangle(png_uri(&img), json!({ "magFilter": 9728, "minFilter": 9728 }), json!({})));
     assert!(s.warnings.is_empty() || !s.warnings.iter().any(|w| w.contains("minFilter")), "{:?}", s.warnings);
     let m = &s.scene.materials[0];
-    let red = m.surface_at(&s.scene.textures, [0.25, 0.5], [1.0; 3]).0;
-    let blue = m.surface_at(&s.scene.textures, [0.75, 0.5], [1.0; 3]).0;
+    let red = m.surface_at(&s.scene.textures, [0.25, 0.5], [1.0; 3]).color;
+    let blue = m.surface_at(&s.scene.textures, [0.75, 0.5], [1.0; 3]).color;
     assert!(red[0] > 0.9 && red[2] == 0.0 && blue[2] > 0.9 && blue[0] == 0.0, "{red:?} {blue:?}");
 }
 

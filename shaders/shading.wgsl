@@ -52,7 +52,7 @@ struct Object {
     uv_offset_scale: vec4<f32>,
     // rgb: M·F0, the dielectric share of μ the metallic factor replaced (surface.wgsl).
     metallic_f0: vec4<f32>,
-    // rgb: emission E.
+    // rgb: emission I_e.
     emission: vec4<f32>,
     // The metallic–roughness, occlusion and emissive textures' transforms: offset.xy, scale.zw;
     // their rotations in uv_rotations.xyz.
@@ -190,7 +190,7 @@ fn pixel_tint(uv: vec2<f32>, tint: vec3<f32>) -> vec3<f32> {
     return t;
 }
 
-// The light a pixel emits: E, times the emissive texture where the material has one; added to
+// The light a pixel emits: I_e, times the emissive texture where the material has one; added to
 // the model's I in every mode (it is not lit, so the per-vertex modes add it per pixel exactly).
 fn pixel_emission(uv: vec2<f32>) -> vec3<f32> {
     var e = vec3(0.0);

@@ -66,7 +66,7 @@ fn occluded(r_a: f32, occ_in: f32, strength_in: f32) -> f32 {
     return r_a * (1.0 + strength * (occ - 1.0));
 }
 
-// Emission E scaled by an emissive texel's linear colour, in [0, 1] per channel.
+// Emission I_e scaled by an emissive texel's linear colour, in [0, 1] per channel.
 fn emitted(e: vec3<f32>, texel: vec3<f32>) -> vec3<f32> {
     var t = clamp(texel, vec3(0.0), vec3(1.0));
     for (var i = 0; i < 3; i++) {

@@ -139,6 +139,16 @@ fn sweep(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workgroups)
     put_rgb(base + COL_VERTEX_TINT, vertex_tint(n_raw));
     let uv = texture_uv(vec2(d, a_row.x), vec2(a_row.y, d), 4.0 * m * SWEEP_CONE_PER_M, vec2(h_row.x, d));
     put_rgb(base + COL_TEXTURE_UV, vec3(uv, 0.0));
+    // The material maps with the raw normal's channels as texels (outside [0, 1]): a metal
+    // (μ_t = μ, M·F0 = 0.04·μ) at metal scale x, the roughness m at scale y, r_a = 0.8 occluded by
+    // z at strength m, and I_e = μ times the normal as an emissive texel.
+    let k = metallic_scaled(SWEEP_COLOR, mu, mu, 0.04 * mu, n_raw.x);
+    put_rgb(base + COL_METALLIC_SCALED_C, k.c);
+    put_rgb(base + COL_METALLIC_SCALED_MU, k.mu);
+    outputs[base + COL_ROUGHNESS_SCALED] = roughness_scaled(m, n_raw.y);
+    outputs[base + COL_PHONG_H_FROM_M] = phong_h_from_m(m);
+    outputs[base + COL_OCCLUDED] = occluded(0.8, n_raw.z, m);
+    put_rgb(base + COL_EMITTED, emitted(mu, n_raw));
 }
 
 // A colour's three channels into consecutive outputs from `at`.

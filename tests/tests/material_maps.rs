@@ -1,5 +1,5 @@
 //! glTF's other material textures on lavapipe: the metallic–roughness, occlusion and emissive
-//! textures and the emission E, on a floor made in code (`scene_variants::with_material_maps`),
+//! textures and the emission I_e, on a floor made in code (`scene_variants::with_material_maps`),
 //! drawn as the f64 reference draws them and not as it would without each; saved and read back
 //! the same; and the per-vertex modes drawing the emission exactly and leaving the lighting
 //! textures to Phong shading.
@@ -80,7 +80,7 @@ fn each_map_matches_the_reference_and_is_needed() {
     }
 }
 
-/// Saved as GLB and read back: the same maps, the same M·F0 and E, the same pixels.
+/// Saved as GLB and read back: the same maps, the same M·F0 and I_e, the same pixels.
 #[test]
 fn a_saved_scene_keeps_its_maps() {
     let s = scene();
@@ -124,7 +124,8 @@ fn per_vertex_modes_draw_the_emission_and_leave_the_lighting_maps() {
     }
 }
 
-/// Writes the test scene's image and reference to `$SHADELAB_DUMP` (a folder), for looking at.
+/// Writes the test scene's image and reference, and the default scene with the material-mapped
+/// floor as a GLB (for `shadelab bench effects --scene`), to `$SHADELAB_DUMP` (a folder).
 #[test]
 fn dump_when_asked() {
     let Ok(dir) = std::env::var("SHADELAB_DUMP") else { return };
@@ -132,6 +133,8 @@ fn dump_when_asked() {
     let settings = RenderSettings::new(ShadingMode::Phong, SpecularModel::CookTorrance);
     let img = render_image(gpu(), &s, SIZE.0, SIZE.1, &settings).unwrap();
     let r = shadelab_render::image_error::reference_image(&render_reference(&s, settings.specular, SIZE.0, SIZE.1));
+    let full = with_material_maps(&Scene::builtin("default").unwrap(), 64);
+    std::fs::write(format!("{dir}/material-maps.glb"), scene_to_glb(&full, &SceneSettings::default())).unwrap();
     for (name, i) in [("maps-gpu.png", &img), ("maps-reference.png", &r)] {
         image::RgbImage::from_raw(SIZE.0, SIZE.1, i.to_srgb8()).unwrap().save(format!("{dir}/{name}")).unwrap();
     }

@@ -17,7 +17,7 @@ pub struct AssetScene {
 }
 
 /// Every generated asset.
-pub const ASSET_SCENES: [AssetScene; 3] = [
+pub const ASSET_SCENES: [AssetScene; 4] = [
     AssetScene {
         file: "figure-7-3-pyramid.gltf",
         scene: figure_7_3_pyramid,
@@ -33,7 +33,20 @@ pub const ASSET_SCENES: [AssetScene; 3] = [
         scene: material_board,
         settings: SceneSettings { shading: Some(ShadingMode::Phong), specular: Some(SpecularModel::CookTorrance) },
     },
+    AssetScene {
+        file: "textured-floor.gltf",
+        scene: textured_floor,
+        settings: SceneSettings { shading: Some(ShadingMode::Phong), specular: Some(SpecularModel::CookTorrance) },
+    },
 ];
+
+/// The default scene on a floor with every glTF texture the renderer draws, made in code
+/// (`scene_variants::with_material_maps`): base colour, metallic–roughness, occlusion, emissive.
+pub fn textured_floor() -> Scene {
+    let mut s = crate::scene_variants::with_material_maps(&Scene::builtin("default").expect("built in"), 64);
+    s.name = "textured-floor".into();
+    s
+}
 
 fn camera(eye: DVec3, target: DVec3) -> Camera {
     Camera { eye, target, up: DVec3::Y, fov_y_deg: 40.0, near: 0.1, far: 50.0, orthographic: None }

@@ -96,7 +96,7 @@ pub fn with_textured_floor(scene: &Scene, level: u32) -> Scene {
     let n = tessellation_at_level(Shape::Plane, level, 1);
     let tris = crate::mesh::triangles(Shape::Plane, n);
     let normals: Vec<[DVec3; 3]> = tris.iter().map(|_| [DVec3::Y; 3]).collect();
-    let mut mesh = crate::mesh::TriangleMesh::from_soup("textured floor", &tris, Some(&normals));
+    let mut mesh = crate::mesh::TriangleMesh::from_soup(&s.objects[i].name, &tris, Some(&normals));
     let uv = |p: &DVec3| [((p.x + 1.0) * 0.5 * CHECKER_REPEATS) as f32, ((p.z + 1.0) * 0.5 * CHECKER_REPEATS) as f32];
     mesh.uvs = Some(mesh.positions.iter().map(uv).collect());
     s.meshes.push(mesh);
@@ -114,6 +114,8 @@ pub fn with_textured_floor(scene: &Scene, level: u32) -> Scene {
     s.materials.push(material);
     s.objects[i].material = s.materials.len() - 1;
     s.objects[i].shape = Shape::Mesh(s.meshes.len() - 1);
+    // A mesh has no tessellation of its own (1, as a loaded file's).
+    s.objects[i].tessellation = 1;
     s
 }
 
@@ -130,13 +132,13 @@ fn image(name: &str, side: u32, f: impl Fn(u32, u32) -> [u8; 4]) -> crate::scene
 
 /// glTF's F0 of a dielectric of index 1.5, which the textured floor's metal falls back to.
 const FLOOR_F0: f64 = 0.04;
-/// The textured floor's emission E where its emissive texture is white.
+/// The textured floor's emission I_e where its emissive texture is white.
 pub const FLOOR_EMISSION: [f64; 3] = [0.3, 0.15, 0.05];
 
 /// [`with_textured_floor`] whose floor also has the other glTF textures, made here: a glTF metal
 /// (metallic factor 1, F0 0.04) whose metallic–roughness texture turns bands of it into a rough
 /// dielectric, an occlusion texture darkening its ambient towards each checker square's edges,
-/// and an emissive texture of diagonal stripes (E = `FLOOR_EMISSION`).
+/// and an emissive texture of diagonal stripes (I_e = `FLOOR_EMISSION`).
 pub fn with_material_maps(scene: &Scene, level: u32) -> Scene {
     use crate::scene::{MetalRoughnessMap, OcclusionMap, TextureRef};
     let mut s = with_textured_floor(scene, level);
@@ -145,11 +147,9 @@ pub fn with_material_maps(scene: &Scene, level: u32) -> Scene {
     let band = 2 * CHECKER_SQUARE_TEXELS;
     let next = s.textures.len();
     // Green: roughness scale, blue: metal scale (bands of polished metal and rough dielectric).
-    s.textures.push(image(
-        "metal bands",
-        side,
-        |x, _| if (x / band).is_multiple_of(2) { [0, 90, 255, 255] } else { [0, 255, 0, 255] },
-    ));
+    s.textures.push(image("metal bands", side, |x, _| {
+        if (x / band).is_multiple_of(2) { [0, 90, 255, 255] } else { [0, 255, 0, 255] }
+    }));
     // Red: occlusion, 1 at each square's centre and 0.25 at its edges.
     let square = CHECKER_SQUARE_TEXELS as f64;
     s.textures.push(image("occlusion", side, |x, y| {
@@ -157,11 +157,9 @@ pub fn with_material_maps(scene: &Scene, level: u32) -> Scene {
         let occ = 1.0 - 0.75 * d(x).max(d(y));
         [(occ * 255.0).round() as u8, 0, 0, 255]
     }));
-    s.textures.push(image(
-        "emissive stripes",
-        side,
-        |x, y| if ((x + y) / 6).is_multiple_of(4) { [255; 4] } else { [0, 0, 0, 255] },
-    ));
+    s.textures.push(image("emissive stripes", side, |x, y| {
+        if ((x + y) / 6).is_multiple_of(4) { [255; 4] } else { [0, 0, 0, 255] }
+    }));
     let m = &mut s.materials[mi];
     let base = m.color;
     (m.color, m.mu, m.mu_tinted) = ([0.0; 3], base, base);

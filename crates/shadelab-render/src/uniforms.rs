@@ -63,7 +63,7 @@ pub struct ObjectUniform {
     pub uv_offset_scale: [f32; 4],
     /// `MetalRoughnessMap::metallic_f0`.
     pub metallic_f0: [f32; 4],
-    /// Emission E.
+    /// Emission I_e.
     pub emission: [f32; 4],
     /// The metallic–roughness, occlusion and emissive textures' transforms: offset (xy) and
     /// scale (zw) each; their rotations are `uv_rotations`.

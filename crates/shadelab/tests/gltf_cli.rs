@@ -57,7 +57,12 @@ fn saved_scene_renders_pixel_identical_with_its_recorded_modes() {
 
 #[test]
 fn shipped_assets_and_glb_render() {
-    for scene in ["assets/figure-7-3-pyramid.gltf", "assets/gouraud-vs-phong.gltf", "assets/material-board.gltf"] {
+    for scene in [
+        "assets/figure-7-3-pyramid.gltf",
+        "assets/gouraud-vs-phong.gltf",
+        "assets/material-board.gltf",
+        "assets/textured-floor.gltf",
+    ] {
         let png = out("asset.png");
         let glb = out("asset.glb");
         let mut args = vec!["render", "--scene", scene, "--output", &png, "--save-scene", &glb];

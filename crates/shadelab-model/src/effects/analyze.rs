@@ -274,10 +274,14 @@ fn texture_map(
     }
 }
 
-/// Emission is added when some object's material emits (E > 0 in some channel).
+/// Emission is added when some object's material emits (I_e > 0 in some channel).
 fn emission(scene: &Scene) -> (bool, String) {
     let n = scene.objects.iter().filter(|o| emits(scene, o)).count();
-    if n == 0 { (false, "no material emits (E = 0)".into()) } else { (true, format!("{n} object(s) emit light E > 0")) }
+    if n == 0 {
+        (false, "no material emits (I_e = 0)".into())
+    } else {
+        (true, format!("{n} object(s) emit light I_e > 0"))
+    }
 }
 
 fn emits(scene: &Scene, o: &crate::scene::Object) -> bool {
@@ -288,7 +292,7 @@ fn emits(scene: &Scene, o: &crate::scene::Object) -> bool {
 fn emissive_texture(scene: &Scene) -> (bool, String) {
     let (on, why) = texture_map(scene, "emissive texture", |m| m.maps.emissive);
     if on && !scene.objects.iter().any(|o| emits(scene, o) && scene.materials[o.material].maps.emissive.is_some()) {
-        return (false, "every material with an emissive texture has E = 0: the texture scales nothing".into());
+        return (false, "every material with an emissive texture has I_e = 0: the texture scales nothing".into());
     }
     (on, why)
 }

@@ -282,16 +282,16 @@ declare_effects! {
         functions: &["occlusion_texel", "occluded"],
         members: &[("Object", "occlusion_strength"), ("Object", "occlusion_uv")],
     },
-    /// Emitted light E added to the model's I (glTF `emissiveFactor`, docs/textures.md).
+    /// Emitted light I_e added to the model's I (glTF `emissiveFactor`, docs/textures.md).
     Emission {
-        explain: "emission E",
+        explain: "emission I_e",
         name: "emission",
         label: "emit",
         define: Some("EFFECT_EMISSION"),
         functions: &["emitted"],
         members: &[("Object", "emission")],
     },
-    /// glTF's emissive texture sampled per pixel: its colour scales E (docs/textures.md).
+    /// glTF's emissive texture sampled per pixel: its colour scales I_e (docs/textures.md).
     EmissiveTexture {
         explain: "emissive texture",
         name: "emissive texture",

@@ -48,8 +48,8 @@ struct MaterialExtras {
     d: Option<Num<Thickness>>,
     /// The part of μ the base colour sets (`Material::mu_tinted`).
     mu_t: Option<Rgb<Mu>>,
-    /// Emission E, exactly (glTF's `emissiveFactor` is f32).
-    #[serde(rename = "E", skip_serializing_if = "Option::is_none")]
+    /// Emission I_e, exactly (glTF's `emissiveFactor` is f32).
+    #[serde(rename = "I_e", skip_serializing_if = "Option::is_none")]
     emission: Option<Rgb<Unit>>,
     /// `M·F0` of a metallic–roughness texture (`MetalRoughnessMap::metallic_f0`).
     #[serde(skip_serializing_if = "Option::is_none")]

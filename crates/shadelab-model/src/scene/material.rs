@@ -126,7 +126,7 @@ impl Material {
     /// C and μ tinted by the vertex colour and base colour texture ([`tinted_surface`]), after
     /// the metallic–roughness texel's metal scale ([`metallic_scaled`]); m scaled by its
     /// roughness ([`roughness_scaled`]) and h following m ([`phong_h_from_m`]); `r_a` by the
-    /// occlusion texel ([`occluded`]); E by the emissive texel ([`emitted`]). A texture index
+    /// occlusion texel ([`occluded`]); I_e by the emissive texel ([`emitted`]). A texture index
     /// past `textures` counts as none.
     pub fn surface_at(&self, textures: &[Texture], uv: [f64; 2], vertex_color: [f64; 3]) -> SurfacePoint {
         let sample = |r: &TextureRef, space| textures.get(r.texture).map(|t| t.sample_as(r.transform.apply(uv), space));
@@ -198,7 +198,7 @@ pub fn occluded(r_a: f64, occ: f64, strength: f64) -> f64 {
     r_a * (1.0 + strength * (occ - 1.0))
 }
 
-/// Emission E scaled by an emissive texel's linear colour (twin of `emitted` in
+/// Emission I_e scaled by an emissive texel's linear colour (twin of `emitted` in
 /// shaders/surface.wgsl).
 pub fn emitted(e: [f64; 3], texel: [f64; 3]) -> [f64; 3] {
     std::array::from_fn(|i| e[i] * if texel[i].is_finite() { texel[i].clamp(0.0, 1.0) } else { 1.0 })

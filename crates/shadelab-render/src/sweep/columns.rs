@@ -30,7 +30,7 @@ pub struct Column {
 const D_MAX: f64 = 1.0 / (4.0 * M_MIN * M_MIN);
 
 /// Every column in the order the kernel writes them (and the report lists them).
-pub const COLUMNS: [Column; 25] = [
+pub const COLUMNS: [Column; 31] = [
     col("diffuse_lambert", "DIFFUSE_LAMBERT", 1, 1.0, "N·L of unit vectors"),
     col("specular_phong", "SPECULAR_PHONG", 1, 1.0, "(V·R)^h with V·R clamped to [0, 1]"),
     col("d_beckmann", "D_BECKMANN", 1, D_MAX, "peak 1/(4 m²) at m = M_MIN"),
@@ -74,6 +74,12 @@ pub const COLUMNS: [Column; 25] = [
         signed: true,
         ..col("texture_uv", "TEXTURE_UV", 3, f64::INFINITY, "finite: offset + R·(scale ⊙ uv), no bound of its own")
     },
+    col("metallic_scaled (C)", "METALLIC_SCALED_C", 3, 2.0, "C + μ_t·(1 − b), C, μ_t and b in [0, 1]"),
+    col("metallic_scaled (μ)", "METALLIC_SCALED_MU", 3, 1.0, "μ·(b + 0.04·(1 − b)) for a metal, b in [0, 1]"),
+    col("roughness_scaled", "ROUGHNESS_SCALED", 1, 1.0, "m·g² clamped to [0, 1]"),
+    col("phong_h_from_m", "PHONG_H_FROM_M", 1, shadelab_model::guards::H_MAX, "2/m² − 2 clamped to [1, H_MAX]"),
+    col("occluded", "OCCLUDED", 1, 0.8, "r_a·(1 + s·(occ − 1)) with r_a = 0.8, occ and s in [0, 1]"),
+    col("emitted", "EMITTED", 3, 1.0, "I_e·texel with I_e = μ and the texel clamped to [0, 1]"),
 ];
 
 const fn col(name: &'static str, wgsl: &'static str, channels: usize, bound: f64, why_bound: &'static str) -> Column {
@@ -177,6 +183,12 @@ const TINTED_SURFACE_C: usize = offset("TINTED_SURFACE_C");
 const TINTED_SURFACE_MU: usize = offset("TINTED_SURFACE_MU");
 const VERTEX_TINT: usize = offset("VERTEX_TINT");
 const TEXTURE_UV: usize = offset("TEXTURE_UV");
+const METALLIC_SCALED_C: usize = offset("METALLIC_SCALED_C");
+const METALLIC_SCALED_MU: usize = offset("METALLIC_SCALED_MU");
+const ROUGHNESS_SCALED: usize = offset("ROUGHNESS_SCALED");
+const PHONG_H_FROM_M: usize = offset("PHONG_H_FROM_M");
+const OCCLUDED: usize = offset("OCCLUDED");
+const EMITTED: usize = offset("EMITTED");
 
 /// The f64 reference of the kernel's outputs for one combination's inputs.
 ///
@@ -266,6 +278,17 @@ pub(super) fn reference(
     rgb(&mut out, VERTEX_TINT, shadelab_model::scene::vertex_tint(n_raw.to_array()));
     let uv = shadelab_model::scene::texture_uv([d, alpha], [d0, d], 4.0 * m * SWEEP_CONE_PER_M, [h, d]);
     rgb(&mut out, TEXTURE_UV, [uv[0], uv[1], 0.0]);
+    // The material maps with the raw normal's channels as texels (outside [0, 1]): a metal
+    // (μ_t = μ, M·F0 = 0.04·μ) at metal scale x, the roughness m at scale y, r_a = 0.8 occluded by
+    // z at strength m, and I_e = μ times the normal as an emissive texel.
+    let (x, y, z) = (n_raw.x, n_raw.y, n_raw.z);
+    let (c, mu_s, _) = shadelab_model::scene::metallic_scaled(SWEEP_COLOR, mu, mu, mu.map(|c| 0.04 * c), x);
+    rgb(&mut out, METALLIC_SCALED_C, c);
+    rgb(&mut out, METALLIC_SCALED_MU, mu_s);
+    out[ROUGHNESS_SCALED] = shadelab_model::scene::roughness_scaled(m, y);
+    out[PHONG_H_FROM_M] = shadelab_model::scene::phong_h_from_m(m);
+    out[OCCLUDED] = shadelab_model::scene::occluded(0.8, z, m);
+    rgb(&mut out, EMITTED, shadelab_model::scene::emitted(mu, n_raw.to_array()));
     out
 }
 

@@ -6,6 +6,9 @@
 //! resolution step. Writes a CSV, a Markdown report and two plots.
 
 use crate::{Failure, cli, plots};
+pub use markdown::{markdown, summary};
+
+mod markdown;
 use anyhow::Context;
 use shadelab_model::reference::{ReferenceImage, render_reference};
 use shadelab_model::scene_variants::{self, ANALYTIC_SCENES};
@@ -234,11 +237,15 @@ fn groups(plan: &Plan) -> Vec<Group> {
     let (name, level, size) = plan.texture_study;
     let scene = scene_variants::with_textured_floor(&scene_variants::at_level(&base(name), level), level);
     out.push(Group { study: Study::Textures, name: TEXTURED_FLOOR, scene, level, size, model: None });
+    let scene = scene_variants::with_material_maps(&scene_variants::at_level(&base(name), level), level);
+    out.push(Group { study: Study::Textures, name: MAPPED_FLOOR, scene, level, size, model: None });
     out
 }
 
-/// The name of the texture study's scene in the rows (its own reference: not the plain scene's).
+/// The names of the texture study's scenes in the rows (each its own reference: not the plain
+/// scene's).
 const TEXTURED_FLOOR: &str = "default with a textured floor";
+const MAPPED_FLOOR: &str = "default with a material-mapped floor";
 
 /// Run the study. `progress` is told each finished group.
 pub fn run_plan(gpu: &Gpu, plan: &Plan, command: &str, mut progress: impl FnMut(&str)) -> Report {
@@ -426,114 +433,6 @@ pub fn crossovers(report: &Report) -> Vec<Crossover> {
     out
 }
 
-/// The Markdown report: device, command, the findings, then every table.
-pub fn markdown(report: &Report) -> String {
-    let mut s = String::new();
-    let _ = writeln!(s, "# What accuracy costs — `{}`\n", report.command);
-    let _ = writeln!(
-        s,
-        "Device: {}. Time: {}, median of {} frames after {} warm-up, every program of a group interleaved frame by frame. Error: against the f64 ray-cast reference of the exact surface, same size. Run took {:.0} s.\n",
-        report.device,
-        report.time_source.label(),
-        report.plan.frames,
-        report.plan.warmup,
-        report.seconds
-    );
-    let _ = writeln!(s, "## Gouraud against Phong shading\n");
-    let _ = writeln!(
-        s,
-        "The error Phong shading has at the coarsest level, and where Gouraud shading first gets as close to the exact surface:\n"
-    );
-    let _ = writeln!(
-        s,
-        "| scene | size | specular | Phong shading: level, RMSE, ms | Gouraud reaches it at: level, RMSE, ms |"
-    );
-    let _ = writeln!(s, "|---|---|---|---|---|");
-    for c in crossovers(report) {
-        let g = match c.gouraud {
-            Some((l, e, ms)) => format!("{l}, {e:.2e}, {ms:.2}"),
-            None => format!("not by level {}", report.plan.levels.last().copied().unwrap_or(0)),
-        };
-        let _ = writeln!(
-            s,
-            "| {} | {}×{} | {} | {}, {:.2e}, {:.2} | {} |",
-            c.scene, c.size.0, c.size.1, c.specular, c.phong_level, c.phong_rmse, c.phong_ms, g
-        );
-    }
-    let _ = writeln!(s, "\n## Every configuration\n");
-    let _ = writeln!(
-        s,
-        "RMSE and max: linear RGB. FLIP: nv-flip mean of the display-encoded images. Off: share of pixels more than one 8-bit sRGB step away. ×base: median time over the null-shader baseline's (same geometry, constant colour). ★: on the Pareto front of time and RMSE for its scene, size and specular model (nothing else with that specular model is both faster and closer).\n"
-    );
-    table(&mut s, report.rows.iter().filter(|r| r.study == Study::Modes));
-    let _ = writeln!(
-        s,
-        "\n## Cost per light ({} level {}, {}×{})\n",
-        report.plan.light_study.0, report.plan.light_study.1, report.plan.light_study.2.0, report.plan.light_study.2.1
-    );
-    table(&mut s, report.rows.iter().filter(|r| r.study == Study::Lights));
-    let _ = writeln!(
-        s,
-        "\n## Cost per resolution ({} level {})\n",
-        report.plan.resolution_study.0, report.plan.resolution_study.1
-    );
-    table(&mut s, report.rows.iter().filter(|r| r.study == Study::Resolution));
-    let _ = writeln!(
-        s,
-        "\n## The four illumination models ({} level {}, {}×{}, no cast shadows)\n\nEach model against the f64 reference of the same model: what each costs and how close each shading mode draws it.\n",
-        report.plan.model_study.0, report.plan.model_study.1, report.plan.model_study.2.0, report.plan.model_study.2.1
-    );
-    table(&mut s, report.rows.iter().filter(|r| r.study == Study::Models));
-    let (_, level, (w, h)) = report.plan.texture_study;
-    let _ = writeln!(
-        s,
-        "\n## A base colour texture ({TEXTURED_FLOOR}, level {level}, {w}×{h})\n\nThe floor a mesh with a {n}² bilinear checker repeated {r} times, against the reference that samples it the same way: every mode samples it per pixel; flat and Gouraud shading light per face or vertex and tint per pixel (docs/textures.md).\n",
-        n = scene_variants::CHECKER_TEXELS,
-        r = scene_variants::CHECKER_REPEATS,
-    );
-    table(&mut s, report.rows.iter().filter(|r| r.study == Study::Textures));
-    s
-}
-
-fn table<'a>(s: &mut String, rows: impl Iterator<Item = &'a Row>) {
-    let _ = writeln!(
-        s,
-        "| scene | level | triangles | size | lights | program | median ms | p10–p90 | ×base | RMSE | max | FLIP | off | ★ |"
-    );
-    let _ = writeln!(s, "|---|---:|---:|---|---:|---|---:|---|---:|---:|---:|---:|---:|---|");
-    for r in rows {
-        let (e1, e2, e3, e4) = match r.error {
-            Some(e) => (
-                format!("{:.2e}", e.rmse),
-                format!("{:.3}", e.max_abs),
-                format!("{:.4}", e.flip_mean),
-                format!("{:.1} %", e.share_off * 100.0),
-            ),
-            None => Default::default(),
-        };
-        let _ = writeln!(
-            s,
-            "| {} | {} | {} | {}×{} | {} | {} | {:.2} | {:.2}–{:.2} | {:.2} | {} | {} | {} | {} | {} |",
-            r.scene,
-            r.level,
-            r.triangles,
-            r.width,
-            r.height,
-            r.lights,
-            r.program(),
-            r.median_ms,
-            r.p10_ms,
-            r.p90_ms,
-            r.ratio_to_baseline,
-            e1,
-            e2,
-            e3,
-            e4,
-            if r.pareto { "★" } else { "" }
-        );
-    }
-}
-
 /// Files a run writes into its output folder.
 pub const OUTPUTS: [&str; 4] = ["accuracy.csv", "accuracy.md", "error-vs-time.png", "scaling.png"];
 
@@ -578,22 +477,4 @@ pub fn run(args: &cli::BenchAccuracyArgs) -> Result<(), Failure> {
         println!("wrote {}", p.display());
     }
     Ok(())
-}
-
-/// What the terminal shows at the end: the findings and the Pareto front.
-pub fn summary(report: &Report) -> String {
-    let mut s = String::new();
-    let _ = writeln!(s, "# device: {}; time: {}; {:.0} s", report.device, report.time_source.label(), report.seconds);
-    for c in crossovers(report) {
-        let g = match c.gouraud {
-            Some((l, e, ms)) => format!("Gouraud reaches it at level {l} ({e:.2e}, {ms:.2} ms)"),
-            None => "Gouraud does not reach it in the measured levels".into(),
-        };
-        let _ = writeln!(
-            s,
-            "{} {}×{} {}: Phong shading at level {} has RMSE {:.2e} in {:.2} ms; {}",
-            c.scene, c.size.0, c.size.1, c.specular, c.phong_level, c.phong_rmse, c.phong_ms, g
-        );
-    }
-    s
 }

@@ -33,9 +33,10 @@ pub fn run(args: &cli::BenchEffectsArgs) -> Result<(), Failure> {
     let specular = args.model.and_then(|m| m.split().1).unwrap_or(SpecularModel::CookTorrance);
     for scene in &scenes {
         let gs = r.upload(scene).map_err(|e| Failure::Usage(format!("{}: {e}", scene.name)))?;
-        let key = shadelab_model::effects::analyze(scene, specular).key;
         for shading in ShadingMode::ALL_MODES {
             let base = RenderSettings::new(shading, specular);
+            // The mode's own program: the per-vertex modes hold no per-pixel lighting maps.
+            let key = Program::for_scene(scene, &base).effects();
             let mut programs = vec![
                 ("specialized".to_string(), RenderSettings { specialization: Specialization::Specialized, ..base }),
                 ("uber".to_string(), RenderSettings { specialization: Specialization::Uber, ..base }),

@@ -61,8 +61,8 @@ fn extras_are_written_and_read_by_the_same_types() {
     let settings = SceneSettings { shading: Some(ShadingMode::Flat), specular: Some(SpecularModel::CookTorrance) };
     let doc: Value = serde_json::from_str(&scene_to_gltf_json(&scene, &settings)).unwrap();
     let keys = |v: &Value| v["extras"]["shadelab"].as_object().unwrap().keys().cloned().collect::<Vec<_>>().join(" ");
-    // E only where the material emits, mf0 only with a metallic–roughness texture (tests/textures.rs).
-    assert_eq!(keys(&doc["materials"][0]), "C E a d h m mu mu_t r_a r_d r_s t");
+    // I_e only where the material emits, mf0 only with a metallic–roughness texture (tests/textures.rs).
+    assert_eq!(keys(&doc["materials"][0]), "C I_e a d h m mu mu_t r_a r_d r_s t");
     assert_eq!(keys(&doc["materials"][1]), "C a d h m mu mu_t r_a r_d r_s t");
     assert_eq!(doc["materials"][1]["extras"]["shadelab"]["h"], json!("mirror"));
     assert_eq!(

@@ -63,6 +63,9 @@ struct Object {
     // Which of the material's texture slots hold a texture (MAP_… in surface.wgsl).
     maps: u32,
     occlusion_strength: f32,
+    normal_scale: f32,
+    // The normal texture's transform (its rotation: uv_rotations.w).
+    normal_uv: vec4<f32>,
 }
 
 const FLAG_DEBUG_NONFINITE: u32 = 1u;
@@ -178,6 +181,19 @@ fn pixel_surface(uv: vec2<f32>, tint: vec3<f32>) -> Surface {
     return s;
 }
 
+// The shading normal at a pixel: the interpolated normal, turned by the normal texture in the
+// interpolated tangent frame where the material has one.
+fn pixel_normal(uv: vec2<f32>, n: vec3<f32>, tangent: vec4<f32>) -> vec3<f32> {
+    var out = n;
+#if EFFECT_NORMAL_TEXTURE
+    if ((object.maps & MAP_NORMAL) != 0u) {
+        let texel = normal_texel(texture_uv(uv, object.normal_uv.xy, object.uv_rotations.w, object.normal_uv.zw));
+        out = normal_mapped(safe_normalize(n, vec3(0.0, 1.0, 0.0)), tangent, texel, object.normal_scale);
+    }
+#endif
+    return out;
+}
+
 // The tint t of C at a pixel: the interpolated vertex colour times the base colour texture.
 fn pixel_tint(uv: vec2<f32>, tint: vec3<f32>) -> vec3<f32> {
     var t = vec3(1.0);
@@ -276,6 +292,9 @@ struct SmoothIn {
 #if EFFECT_VERTEX_COLORS
     @location(3) tint: vec3<f32>,
 #endif
+#if EFFECT_NORMAL_TEXTURE
+    @location(4) tangent: vec4<f32>,
+#endif
 }
 
 struct FlatIn {
@@ -326,6 +345,10 @@ struct PhongOut {
 #endif
 #if EFFECT_VERTEX_COLORS
     @location(3) tint: vec3<f32>,
+#endif
+#if EFFECT_NORMAL_TEXTURE
+    // World tangent (xyz, by the model matrix) and bitangent sign (w).
+    @location(4) world_tangent: vec4<f32>,
 #endif
 }
 
@@ -453,6 +476,9 @@ fn phong_vertex(in: SmoothIn) -> PhongOut {
 #if EFFECT_VERTEX_COLORS
     out.tint = in.tint;
 #endif
+#if EFFECT_NORMAL_TEXTURE
+    out.world_tangent = vec4((object.model * vec4(in.tangent.xyz, 0.0)).xyz, in.tangent.w);
+#endif
     return out;
 }
 
@@ -471,7 +497,12 @@ fn fs_phong(in: PhongOut) -> @location(0) vec4<f32> {
 #if EFFECT_VERTEX_COLORS
     tint = in.tint;
 #endif
-    return finish(shade(in.world_pos, in.world_normal, pixel_surface(uv, tint), in.clip.xy) + pixel_emission(uv));
+    var tangent = vec4(0.0);
+#if EFFECT_NORMAL_TEXTURE
+    tangent = in.world_tangent;
+#endif
+    let n = pixel_normal(uv, in.world_normal, tangent);
+    return finish(shade(in.world_pos, n, pixel_surface(uv, tint), in.clip.xy) + pixel_emission(uv));
 }
 
 // The chapter's interpolation (docs/model.md §8): linear in screen space along the scanlines, as
@@ -510,6 +541,10 @@ struct PhongScreenOut {
 #if EFFECT_VERTEX_COLORS
     @location(6) @interpolate(linear) tint: vec3<f32>,
     @location(7) tint_perspective: vec3<f32>,
+#endif
+#if EFFECT_NORMAL_TEXTURE
+    // The tangent frame stays perspective-correct: a texture's frame, not the chapter's colour.
+    @location(8) world_tangent: vec4<f32>,
 #endif
 }
 
@@ -574,6 +609,9 @@ fn vs_phong_screen(in: SmoothIn) -> PhongScreenOut {
     out.tint = o.tint;
     out.tint_perspective = o.tint;
 #endif
+#if EFFECT_NORMAL_TEXTURE
+    out.world_tangent = o.world_tangent;
+#endif
     return out;
 }
 
@@ -589,7 +627,11 @@ fn fs_phong_screen(in: PhongScreenOut) -> @location(0) vec4<f32> {
 #if EFFECT_VERTEX_COLORS
     tint = screen_or_perspective(in.tint, in.tint_perspective);
 #endif
-    return finish(shade(p, n, pixel_surface(uv, tint), in.clip.xy) + pixel_emission(uv));
+    var tangent = vec4(0.0);
+#if EFFECT_NORMAL_TEXTURE
+    tangent = in.world_tangent;
+#endif
+    return finish(shade(p, pixel_normal(uv, n, tangent), pixel_surface(uv, tint), in.clip.xy) + pixel_emission(uv));
 }
 
 // The null-shader baseline of the cost study: the same geometry, vertex fetch, transform and

@@ -29,6 +29,7 @@ fn tinted_surface(c: vec3<f32>, mu: vec3<f32>, mu_tinted: vec3<f32>, t: vec3<f32
 const MAP_METAL_ROUGHNESS: u32 = 2u;
 const MAP_OCCLUSION: u32 = 4u;
 const MAP_EMISSIVE: u32 = 8u;
+const MAP_NORMAL: u32 = 16u;
 
 struct Metallic {
     c: vec3<f32>,
@@ -64,6 +65,29 @@ fn occluded(r_a: f32, occ_in: f32, strength_in: f32) -> f32 {
     let occ = select(clamp(occ_in, 0.0, 1.0), 1.0, is_nonfinite(occ_in));
     let strength = select(clamp(strength_in, 0.0, 1.0), 1.0, is_nonfinite(strength_in));
     return r_a * (1.0 + strength * (occ - 1.0));
+}
+
+// glTF's normal texture: the texel 2·x − 1 in the frame (T, B = w·N×T, N), x and y scaled by
+// `scale`, T made perpendicular to N first. A tangent that frames nothing (zero, non-finite,
+// along N) leaves N; a non-finite texel channel reads as the flat (½, ½, 1).
+fn normal_mapped(n: vec3<f32>, tangent: vec4<f32>, texel: vec3<f32>, scale_in: f32) -> vec3<f32> {
+    let g = tangent.xyz - n * dot(n, tangent.xyz);
+    // NaN fails the comparison too.
+    if (!(dot(g, g) > NORMALIZE_MIN_LEN2)) {
+        return n;
+    }
+    let t = normalize(g);
+    let b = cross(n, t) * select(1.0, -1.0, tangent.w < 0.0);
+    var x = clamp(texel, vec3(0.0), vec3(1.0));
+    let flat_texel = vec3(0.5, 0.5, 1.0);
+    for (var i = 0; i < 3; i++) {
+        if (is_nonfinite(texel[i])) {
+            x[i] = flat_texel[i];
+        }
+    }
+    let scale = select(scale_in, 1.0, is_nonfinite(scale_in));
+    let m = t * ((2.0 * x.x - 1.0) * scale) + b * ((2.0 * x.y - 1.0) * scale) + n * (2.0 * x.z - 1.0);
+    return safe_normalize(m, n);
 }
 
 // Emission I_e scaled by an emissive texel's linear colour, in [0, 1] per channel.
@@ -143,6 +167,16 @@ fn metal_roughness_texel(uv: vec2<f32>) -> vec3<f32> {
 // The occlusion texel (red) at `uv`.
 fn occlusion_texel(uv: vec2<f32>) -> f32 {
     return sample_slot(occlusion_tex, occlusion_sampler, uv).r;
+}
+#endif
+
+#if EFFECT_NORMAL_TEXTURE
+@group(1) @binding(9) var normal_tex: texture_2d<f32>;
+@group(1) @binding(10) var normal_sampler: sampler;
+
+// The normal texture's texel at `uv`, as stored.
+fn normal_texel(uv: vec2<f32>) -> vec3<f32> {
+    return sample_slot(normal_tex, normal_sampler, uv).rgb;
 }
 #endif
 

@@ -149,6 +149,10 @@ fn sweep(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workgroups)
     outputs[base + COL_PHONG_H_FROM_M] = phong_h_from_m(m);
     outputs[base + COL_OCCLUDED] = occluded(0.8, n_raw.z, m);
     put_rgb(base + COL_EMITTED, emitted(mu, n_raw));
+    // N turned by the raw normal as a texel in the frame of L as tangent (along N at normal
+    // incidence: no frame), its sign from V·L, scale h.
+    let w = select(1.0, -1.0, dot(v, l) < 0.0);
+    put_rgb(base + COL_NORMAL_MAPPED, normal_mapped(n, vec4(l, w), n_raw, h_row.x));
 }
 
 // A colour's three channels into consecutive outputs from `at`.

@@ -64,7 +64,8 @@ fn each_map_matches_the_reference_and_is_needed() {
         let same = rmse(&s, &s, &settings);
         eprintln!("{specular:?}: RMSE {same:.2e} against the reference");
         assert!(same < 3e-3, "{specular:?}: RMSE {same}");
-        let strip: [(&str, Strip); 4] = [
+        let strip: [(&str, Strip); 5] = [
+            ("normal texture", |m| m.maps.normal = None),
             ("metallic–roughness", |m| m.maps.metal_roughness = None),
             ("occlusion", |m| m.maps.occlusion = None),
             ("emissive texture", |m| m.maps.emissive = None),
@@ -89,6 +90,7 @@ fn a_saved_scene_keeps_its_maps() {
     assert_eq!(a.maps.metal_roughness.map(|m| m.metallic_f0), b.maps.metal_roughness.map(|m| m.metallic_f0));
     assert_eq!(a.maps.occlusion.map(|m| m.strength), b.maps.occlusion.map(|m| m.strength));
     assert!(b.maps.emissive.is_some());
+    assert_eq!(a.maps.normal.map(|m| m.scale), b.maps.normal.map(|m| m.scale));
     assert_eq!(a.emission, b.emission);
     let settings = RenderSettings::new(ShadingMode::Phong, SpecularModel::CookTorrance);
     let (x, y) = (
@@ -111,7 +113,9 @@ fn per_vertex_modes_draw_the_emission_and_leave_the_lighting_maps() {
         let settings = RenderSettings::new(shading, SpecularModel::CookTorrance);
         let fx = Program::for_scene(&s, &settings).effects();
         assert!(fx.has(Effect::Emission) && fx.has(Effect::EmissiveTexture), "{}", fx.label());
-        assert!(!fx.has(Effect::MetalRoughnessTexture) && !fx.has(Effect::OcclusionTexture), "{}", fx.label());
+        for e in shadelab_render::program::PER_PIXEL_LIGHTING {
+            assert!(!fx.has(e), "{e}: {}", fx.label());
+        }
         let (a, b) = (
             render_image(gpu(), &s, SIZE.0, SIZE.1, &settings).unwrap(),
             render_image(gpu(), &dark, SIZE.0, SIZE.1, &settings).unwrap(),

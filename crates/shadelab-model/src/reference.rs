@@ -91,9 +91,11 @@ pub fn render_reference(scene: &Scene, specular: SpecularModel, width: u32, heig
                 img.hidden.push(0);
                 continue;
             };
-            let (p, n, eye) = (hit.point, hit.normal, scene.camera.eye_h());
             let mi = scene.objects[hit.object].material;
             let material = &scene.materials[mi];
+            // The shading normal, perturbed by the material's normal texture where it has one.
+            let n = material.normal_at(&scene.textures, hit.uv, hit.normal, hit.tangent);
+            let (p, eye) = (hit.point, scene.camera.eye_h());
             // The point's parameters in a copy of its material (the copies are made once, not per
             // pixel); its emission is added to whatever the model gives.
             let (mat, emission) = if material.varies(hit.vertex_color) {

@@ -13,8 +13,8 @@ pub use crate::lighting::lights::{LIGHT_STAND_OFF, Light, MAX_LIGHTS, SPOT_OUTER
 pub use builtin::{BUILTIN_SCENES, default_scene, single_shape_scene};
 pub use camera::{COMPOSED_ASPECT, Camera};
 pub use material::{
-    Material, MaterialMaps, MetalRoughnessMap, OcclusionMap, SurfacePoint, emitted, metallic_scaled, occluded,
-    phong_h_from_m, roughness_scaled, tinted_surface, vertex_tint,
+    Material, MaterialMaps, MetalRoughnessMap, NormalMap, OcclusionMap, SurfacePoint, emitted, metallic_scaled,
+    normal_mapped, occluded, phong_h_from_m, roughness_scaled, tinted_surface, vertex_tint,
 };
 pub use texture::{ColorSpace, Filter, Sampler, Texture, TextureRef, UvTransform, Wrap, srgb_to_linear, texture_uv};
 

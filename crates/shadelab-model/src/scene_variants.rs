@@ -138,7 +138,8 @@ pub const FLOOR_EMISSION: [f64; 3] = [0.3, 0.15, 0.05];
 /// [`with_textured_floor`] whose floor also has the other glTF textures, made here: a glTF metal
 /// (metallic factor 1, F0 0.04) whose metallic–roughness texture turns bands of it into a rough
 /// dielectric, an occlusion texture darkening its ambient towards each checker square's edges,
-/// and an emissive texture of diagonal stripes (I_e = `FLOOR_EMISSION`).
+/// an emissive texture of diagonal stripes (I_e = `FLOOR_EMISSION`), and a normal texture of
+/// ridges across each checker square (with the floor's MikkTSpace tangents).
 pub fn with_material_maps(scene: &Scene, level: u32) -> Scene {
     use crate::scene::{MetalRoughnessMap, OcclusionMap, TextureRef};
     let mut s = with_textured_floor(scene, level);
@@ -157,6 +158,14 @@ pub fn with_material_maps(scene: &Scene, level: u32) -> Scene {
         let occ = 1.0 - 0.75 * d(x).max(d(y));
         [(occ * 255.0).round() as u8, 0, 0, 255]
     }));
+    // Ridges along v: the normal tilts ±0.5 towards u across each square (x = ½ + ½·sin).
+    s.textures.push(image("ridges", side, |x, _| {
+        let a = (x as f64 + 0.5) / square * std::f64::consts::TAU;
+        let tilt = 0.5 * a.sin();
+        let z = (1.0 - tilt * tilt).sqrt();
+        let enc = |c: f64| ((c * 0.5 + 0.5) * 255.0).round() as u8;
+        [enc(tilt), enc(0.0), enc(z), 255]
+    }));
     s.textures.push(image("emissive stripes", side, |x, y| {
         if ((x + y) / 6).is_multiple_of(4) { [255; 4] } else { [0, 0, 0, 255] }
     }));
@@ -168,7 +177,16 @@ pub fn with_material_maps(scene: &Scene, level: u32) -> Scene {
     let r = |texture| TextureRef { texture, ..Default::default() };
     m.maps.metal_roughness = Some(MetalRoughnessMap { texture: r(next), metallic_f0: [FLOOR_F0; 3] });
     m.maps.occlusion = Some(OcclusionMap { texture: r(next + 1), strength: 1.0 });
-    m.maps.emissive = Some(r(next + 2));
+    // In the order the loader meets them (metallic–roughness, occlusion, normal, emissive), so
+    // that a saved scene reads back with the same indices.
+    m.maps.normal = Some(crate::scene::NormalMap { texture: r(next + 2), scale: 1.0 });
+    m.maps.emissive = Some(r(next + 3));
+    // The floor's tangents, as the loader makes them for a file without any.
+    if let Some(Shape::Mesh(k)) = s.objects.iter().find(|o| o.material == mi).map(|o| o.shape)
+        && let Some(t) = s.meshes[k].with_generated_tangents()
+    {
+        s.meshes[k] = t;
+    }
     s
 }
 

@@ -223,7 +223,11 @@ fn build_pipeline(
     };
     let options = wgpu::PipelineCompilationOptions::default();
     let effects = key.program.effects();
-    let surface = SurfaceVertex::layout(effects.samples_textures(), effects.has(Effect::VertexColors));
+    let surface = SurfaceVertex::layout(
+        effects.samples_textures(),
+        effects.has(Effect::VertexColors),
+        effects.has(Effect::NormalTexture),
+    );
     let first = if key.program.draws_flat_mesh() { FlatVertex::LAYOUT } else { SmoothVertex::LAYOUT };
     let buffers = [Some(first), surface];
     let buffers = if buffers[1].is_some() { &buffers[..] } else { &buffers[..1] };

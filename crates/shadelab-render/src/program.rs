@@ -5,7 +5,8 @@ use shadelab_model::effects::{self, Effect, EffectKey};
 use shadelab_model::{Interpolation, Scene, ShadingMode, SpecularModel};
 
 /// The effects that change the lighting itself per pixel: drawn in Phong shading only.
-pub const PER_PIXEL_LIGHTING: [Effect; 2] = [Effect::MetalRoughnessTexture, Effect::OcclusionTexture];
+pub const PER_PIXEL_LIGHTING: [Effect; 3] =
+    [Effect::MetalRoughnessTexture, Effect::OcclusionTexture, Effect::NormalTexture];
 
 /// Which effect permutation draws a scene (resolved by [`Program::for_scene`]).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]

@@ -1,6 +1,6 @@
 //! A scene's textures on the GPU (docs/textures.md): each image uploaded once as `Rgba8Unorm`,
 //! viewed as `Rgba8UnormSrgb` where a material reads it as colour; per material, the textures
-//! of its four slots with their samplers, bound beside the object uniforms (@group(1)); and the
+//! of its five slots with their samplers, bound beside the object uniforms (@group(1)); and the
 //! per-vertex surface attributes (texture coordinates, vertex colours) the textured permutations
 //! read.
 
@@ -11,35 +11,37 @@ use shadelab_model::{Filter, Object, Scene, Texture, Wrap};
 
 /// The material texture slots, in binding order: slot k is bound at `1 + 2k` (texture) and
 /// `2 + 2k` (sampler), and read as the colour space it names.
-pub(crate) const SLOTS: [(&str, ColorSpace); 4] = [
+pub(crate) const SLOTS: [(&str, ColorSpace); 5] = [
     ("base colour", ColorSpace::Srgb),
     ("metallic–roughness", ColorSpace::Linear),
     ("occlusion", ColorSpace::Linear),
     ("emissive", ColorSpace::Srgb),
+    ("normal", ColorSpace::Linear),
 ];
 
 /// Bit k of `ObjectUniform::maps`: the object's material has slot k's texture (surface.wgsl's
 /// `MAP_…` constants).
-pub(crate) const MAP_BITS: [u32; 4] = [1, 2, 4, 8];
+pub(crate) const MAP_BITS: [u32; 5] = [1, 2, 4, 8, 16];
 
 /// The textures of an object's material, by slot: scene texture indices, `None` for a slot
 /// without one (or with an index past the scene's textures).
-pub(crate) type SlotTextures = [Option<usize>; 4];
+pub(crate) type SlotTextures = [Option<usize>; 5];
 
 /// Object `o`'s textures by slot.
 pub(crate) fn object_slots(scene: &Scene, o: &Object) -> SlotTextures {
-    let Some(m) = scene.materials.get(o.material) else { return [None; 4] };
+    let Some(m) = scene.materials.get(o.material) else { return [None; 5] };
     let maps = &m.maps;
     [
         m.base_color_texture.map(|r| r.texture),
         maps.metal_roughness.map(|r| r.texture.texture),
         maps.occlusion.map(|r| r.texture.texture),
         maps.emissive.map(|r| r.texture),
+        maps.normal.map(|r| r.texture.texture),
     ]
     .map(|t| t.filter(|&i| i < scene.textures.len()))
 }
 
-/// The object group's layout entries for the four slots' textures and samplers.
+/// The object group's layout entries for the slots' textures and samplers.
 pub(crate) fn layout_entries() -> Vec<wgpu::BindGroupLayoutEntry> {
     (0..SLOTS.len() as u32)
         .flat_map(|k| {
@@ -135,7 +137,7 @@ pub(crate) fn upload(device: &wgpu::Device, queue: &wgpu::Queue, t: &Texture) ->
 /// The distinct slot sets of the scene's objects (the first is the empty set, for objects with
 /// no texture: white texels) and which one each object uses: one object bind group per set.
 pub(crate) fn bind_sets(scene: &Scene) -> (Vec<SlotTextures>, Vec<usize>) {
-    let mut sets: Vec<SlotTextures> = vec![[None; 4]];
+    let mut sets: Vec<SlotTextures> = vec![[None; 5]];
     let of = scene
         .objects
         .iter()
@@ -164,5 +166,6 @@ pub(crate) fn surface_vertex(m: Option<&TriangleMesh>, i: usize) -> SurfaceVerte
     SurfaceVertex {
         uv: m.uvs.as_ref().and_then(|u| u.get(i)).copied().unwrap_or(d.uv),
         color: m.colors.as_ref().and_then(|c| c.get(i)).copied().unwrap_or(d.color),
+        tangent: m.tangents.as_ref().and_then(|t| t.get(i)).copied().unwrap_or(d.tangent),
     }
 }

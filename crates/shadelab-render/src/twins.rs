@@ -42,7 +42,7 @@ const TWINS: [(&str, &str); 8] = [
 
 /// WGSL functions with no f64 twin, by file, and why. (Entry points are left out by naga's list:
 /// they are the GPU's stages, whose f64 counterpart is `reference::render_reference`.)
-const NO_TWIN: [(&str, &str, &str); 29] = [
+const NO_TWIN: [(&str, &str, &str); 31] = [
     ("common.wgsl", "is_nonfinite", "the NaN/∞ test on f32 bits; f64 code uses f64::is_finite"),
     ("common.wgsl", "any_nonfinite", "the debug view's test of a colour, built on is_nonfinite"),
     ("surface.wgsl", "sample_slot", "samples a GPU texture; its f64 side is scene::Texture::sample_as"),
@@ -50,6 +50,8 @@ const NO_TWIN: [(&str, &str, &str); 29] = [
     ("surface.wgsl", "metal_roughness_texel", "samples the GPU texture; its f64 side is Texture::sample_as"),
     ("surface.wgsl", "occlusion_texel", "samples the GPU texture; its f64 side is Texture::sample_as"),
     ("surface.wgsl", "emissive_texel", "samples the GPU texture; its f64 side is Texture::sample"),
+    ("surface.wgsl", "normal_texel", "samples the GPU texture; its f64 side is Texture::sample_as"),
+    ("shading.wgsl", "pixel_normal", "the interpolants' normal; its f64 side is Material::normal_at"),
     ("shading.wgsl", "pixel_emission", "the interpolants' emission; its f64 side is Material::surface_at"),
     ("shading.wgsl", "object_surface", "the uniforms' material; the reference reads scene::Material"),
     ("shading.wgsl", "pixel_surface", "the interpolants' tint; its f64 side is Material::surface_at"),

@@ -70,12 +70,16 @@ pub struct ObjectUniform {
     pub metal_roughness_uv: [f32; 4],
     pub occlusion_uv: [f32; 4],
     pub emissive_uv: [f32; 4],
-    /// Rotations of the metallic–roughness, occlusion and emissive textures (x, y, z).
+    /// Rotations of the metallic–roughness, occlusion, emissive and normal textures (x, y, z, w).
     pub uv_rotations: [f32; 4],
     /// Which slots' textures the material has (`textures::MAP_BITS`).
     pub maps: u32,
     pub occlusion_strength: f32,
-    pub _pad: [f32; 2],
+    /// The normal texture's `scale`.
+    pub normal_scale: f32,
+    pub _pad: f32,
+    /// The normal texture's transform: offset (xy) and scale (zw); its rotation is `uv_rotations.w`.
+    pub normal_uv: [f32; 4],
 }
 
 /// One light's shadow map as `shadows.wgsl`'s `ShadowLight` reads it (zeroed: no shadow).
@@ -162,6 +166,7 @@ impl ObjectUniform {
             maps.metal_roughness.map(|r| r.texture.transform),
             maps.occlusion.map(|r| r.texture.transform),
             maps.emissive.map(|r| r.transform),
+            maps.normal.map(|r| r.texture.transform),
         ]
         .map(Option::unwrap_or_default);
         let offset_scale = |t: &UvTransform| [t.offset[0], t.offset[1], t.scale[0], t.scale[1]].map(|x| x as f32);
@@ -190,7 +195,9 @@ impl ObjectUniform {
                 .map(|x| x as f32),
             maps: slots.iter().zip(crate::textures::MAP_BITS).filter(|(s, _)| s.is_some()).map(|(_, b)| b).sum(),
             occlusion_strength: maps.occlusion.map_or(0.0, |o| o.strength) as f32,
-            _pad: [0.0; 2],
+            normal_scale: maps.normal.map_or(1.0, |n| n.scale) as f32,
+            _pad: 0.0,
+            normal_uv: offset_scale(&transforms[3]),
         }
     }
 }

@@ -28,29 +28,40 @@ pub struct FlatVertex {
 pub struct SurfaceVertex {
     pub uv: [f32; 2],
     pub color: [f32; 3],
+    /// Object-space tangent and bitangent sign (zero: none, the normal texture leaves N).
+    pub tangent: [f32; 4],
 }
 
 impl Default for SurfaceVertex {
     /// No texture coordinates and no tint.
     fn default() -> Self {
-        SurfaceVertex { uv: [0.0; 2], color: [1.0; 3] }
+        SurfaceVertex { uv: [0.0; 2], color: [1.0; 3], tangent: [0.0; 4] }
     }
 }
 
-const SURFACE_UV: [wgpu::VertexAttribute; 1] = wgpu::vertex_attr_array![2 => Float32x2];
-const SURFACE_COLOR: [wgpu::VertexAttribute; 1] =
-    [wgpu::VertexAttribute { format: wgpu::VertexFormat::Float32x3, offset: 8, shader_location: 3 }];
-const SURFACE_BOTH: [wgpu::VertexAttribute; 2] = [SURFACE_UV[0], SURFACE_COLOR[0]];
+const SURFACE_UV: wgpu::VertexAttribute =
+    wgpu::VertexAttribute { format: wgpu::VertexFormat::Float32x2, offset: 0, shader_location: 2 };
+const SURFACE_COLOR: wgpu::VertexAttribute =
+    wgpu::VertexAttribute { format: wgpu::VertexFormat::Float32x3, offset: 8, shader_location: 3 };
+const SURFACE_TANGENT: wgpu::VertexAttribute =
+    wgpu::VertexAttribute { format: wgpu::VertexFormat::Float32x4, offset: 20, shader_location: 4 };
+const UV: [wgpu::VertexAttribute; 1] = [SURFACE_UV];
+const COLOR: [wgpu::VertexAttribute; 1] = [SURFACE_COLOR];
+const UV_COLOR: [wgpu::VertexAttribute; 2] = [SURFACE_UV, SURFACE_COLOR];
+const UV_TANGENT: [wgpu::VertexAttribute; 2] = [SURFACE_UV, SURFACE_TANGENT];
+const ALL: [wgpu::VertexAttribute; 3] = [SURFACE_UV, SURFACE_COLOR, SURFACE_TANGENT];
 
 impl SurfaceVertex {
-    /// Its buffer layout with the attributes a permutation reads (locations 2 uv, 3 colour),
-    /// `None` when it reads neither.
-    pub fn layout(uv: bool, color: bool) -> Option<wgpu::VertexBufferLayout<'static>> {
-        let attributes: &'static [wgpu::VertexAttribute] = match (uv, color) {
-            (false, false) => return None,
-            (true, false) => &SURFACE_UV,
-            (false, true) => &SURFACE_COLOR,
-            (true, true) => &SURFACE_BOTH,
+    /// Its buffer layout with the attributes a permutation reads (locations 2 uv, 3 colour,
+    /// 4 tangent, which comes only with texture coordinates), `None` when it reads none.
+    pub fn layout(uv: bool, color: bool, tangent: bool) -> Option<wgpu::VertexBufferLayout<'static>> {
+        let attributes: &'static [wgpu::VertexAttribute] = match (uv, color, tangent && uv) {
+            (false, false, _) => return None,
+            (true, false, false) => &UV,
+            (false, true, _) => &COLOR,
+            (true, true, false) => &UV_COLOR,
+            (true, false, true) => &UV_TANGENT,
+            (true, true, true) => &ALL,
         };
         Some(wgpu::VertexBufferLayout {
             array_stride: size_of::<SurfaceVertex>() as u64,

@@ -205,6 +205,8 @@ pub fn analyze(scene: &Scene, specular: SpecularModel) -> Analysis {
     a.decide(Effect::MetalRoughnessTexture, on, why);
     let (on, why) = texture_map(scene, "occlusion texture", |m| m.maps.occlusion.map(|t| t.texture));
     a.decide(Effect::OcclusionTexture, on, why);
+    let (on, why) = normal_texture(scene);
+    a.decide(Effect::NormalTexture, on, why);
     let (on, why) = emission(scene);
     a.decide(Effect::Emission, on, why);
     let (on, why) = emissive_texture(scene);
@@ -266,12 +268,26 @@ fn texture_map(
     let textured: Vec<_> = scene.objects.iter().filter(has).collect();
     let sampled = textured.iter().filter(|o| file_mesh(scene, o).is_some_and(|m| m.uvs.is_some())).count();
     if textured.is_empty() {
-        (false, format!("no material has a {what}"))
+        (false, format!("no material has one ({what})"))
     } else if sampled == 0 {
-        (false, format!("{} object(s) have a material with a {what} but no texture coordinates", textured.len()))
+        (false, format!("{} object(s) have a material with one ({what}) but no texture coordinates", textured.len()))
     } else {
-        (true, format!("{sampled} object(s) have a {what} and texture coordinates"))
+        (true, format!("{sampled} object(s) have one ({what}) and texture coordinates"))
     }
+}
+
+/// The normal texture is sampled where a textured mesh has tangents to turn the normal in (the
+/// loader gives every such mesh MikkTSpace's when its file has none, or says why not).
+fn normal_texture(scene: &Scene) -> (bool, String) {
+    let (on, why) = texture_map(scene, "normal texture", |m| m.maps.normal.map(|n| n.texture));
+    let framed = scene.objects.iter().any(|o| {
+        scene.materials.get(o.material).is_some_and(|m| m.maps.normal.is_some())
+            && file_mesh(scene, o).is_some_and(|m| m.uvs.is_some() && m.tangents.is_some())
+    });
+    if on && !framed {
+        return (false, "no mesh with a normal texture has tangents to frame it".into());
+    }
+    (on, why)
 }
 
 /// Emission is added when some object's material emits (I_e > 0 in some channel).

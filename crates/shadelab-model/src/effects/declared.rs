@@ -300,6 +300,16 @@ declare_effects! {
         functions: &["emissive_texel"],
         members: &[("Object", "emissive_uv")],
     },
+    /// glTF's normal texture sampled per pixel: the shading normal turned in the mesh's tangent
+    /// frame (docs/textures.md).
+    NormalTexture {
+        explain: "normal texture",
+        name: "normal texture",
+        label: "normtex",
+        define: Some("EFFECT_NORMAL_TEXTURE"),
+        functions: &["normal_texel", "normal_mapped"],
+        members: &[("Object", "normal_scale"), ("Object", "normal_uv")],
+    },
     /// Light transmitted through a material: analysed, not simulated yet (docs/model.md §7).
     Transmission {
         explain: "transmission",
@@ -322,8 +332,13 @@ declare_effects! {
 }
 
 /// The effects that sample a material texture at the pixel's texture coordinates.
-pub const TEXTURE_EFFECTS: [Effect; 4] =
-    [Effect::BaseColorTexture, Effect::MetalRoughnessTexture, Effect::OcclusionTexture, Effect::EmissiveTexture];
+pub const TEXTURE_EFFECTS: [Effect; 5] = [
+    Effect::BaseColorTexture,
+    Effect::MetalRoughnessTexture,
+    Effect::OcclusionTexture,
+    Effect::EmissiveTexture,
+    Effect::NormalTexture,
+];
 
 /// The preprocessor name defined when a permutation samples some texture: the texture
 /// coordinates' vertex attribute and interpolant.
@@ -550,7 +565,7 @@ mod tests {
         assert_eq!(format!("{k:?}"), "EffectKey(diffuse+cook-torrance+point+range)");
         assert_eq!(
             EffectKey::UBER.without(Effect::Ambient).label(),
-            "diffuse+phong+cook-torrance+lambert+sum+it+dir+point+quad+linear+spot+range+shadows+hard+pcf+poisson+cascades+texture+vcolor+mrtex+aotex+emit+emittex"
+            "diffuse+phong+cook-torrance+lambert+sum+it+dir+point+quad+linear+spot+range+shadows+hard+pcf+poisson+cascades+texture+vcolor+mrtex+aotex+emit+emittex+normtex"
         );
         assert_eq!(Effect::SpecularPhong.to_string(), "Phong specular (V·R)^h");
     }

@@ -308,7 +308,11 @@ impl Writer {
 
     /// Per-vertex attributes (texture coordinates as VEC2, colours as VEC3) of FLOAT.
     pub(super) fn attribute<const N: usize>(&mut self, values: &[[f32; N]]) -> usize {
-        let ty = if N == 2 { "VEC2" } else { "VEC3" };
+        let ty = match N {
+            2 => "VEC2",
+            3 => "VEC3",
+            _ => "VEC4",
+        };
         self.accessor(
             bytemuck::cast_slice(values.as_flattened()),
             ARRAY_BUFFER,

@@ -6,7 +6,7 @@ use super::extras::{self, Absorption, Mu, Num, Phong, Rgb, Roughness, Thickness,
 use super::scene_file::{Reader, num, rgb};
 use super::{ATTENUATION_COLOR_MIN, DEFAULT_IOR, DIELECTRIC_MU_MAX, GltfError, dielectric_f0, m_from_roughness};
 use crate::params::{ParamRange, PhongExponent};
-use crate::scene::{Material, MetalRoughnessMap, OcclusionMap, Scene};
+use crate::scene::{Material, MetalRoughnessMap, NormalMap, OcclusionMap, Scene};
 use gltf::json;
 use gltf::json::validation::Checked;
 use serde::{Deserialize, Serialize};
@@ -84,11 +84,19 @@ impl Reader<'_> {
                     .texture_ref(scene, &info, &slot("occlusionTexture"))?
                     .map(|texture| OcclusionMap { texture, strength });
             }
+            if let Some(nt) = &m.normal_texture {
+                let info = plain_info(nt.index, nt.tex_coord);
+                if !nt.scale.is_finite() {
+                    return Err(self.cx.invalid(slot("normalTexture: scale is not finite")));
+                }
+                mat.maps.normal = self
+                    .texture_ref(scene, &info, &slot("normalTexture"))?
+                    .map(|texture| NormalMap { texture, scale: nt.scale as f64 });
+            }
             if let Some(info) = &m.emissive_texture {
                 mat.maps.emissive = self.texture_ref(scene, info, &slot("emissiveTexture"))?;
             }
             for (has, what) in [
-                (m.normal_texture.is_some(), "normalTexture"),
                 (
                     !matches!(m.alpha_mode, Checked::Valid(json::material::AlphaMode::Opaque)),
                     "alphaMode (drawn opaque)",
@@ -316,6 +324,10 @@ pub(super) fn write_material(m: &Material, extensions_used: &mut Vec<&'static st
     }
     if let Some(t) = &m.maps.emissive {
         out["emissiveTexture"] = info(t, extensions_used);
+    }
+    if let Some(n) = &m.maps.normal {
+        // Like the occlusion slot, written without a transform.
+        out["normalTexture"] = json!({ "index": n.texture.texture, "scale": num(n.scale) });
     }
     if m.emission != [0.0; 3] {
         out["emissiveFactor"] = rgb(m.emission);

@@ -124,9 +124,18 @@ impl Reader<'_> {
         }) {
             self.cx.warn(format!("{what}: attribute {name} is not used"));
         }
-        if prim.attributes.contains_key(&Checked::Valid(Semantic::Tangents)) {
-            self.cx.warn(format!("{what}: TANGENT is not used (no normal textures yet)"));
-        }
+        let tangents = match prim.attributes.get(&Checked::Valid(Semantic::Tangents)) {
+            Some(a) => {
+                let t = self.per_vertex::<4>(a.value(), &format!("{what}: TANGENT"), &[Type::Vec4], n)?;
+                if t.iter().flatten().any(|x| !x.is_finite()) {
+                    self.cx.warn(format!(
+                        "{what}: a TANGENT value is not finite: the normal texture is not applied there"
+                    ));
+                }
+                Some(t)
+            }
+            None => None,
+        };
         let corners = self.corners(prim, positions.len(), &what)?;
         let tris: Vec<[u32; 3]> = match mode {
             Mode::Triangles => {
@@ -159,7 +168,18 @@ impl Reader<'_> {
         }
         let name = mesh.name.clone().unwrap_or_else(|| format!("mesh {mi}"));
         let name = if mesh.primitives.len() > 1 { format!("{name} #{pi}") } else { name };
-        let tm = TriangleMesh { name, positions, normals, indices: tris, uvs, colors }.with_attributes_kept();
+        let mut tm =
+            TriangleMesh { name, positions, normals, indices: tris, uvs, colors, tangents }.with_attributes_kept();
+        let normal_mapped = material.and_then(|m| root.materials.get(m)).is_some_and(|m| m.normal_texture.is_some());
+        if normal_mapped && tm.tangents.is_none() {
+            // glTF: without TANGENT, MikkTSpace's frame (and none without normals or coordinates).
+            match tm.with_generated_tangents() {
+                Some(t) => tm = t,
+                None => self.cx.warn(format!(
+                    "{what}: normalTexture needs NORMAL and TEXCOORD_0 to frame it: the normal texture is not applied"
+                )),
+            }
+        }
         let analytic = self.analytic_shape(&mesh.extras, &tm, &what)?;
         self.file_meshes.push((tm, None));
         Ok(Some(Prim { mesh: self.file_meshes.len() - 1, material, analytic }))
@@ -323,6 +343,12 @@ fn attributed_primitive(w: &mut Writer, m: &TriangleMesh) -> Option<Value> {
     }
     if let Some(c) = &m.colors {
         attributes["COLOR_0"] = json!(w.attribute(c));
+    }
+    // Tangents belong to the normals: glTF ignores them without.
+    if let Some(t) = &m.tangents
+        && m.has_usable_normals()
+    {
+        attributes["TANGENT"] = json!(w.attribute(t));
     }
     let indices: Vec<u32> = m.indices.iter().flatten().copied().collect();
     Some(json!({ "attributes": attributes, "indices": w.indices(&indices), "mode": TRIANGLES }))

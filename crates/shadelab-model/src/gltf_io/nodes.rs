@@ -216,6 +216,15 @@ fn bake(mesh: &TriangleMesh, m: &DMat4) -> TriangleMesh {
         indices: mesh.indices.iter().map(|t| if flip { [t[0], t[2], t[1]] } else { *t }).collect(),
         uvs: mesh.uvs.clone(),
         colors: mesh.colors.clone(),
+        // Tangents move with the surface; under a mirror the bitangent cross(N, T) turns, so w too.
+        tangents: mesh.tangents.as_ref().map(|ts| {
+            ts.iter()
+                .map(|t| {
+                    let v = m.transform_vector3(glam::DVec3::new(t[0] as f64, t[1] as f64, t[2] as f64)).as_vec3();
+                    [v.x, v.y, v.z, if flip { -t[3] } else { t[3] }]
+                })
+                .collect()
+        }),
     }
 }
 

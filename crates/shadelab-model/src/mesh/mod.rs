@@ -5,6 +5,7 @@
 
 mod crease;
 mod procedural;
+mod tangents;
 mod triangle_mesh;
 
 pub use crease::{CREASE_ANGLE_DEG, CREASE_VALENCE_MAX, build_mesh, build_mesh_with_normals};

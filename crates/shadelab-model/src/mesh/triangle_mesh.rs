@@ -26,6 +26,9 @@ pub struct TriangleMesh {
     pub uvs: Option<Vec<[f32; 2]>>,
     /// Linear RGB colour per vertex that multiplies `C` (glTF `COLOR_0`), if the file has one.
     pub colors: Option<Vec<[f32; 3]>>,
+    /// Tangent per vertex, xyz and the bitangent's sign w (glTF `TANGENT`, or MikkTSpace's):
+    /// the frame a normal texture perturbs the normal in.
+    pub tangents: Option<Vec<[f32; 4]>>,
 }
 
 impl TriangleMesh {
@@ -38,6 +41,7 @@ impl TriangleMesh {
             indices: (0..triangles.len() as u32).map(|k| [3 * k, 3 * k + 1, 3 * k + 2]).collect(),
             uvs: None,
             colors: None,
+            tangents: None,
         }
     }
 
@@ -88,6 +92,8 @@ impl TriangleMesh {
             indices: (0..self.indices.len() as u32).map(|k| [3 * k, 3 * k + 1, 3 * k + 2]).collect(),
             uvs: self.uvs.as_ref().map(|u| corners().map(|i| u[i]).collect()),
             colors: self.colors.as_ref().map(|c| corners().map(|i| c[i]).collect()),
+            // The file's tangents belong to normals it did not have usably: glTF ignores them.
+            tangents: None,
         }
     }
 

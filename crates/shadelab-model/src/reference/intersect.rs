@@ -32,6 +32,9 @@ pub(crate) struct SurfaceHit {
     /// GPU does (barycentric in object space is perspective-correct); (0, 0) and white elsewhere.
     pub uv: [f64; 2],
     pub vertex_color: [f64; 3],
+    /// The mesh's tangent at the point in world space (xyz carried by the object's transform, as
+    /// the GPU's vertex stage does) and its bitangent sign w; zero without tangents.
+    pub tangent: [f64; 4],
 }
 
 /// Where a ray meets a file's mesh: ray parameter, shading and face normals, the triangle and the
@@ -208,8 +211,9 @@ fn intersect_mesh(mesh: &TriangleMesh, o: DVec3, dir: DVec3) -> Option<MeshHit> 
 /// The nearest hit of a world ray among the scene's objects (`inverses`: each object's inverse
 /// transform).
 pub(super) fn trace(scene: &Scene, inverses: &[DMat4], o: DVec3, dir: DVec3) -> Option<SurfaceHit> {
-    // Ray parameter, object, shading and face normals, texture coordinates, vertex colour.
-    type Best = (f64, usize, DVec3, DVec3, [f64; 2], [f64; 3]);
+    // Ray parameter, object, shading and face normals, texture coordinates, vertex colour,
+    // object-space tangent.
+    type Best = (f64, usize, DVec3, DVec3, [f64; 2], [f64; 3], [f64; 4]);
     let mut best: Option<Best> = None;
     for (i, (obj, inv)) in scene.objects.iter().zip(inverses).enumerate() {
         let (lo, ld) = (inv.transform_point3(o), inv.transform_vector3(dir));
@@ -227,18 +231,24 @@ pub(super) fn trace(scene: &Scene, inverses: &[DMat4], o: DVec3, dir: DVec3) -> 
                     .as_ref()
                     .filter(|a| a.len() == mesh.positions.len())
                     .map_or([1.0; 3], |c| interpolate(c, tri, u, v));
-                Some((t, n, face, uv, color))
+                let tangent = mesh
+                    .tangents
+                    .as_ref()
+                    .filter(|a| a.len() == mesh.positions.len())
+                    .map_or([0.0; 4], |ts| interpolate(ts, tri, u, v));
+                Some((t, n, face, uv, color, tangent))
             }),
-            shape => intersect_shape(shape, lo, ld).map(|(t, n)| (t, n, n, [0.0; 2], [1.0; 3])),
+            shape => intersect_shape(shape, lo, ld).map(|(t, n)| (t, n, n, [0.0; 2], [1.0; 3], [0.0; 4])),
         };
-        if let Some((t, n, face, uv, color)) = hit
+        if let Some((t, n, face, uv, color, tangent)) = hit
             && best.is_none_or(|b| t < b.0)
         {
-            best = Some((t, i, n, face, uv, color));
+            best = Some((t, i, n, face, uv, color, tangent));
         }
     }
-    best.map(|(t, i, n, face, uv, vertex_color)| {
+    best.map(|(t, i, n, face, uv, vertex_color, tangent)| {
         let to_world = scene.objects[i].transform.normal_matrix();
+        let tw = scene.objects[i].transform.matrix().transform_vector3(DVec3::new(tangent[0], tangent[1], tangent[2]));
         SurfaceHit {
             object: i,
             point: o + dir * t,
@@ -246,6 +256,7 @@ pub(super) fn trace(scene: &Scene, inverses: &[DMat4], o: DVec3, dir: DVec3) -> 
             geometric_normal: safe_normalize(to_world * face, DVec3::Y),
             uv,
             vertex_color,
+            tangent: [tw.x, tw.y, tw.z, tangent[3]],
         }
     })
 }

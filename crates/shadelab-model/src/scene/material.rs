@@ -2,7 +2,10 @@
 //! §7).
 
 use super::{ColorSpace, Texture, TextureRef};
+use crate::guards::NORMALIZE_MIN_LEN2;
+use crate::lighting::common::safe_normalize;
 use crate::params::PhongExponent;
+use glam::DVec3;
 
 /// Surface material of the chapter's model (docs/model.md §3, §5).
 #[derive(Clone, Debug, PartialEq)]
@@ -37,7 +40,7 @@ pub struct Material {
     /// base colour texture and vertex colours scale it as they scale `C`. 0 for the built-in
     /// materials.
     pub mu_tinted: [f64; 3],
-    /// Emitted radiance `E`, linear RGB, added to the model's `I` (glTF `emissiveFactor`).
+    /// Emitted radiance `I_e`, linear RGB, added to the model's `I` (glTF `emissiveFactor`).
     pub emission: [f64; 3],
     /// The textures that vary the model's other parameters per point (glTF's metallic–roughness,
     /// occlusion, emissive and normal textures; docs/textures.md).
@@ -53,8 +56,17 @@ pub struct MaterialMaps {
     pub metal_roughness: Option<MetalRoughnessMap>,
     /// glTF's `occlusionTexture`: its red channel scales the ambient reflectance `r_a`.
     pub occlusion: Option<OcclusionMap>,
-    /// glTF's `emissiveTexture`: its (sRGB) colour scales the emission `E`.
+    /// glTF's `emissiveTexture`: its (sRGB) colour scales the emission `I_e`.
     pub emissive: Option<TextureRef>,
+    /// glTF's `normalTexture`: the shading normal in the mesh's tangent frame.
+    pub normal: Option<NormalMap>,
+}
+
+/// The normal texture and glTF's `scale` of its x and y.
+#[derive(Clone, Copy, Debug, PartialEq, Default)]
+pub struct NormalMap {
+    pub texture: TextureRef,
+    pub scale: f64,
 }
 
 /// The metallic–roughness texture and what the metallic scale needs beside the material.
@@ -155,6 +167,40 @@ impl Material {
     }
 }
 
+impl Material {
+    /// The shading normal at a point with texture coordinates `uv`, unit normal `n` and tangent
+    /// `tangent` (xyz, and the bitangent's sign w): `n` perturbed by the normal texture
+    /// ([`normal_mapped`]), or `n` itself without one.
+    pub fn normal_at(&self, textures: &[Texture], uv: [f64; 2], n: DVec3, tangent: [f64; 4]) -> DVec3 {
+        let Some(map) = &self.maps.normal else { return n };
+        let Some(t) = textures.get(map.texture.texture) else { return n };
+        let x = t.sample_as(map.texture.transform.apply(uv), ColorSpace::Linear);
+        normal_mapped(n, tangent, [x[0], x[1], x[2]], map.scale)
+    }
+}
+
+/// glTF's normal texture: the texel `2·x − 1` in the frame (T, B = w·N×T, N), x and y scaled by
+/// `scale`, T made perpendicular to N first (twin of `normal_mapped` in shaders/surface.wgsl). A
+/// tangent that frames nothing (zero, non-finite, along N) leaves N as it is; so does a
+/// non-finite texel (read as the flat (½, ½, 1)).
+pub fn normal_mapped(n: DVec3, tangent: [f64; 4], texel: [f64; 3], scale: f64) -> DVec3 {
+    let t = DVec3::new(tangent[0], tangent[1], tangent[2]);
+    let g = t - n * n.dot(t);
+    // A NaN length counts as none.
+    let len2 = g.length_squared();
+    if len2.is_nan() || len2 <= NORMALIZE_MIN_LEN2 {
+        return n;
+    }
+    let t = g.normalize();
+    let sign = if tangent[3] < 0.0 { -1.0 } else { 1.0 };
+    let b = n.cross(t) * sign;
+    let flat = [0.5, 0.5, 1.0];
+    let x: [f64; 3] = std::array::from_fn(|i| if texel[i].is_finite() { texel[i].clamp(0.0, 1.0) } else { flat[i] });
+    let scale = if scale.is_finite() { scale } else { 1.0 };
+    let m = t * ((2.0 * x[0] - 1.0) * scale) + b * ((2.0 * x[1] - 1.0) * scale) + n * (2.0 * x[2] - 1.0);
+    safe_normalize(m, n)
+}
+
 /// The material's C, μ and tinted μ at a metallic–roughness texel whose metal scale (blue) is
 /// `b`, so that glTF's metallic is `M·b`: `C + μ_t·(1 − b)`, `μ + (M·F0 − μ_t)·(1 − b)`, `μ_t·b`
 /// (twin of `metallic_scaled` in shaders/surface.wgsl). At b = 1 the material is unchanged;
@@ -250,6 +296,25 @@ mod tests {
     }
 
     #[test]
+    fn normal_texels_turn_the_normal_in_the_tangent_frame() {
+        let (n, t) = (DVec3::Y, [1.0, 0.0, 0.0, 1.0]);
+        // The flat texel (½, ½, 1) is the normal itself.
+        assert!((normal_mapped(n, t, [0.5, 0.5, 1.0], 1.0) - n).length() < 1e-12);
+        // x = 1, z = 0: the tangent; y = 1 with w = −1: minus the bitangent N × T.
+        assert!((normal_mapped(n, t, [1.0, 0.5, 0.5], 1.0) - DVec3::X).length() < 1e-12);
+        let b = n.cross(DVec3::X);
+        assert!((normal_mapped(n, [1.0, 0.0, 0.0, -1.0], [0.5, 1.0, 0.5], 1.0) + b).length() < 1e-12);
+        // A tangent with a part along N is made perpendicular first.
+        assert!((normal_mapped(n, [1.0, 5.0, 0.0, 1.0], [1.0, 0.5, 0.5], 1.0) - DVec3::X).length() < 1e-12);
+        // Scale 0 flattens the texture; frames of nothing leave N.
+        assert!((normal_mapped(n, t, [1.0, 0.5, 0.5], 0.0) - n).length() < 1e-12);
+        for bad in [[0.0; 4], [0.0, 1.0, 0.0, 1.0], [f64::NAN, 0.0, 0.0, 1.0]] {
+            assert_eq!(normal_mapped(n, bad, [1.0, 0.0, 0.0], 1.0), n, "{bad:?}");
+        }
+        assert!((normal_mapped(n, t, [f64::NAN, 0.5, f64::INFINITY], 1.0) - n).length() < 1e-12);
+    }
+
+    #[test]
     fn surface_at_applies_each_map() {
         let tex = |rgba| Texture::solid("t", rgba);
         let textures = [tex([0, 128, 0, 255]), tex([64, 0, 0, 255]), tex([255, 255, 255, 255])];
@@ -262,6 +327,7 @@ mod tests {
             metal_roughness: Some(MetalRoughnessMap { texture: r(0), metallic_f0: [0.04; 3] }),
             occlusion: Some(OcclusionMap { texture: r(1), strength: 1.0 }),
             emissive: Some(r(2)),
+            normal: None,
         };
         let at = mapped.surface_at(&textures, [0.5; 2], [1.0; 3]);
         let g = 128.0 / 255.0;

@@ -38,7 +38,8 @@ const INSIDE_SHADOWS: [Effect; 4] =
     [Effect::ShadowFilterHard, Effect::ShadowFilterPcf, Effect::ShadowFilterPoisson, Effect::ShadowCascades];
 
 /// The effects of a surface's texture and vertex colours (surface.wgsl), independent of the rest.
-const SURFACE: [Effect; 6] = [
+const SURFACE: [Effect; 7] = [
+    Effect::NormalTexture,
     Effect::BaseColorTexture,
     Effect::VertexColors,
     Effect::MetalRoughnessTexture,

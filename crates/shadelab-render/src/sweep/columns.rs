@@ -30,7 +30,7 @@ pub struct Column {
 const D_MAX: f64 = 1.0 / (4.0 * M_MIN * M_MIN);
 
 /// Every column in the order the kernel writes them (and the report lists them).
-pub const COLUMNS: [Column; 31] = [
+pub const COLUMNS: [Column; 32] = [
     col("diffuse_lambert", "DIFFUSE_LAMBERT", 1, 1.0, "N·L of unit vectors"),
     col("specular_phong", "SPECULAR_PHONG", 1, 1.0, "(V·R)^h with V·R clamped to [0, 1]"),
     col("d_beckmann", "D_BECKMANN", 1, D_MAX, "peak 1/(4 m²) at m = M_MIN"),
@@ -80,6 +80,7 @@ pub const COLUMNS: [Column; 31] = [
     col("phong_h_from_m", "PHONG_H_FROM_M", 1, shadelab_model::guards::H_MAX, "2/m² − 2 clamped to [1, H_MAX]"),
     col("occluded", "OCCLUDED", 1, 0.8, "r_a·(1 + s·(occ − 1)) with r_a = 0.8, occ and s in [0, 1]"),
     col("emitted", "EMITTED", 3, 1.0, "I_e·texel with I_e = μ and the texel clamped to [0, 1]"),
+    Column { signed: true, ..col("normal_mapped", "NORMAL_MAPPED", 3, 1.0, "a unit vector, or N") },
 ];
 
 const fn col(name: &'static str, wgsl: &'static str, channels: usize, bound: f64, why_bound: &'static str) -> Column {
@@ -189,6 +190,7 @@ const ROUGHNESS_SCALED: usize = offset("ROUGHNESS_SCALED");
 const PHONG_H_FROM_M: usize = offset("PHONG_H_FROM_M");
 const OCCLUDED: usize = offset("OCCLUDED");
 const EMITTED: usize = offset("EMITTED");
+const NORMAL_MAPPED: usize = offset("NORMAL_MAPPED");
 
 /// The f64 reference of the kernel's outputs for one combination's inputs.
 ///
@@ -289,6 +291,11 @@ pub(super) fn reference(
     out[PHONG_H_FROM_M] = shadelab_model::scene::phong_h_from_m(m);
     out[OCCLUDED] = shadelab_model::scene::occluded(0.8, z, m);
     rgb(&mut out, EMITTED, shadelab_model::scene::emitted(mu, n_raw.to_array()));
+    // N turned by the raw normal as a texel in the frame of L as tangent (along N at normal
+    // incidence: no frame), its sign from V·L, scale h.
+    let w = if v.dot(l) < 0.0 { -1.0 } else { 1.0 };
+    let mapped = shadelab_model::scene::normal_mapped(n, [l.x, l.y, l.z, w], n_raw.to_array(), h);
+    rgb(&mut out, NORMAL_MAPPED, mapped.to_array());
     out
 }
 

@@ -305,3 +305,75 @@ fn hostile_textures_get_one_line_and_no_panic() {
     let img = render_reference(&s, SpecularModel::CookTorrance, 32, 18);
     assert!(img.pixels.iter().flatten().all(|c| c.is_finite()));
 }
+
+/// One triangle facing +z with a normal texture: POSITION, NORMAL (unless `normals` is false),
+/// TEXCOORD_0 (unless `uvs` is false) and, with `tangent`, that TANGENT at every vertex.
+fn normal_mapped_triangle(normals: bool, uvs: bool, tangent: Option<[f32; 4]>) -> Vec<u8> {
+    let mut bin = f32s(&[0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0, 0.0]);
+    bin.extend(f32s(&[0.0, 0.0, 1.0, 0.0, 0.0, 1.0]));
+    bin.extend(f32s(&[0.0, 0.0, 1.0, 0.0, 0.0, 1.0, 0.0, 0.0, 1.0]));
+    let t = tangent.unwrap_or([0.0; 4]);
+    bin.extend(f32s(&[t, t, t].concat()));
+    let mut attributes = json!({ "POSITION": 0 });
+    if uvs {
+        attributes["TEXCOORD_0"] = json!(1);
+    }
+    if normals {
+        attributes["NORMAL"] = json!(2);
+    }
+    if tangent.is_some() {
+        attributes["TANGENT"] = json!(3);
+    }
+    let flat = png(1, 1, &[128, 128, 255, 255]);
+    let doc = json!({
+        "asset": { "version": "2.0" },
+        "scenes": [{ "nodes": [0] }],
+        "nodes": [{ "mesh": 0 }],
+        "meshes": [{ "primitives": [{ "attributes": attributes, "material": 0 }] }],
+        "materials": [{ "normalTexture": { "index": 0, "scale": 0.5 } }],
+        "textures": [{ "source": 0 }],
+        "images": [png_uri(&flat)],
+        "accessors": [
+            { "bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3", "min": [0, 0, 0], "max": [1, 1, 0] },
+            { "bufferView": 1, "componentType": 5126, "count": 3, "type": "VEC2" },
+            { "bufferView": 2, "componentType": 5126, "count": 3, "type": "VEC3" },
+            { "bufferView": 3, "componentType": 5126, "count": 3, "type": "VEC4" },
+        ],
+        "bufferViews": [
+            { "buffer": 0, "byteLength": 36 },
+            { "buffer": 0, "byteOffset": 36, "byteLength": 24 },
+            { "buffer": 0, "byteOffset": 60, "byteLength": 36 },
+            { "buffer": 0, "byteOffset": 96, "byteLength": 48 },
+        ],
+    });
+    with_buffer(doc, &bin)
+}
+
+/// The warnings about the normal texture and the tangents (the file has no light or camera).
+fn tangent_warnings(s: &LoadedScene) -> Vec<&String> {
+    s.warnings.iter().filter(|w| w.contains("TANGENT") || w.contains("normal")).collect()
+}
+
+#[test]
+fn a_normal_texture_gets_the_files_tangents_or_mikktspace() {
+    // The file's own TANGENT is used as it is.
+    let s = load(&normal_mapped_triangle(true, true, Some([0.0, 1.0, 0.0, -1.0])));
+    assert_eq!(s.scene.materials[0].maps.normal.map(|n| n.scale), Some(0.5));
+    assert_eq!(s.scene.meshes[0].tangents.as_deref(), Some(&[[0.0, 1.0, 0.0, -1.0]; 3][..]));
+    assert!(tangent_warnings(&s).is_empty(), "{:?}", s.warnings);
+    // None in the file: MikkTSpace's, u along +x here.
+    let s = load(&normal_mapped_triangle(true, true, None));
+    let t = s.scene.meshes[0].tangents.as_ref().expect("generated tangents");
+    assert!(t.iter().all(|t| (t[0] - 1.0).abs() < 1e-5 && t[1].abs() < 1e-5 && t[3].abs() == 1.0), "{t:?}");
+    assert!(tangent_warnings(&s).is_empty(), "{:?}", s.warnings);
+    // No normals: glTF's flat ones, and MikkTSpace's tangents in them.
+    let s = load(&normal_mapped_triangle(false, true, None));
+    assert!(s.scene.meshes[0].tangents.is_some(), "{:?}", s.warnings);
+    // No texture coordinates: no frame, and the loader says so.
+    let s = load(&normal_mapped_triangle(true, false, None));
+    assert!(s.scene.meshes[0].tangents.is_none());
+    assert!(s.warnings.iter().any(|w| w.contains("normalTexture needs NORMAL and TEXCOORD_0")), "{:?}", s.warnings);
+    // A tangent that is not finite: warned about, and the texture leaves the normal there.
+    let s = load(&normal_mapped_triangle(true, true, Some([f32::NAN, 0.0, 0.0, 1.0])));
+    assert!(s.warnings.iter().any(|w| w.contains("TANGENT value is not finite")), "{:?}", s.warnings);
+}

@@ -126,7 +126,8 @@ fn texture_uv(uv: vec2<f32>, offset: vec2<f32>, rotation: f32, scale: vec2<f32>)
     return vec2(c * p.x + s * p.y, -s * p.x + c * p.y) + offset;
 }
 
-// A texture at `uv`, level 0, a non-finite coordinate read at NONFINITE_UV.
+// A texture at `uv` with the pixel's implicit derivatives (its sampler's filters and mipmap
+// levels: the reference's Texture::sample_footprint), a non-finite coordinate read at NONFINITE_UV.
 fn sample_slot(t: texture_2d<f32>, s: sampler, uv: vec2<f32>) -> vec4<f32> {
     var safe = uv;
     for (var i = 0; i < 2; i++) {
@@ -134,7 +135,7 @@ fn sample_slot(t: texture_2d<f32>, s: sampler, uv: vec2<f32>) -> vec4<f32> {
             safe[i] = NONFINITE_UV;
         }
     }
-    return textureSampleLevel(t, s, safe, 0.0);
+    return textureSample(t, s, safe);
 }
 #endif
 

@@ -200,6 +200,17 @@ case("image-view-past-buffer.gltf", "an image in a buffer view that ends past it
 case("sampler-out-of-range.gltf", "a texture whose sampler does not exist",
      "texture 0: sampler 5 does not exist",
      edited(textured({"uri": "data:image/png;base64," + base64.b64encode(png_header(1, 1)).decode()}, sampler=5)))
+case("normal-texture-out-of-range.gltf", "a normal texture index past the textures",
+     "material 0: normalTexture: texture 2 does not exist",
+     edited(lambda d: (textured({"uri": "data:image/png;base64," + base64.b64encode(png_header(1, 1)).decode()})(d),
+                       d["materials"][0].update(normalTexture={"index": 2}))))
+case("metal-roughness-texture-out-of-range.gltf", "a metallic–roughness texture index past the textures",
+     "material 0: metallicRoughnessTexture: texture 7 does not exist",
+     edited(lambda d: (textured({"uri": "data:image/png;base64," + base64.b64encode(png_header(1, 1)).decode()})(d),
+                       d["materials"][0]["pbrMetallicRoughness"].update(metallicRoughnessTexture={"index": 7}))))
+case("tangent-wrong-type.gltf", "a TANGENT accessor of VEC3 (glTF's is VEC4)",
+     "TANGENT",
+     edited(lambda d: d["meshes"][0]["primitives"][0]["attributes"].update(TANGENT=0)))
 case("sparse-indices-not-increasing.gltf", "a sparse accessor whose indices go back",
      "is not increasing or not below the count 8",
      edited(lambda d: d["accessors"][0].update(sparse={

@@ -125,3 +125,29 @@ fn untextured_scenes_carry_no_texture_code() {
         assert!(img.pixels.iter().flatten().all(|c| c.is_finite()), "{shading:?}");
     }
 }
+
+/// A checker seen far and at a grazing angle, minified many times: the GPU's mipmapped trilinear
+/// sampling matches the reference that builds the same chain and picks levels by the pixel's
+/// footprint, and is far from what level 0 alone gives (the aliasing mipmaps are there to stop).
+#[test]
+fn minified_textures_use_the_same_mipmaps_as_the_reference() {
+    let mut s =
+        shadelab_model::scene_variants::with_textured_floor(&shadelab_model::Scene::builtin("default").unwrap(), 32);
+    s.objects.retain(|o| matches!(o.shape, shadelab_model::Shape::Mesh(_)));
+    let t = s.materials[s.objects[0].material].base_color_texture.unwrap().texture;
+    s.textures[t].rgba8 = (0..64 * 64u32)
+        .flat_map(|k| if (k % 64 + k / 64) % 2 == 0 { [255; 4] } else { [0, 0, 0, 255] })
+        .collect::<Vec<u8>>()
+        .into();
+    s.camera.eye = glam::DVec3::new(0.0, 0.35, 4.0);
+    s.camera.target = glam::DVec3::new(0.0, 0.0, 0.0);
+    let (w, h) = (160, 90);
+    let img = render_image(gpu(), &s, w, h, &phong()).unwrap();
+    let same = compare(&img, &render_reference(&s, SpecularModel::CookTorrance, w, h)).stats.rmse;
+    let mut level0 = s.clone();
+    level0.textures[t].sampler.mipmap = None;
+    level0.textures[t].levels = Default::default();
+    let without = compare(&img, &render_reference(&level0, SpecularModel::CookTorrance, w, h)).stats.rmse;
+    eprintln!("minified checker: RMSE {same:.2e} against the mipmapped reference, {without:.2e} against level 0");
+    assert!(same < 1e-2 && without > 4.0 * same, "{same} vs {without}");
+}

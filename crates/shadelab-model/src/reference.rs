@@ -11,7 +11,7 @@ pub use shadow_rays::SHADOW_RAY_OFFSET_REL;
 
 use crate::lighting::shading::{shade, shade_with_visibility};
 use crate::params::SpecularModel;
-use crate::scene::{BACKGROUND, Material, Scene};
+use crate::scene::{BACKGROUND, Material, Scene, UvFootprint};
 use glam::DMat4;
 use intersect::trace;
 use shadow_rays::ShadowRays;
@@ -93,13 +93,24 @@ pub fn render_reference(scene: &Scene, specular: SpecularModel, width: u32, heig
             };
             let mi = scene.objects[hit.object].material;
             let material = &scene.materials[mi];
+            // The pixel's footprint in texture coordinates, as the GPU's derivatives take it: the
+            // differences across the 2×2 quad's pair of pixels in x and in y, on the same plane.
+            let footprint = hit.triangle.filter(|_| material.varies([1.0; 3])).and_then(|k| {
+                let uv_at = |px: u32, py: u32| {
+                    let (o, d) = scene.camera.ray(px, py, width, height);
+                    intersect::uv_on_triangle_plane(scene, &inverses, hit.object, k, o, d)
+                };
+                let (x0, y0) = (x & !1, y & !1);
+                let (a, b, c, d) = (uv_at(x0, y)?, uv_at(x0 + 1, y)?, uv_at(x, y0)?, uv_at(x, y0 + 1)?);
+                Some(UvFootprint { dx: [b[0] - a[0], b[1] - a[1]], dy: [d[0] - c[0], d[1] - c[1]] })
+            });
             // The shading normal, perturbed by the material's normal texture where it has one.
-            let n = material.normal_at(&scene.textures, hit.uv, hit.normal, hit.tangent);
+            let n = material.normal_at(&scene.textures, hit.uv, footprint.as_ref(), hit.normal, hit.tangent);
             let (p, eye) = (hit.point, scene.camera.eye_h());
             // The point's parameters in a copy of its material (the copies are made once, not per
             // pixel); its emission is added to whatever the model gives.
             let (mat, emission) = if material.varies(hit.vertex_color) {
-                let at = material.surface_at(&scene.textures, hit.uv, hit.vertex_color);
+                let at = material.surface_at(&scene.textures, hit.uv, footprint.as_ref(), hit.vertex_color);
                 let m = &mut tinted[mi];
                 (m.color, m.mu, m.m, m.h, m.r_a) = (at.color, at.mu, at.m, at.h, at.r_a);
                 (&*m, at.emission)

@@ -16,7 +16,10 @@ pub use material::{
     Material, MaterialMaps, MetalRoughnessMap, NormalMap, OcclusionMap, SurfacePoint, emitted, metallic_scaled,
     normal_mapped, occluded, phong_h_from_m, roughness_scaled, tinted_surface, vertex_tint,
 };
-pub use texture::{ColorSpace, Filter, Sampler, Texture, TextureRef, UvTransform, Wrap, srgb_to_linear, texture_uv};
+pub use texture::{
+    ColorSpace, Filter, Level, MipCache, Sampler, Texture, TextureRef, UvFootprint, UvTransform, Wrap, linear_to_srgb,
+    srgb_to_linear, texture_uv,
+};
 
 use crate::params::*;
 use crate::shadows::{ShadowFilter, ShadowSettings};

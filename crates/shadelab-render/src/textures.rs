@@ -75,20 +75,17 @@ fn address(w: Wrap) -> wgpu::AddressMode {
     }
 }
 
-/// A texture on the GPU: its image viewed as colour (sRGB decoded per texel) and as data, and
-/// its sampler, level 0 only (as the f64 reference samples it).
+/// A texture on the GPU as one colour space reads it: its image with its mipmap chain (the
+/// model's `Texture::mip_levels`, the bytes the f64 reference samples) where its sampler asks
+/// for mipmaps, and its sampler.
 pub(crate) struct GpuTexture {
-    srgb: wgpu::TextureView,
-    linear: wgpu::TextureView,
+    view: wgpu::TextureView,
     sampler: wgpu::Sampler,
 }
 
 impl GpuTexture {
-    pub(crate) fn view(&self, space: ColorSpace) -> &wgpu::TextureView {
-        match space {
-            ColorSpace::Srgb => &self.srgb,
-            ColorSpace::Linear => &self.linear,
-        }
+    pub(crate) fn view(&self) -> &wgpu::TextureView {
+        &self.view
     }
 
     pub(crate) fn sampler(&self) -> &wgpu::Sampler {
@@ -96,42 +93,58 @@ impl GpuTexture {
     }
 }
 
-/// Upload texture `t` once, with both views.
-pub(crate) fn upload(device: &wgpu::Device, queue: &wgpu::Queue, t: &Texture) -> GpuTexture {
+fn filter_mode(f: Filter) -> wgpu::FilterMode {
+    match f {
+        Filter::Nearest => wgpu::FilterMode::Nearest,
+        Filter::Linear => wgpu::FilterMode::Linear,
+    }
+}
+
+/// Upload texture `t` as `space` reads it: `Rgba8UnormSrgb` for colour (decoded per texel, then
+/// filtered), `Rgba8Unorm` for data, with every level of its chain when it is mipmapped.
+pub(crate) fn upload(device: &wgpu::Device, queue: &wgpu::Queue, t: &Texture, space: ColorSpace) -> GpuTexture {
+    let chain = t.mip_levels(space);
+    let levels = if t.sampler.mipmap.is_some() { &chain[..] } else { &chain[..1] };
     let size = wgpu::Extent3d { width: t.width, height: t.height, depth_or_array_layers: 1 };
     let texture = device.create_texture(&wgpu::TextureDescriptor {
         label: Some(&t.name),
         size,
-        mip_level_count: 1,
+        mip_level_count: levels.len() as u32,
         sample_count: 1,
         dimension: wgpu::TextureDimension::D2,
-        format: wgpu::TextureFormat::Rgba8Unorm,
+        format: match space {
+            ColorSpace::Srgb => wgpu::TextureFormat::Rgba8UnormSrgb,
+            ColorSpace::Linear => wgpu::TextureFormat::Rgba8Unorm,
+        },
         usage: wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST,
-        view_formats: &[wgpu::TextureFormat::Rgba8UnormSrgb],
+        view_formats: &[],
     });
-    queue.write_texture(
-        texture.as_image_copy(),
-        &t.rgba8,
-        wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: Some(4 * t.width), rows_per_image: Some(t.height) },
-        size,
-    );
-    let filter = match t.sampler.filter {
-        Filter::Nearest => wgpu::FilterMode::Nearest,
-        Filter::Linear => wgpu::FilterMode::Linear,
-    };
+    for (k, l) in levels.iter().enumerate() {
+        queue.write_texture(
+            wgpu::TexelCopyTextureInfo {
+                texture: &texture,
+                mip_level: k as u32,
+                origin: wgpu::Origin3d::ZERO,
+                aspect: wgpu::TextureAspect::All,
+            },
+            &l.rgba8,
+            wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: Some(4 * l.width), rows_per_image: Some(l.height) },
+            wgpu::Extent3d { width: l.width, height: l.height, depth_or_array_layers: 1 },
+        );
+    }
     let sampler = device.create_sampler(&wgpu::SamplerDescriptor {
         label: Some(&t.name),
         address_mode_u: address(t.sampler.wrap[0]),
         address_mode_v: address(t.sampler.wrap[1]),
-        mag_filter: filter,
-        min_filter: filter,
+        mag_filter: filter_mode(t.sampler.filter),
+        min_filter: filter_mode(t.sampler.min),
+        mipmap_filter: match t.sampler.mipmap {
+            Some(Filter::Linear) => wgpu::MipmapFilterMode::Linear,
+            _ => wgpu::MipmapFilterMode::Nearest,
+        },
         ..Default::default()
     });
-    let srgb = texture.create_view(&wgpu::TextureViewDescriptor {
-        format: Some(wgpu::TextureFormat::Rgba8UnormSrgb),
-        ..Default::default()
-    });
-    GpuTexture { srgb, linear: texture.create_view(&Default::default()), sampler }
+    GpuTexture { view: texture.create_view(&Default::default()), sampler }
 }
 
 /// The distinct slot sets of the scene's objects (the first is the empty set, for objects with

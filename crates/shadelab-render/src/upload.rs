@@ -4,6 +4,7 @@
 use crate::renderer::Renderer;
 use crate::uniforms::{GlobalsUniform, ObjectUniform};
 use crate::vertex::{FlatVertex, SmoothVertex};
+use shadelab_model::scene::ColorSpace;
 use shadelab_model::{Scene, Shape};
 use std::collections::HashMap;
 
@@ -221,8 +222,11 @@ impl Uploader {
         });
         // Each texture uploaded once; a slot without one reads a white texel (the identity of
         // every slot's rule).
-        let white = crate::textures::upload(device, &self.queue, &shadelab_model::Texture::solid("white", [255; 4]));
-        let textures: Vec<_> = scene.textures.iter().map(|t| crate::textures::upload(device, &self.queue, t)).collect();
+        let white = shadelab_model::Texture::solid("white", [255; 4]);
+        let white =
+            [ColorSpace::Srgb, ColorSpace::Linear].map(|s| crate::textures::upload(device, &self.queue, &white, s));
+        // Each scene texture once per colour space a slot reads it in.
+        let mut textures: HashMap<(usize, ColorSpace), crate::textures::GpuTexture> = HashMap::new();
         let (sets, object_bind_of) = crate::textures::bind_sets(scene);
         let objects_binds = sets
             .iter()
@@ -235,12 +239,22 @@ impl Uploader {
                         size: wgpu::BufferSize::new(size_of::<ObjectUniform>() as u64),
                     }),
                 }];
+                for (slot, (_, space)) in set.iter().zip(crate::textures::SLOTS) {
+                    if let Some(i) = slot {
+                        textures.entry((*i, space)).or_insert_with(|| {
+                            crate::textures::upload(device, &self.queue, &scene.textures[*i], space)
+                        });
+                    }
+                }
                 for (k, (slot, (_, space))) in set.iter().zip(crate::textures::SLOTS).enumerate() {
-                    let t = slot.map_or(&white, |i| &textures[i]);
+                    let t = match slot {
+                        Some(i) => &textures[&(*i, space)],
+                        None => &white[(space == ColorSpace::Linear) as usize],
+                    };
                     let k = k as u32;
                     entries.push(wgpu::BindGroupEntry {
                         binding: 1 + 2 * k,
-                        resource: wgpu::BindingResource::TextureView(t.view(space)),
+                        resource: wgpu::BindingResource::TextureView(t.view()),
                     });
                     entries.push(wgpu::BindGroupEntry {
                         binding: 2 + 2 * k,

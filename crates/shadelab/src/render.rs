@@ -181,20 +181,29 @@ fn interpolation_difference(
     Ok(())
 }
 
-/// The effect analysis of a scene with these settings, one line per decision (`--explain`).
+/// The effect analysis of a scene with these settings, one line per decision (`--explain`), and
+/// a line for each effect the analysis calls for that this shading mode's program leaves out.
 pub fn explain(scene: &shadelab_model::Scene, settings: &shadelab_render::RenderSettings) -> String {
     let a = shadelab_model::effects::analyze(scene, settings.specular);
+    let program = shadelab_render::Program::for_scene(scene, settings).effects();
     let model = shadelab_model::ModelChoice::of(scene.illumination, settings.specular);
     let mut s = format!(
         "# effects of scene '{}' with {} shading and the {} model — pipeline [{}]\n",
         scene.name,
         settings.shading,
         model,
-        a.key.label()
+        program.label()
     );
     for line in a.lines() {
         s.push_str(&line);
         s.push('\n');
+    }
+    let per = if settings.shading == shadelab_model::ShadingMode::Flat { "face" } else { "vertex" };
+    for e in a.key.effects().into_iter().filter(|e| !program.has(*e)) {
+        s.push_str(&format!(
+            "{e}: not drawn in {} shading — it varies the lighting per pixel, which this mode computes once per {per}; Phong shading draws it\n",
+            settings.shading
+        ));
     }
     s
 }

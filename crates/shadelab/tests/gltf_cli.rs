@@ -95,3 +95,24 @@ fn bad_scene_files_exit_2_with_one_line() {
     assert_eq!(o.status.code(), Some(2));
     assert!(error_lines(&o)[0].contains("--save-scene") && error_lines(&o)[0].contains(".gltf, .glb"));
 }
+
+/// `--explain` names the textures a per-vertex mode leaves to Phong shading, and its pipeline is
+/// the mode's own.
+#[test]
+fn explain_says_which_textures_a_mode_leaves_out() {
+    let png = out("explain-maps.png");
+    let run = |shading: &str| {
+        let mut args = vec!["render", "--explain", "--scene", "assets/textured-floor.gltf", "--shading", shading];
+        args.extend(["--width", "32", "--height", "18", "--output", png.as_str()]);
+        let o = shadelab(&args);
+        ok(&o);
+        String::from_utf8_lossy(&o.stdout).into_owned()
+    };
+    let flat = run("flat");
+    for e in ["metallic–roughness texture", "occlusion texture", "normal texture"] {
+        assert!(flat.contains(&format!("{e}: not drawn in flat shading")), "{flat}");
+    }
+    assert!(!flat.contains("mrtex") && flat.contains("+emit+emittex]"), "{flat}");
+    let phong = run("phong");
+    assert!(phong.contains("+mrtex+aotex+emit+emittex+normtex]") && !phong.contains("not drawn"), "{phong}");
+}

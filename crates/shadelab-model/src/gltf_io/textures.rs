@@ -131,13 +131,12 @@ impl Reader<'_> {
             rgba8: Arc::from(rgba.into_raw()),
             sampler,
             encoded: Some((Arc::from(bytes), mime)),
+            levels: Default::default(),
         }))
     }
 
-    /// Sampler `si` of texture `ti` (none: repeat and linear, glTF 2.0 §3.8.4). A value glTF does
-    /// not define is its default, with a warning; a minification filter other than the
-    /// magnification filter, or one that asks for mipmaps, is drawn with the magnification filter
-    /// at level 0, with a warning.
+    /// Sampler `si` of texture `ti` (none: repeat, linear and trilinear, glTF 2.0 §3.8.4 leaving
+    /// the filters to the viewer). A value glTF does not define is its default, with a warning.
     fn sampler(&mut self, si: Option<usize>, ti: usize) -> Result<Sampler, GltfError> {
         let Some(si) = si else { return Ok(Sampler::default()) };
         let s = self.get(&self.root.samplers, si, "sampler", &format!("texture {ti}: "))?;
@@ -160,29 +159,27 @@ impl Reader<'_> {
                 Filter::Linear
             }
         };
-        let min_same = match s.min_filter {
-            None => true,
-            Some(Checked::Valid(MinFilter::Nearest)) => filter == Filter::Nearest,
-            Some(Checked::Valid(MinFilter::Linear)) => filter == Filter::Linear,
-            Some(Checked::Valid(_)) => false,
+        // glTF's minFilter: a filter within a level, and the mipmap mode (none for NEAREST and
+        // LINEAR); absent, the viewer's choice: trilinear.
+        let (min, mipmap) = match s.min_filter {
+            None => (Filter::Linear, Some(Filter::Linear)),
+            Some(Checked::Valid(m)) => match m {
+                MinFilter::Nearest => (Filter::Nearest, None),
+                MinFilter::Linear => (Filter::Linear, None),
+                MinFilter::NearestMipmapNearest => (Filter::Nearest, Some(Filter::Nearest)),
+                MinFilter::LinearMipmapNearest => (Filter::Linear, Some(Filter::Nearest)),
+                MinFilter::NearestMipmapLinear => (Filter::Nearest, Some(Filter::Linear)),
+                MinFilter::LinearMipmapLinear => (Filter::Linear, Some(Filter::Linear)),
+            },
             Some(Checked::Invalid) => {
-                warnings.push(format!("{what}: minFilter is not a glTF filter"));
-                true
+                warnings.push(format!("{what}: minFilter is not a glTF filter: LINEAR_MIPMAP_LINEAR used"));
+                (Filter::Linear, Some(Filter::Linear))
             }
         };
-        if !min_same {
-            let min = match s.min_filter {
-                Some(Checked::Valid(m)) => format!("{m:?}"),
-                _ => "?".into(),
-            };
-            warnings.push(format!(
-                "{what}: minFilter {min} is drawn as magFilter {filter:?} at full resolution (no mipmaps yet)"
-            ));
-        }
         for w in warnings {
             self.cx.warn(w);
         }
-        Ok(Sampler { wrap, filter })
+        Ok(Sampler { wrap, filter, min, mipmap })
     }
 }
 
@@ -197,7 +194,15 @@ fn sampler_json(s: &Sampler) -> Value {
         Filter::Nearest => 9728,
         Filter::Linear => 9729,
     };
-    json!({ "magFilter": filter, "minFilter": filter, "wrapS": wrap(s.wrap[0]), "wrapT": wrap(s.wrap[1]) })
+    let min = match (s.min, s.mipmap) {
+        (Filter::Nearest, None) => 9728,
+        (Filter::Linear, None) => 9729,
+        (Filter::Nearest, Some(Filter::Nearest)) => 9984,
+        (Filter::Linear, Some(Filter::Nearest)) => 9985,
+        (Filter::Nearest, Some(Filter::Linear)) => 9986,
+        (Filter::Linear, Some(Filter::Linear)) => 9987,
+    };
+    json!({ "magFilter": filter, "minFilter": min, "wrapS": wrap(s.wrap[0]), "wrapT": wrap(s.wrap[1]) })
 }
 
 /// The `images`, `samplers` and `textures` arrays of a saved scene, texture `i` of the scene

@@ -32,6 +32,8 @@ pub(crate) struct SurfaceHit {
     /// GPU does (barycentric in object space is perspective-correct); (0, 0) and white elsewhere.
     pub uv: [f64; 2],
     pub vertex_color: [f64; 3],
+    /// The mesh triangle hit (file meshes only).
+    pub triangle: Option<usize>,
     /// The mesh's tangent at the point in world space (xyz carried by the object's transform, as
     /// the GPU's vertex stage does) and its bitangent sign w; zero without tangents.
     pub tangent: [f64; 4],
@@ -212,8 +214,8 @@ fn intersect_mesh(mesh: &TriangleMesh, o: DVec3, dir: DVec3) -> Option<MeshHit> 
 /// transform).
 pub(super) fn trace(scene: &Scene, inverses: &[DMat4], o: DVec3, dir: DVec3) -> Option<SurfaceHit> {
     // Ray parameter, object, shading and face normals, texture coordinates, vertex colour,
-    // object-space tangent.
-    type Best = (f64, usize, DVec3, DVec3, [f64; 2], [f64; 3], [f64; 4]);
+    // object-space tangent, mesh triangle.
+    type Best = (f64, usize, DVec3, DVec3, [f64; 2], [f64; 3], [f64; 4], Option<usize>);
     let mut best: Option<Best> = None;
     for (i, (obj, inv)) in scene.objects.iter().zip(inverses).enumerate() {
         let (lo, ld) = (inv.transform_point3(o), inv.transform_vector3(dir));
@@ -236,17 +238,17 @@ pub(super) fn trace(scene: &Scene, inverses: &[DMat4], o: DVec3, dir: DVec3) -> 
                     .as_ref()
                     .filter(|a| a.len() == mesh.positions.len())
                     .map_or([0.0; 4], |ts| interpolate(ts, tri, u, v));
-                Some((t, n, face, uv, color, tangent))
+                Some((t, n, face, uv, color, tangent, Some(k)))
             }),
-            shape => intersect_shape(shape, lo, ld).map(|(t, n)| (t, n, n, [0.0; 2], [1.0; 3], [0.0; 4])),
+            shape => intersect_shape(shape, lo, ld).map(|(t, n)| (t, n, n, [0.0; 2], [1.0; 3], [0.0; 4], None)),
         };
-        if let Some((t, n, face, uv, color, tangent)) = hit
+        if let Some((t, n, face, uv, color, tangent, k)) = hit
             && best.is_none_or(|b| t < b.0)
         {
-            best = Some((t, i, n, face, uv, color, tangent));
+            best = Some((t, i, n, face, uv, color, tangent, k));
         }
     }
-    best.map(|(t, i, n, face, uv, vertex_color, tangent)| {
+    best.map(|(t, i, n, face, uv, vertex_color, tangent, triangle)| {
         let to_world = scene.objects[i].transform.normal_matrix();
         let tw = scene.objects[i].transform.matrix().transform_vector3(DVec3::new(tangent[0], tangent[1], tangent[2]));
         SurfaceHit {
@@ -257,9 +259,48 @@ pub(super) fn trace(scene: &Scene, inverses: &[DMat4], o: DVec3, dir: DVec3) -> 
             uv,
             vertex_color,
             tangent: [tw.x, tw.y, tw.z, tangent[3]],
+            triangle,
         }
     })
 }
+
+/// The texture coordinates where the world ray `o + t·dir` meets the plane of triangle `k` of
+/// object `object`'s mesh, its barycentric weights extended past the edges: a neighbouring
+/// pixel's coordinates on the same surface, as the GPU's derivatives difference them. `None`
+/// without coordinates or for a ray along the plane.
+pub(super) fn uv_on_triangle_plane(
+    scene: &Scene,
+    inverses: &[DMat4],
+    object: usize,
+    k: usize,
+    o: DVec3,
+    dir: DVec3,
+) -> Option<[f64; 2]> {
+    let Shape::Mesh(m) = scene.objects.get(object)?.shape else { return None };
+    let mesh = scene.meshes.get(m)?;
+    let uvs = mesh.uvs.as_ref().filter(|a| a.len() == mesh.positions.len())?;
+    let [p0, p1, p2] = mesh.triangle(k);
+    let inv = inverses.get(object)?;
+    let (lo, ld) = (inv.transform_point3(o), inv.transform_vector3(dir));
+    let (e1, e2) = (p1 - p0, p2 - p0);
+    let nf = e1.cross(e2);
+    let denom = nf.dot(ld);
+    if denom.abs() <= RAY_PLANE_DENOM_MIN * nf.length() * ld.length() {
+        return None;
+    }
+    let w = lo + ld * (nf.dot(p0 - lo) / denom) - p0;
+    let (d00, d01, d11, d20, d21) = (e1.dot(e1), e1.dot(e2), e2.dot(e2), w.dot(e1), w.dot(e2));
+    let den = d00 * d11 - d01 * d01;
+    if den.abs() <= f64::MIN_POSITIVE {
+        return None;
+    }
+    let (u, v) = ((d11 * d20 - d01 * d21) / den, (d00 * d21 - d01 * d20) / den);
+    Some(interpolate(uvs, mesh.indices[k], u, v))
+}
+
+/// A ray this close to a triangle's plane (the sine of the angle between them) meets it nowhere
+/// useful: the footprint there is unbounded, and the GPU would pick the coarsest level anyway.
+const RAY_PLANE_DENOM_MIN: f64 = 1e-12;
 
 /// Whether any object's surface crosses the world ray `o + t·dir` for `t` in (`RAY_T_MIN`,
 /// `t_max`): the shadow ray's test, stopping at the first occluder found.

@@ -1,7 +1,7 @@
 //! Surface materials: the parameters of the chapter's model per surface (docs/model.md §3, §5,
 //! §7).
 
-use super::{ColorSpace, Texture, TextureRef};
+use super::{ColorSpace, Texture, TextureRef, UvFootprint};
 use crate::guards::NORMALIZE_MIN_LEN2;
 use crate::lighting::common::safe_normalize;
 use crate::params::PhongExponent;
@@ -134,14 +134,21 @@ impl Material {
         std::array::from_fn(|i| self.color[i] + back[i])
     }
 
-    /// The material at a point with texture coordinates `uv` and vertex colour `vertex_color`:
+    /// The material at a point with texture coordinates `uv` (the pixel's `footprint` in them
+    /// choosing each texture's mipmap level; `None`: level 0) and vertex colour `vertex_color`:
     /// C and μ tinted by the vertex colour and base colour texture ([`tinted_surface`]), after
     /// the metallic–roughness texel's metal scale ([`metallic_scaled`]); m scaled by its
     /// roughness ([`roughness_scaled`]) and h following m ([`phong_h_from_m`]); `r_a` by the
     /// occlusion texel ([`occluded`]); I_e by the emissive texel ([`emitted`]). A texture index
     /// past `textures` counts as none.
-    pub fn surface_at(&self, textures: &[Texture], uv: [f64; 2], vertex_color: [f64; 3]) -> SurfacePoint {
-        let sample = |r: &TextureRef, space| textures.get(r.texture).map(|t| t.sample_as(r.transform.apply(uv), space));
+    pub fn surface_at(
+        &self,
+        textures: &[Texture],
+        uv: [f64; 2],
+        footprint: Option<&UvFootprint>,
+        vertex_color: [f64; 3],
+    ) -> SurfacePoint {
+        let sample = |r: &TextureRef, space| sample_ref(textures, r, uv, footprint, space);
         let texel = self.base_color_texture.and_then(|r| sample(&r, ColorSpace::Srgb)).unwrap_or([1.0; 4]);
         let tint = vertex_tint(vertex_color);
         let t = std::array::from_fn(|i| tint[i] * texel[i]);
@@ -168,15 +175,38 @@ impl Material {
 }
 
 impl Material {
-    /// The shading normal at a point with texture coordinates `uv`, unit normal `n` and tangent
+    /// The shading normal at a point with texture coordinates `uv` (and `footprint`), unit normal `n` and tangent
     /// `tangent` (xyz, and the bitangent's sign w): `n` perturbed by the normal texture
     /// ([`normal_mapped`]), or `n` itself without one.
-    pub fn normal_at(&self, textures: &[Texture], uv: [f64; 2], n: DVec3, tangent: [f64; 4]) -> DVec3 {
+    pub fn normal_at(
+        &self,
+        textures: &[Texture],
+        uv: [f64; 2],
+        footprint: Option<&UvFootprint>,
+        n: DVec3,
+        tangent: [f64; 4],
+    ) -> DVec3 {
         let Some(map) = &self.maps.normal else { return n };
-        let Some(t) = textures.get(map.texture.texture) else { return n };
-        let x = t.sample_as(map.texture.transform.apply(uv), ColorSpace::Linear);
+        let Some(x) = sample_ref(textures, &map.texture, uv, footprint, ColorSpace::Linear) else { return n };
         normal_mapped(n, tangent, [x[0], x[1], x[2]], map.scale)
     }
+}
+
+/// Texture `r` at `uv` as `space` reads it, at the level `footprint` picks (level 0 without one);
+/// `None` for an index past `textures`.
+fn sample_ref(
+    textures: &[Texture],
+    r: &TextureRef,
+    uv: [f64; 2],
+    footprint: Option<&UvFootprint>,
+    space: ColorSpace,
+) -> Option<[f64; 4]> {
+    let t = textures.get(r.texture)?;
+    let uv = r.transform.apply(uv);
+    Some(match footprint {
+        Some(f) => t.sample_footprint(uv, &r.transform.footprint(f), space),
+        None => t.sample_as(uv, space),
+    })
 }
 
 /// glTF's normal texture: the texel `2·x − 1` in the frame (T, B = w·N×T, N), x and y scaled by
@@ -320,7 +350,7 @@ mod tests {
         let textures = [tex([0, 128, 0, 255]), tex([64, 0, 0, 255]), tex([255, 255, 255, 255])];
         let r = |texture| TextureRef { texture, ..Default::default() };
         let plain = Material { emission: [0.2; 3], ..Material::default() };
-        let at = plain.surface_at(&textures, [0.5; 2], [1.0; 3]);
+        let at = plain.surface_at(&textures, [0.5; 2], None, [1.0; 3]);
         assert_eq!((at.m, at.r_a, at.emission, at.h), (plain.m, plain.r_a, [0.2; 3], plain.h));
         let mut mapped = plain.clone();
         mapped.maps = MaterialMaps {
@@ -329,7 +359,7 @@ mod tests {
             emissive: Some(r(2)),
             normal: None,
         };
-        let at = mapped.surface_at(&textures, [0.5; 2], [1.0; 3]);
+        let at = mapped.surface_at(&textures, [0.5; 2], None, [1.0; 3]);
         let g = 128.0 / 255.0;
         assert!((at.m - plain.m * g * g).abs() < 1e-12, "{}", at.m);
         assert_eq!(at.h, PhongExponent::from_m(at.m));

@@ -92,8 +92,14 @@ fn box_textured_shows_its_texture_and_round_trips() {
     assert!(t.width > 1 && t.height > 1);
     assert!(s.scene.materials[0].base_color_texture.is_some());
     assert!(s.scene.meshes[0].uvs.is_some());
-    // Its sampler asks for mipmaps: said, not silently dropped.
-    assert!(s.warnings.iter().any(|w| w.contains("minFilter")), "{:?}", s.warnings);
+    // Its sampler asks for NEAREST_MIPMAP_LINEAR, and gets it.
+    assert_eq!(
+        (t.sampler.min, t.sampler.mipmap),
+        (crate::Filter::Nearest, Some(crate::Filter::Linear)),
+        "{:?}",
+        t.sampler
+    );
+    assert!(!s.warnings.iter().any(|w| w.contains("minFilter")), "{:?}", s.warnings);
     assert!(!s.warnings.iter().any(|w| w.contains("texture") && w.contains("ignored")), "{:?}", s.warnings);
     // The logo's colours show; the same box without its texture is one colour per face.
     let with = distinct_colors(&s.scene);
@@ -164,10 +170,11 @@ fn a_texture_in_a_file_is_sampled_by_the_reference() {
     // 2×1: red, then blue; nearest filter; u < ½ is red.
     let img = png(2, 1, &[255, 0, 0, 255, 0, 0, 255, 255]);
     let s = load(&textured_triangle(png_uri(&img), json!({ "magFilter": 9728, "minFilter": 9728 }), json!({})));
-    assert!(s.warnings.is_empty() || !s.warnings.iter().any(|w| w.contains("minFilter")), "{:?}", s.warnings);
+    assert!(!s.warnings.iter().any(|w| w.contains("minFilter")), "{:?}", s.warnings);
+    assert_eq!(s.scene.textures[0].sampler.mipmap, None, "NEAREST: level 0 only");
     let m = &s.scene.materials[0];
-    let red = m.surface_at(&s.scene.textures, [0.25, 0.5], [1.0; 3]).color;
-    let blue = m.surface_at(&s.scene.textures, [0.75, 0.5], [1.0; 3]).color;
+    let red = m.surface_at(&s.scene.textures, [0.25, 0.5], None, [1.0; 3]).color;
+    let blue = m.surface_at(&s.scene.textures, [0.75, 0.5], None, [1.0; 3]).color;
     assert!(red[0] > 0.9 && red[2] == 0.0 && blue[2] > 0.9 && blue[0] == 0.0, "{red:?} {blue:?}");
 }
 

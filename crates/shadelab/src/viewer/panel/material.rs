@@ -30,6 +30,12 @@ impl Viewer {
             }
         });
         ui.small(format!("μ = ({:.3}, {:.3}, {:.3})", mat.mu[0], mat.mu[1], mat.mu[2]));
+        if let Some(line) = textures_line(mat) {
+            ui.small(line).on_hover_text(
+                "Textures scale these parameters per pixel (docs/textures.md); the sliders set what they scale. \
+                 Metallic–roughness, occlusion and normal textures are drawn in Phong shading.",
+            );
+        }
         slider(ui, &mut mat.m, &params::M, false);
         let mut mirror = mat.h.is_mirror();
         let mut h = mat.h.value();
@@ -72,5 +78,46 @@ impl Viewer {
         if named_slider(ui, &mut amb, &params::UNIT, "I_amb", "ambient intensity I_amb of the scene") {
             self.scene.ambient = [amb; 3];
         }
+    }
+}
+
+/// The material's textures and emission, one short line (`None`: it has neither).
+fn textures_line(m: &shadelab_model::Material) -> Option<String> {
+    let maps = &m.maps;
+    let names: Vec<&str> = [
+        (m.base_color_texture.is_some(), "base colour"),
+        (maps.metal_roughness.is_some(), "metallic–roughness"),
+        (maps.occlusion.is_some(), "occlusion"),
+        (maps.emissive.is_some(), "emissive"),
+        (maps.normal.is_some(), "normal"),
+    ]
+    .into_iter()
+    .filter_map(|(has, name)| has.then_some(name))
+    .collect();
+    let emits = m.emission.iter().any(|e| *e > 0.0);
+    let e = m.emission;
+    match (names.is_empty(), emits) {
+        (true, false) => None,
+        (true, true) => Some(format!("emits I_e = ({:.2}, {:.2}, {:.2})", e[0], e[1], e[2])),
+        (false, false) => Some(format!("textures: {}", names.join(", "))),
+        (false, true) => {
+            Some(format!("textures: {}; emits I_e = ({:.2}, {:.2}, {:.2})", names.join(", "), e[0], e[1], e[2]))
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn the_textures_line_names_each_texture_and_the_emission() {
+        let s = shadelab_model::assets::textured_floor();
+        let floor = s.objects.iter().find(|o| matches!(o.shape, shadelab_model::Shape::Mesh(_))).unwrap();
+        assert_eq!(
+            super::textures_line(&s.materials[floor.material]).as_deref(),
+            Some(
+                "textures: base colour, metallic–roughness, occlusion, emissive, normal; emits I_e = (0.30, 0.15, 0.05)"
+            )
+        );
+        assert_eq!(super::textures_line(&shadelab_model::Material::default()), None);
     }
 }

@@ -209,7 +209,7 @@ case("metal-roughness-texture-out-of-range.gltf", "a metallic–roughness textur
      edited(lambda d: (textured({"uri": "data:image/png;base64," + base64.b64encode(png_header(1, 1)).decode()})(d),
                        d["materials"][0]["pbrMetallicRoughness"].update(metallicRoughnessTexture={"index": 7}))))
 case("tangent-wrong-type.gltf", "a TANGENT accessor of VEC3 (glTF's is VEC4)",
-     "TANGENT",
+     "mesh 0 primitive 0: TANGENT: accessor 0 is Vec3 of F32; Vec4 of FLOAT",
      edited(lambda d: d["meshes"][0]["primitives"][0]["attributes"].update(TANGENT=0)))
 case("sparse-indices-not-increasing.gltf", "a sparse accessor whose indices go back",
      "is not increasing or not below the count 8",

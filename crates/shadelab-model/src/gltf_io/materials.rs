@@ -75,7 +75,12 @@ impl Reader<'_> {
                     .map(|texture| MetalRoughnessMap { texture, metallic_f0: mf0 });
             }
             if let Some(o) = &m.occlusion_texture {
-                let info = plain_info(o.index, o.tex_coord);
+                let info = self.slot_info(
+                    o.index,
+                    o.tex_coord,
+                    o.extensions.as_ref().map(|e| &e.others),
+                    &slot("occlusionTexture"),
+                )?;
                 let strength = (o.strength.0 as f64).clamp(0.0, 1.0);
                 if !o.strength.0.is_finite() {
                     return Err(self.cx.invalid(slot("occlusionTexture: strength is not finite")));
@@ -85,7 +90,12 @@ impl Reader<'_> {
                     .map(|texture| OcclusionMap { texture, strength });
             }
             if let Some(nt) = &m.normal_texture {
-                let info = plain_info(nt.index, nt.tex_coord);
+                let info = self.slot_info(
+                    nt.index,
+                    nt.tex_coord,
+                    nt.extensions.as_ref().map(|e| &e.others),
+                    &slot("normalTexture"),
+                )?;
                 if !nt.scale.is_finite() {
                     return Err(self.cx.invalid(slot("normalTexture: scale is not finite")));
                 }
@@ -113,6 +123,30 @@ impl Reader<'_> {
             self.cx.warn(format!("material properties not drawn yet: {}", unused.join(", ")));
         }
         Ok(())
+    }
+
+    /// A `textureInfo` for the normal and occlusion slots (`what`), whose extensions the glTF crate
+    /// keeps as plain JSON: their `KHR_texture_transform` read from it (a malformed one is an
+    /// error), any other extension warned about.
+    fn slot_info(
+        &mut self,
+        index: json::Index<json::Texture>,
+        tex_coord: u32,
+        others: Option<&serde_json::Map<String, Value>>,
+        what: &str,
+    ) -> Result<json::texture::Info, GltfError> {
+        let mut texture_transform = None;
+        for (name, v) in others.into_iter().flatten() {
+            if name == "KHR_texture_transform" {
+                let t = serde_json::from_value::<json::extensions::texture::TextureTransform>(v.clone())
+                    .map_err(|e| self.cx.invalid(format!("{what}: KHR_texture_transform: {e}")))?;
+                texture_transform = Some(t);
+            } else {
+                self.cx.warn(format!("{what}: extension {name} is not read"));
+            }
+        }
+        let extensions = Some(json::extensions::texture::Info { texture_transform, others: Default::default() });
+        Ok(json::texture::Info { index, tex_coord, extensions, extras: Default::default() })
     }
 
     /// Material `i` from its factors and extras, and its `M·F0` for a metallic–roughness texture.
@@ -169,12 +203,6 @@ impl Reader<'_> {
         }
         Ok((mat, mf0))
     }
-}
-
-/// A `textureInfo` for the normal and occlusion slots, whose own extensions the glTF crate does
-/// not read (their `KHR_texture_transform` is not applied; docs/scene-files.md says so).
-fn plain_info(index: json::Index<json::Texture>, tex_coord: u32) -> json::texture::Info {
-    json::texture::Info { index, tex_coord, extensions: None, extras: Default::default() }
 }
 
 /// glTF's F0 of a material's dielectric part (ior and `KHR_materials_specular`).
@@ -319,15 +347,17 @@ pub(super) fn write_material(m: &Material, extensions_used: &mut Vec<&'static st
         out["pbrMetallicRoughness"]["metallicRoughnessTexture"] = info(&mr.texture, extensions_used);
     }
     if let Some(o) = &m.maps.occlusion {
-        // The occlusion slot's transform is not read back (see `plain_info`): written plain.
-        out["occlusionTexture"] = json!({ "index": o.texture.texture, "strength": num(o.strength) });
+        let mut slot = info(&o.texture, extensions_used);
+        slot["strength"] = num(o.strength);
+        out["occlusionTexture"] = slot;
     }
     if let Some(t) = &m.maps.emissive {
         out["emissiveTexture"] = info(t, extensions_used);
     }
     if let Some(n) = &m.maps.normal {
-        // Like the occlusion slot, written without a transform.
-        out["normalTexture"] = json!({ "index": n.texture.texture, "scale": num(n.scale) });
+        let mut slot = info(&n.texture, extensions_used);
+        slot["scale"] = num(n.scale);
+        out["normalTexture"] = slot;
     }
     if m.emission != [0.0; 3] {
         out["emissiveFactor"] = rgb(m.emission);

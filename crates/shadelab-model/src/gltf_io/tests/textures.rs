@@ -384,3 +384,26 @@ fn a_normal_texture_gets_the_files_tangents_or_mikktspace() {
     let s = load(&normal_mapped_triangle(true, true, Some([f32::NAN, 0.0, 0.0, 1.0])));
     assert!(s.warnings.iter().any(|w| w.contains("TANGENT value is not finite")), "{:?}", s.warnings);
 }
+
+#[test]
+fn the_normal_and_occlusion_slots_read_their_texture_transform() {
+    let mut doc: Value = serde_json::from_slice(&normal_mapped_triangle(true, true, None)).unwrap();
+    let transform = json!({ "KHR_texture_transform": { "offset": [0.5, 0.0], "scale": [2.0, 2.0] } });
+    doc["materials"][0]["normalTexture"]["extensions"] = transform.clone();
+    doc["materials"][0]["occlusionTexture"] = json!({ "index": 0, "strength": 0.5, "extensions": transform });
+    doc["extensionsUsed"] = json!(["KHR_texture_transform"]);
+    let s = load(&serde_json::to_vec(&doc).unwrap());
+    let m = &s.scene.materials[0];
+    let (n, o) = (m.maps.normal.unwrap(), m.maps.occlusion.unwrap());
+    for t in [n.texture.transform, o.texture.transform] {
+        assert_eq!((t.offset, t.scale), ([0.5, 0.0], [2.0, 2.0]), "{:?}", s.warnings);
+    }
+    assert_eq!(o.strength, 0.5);
+    // Saved and read back: the same transforms.
+    let again = load(&crate::gltf_io::scene_to_glb(&s.scene, &s.settings));
+    assert_eq!(again.scene.materials[0].maps, m.maps);
+    // A malformed one is an error naming its slot.
+    doc["materials"][0]["normalTexture"]["extensions"] = json!({ "KHR_texture_transform": { "scale": "big" } });
+    let e = error_of(&serde_json::to_vec(&doc).unwrap());
+    assert!(e.contains("material 0: normalTexture: KHR_texture_transform"), "{e}");
+}

@@ -110,6 +110,7 @@ pub fn with_textured_floor(scene: &Scene, level: u32) -> Scene {
         .collect();
     s.textures.push(Texture { width: side, height: side, rgba8: rgba8.into(), ..Texture::solid("checker", [0; 4]) });
     let mut material = s.materials[s.objects[i].material].clone();
+    material.name = format!("textured {}", material.name);
     material.base_color_texture = Some(TextureRef { texture: s.textures.len() - 1, ..Default::default() });
     s.materials.push(material);
     s.objects[i].material = s.materials.len() - 1;

@@ -472,3 +472,22 @@ fn a_large_file_opens_with_progress_and_can_be_cancelled() {
     assert!(!h.state().message().unwrap().1, "{:?}", h.state().message());
     assert_eq!(h.state_mut().scene_mut().triangle_count(), triangles);
 }
+
+/// A textured file in the viewer: it opens without an error, and the panel names the textures of
+/// the material picked.
+#[test]
+fn the_panel_names_a_materials_textures() {
+    let mut h = harness();
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
+    h.state_mut().open_file(&root.join("assets/textured-floor.gltf"));
+    wait_loaded(&mut h);
+    assert!(!h.state().message().unwrap().1, "{:?}", h.state().message());
+    h.run_steps(2);
+    assert!(h.query_by_label_contains("textures:").is_none(), "the first sphere has none");
+    h.get_by_label("material").click();
+    h.run_steps(2);
+    h.get_by_label("textured ground").click();
+    h.run_steps(3);
+    let line = "textures: base colour, metallic–roughness, occlusion, emissive, normal; emits I_e = (0.30, 0.15, 0.05)";
+    h.get_by_label(line).scroll_to_me();
+}

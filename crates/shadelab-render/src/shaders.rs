@@ -8,7 +8,7 @@
 use shadelab_model::effects::EffectKey;
 
 /// `(file name, source)` in the order they are concatenated.
-pub const FILES: [(&str, &str); 8] = [
+pub const FILES: [(&str, &str); 9] = [
     ("common.wgsl", include_str!("../../../shaders/common.wgsl")),
     ("brdf.wgsl", include_str!("../../../shaders/brdf.wgsl")),
     ("models.wgsl", include_str!("../../../shaders/models.wgsl")),
@@ -20,6 +20,8 @@ pub const FILES: [(&str, &str); 8] = [
     // Only in permutations with cast shadows (the whole file is one `#if EFFECT_CAST_SHADOWS`).
     ("shadows.wgsl", include_str!("../../../shaders/shadows.wgsl")),
     ("shading.wgsl", include_str!("../../../shaders/shading.wgsl")),
+    // Gouraud's and Phong shading's stages with screen-space interpolation.
+    ("screen_space.wgsl", include_str!("../../../shaders/screen_space.wgsl")),
 ];
 
 /// Keep or cut the `#if NAME` / `#else` / `#endif` blocks of a WGSL source: a block is kept when

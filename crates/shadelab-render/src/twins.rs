@@ -9,7 +9,7 @@ use shadelab_model::params::NamedValue;
 use shadelab_model::{FalloffForm, IlluminationModel, LightKind, SpecularModel};
 
 /// Each WGSL file and the source of its f64 twin.
-const TWINS: [(&str, &str); 8] = [
+const TWINS: [(&str, &str); 9] = [
     ("common.wgsl", include_str!("../../shadelab-model/src/lighting/common.rs")),
     ("brdf.wgsl", include_str!("../../shadelab-model/src/lighting/brdf.rs")),
     ("models.wgsl", include_str!("../../shadelab-model/src/lighting/models.rs")),
@@ -38,6 +38,8 @@ const TWINS: [(&str, &str); 8] = [
         ),
     ),
     ("shading.wgsl", include_str!("../../shadelab-model/src/lighting/shading.rs")),
+    // Stages only: their counterpart is the reference's exact per-pixel image.
+    ("screen_space.wgsl", include_str!("../../shadelab-model/src/lighting/shading.rs")),
 ];
 
 /// WGSL functions with no f64 twin, by file, and why. (Entry points are left out by naga's list:
@@ -66,7 +68,7 @@ const NO_TWIN: [(&str, &str, &str); 31] = [
     ("shading.wgsl", "normal_to_world", "the normal transform; its f64 side is Transform::normal_matrix"),
     ("shading.wgsl", "gouraud_vertex", "Gouraud's vertex stage; the reference lights every pixel exactly"),
     ("shading.wgsl", "phong_vertex", "Phong shading's vertex stage; the reference lights every pixel exactly"),
-    ("shading.wgsl", "screen_or_perspective", "the rasterizer's screen-space interpolant; the reference has none"),
+    ("screen_space.wgsl", "screen_or_perspective", "the rasterizer's screen-space interpolant; the reference has none"),
     ("shading.wgsl", "vertex_seed", "the shadow filter's noise seed; the reference traces exact shadow rays"),
     ("shadows.wgsl", "shadow_rotation", "the Poisson filter's per-pixel noise; the reference has no filter"),
     ("shadows.wgsl", "shadow_compare", "samples the shadow map; the reference traces rays instead"),

@@ -67,12 +67,12 @@ impl Program {
     /// `settings.specialization` picks (the scene's analysis, all of them, or a given set).
     pub fn for_scene(scene: &Scene, settings: &RenderSettings) -> Program {
         let effects = match settings.specialization {
-            // The metallic–roughness and occlusion textures vary the lighting per pixel, which
-            // flat and Gouraud shading compute per face or vertex: Phong shading draws them.
-            Specialization::Specialized if settings.shading != ShadingMode::Phong => {
-                effects::analyze(scene, settings.specular).key.without_all(&PER_PIXEL_LIGHTING)
+            Specialization::Specialized => {
+                let key = effects::analyze(scene, settings.specular).key;
+                // The lighting maps vary the lighting per pixel, which flat and Gouraud shading
+                // compute per face or vertex: Phong shading draws them.
+                if settings.shading == ShadingMode::Phong { key } else { key.without_all(&PER_PIXEL_LIGHTING) }
             }
-            Specialization::Specialized => effects::analyze(scene, settings.specular).key,
             Specialization::Uber => EffectKey::UBER,
             Specialization::Fixed(k) => k,
         };

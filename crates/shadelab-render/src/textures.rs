@@ -6,7 +6,7 @@
 
 use crate::vertex::SurfaceVertex;
 use shadelab_model::mesh::TriangleMesh;
-use shadelab_model::scene::ColorSpace;
+use shadelab_model::scene::{ColorSpace, Level};
 use shadelab_model::{Filter, Object, Scene, Texture, Wrap};
 
 /// The material texture slots, in binding order: slot k is bound at `1 + 2k` (texture) and
@@ -103,8 +103,12 @@ fn filter_mode(f: Filter) -> wgpu::FilterMode {
 /// Upload texture `t` as `space` reads it: `Rgba8UnormSrgb` for colour (decoded per texel, then
 /// filtered), `Rgba8Unorm` for data, with every level of its chain when it is mipmapped.
 pub(crate) fn upload(device: &wgpu::Device, queue: &wgpu::Queue, t: &Texture, space: ColorSpace) -> GpuTexture {
-    let chain = t.mip_levels(space);
-    let levels = if t.sampler.mipmap.is_some() { &chain[..] } else { &chain[..1] };
+    // Without mipmaps the image alone: no chain is made.
+    let chain = match t.sampler.mipmap {
+        Some(_) => t.mip_levels(space),
+        None => std::sync::Arc::new(vec![Level { width: t.width, height: t.height, rgba8: t.rgba8.clone() }]),
+    };
+    let levels = &chain[..];
     let size = wgpu::Extent3d { width: t.width, height: t.height, depth_or_array_layers: 1 };
     let texture = device.create_texture(&wgpu::TextureDescriptor {
         label: Some(&t.name),

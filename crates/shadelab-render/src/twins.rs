@@ -214,6 +214,15 @@ fn wgsl_codes_equal_rust_codes() {
             assert!(rust.iter().any(|(n, _)| *n == name), "{name} has no Rust code()");
         }
     }
+    // The object's texture-slot bits (`textures::MAP_BITS`, slot 0 has no WGSL name: the base
+    // colour texture is sampled whenever its effect is in).
+    let lighting = parse(&lighting_source());
+    for (name, bit) in ["MAP_METAL_ROUGHNESS", "MAP_OCCLUSION", "MAP_EMISSIVE", "MAP_NORMAL"]
+        .into_iter()
+        .zip(&crate::textures::MAP_BITS[1..])
+    {
+        assert_eq!(wgsl_constant(&lighting, name), Some(*bit as f64), "{name}: WGSL vs textures::MAP_BITS");
+    }
     // Codes are distinct within a kind.
     for prefix in ["LIGHT_", "FALLOFF_", "SPECULAR_", "ILLUMINATION_"] {
         let mut codes: Vec<u32> = rust.iter().filter(|(n, _)| n.starts_with(prefix)).map(|(_, c)| *c).collect();

@@ -49,7 +49,8 @@ impl Default for Sampler {
 pub struct Level {
     pub width: u32,
     pub height: u32,
-    pub rgba8: Vec<u8>,
+    /// Level 0 shares the texture's own pixels.
+    pub rgba8: Arc<[u8]>,
 }
 
 /// How a texture's derivatives of (u, v) along the image's x and y are given to the sampler:
@@ -81,7 +82,7 @@ pub struct Texture {
 
 /// A texture's mipmap chains, once made (not part of its value: equality ignores it).
 #[derive(Clone, Debug, Default)]
-pub struct MipCache(std::sync::OnceLock<[Arc<Vec<Level>>; 2]>);
+pub struct MipCache([std::sync::OnceLock<Arc<Vec<Level>>>; 2]);
 
 impl PartialEq for MipCache {
     fn eq(&self, _: &MipCache) -> bool {
@@ -183,17 +184,15 @@ impl Texture {
     /// (sRGB decoded, averaged, encoded again for a colour chain), rounded to 8 bits as the GPU
     /// stores it. The GPU uploads these same bytes.
     pub fn mip_levels(&self, space: ColorSpace) -> Arc<Vec<Level>> {
-        let chains =
-            self.levels.0.get_or_init(|| [ColorSpace::Srgb, ColorSpace::Linear].map(|s| Arc::new(self.chain(s))));
-        chains[match space {
+        let k = match space {
             ColorSpace::Srgb => 0,
             ColorSpace::Linear => 1,
-        }]
-        .clone()
+        };
+        self.levels.0[k].get_or_init(|| Arc::new(self.chain(space))).clone()
     }
 
     fn chain(&self, space: ColorSpace) -> Vec<Level> {
-        let mut out = vec![Level { width: self.width, height: self.height, rgba8: self.rgba8.to_vec() }];
+        let mut out = vec![Level { width: self.width, height: self.height, rgba8: self.rgba8.clone() }];
         while let Some(prev) = out.last().filter(|l| l.width > 1 || l.height > 1) {
             let (w, h) = ((prev.width / 2).max(1), (prev.height / 2).max(1));
             let mut rgba8 = Vec::with_capacity(4 * (w * h) as usize);
@@ -210,7 +209,7 @@ impl Texture {
                     rgba8.extend(encode(sum, space));
                 }
             }
-            out.push(Level { width: w, height: h, rgba8 });
+            out.push(Level { width: w, height: h, rgba8: rgba8.into() });
         }
         out
     }
@@ -224,8 +223,7 @@ impl Texture {
     /// The texture at `uv` at level 0 with its magnification filter, each texel decoded as `space`
     /// says.
     pub fn sample_as(&self, uv: [f64; 2], space: ColorSpace) -> [f64; 4] {
-        let level = Level { width: self.width, height: self.height, rgba8: Vec::new() };
-        self.sample_level(&level, &self.rgba8, uv, space, self.sampler.filter)
+        self.sample_level(self.width, self.height, &self.rgba8, uv, space, self.sampler.filter)
     }
 
     /// The level of detail λ = log2 ρ of a pixel's footprint in texels (the larger of the
@@ -250,7 +248,7 @@ impl Texture {
         let q = (levels.len() - 1) as f64;
         let at = |d: f64| {
             let l = &levels[d as usize];
-            self.sample_level(l, &l.rgba8, uv, space, self.sampler.min)
+            self.sample_level(l.width, l.height, &l.rgba8, uv, space, self.sampler.min)
         };
         match self.sampler.mipmap {
             None => at(0.0),
@@ -264,11 +262,18 @@ impl Texture {
         }
     }
 
-    /// Level `l` (pixels `px`) at `uv` with `filter`: texel centres at `(i + ½)/n`, the wrap mode
+    /// A level of `width × height` pixels `px` at `uv` with `filter`: texel centres at `(i + ½)/n`, the wrap mode
     /// per axis, nearest or bilinear, after each texel is decoded as `space` says.
-    fn sample_level(&self, l: &Level, px: &[u8], uv: [f64; 2], space: ColorSpace, filter: Filter) -> [f64; 4] {
+    fn sample_level(
+        &self,
+        width: u32,
+        height: u32,
+        px: &[u8],
+        uv: [f64; 2],
+        space: ColorSpace,
+        filter: Filter,
+    ) -> [f64; 4] {
         let uv = uv.map(|c| if c.is_finite() { c } else { NONFINITE_UV });
-        let (width, height) = (l.width, l.height);
         let texel = |x: u32, y: u32| decode(&px[4 * (y as usize * width as usize + x as usize)..][..4], space);
         // Far outside [0, 1] f64 keeps no fraction; such a coordinate repeats the same texels.
         let (x, y) = (uv[0] * width as f64, uv[1] * height as f64);

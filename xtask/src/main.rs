@@ -89,9 +89,19 @@ fn test(extra: &[String]) -> ExitCode {
             count.failed += 1;
         }
     }
-    // The last line: every test binary's results and the smoke test, together.
+    match viewer_build_is_fresh() {
+        Ok(()) => {
+            eprintln!("xtask: `cargo run --release` reuses the test build: passed");
+            count.passed += 1;
+        }
+        Err(msg) => {
+            eprintln!("xtask: `cargo run --release` reuses the test build: FAILED: {msg}");
+            count.failed += 1;
+        }
+    }
+    // The last line: every test binary's results, the smoke test and the build check, together.
     println!("xtask: {} passed, {} failed", count.passed, count.failed);
-    if tests_ok && smoke.is_ok() { ExitCode::SUCCESS } else { ExitCode::FAILURE }
+    if tests_ok && count.failed == 0 { ExitCode::SUCCESS } else { ExitCode::FAILURE }
 }
 
 /// Tests counted from `cargo test`'s "test result:" lines.
@@ -148,6 +158,46 @@ fn runtime_dir() -> PathBuf {
         let _ = std::fs::set_permissions(&dir, std::fs::Permissions::from_mode(0o700));
     }
     dir
+}
+
+/// Build what `cargo run --release` builds (the default member, release) and fail if any crate
+/// compiled: after the tests it must start at once. A crate whose features differ between the two
+/// builds compiles twice; `crates/shadelab/Cargo.toml` aligns them.
+fn viewer_build_is_fresh() -> Result<(), String> {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).parent().unwrap().to_path_buf();
+    let mut cmd = Command::new(std::env::var("CARGO").unwrap_or_else(|_| "cargo".into()));
+    cmd.current_dir(&root).args(["build", "--release", "--message-format", "json"]);
+    // The user's `cargo run` comes from a plain shell: without the variables `cargo run` set
+    // for xtask (the user's own CARGO_HOME, CARGO_TARGET_DIR and the like stay).
+    for (k, _) in std::env::vars_os() {
+        let set_for_xtask = ["CARGO_PKG_", "CARGO_MANIFEST_", "CARGO_CRATE_NAME", "CARGO_BIN_NAME", "CARGO_PRIMARY_PACKAGE"];
+        if k.to_str().is_some_and(|k| set_for_xtask.iter().any(|p| k.starts_with(p))) {
+            cmd.env_remove(k);
+        }
+    }
+    eprintln!("xtask: running {cmd:?}");
+    let out = cmd.stderr(std::process::Stdio::inherit()).output().map_err(|e| format!("running cargo: {e}"))?;
+    if !out.status.success() {
+        return Err(format!("cargo build --release exited with {}", out.status));
+    }
+    let compiled = compiled_units(&String::from_utf8_lossy(&out.stdout));
+    if compiled.is_empty() {
+        Ok(())
+    } else {
+        Err(format!("it compiled {} crate(s) again: {}", compiled.len(), compiled.join(", ")))
+    }
+}
+
+/// The package ids of the units cargo's JSON messages report as compiled rather than fresh.
+fn compiled_units(json_lines: &str) -> Vec<String> {
+    json_lines
+        .lines()
+        .filter(|l| l.contains("\"reason\":\"compiler-artifact\"") && l.contains("\"fresh\":false"))
+        .filter_map(|l| {
+            let rest = &l[l.find("\"package_id\":\"")? + "\"package_id\":\"".len()..];
+            Some(rest[..rest.find('"')?].to_string())
+        })
+        .collect()
 }
 
 /// Debian packages the real window needs under Xvfb (the X server, and the X libraries winit
@@ -219,5 +269,17 @@ mod tests {
         c.add_line("running 5 tests");
         c.add_line("test a ... ok");
         assert_eq!(c, Count { passed: 27, failed: 2 });
+    }
+
+    #[test]
+    fn compiled_units_are_the_artifacts_not_fresh() {
+        let json = concat!(
+            r#"{"reason":"compiler-artifact","package_id":"registry+x#serde_core@1.0.229","fresh":true}"#,
+            "\n",
+            r#"{"reason":"compiler-artifact","package_id":"path+file:///w/crates/shadelab#0.1.0","fresh":false}"#,
+            "\n",
+            r#"{"reason":"build-finished","success":true}"#,
+        );
+        assert_eq!(compiled_units(json), vec!["path+file:///w/crates/shadelab#0.1.0".to_string()]);
     }
 }

@@ -85,6 +85,17 @@ const SMOOTH_VERTEX_FLOATS: u32 = 6u;
 @group(3) @binding(2) var<storage, read_write> lit_colors_out: array<vec4<f32>>;
 @group(3) @binding(3) var<storage, read> lit_colors: array<vec4<f32>>;
 
+// The light loop of a pipeline built for its scene's lights (LightLoop in
+// crates/shadelab-render/src/program.rs): LOOP_LIGHTS lights whose kinds are LOOP_KINDS,
+// LOOP_KIND_BITS a slot. Both are known when the pipeline is built, so the compiler unrolls the
+// loop, reads each light's uniforms at a fixed offset and keeps only its kind's code. The default,
+// LOOP_DYNAMIC, reads the count and the kinds from the uniforms (the uber pipeline).
+const LOOP_DYNAMIC: u32 = 0xffffffffu;
+const LOOP_KIND_BITS: u32 = 2u;
+const LOOP_KIND_MASK: u32 = 3u;
+override LOOP_LIGHTS: u32 = LOOP_DYNAMIC;
+override LOOP_KINDS: u32 = 0u;
+
 // The illumination model at world point `p` with (not necessarily unit) normal `n_in`; `pixel`
 // seeds the shadow filter's per-pixel rotation (read only with cast shadows). The Lambert rule's
 // fill and the sum's transmitted term are not shadowed (see the twin's shade_with_visibility).
@@ -106,11 +117,15 @@ fn shade(p: vec3<f32>, n_in: vec3<f32>, surface: Surface, pixel: vec2<f32>) -> v
     // The Lambert rule's I: the brightest light at the point, per channel, in [0, 1].
     var i_max = vec3(0.0);
 #endif
-    for (var i = 0u; i < min(globals.light_count, MAX_LIGHTS); i++) {
-        let s = light_sample(globals.lights[i], p, n);
+    let fixed_loop = LOOP_LIGHTS != LOOP_DYNAMIC;
+    let light_count = select(min(globals.light_count, MAX_LIGHTS), min(LOOP_LIGHTS, MAX_LIGHTS), fixed_loop);
+    for (var i = 0u; i < light_count; i++) {
+        var light = globals.lights[i];
+        light.kind = select(light.kind, (LOOP_KINDS >> (LOOP_KIND_BITS * i)) & LOOP_KIND_MASK, fixed_loop);
+        let s = light_sample(light, p, n);
         var visibility = 1.0;
 #if EFFECT_CAST_SHADOWS
-        visibility = shadow_visibility(i, globals.lights[i], p, n, pixel);
+        visibility = shadow_visibility(i, light, p, n, pixel);
 #endif
 #if EFFECT_LAMBERT_RULE
         if (globals.illumination == ILLUMINATION_LAMBERT) {

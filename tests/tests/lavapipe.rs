@@ -206,3 +206,43 @@ fn an_orthographic_camera_matches_its_reference() {
     assert!(ortho_own <= 2.0 * own, "orthographic RMSE {ortho_own}, perspective {own}");
     assert!(error(&ortho, &persp) > 10.0 * ortho_own);
 }
+
+/// A pipeline whose light loop is built for the scene's lights (unrolled, each slot with its
+/// kind's code only) draws what the loop reading the lights from the uniforms draws, in every
+/// shading mode (flat and Gouraud light in compute passes), with every kind and cast shadows.
+#[test]
+fn the_light_loop_built_for_the_scene_draws_what_the_uniform_loop_draws() {
+    use shadelab_model::LightKind;
+    use shadelab_render::program::LightLoop;
+    use shadelab_render::{Program, Renderer};
+    let mut scene = Scene::builtin("default").unwrap();
+    let mut spot = scene.lights[1].clone();
+    spot.set_kind(LightKind::Spot);
+    scene.lights.push(spot);
+    let kinds: Vec<LightKind> = scene.lights.iter().map(|l| l.kind).collect();
+    assert_eq!(kinds, [LightKind::Directional, LightKind::Point, LightKind::Spot]);
+    let (w, h) = (96, 54);
+    let gpu = gpu();
+    let mut r = Renderer::new(&gpu.device, &gpu.queue);
+    let gs = r.upload(&scene).unwrap();
+    let target = Target::new(&gpu.device, w, h, target::HDR_FORMAT);
+    for shading in ShadingMode::ALL_MODES {
+        let settings = settings(shading, SpecularModel::CookTorrance);
+        let fixed = Program::for_scene(&scene, &settings);
+        let Program::Lit { shading, effects, interpolation, lights } = fixed else { panic!("{fixed:?}") };
+        assert_eq!(lights, LightLoop::for_scene(&scene));
+        let dynamic = Program::Lit { shading, effects, interpolation, lights: LightLoop::Dynamic };
+        let draw = |r: &mut Renderer, program: Program| {
+            r.write_uniforms(&gs, &scene, &target, &settings);
+            let mut encoder = r.device.create_command_encoder(&Default::default());
+            r.encode(&mut encoder, &gs, &target, program, None);
+            r.queue.submit([encoder.finish()]);
+            target::read_back(&r.device, &r.queue, &target)
+        };
+        let (a, b) = (draw(&mut r, fixed), draw(&mut r, dynamic));
+        let lit = a.pixels.iter().filter(|p| p[..3] != a.pixels[0][..3]).count();
+        assert!(lit > (w * h) as usize / 4, "{shading:?}: only {lit} pixels differ from the corner");
+        let worst = a.pixels.iter().zip(&b.pixels).flat_map(|(p, q)| (0..3).map(move |c| (p[c] - q[c]).abs())).fold(0.0, f32::max);
+        assert!(worst <= 1e-5, "{shading:?}: the fixed and the uniform light loops differ by {worst}");
+    }
+}

@@ -5,6 +5,7 @@
 pub mod frame;
 pub mod gpu;
 pub mod image_error;
+pub mod light_loop;
 pub mod lighting_pass;
 pub mod overlay_pass;
 pub mod pipelines;

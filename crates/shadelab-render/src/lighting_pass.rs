@@ -149,13 +149,15 @@ pub(crate) fn build_pipeline(
     module: &wgpu::ShaderModule,
     entry: &str,
     label: &str,
+    lights: crate::light_loop::LightLoop,
 ) -> wgpu::ComputePipeline {
+    let constants = lights.constants();
     device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
         label: Some(label),
         layout: Some(layout),
         module,
         entry_point: Some(entry),
-        compilation_options: Default::default(),
+        compilation_options: wgpu::PipelineCompilationOptions { constants: &constants, ..Default::default() },
         cache: None,
     })
 }

@@ -4,6 +4,7 @@
 //! cast shadows has three bind groups (the shadow maps are @group(2)), one without has two.
 //! Hot-reloaded WGSL replaces them all.
 
+use crate::light_loop::LightLoop;
 use crate::program::Program;
 use crate::shaders;
 use crate::vertex::{FlatVertex, SmoothVertex, SurfaceVertex};
@@ -66,8 +67,9 @@ pub struct PipelineCache {
     layouts: Layouts,
     /// The shadow pass's depth-only pipeline, built on first use.
     shadow_pipeline: Option<wgpu::RenderPipeline>,
-    /// The lighting passes' compute pipelines, by effect set and entry point, built on first use.
-    lighting_pipelines: HashMap<(EffectKey, &'static str), wgpu::ComputePipeline>,
+    /// The lighting passes' compute pipelines, by effect set, light loop and entry point, built
+    /// on first use.
+    lighting_pipelines: HashMap<(EffectKey, LightLoop, &'static str), wgpu::ComputePipeline>,
     pipelines: HashMap<PipelineKey, wgpu::RenderPipeline>,
     pending: HashMap<PipelineKey, PendingBuild>,
     /// Build missing pipelines on a worker thread and draw with the uber pipeline meanwhile
@@ -154,20 +156,22 @@ impl PipelineCache {
         self.shadow_pipeline.as_ref().expect("built above")
     }
 
-    /// The lighting pass `entry` (`cs_flat`, `cs_gouraud`) for an effect set, built on first use.
-    pub fn lighting_pipeline(&mut self, effects: EffectKey, entry: &'static str) -> &wgpu::ComputePipeline {
-        if !self.lighting_pipelines.contains_key(&(effects, entry)) {
+    /// The lighting pass `entry` (`cs_flat`, `cs_gouraud`) of a program: its effect set and light
+    /// loop, built on first use.
+    pub fn lighting_pipeline(&mut self, program: Program, entry: &'static str) -> &wgpu::ComputePipeline {
+        let (effects, lights) = (program.effects(), program.light_loop());
+        if !self.lighting_pipelines.contains_key(&(effects, lights, entry)) {
             let module = self.module(effects);
             let layout = if effects.has(Effect::CastShadows) {
                 &self.layouts.lighting_pass_shadows
             } else {
                 &self.layouts.lighting_pass
             };
-            let label = format!("{entry} [{}]", effects.label());
-            let p = crate::lighting_pass::build_pipeline(&self.device, layout, &module, entry, &label);
-            self.lighting_pipelines.insert((effects, entry), p);
+            let label = format!("{entry} [{}] {}", effects.label(), lights.label());
+            let p = crate::lighting_pass::build_pipeline(&self.device, layout, &module, entry, &label, lights);
+            self.lighting_pipelines.insert((effects, lights, entry), p);
         }
-        &self.lighting_pipelines[&(effects, entry)]
+        &self.lighting_pipelines[&(effects, lights, entry)]
     }
 
     /// Move pipelines finished on worker threads into the cache.
@@ -221,7 +225,8 @@ fn build_pipeline(
         Program::Lit { shading, interpolation, .. } => shaders::entry_points_with(shading, interpolation),
         Program::NullBaseline => shaders::BASELINE_ENTRY_POINTS,
     };
-    let options = wgpu::PipelineCompilationOptions::default();
+    let constants = key.program.light_loop().constants();
+    let options = wgpu::PipelineCompilationOptions { constants: &constants, ..Default::default() };
     let effects = key.program.effects();
     let surface = SurfaceVertex::layout(
         effects.samples_textures(),

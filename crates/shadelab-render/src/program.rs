@@ -4,6 +4,8 @@
 use shadelab_model::effects::{self, Effect, EffectKey};
 use shadelab_model::{Interpolation, Scene, ShadingMode, SpecularModel};
 
+pub use crate::light_loop::LightLoop;
+
 /// The effects that change the lighting itself per pixel: drawn in Phong shading only.
 pub const PER_PIXEL_LIGHTING: [Effect; 3] =
     [Effect::MetalRoughnessTexture, Effect::OcclusionTexture, Effect::NormalTexture];
@@ -55,8 +57,8 @@ impl Default for RenderSettings {
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Program {
     /// The lighting shader of one shading mode, containing `effects` (the specular model is one
-    /// of them).
-    Lit { shading: ShadingMode, effects: EffectKey, interpolation: Interpolation },
+    /// of them), its light loop built for the scene's lights or reading them from the uniforms.
+    Lit { shading: ShadingMode, effects: EffectKey, interpolation: Interpolation, lights: LightLoop },
     /// The null-shader baseline: the same geometry (the smooth mesh), constant colour, no
     /// lighting. What rasterizing the scene costs, the denominator of the cost study.
     NullBaseline,
@@ -66,6 +68,11 @@ impl Program {
     /// The program that draws `scene` with `settings`: the shading mode, and the effects that
     /// `settings.specialization` picks (the scene's analysis, all of them, or a given set).
     pub fn for_scene(scene: &Scene, settings: &RenderSettings) -> Program {
+        // The uber pipeline draws any scene: its loop reads the lights from the uniforms.
+        let lights = match settings.specialization {
+            Specialization::Uber => LightLoop::Dynamic,
+            _ => LightLoop::for_scene(scene),
+        };
         let effects = match settings.specialization {
             Specialization::Specialized => {
                 let key = effects::analyze(scene, settings.specular).key;
@@ -79,17 +86,18 @@ impl Program {
         // Flat shading interpolates nothing: one program whatever the setting.
         let interpolation =
             if settings.shading == ShadingMode::Flat { Interpolation::Perspective } else { settings.interpolation };
-        Program::Lit { shading: settings.shading, effects, interpolation }
+        Program::Lit { shading: settings.shading, effects, interpolation, lights }
     }
 
     /// The same program without the textures and vertex colours (for a scene that has
     /// no surface attributes to read: the uber program drawing it).
     pub fn without_surfaces(self) -> Program {
         match self {
-            Program::Lit { shading, effects, interpolation } => Program::Lit {
+            Program::Lit { shading, effects, interpolation, lights } => Program::Lit {
                 shading,
                 effects: effects.without_all(&effects::TEXTURE_EFFECTS).without(Effect::VertexColors),
                 interpolation,
+                lights,
             },
             Program::NullBaseline => Program::NullBaseline,
         }
@@ -110,7 +118,8 @@ impl Program {
             // Without the surface effects: a scene may have no surface buffers to bind, and the
             // stand-in draws the material's factor for the moment the real pipeline builds.
             Program::Lit { shading, interpolation, .. } => {
-                Program::Lit { shading, effects: EffectKey::UBER, interpolation }.without_surfaces()
+                let lights = LightLoop::Dynamic;
+                Program::Lit { shading, effects: EffectKey::UBER, interpolation, lights }.without_surfaces()
             }
             Program::NullBaseline => Program::NullBaseline,
         }
@@ -130,14 +139,22 @@ impl Program {
         matches!(self, Program::Lit { shading: ShadingMode::Flat, .. })
     }
 
+    /// How its light loop is built (dynamic for the baseline, which has none).
+    pub fn light_loop(self) -> LightLoop {
+        match self {
+            Program::Lit { lights, .. } => lights,
+            Program::NullBaseline => LightLoop::Dynamic,
+        }
+    }
+
     /// A short name for logs and labels.
     pub fn label(self) -> String {
         match self {
-            Program::Lit { shading, effects, interpolation: Interpolation::Perspective } => {
-                format!("{shading:?} [{}]", effects.label())
+            Program::Lit { shading, effects, interpolation: Interpolation::Perspective, lights } => {
+                format!("{shading:?} [{}] {}", effects.label(), lights.label())
             }
-            Program::Lit { shading, effects, interpolation: Interpolation::Screen } => {
-                format!("{shading:?} screen-space [{}]", effects.label())
+            Program::Lit { shading, effects, interpolation: Interpolation::Screen, lights } => {
+                format!("{shading:?} screen-space [{}] {}", effects.label(), lights.label())
             }
             Program::NullBaseline => "null baseline".into(),
         }

@@ -185,7 +185,8 @@ fn interpolation_difference(
 /// a line for each effect the analysis calls for that this shading mode's program leaves out.
 pub fn explain(scene: &shadelab_model::Scene, settings: &shadelab_render::RenderSettings) -> String {
     let a = shadelab_model::effects::analyze(scene, settings.specular);
-    let program = shadelab_render::Program::for_scene(scene, settings).effects();
+    let lit = shadelab_render::Program::for_scene(scene, settings);
+    let program = lit.effects();
     let model = shadelab_model::ModelChoice::of(scene.illumination, settings.specular);
     let mut s = format!(
         "# effects of scene '{}' with {} shading and the {} model — pipeline [{}]\n",
@@ -198,6 +199,10 @@ pub fn explain(scene: &shadelab_model::Scene, settings: &shadelab_render::Render
         s.push_str(&line);
         s.push('\n');
     }
+    s.push_str(&format!(
+        "light loop: {} — the pipeline is built for the scene's lights: the loop unrolled, each slot with its kind's code only\n",
+        lit.light_loop().label()
+    ));
     let per = if settings.shading == shadelab_model::ShadingMode::Flat { "face" } else { "vertex" };
     for e in a.key.effects().into_iter().filter(|e| !program.has(*e)) {
         s.push_str(&format!(

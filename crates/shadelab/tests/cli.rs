@@ -365,6 +365,7 @@ fn explain_and_bench_effects() {
         "point lights: off — 0 in the scene",
         "Cook–Torrance specular: off — the specular model is phong",
         "absorption: off — nothing transmits",
+        "the pipeline is built for the scene's lights: the loop unrolled",
     ] {
         assert!(text.contains(needle), "missing '{needle}' in:\n{text}");
     }

@@ -14,6 +14,15 @@ pub fn run(args: &cli::BenchRenderArgs) -> Result<(), Failure> {
     let (width, height) = args.size.pixels();
     let (frames, warmup) = (args.frames as usize, args.warmup as usize);
     let scene = cli::scene(&args.scene)?;
+    // The new lights take the light flags too (`--shadows`, `--falloff`, …).
+    let scene = match args.point_lights {
+        Some(n) => {
+            let mut s = shadelab_model::scene_variants::with_point_lights(&scene, n as usize);
+            s.apply(&cli::overrides(&args.scene));
+            s
+        }
+        None => scene,
+    };
     let gpu = Gpu::headless(AdapterChoice::from_env()).context("opening a GPU adapter")?;
     let mut r = Renderer::new(&gpu.device, &gpu.queue);
     let gs = r.upload(&scene).map_err(|e| Failure::Usage(format!("{}: {e}", args.scene.scene)))?;

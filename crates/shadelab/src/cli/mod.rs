@@ -330,6 +330,9 @@ pub struct BenchRenderArgs {
     #[arg(long, default_value = "3", value_parser = values::count(WARMUP),
           help = within("Warm-up frames per combination (not measured)", WARMUP))]
     pub warmup: u32,
+    #[arg(long, value_parser = values::count(values::POINT_LIGHTS),
+          help = within("Light the scene with this many point lights on a ring above it instead of its own (the accuracy study's light-count variant)", values::POINT_LIGHTS))]
+    pub point_lights: Option<u32>,
 }
 
 /// The image size (`render` and every `bench`).

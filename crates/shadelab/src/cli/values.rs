@@ -16,6 +16,16 @@ pub const WARMUP: ParamRange =
 pub const FRAMES: ParamRange =
     ParamRange { flag: "--frames", symbol: "N", meaning: "number of frames", min: 1.0, max: 1e6 };
 
+/// `bench render --point-lights`: how many point lights replace the scene's, each in
+/// [1, MAX_LIGHTS], the uniform's slots.
+pub const POINT_LIGHTS: ParamRange = ParamRange {
+    flag: "--point-lights",
+    symbol: "N",
+    meaning: "number of point lights (MAX_LIGHTS)",
+    min: 1.0,
+    max: shadelab_model::lighting::lights::MAX_LIGHTS as f64,
+};
+
 /// Triangle counts of `bench mesh --triangles`: each in [1, MAX_TRIANGLES], what the loader takes.
 pub const MESH_TRIANGLES: ParamRange = ParamRange {
     flag: "--triangles",

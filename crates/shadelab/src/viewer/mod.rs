@@ -6,6 +6,7 @@
 //! (`files`), opening a file on a worker thread (`loading`), the scripted run (`scripting`), what is drawn over the view (`overlays`), the
 //! difference view (`difference`) and the lights' shadow maps (`shadow_maps`).
 
+mod blit;
 mod difference;
 mod files;
 mod loading;
@@ -156,6 +157,9 @@ impl Viewer {
         let scene_camera = scene.camera;
         let gpu_scene = renderer.upload(&scene).map_err(|e| e.to_string())?;
         log::info!("viewer adapter: {:?}", rs.adapter.get_info());
+        // The view is drawn into the window by a paint callback (blit.rs), which finds its
+        // pipeline in egui's callback resources.
+        rs.renderer.write().callback_resources.insert(blit::BlitResources::new(&rs.device, rs.target_format));
         Ok(Viewer {
             scene_name: "default".into(),
             base_camera: scene.camera,
@@ -381,9 +385,9 @@ impl eframe::App for Viewer {
         egui::Panel::right("parameters").resizable(true).default_size(340.0).show(ui, |ui| {
             egui::ScrollArea::vertical().show(ui, |ui| self.panel(ui));
         });
-        egui::CentralPanel::default().show(ui, |ui| self.viewport(ui));
+        egui::CentralPanel::default().frame(egui::Frame::NONE).show(ui, |ui| self.viewport(ui));
         self.lobe.show(&ctx, &self.scene);
-        self.script.after_frame(&ctx);
+        self.script.after_frame(&ctx, self.frame_ms);
         if self.continuous {
             ctx.request_repaint();
         }

@@ -32,6 +32,10 @@ pub(super) fn light_markers(
     orbit_target: DVec3,
     (w, h): (u32, u32),
 ) {
+    // A view narrower than the markers' margins has no room for them.
+    if !rect.shrink(MARKER_MARGIN).is_positive() {
+        return;
+    }
     let vp = scene.camera.projection(w as f64 / h as f64) * scene.camera.view();
     for (i, l) in scene.lights.iter().enumerate() {
         let p = match l.kind {

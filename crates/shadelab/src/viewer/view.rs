@@ -41,6 +41,9 @@ impl Viewer {
         // egui takes a texture's values as sRGB-encoded: give it the stored bytes undecoded.
         let shown = target.encoded_view();
         let mut er = self.egui_renderer.write();
+        if let Some(blit) = er.callback_resources.get_mut::<super::blit::BlitResources>() {
+            blit.set_view(device, &target);
+        }
         let texture = match &self.view {
             Some(v) => {
                 er.update_egui_texture_from_wgpu_texture(device, &shown, wgpu::FilterMode::Linear, v.texture);
@@ -113,7 +116,12 @@ impl Viewer {
         }
         (self.scene.ambient, self.scene.materials) = whole;
         let painter = ui.painter_at(rect);
-        painter.image(shown, rect, Rect::from_min_max(pos2(0.0, 0.0), pos2(1.0, 1.0)), Color32::WHITE);
+        if shown == view.texture {
+            // The scene itself: its texels straight into the window (blit.rs).
+            painter.add(super::blit::shape(rect));
+        } else {
+            painter.image(shown, rect, Rect::from_min_max(pos2(0.0, 0.0), pos2(1.0, 1.0)), Color32::WHITE);
+        }
         if self.difference.enabled && analytic && !factor {
             let mode = format!("{} shading, {} specular", self.settings.shading, self.settings.specular);
             overlays::difference_legend(&painter, rect, &self.difference, &mode, self.frame_ms, self.show_live_numbers);

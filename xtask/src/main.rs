@@ -78,27 +78,8 @@ fn test(extra: &[String]) -> ExitCode {
     let xdg = runtime_dir();
     cmd.env("XDG_RUNTIME_DIR", &xdg);
     let (tests_ok, mut count) = run_counting(&mut cmd);
-    let smoke = viewer_smoke_test(&icd, &xdg);
-    match &smoke {
-        Ok(()) => {
-            eprintln!("xtask: viewer smoke test under Xvfb: passed");
-            count.passed += 1;
-        }
-        Err(msg) => {
-            eprintln!("xtask: viewer smoke test under Xvfb: FAILED: {msg}");
-            count.failed += 1;
-        }
-    }
-    match viewer_build_is_fresh() {
-        Ok(()) => {
-            eprintln!("xtask: `cargo run --release` reuses the test build: passed");
-            count.passed += 1;
-        }
-        Err(msg) => {
-            eprintln!("xtask: `cargo run --release` reuses the test build: FAILED: {msg}");
-            count.failed += 1;
-        }
-    }
+    count.check("viewer smoke test under Xvfb", viewer_smoke_test(&icd, &xdg));
+    count.check("`cargo run --release` reuses the test build", viewer_build_is_fresh());
     // The last line: every test binary's results, the smoke test and the build check, together.
     println!("xtask: {} passed, {} failed", count.passed, count.failed);
     if tests_ok && count.failed == 0 { ExitCode::SUCCESS } else { ExitCode::FAILURE }
@@ -112,6 +93,20 @@ struct Count {
 }
 
 impl Count {
+    /// Count one of xtask's own checks and say how it went.
+    fn check(&mut self, name: &str, result: Result<(), String>) {
+        match result {
+            Ok(()) => {
+                eprintln!("xtask: {name}: passed");
+                self.passed += 1;
+            }
+            Err(msg) => {
+                eprintln!("xtask: {name}: FAILED: {msg}");
+                self.failed += 1;
+            }
+        }
+    }
+
     /// Add one "test result: ok. 3 passed; 1 failed; …" line (other lines are ignored).
     fn add_line(&mut self, line: &str) {
         let Some(rest) = line.trim_start().strip_prefix("test result: ") else { return };

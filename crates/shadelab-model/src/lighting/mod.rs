@@ -9,6 +9,7 @@
 //!
 //! The test `every_wgsl_function_has_a_rust_twin` (in `shadelab-render`) holds the pairing.
 
+pub mod area;
 pub mod brdf;
 pub mod common;
 pub mod lights;

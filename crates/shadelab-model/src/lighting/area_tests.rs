@@ -1,0 +1,180 @@
+//! The area lights' closed forms against their reference quadrature, their limits, and their hard
+//! cases (docs/area-lights.md).
+
+use super::*;
+
+fn clear(_: DVec3, _: DVec3) -> bool {
+    true
+}
+
+fn rect(center: DVec3, normal: DVec3, half: f64) -> AreaLight {
+    let t = if normal.x.abs() < 0.9 { DVec3::X } else { DVec3::Y }.cross(normal).normalize();
+    AreaLight { shape: AreaShape::Rect { half_x: half, half_y: 0.7 * half }, center, normal: normal.normalize(), tangent: t }
+}
+
+fn with_shape(l: AreaLight, shape: AreaShape) -> AreaLight {
+    AreaLight { shape, ..l }
+}
+
+/// Lights and receivers of every sort: straight above, tilted, off to the side, partly below the
+/// receiver's horizon, seen edge-on.
+fn configurations() -> Vec<(AreaLight, DVec3, DVec3)> {
+    let mut out = Vec::new();
+    let receivers =
+        [(DVec3::ZERO, DVec3::Z), (DVec3::new(0.3, -0.2, 0.0), DVec3::new(0.2, 0.1, 1.0).normalize()), (DVec3::ZERO, DVec3::X), (DVec3::ZERO, -DVec3::Z)];
+    let lights = [
+        (DVec3::new(0.0, 0.0, 2.0), DVec3::new(0.0, 0.0, -1.0)),
+        (DVec3::new(1.0, 0.5, 1.5), DVec3::new(-0.5, -0.2, -1.0)),
+        (DVec3::new(2.0, 0.0, 0.2), DVec3::new(-1.0, 0.0, 0.1)),
+        (DVec3::new(0.5, 1.5, 0.0), DVec3::new(-0.3, -1.0, 0.05)),
+    ];
+    for (p, n) in receivers {
+        for (c, ln) in lights {
+            out.push((rect(c, ln, 0.4), p, n.normalize()));
+        }
+    }
+    out
+}
+
+#[test]
+fn lamberts_edge_formula_equals_the_quadrature() {
+    for (light, p, n) in configurations() {
+        let exact = area_irradiance_exact(&light, p, n).unwrap();
+        let (reference, own_error) = area_irradiance_reference(&light, p, n, 128, &clear);
+        assert!(own_error < 1e-4 * reference.max(1e-3), "{light:?} at {p}: reference error {own_error:e}");
+        assert!(
+            (exact - reference).abs() <= 1e-4 * reference.max(1e-2),
+            "{light:?} at {p} n {n}: edge formula {exact} vs quadrature {reference}"
+        );
+    }
+    // Some of those configurations are lit, some clipped by the horizon, some dark.
+    let values: Vec<f64> =
+        configurations().iter().map(|(l, p, n)| area_irradiance_exact(l, *p, *n).unwrap()).collect();
+    assert!(values.iter().any(|v| *v > 0.05) && values.iter().any(|v| *v == 0.0), "{values:?}");
+}
+
+#[test]
+fn the_sphere_cap_equals_the_quadrature_above_across_and_below_the_horizon() {
+    let (p, n) = (DVec3::ZERO, DVec3::Z);
+    for (r, d) in [(0.3, 2.0), (0.9, 1.2), (0.05, 0.5)] {
+        // From straight above through the horizon to below it.
+        for deg in [0.0, 30.0, 60.0, 80.0, 88.0, 90.0, 92.0, 100.0, 120.0, 180.0] {
+            let theta = f64::to_radians(deg);
+            let center = DVec3::new(theta.sin(), 0.0, theta.cos()) * d;
+            let light = AreaLight { shape: AreaShape::Sphere { radius: r }, center, normal: DVec3::Z, tangent: DVec3::X };
+            let exact = area_irradiance_exact(&light, p, n).unwrap();
+            let (reference, own_error) = area_irradiance_reference(&light, p, n, 192, &clear);
+            assert!(own_error < 1e-3 * reference.max(1e-3), "r {r} d {d} θ {deg}°: reference error {own_error:e}");
+            // Across the horizon the integrand has a kink, and the quadrature's own error is what
+            // bounds the comparison there.
+            assert!(
+                (exact - reference).abs() <= (1e-4 * reference).max(2.0 * own_error) + 1e-9,
+                "r {r} d {d} θ {deg}°: cap {exact} vs quadrature {reference} (±{own_error:e})"
+            );
+        }
+    }
+}
+
+#[test]
+fn zero_size_is_the_point_light_limit() {
+    // A sphere of radius r and radiance L is a point light of intensity I = L·π r²: E = I cos θ / d².
+    let (p, n) = (DVec3::ZERO, DVec3::new(0.1, 0.2, 1.0).normalize());
+    let center = DVec3::new(0.7, -0.4, 2.5);
+    let (d, l) = (center.length(), center.normalize());
+    for r in [1e-2, 1e-3, 1e-6] {
+        let sphere = AreaLight { shape: AreaShape::Sphere { radius: r }, center, normal: DVec3::Z, tangent: DVec3::X };
+        let point = PI * r * r * n.dot(l) / (d * d);
+        let e = area_irradiance_exact(&sphere, p, n).unwrap();
+        assert!((e - point).abs() <= 1e-3 * point, "sphere r {r}: {e} vs point {point}");
+    }
+    // A small rectangle or disk emits like a Lambertian point: I(θ_l) = L·A·cos θ_l.
+    let facing = DVec3::new(-0.2, 0.3, -1.0).normalize();
+    let point = |area: f64| area * facing.dot(-l) * n.dot(l) / (d * d);
+    for half in [1e-2, 1e-3] {
+        let r = rect(center, facing, half);
+        let e = area_irradiance_exact(&r, p, n).unwrap();
+        assert!((e - point(r.area())).abs() <= 1e-3 * point(r.area()), "rect {half}: {e} vs {}", point(r.area()));
+        let disk = with_shape(r, AreaShape::Disk { radius: half });
+        let e = area_irradiance_quadrature(&disk, p, n, 8, &clear);
+        assert!((e - point(disk.area())).abs() <= 1e-3 * point(disk.area()), "disk {half}: {e}");
+    }
+}
+
+#[test]
+fn hard_cases_stay_finite_and_in_range() {
+    let p = DVec3::ZERO;
+    let n = DVec3::Z;
+    let cases = [
+        // Zero size.
+        rect(DVec3::new(0.0, 0.0, 1.0), -DVec3::Z, 0.0),
+        // The light's plane through the shaded point.
+        rect(DVec3::new(1.0, 0.0, 0.0), DVec3::Z, 0.5),
+        rect(DVec3::new(0.0, 0.0, 0.0), DVec3::Z, 0.5),
+        // The point on the light, facing it.
+        rect(DVec3::new(0.0, 0.0, 0.0), -DVec3::Z, 0.5),
+        // Behind the surface.
+        rect(DVec3::new(0.0, 0.0, -1.0), DVec3::Z, 0.5),
+        // Huge.
+        rect(DVec3::new(0.0, 0.0, 1.0), -DVec3::Z, 1e6),
+    ];
+    for light in cases {
+        for shape in [light.shape, AreaShape::Disk { radius: 0.5 }, AreaShape::Sphere { radius: 0.5 }] {
+            let l = with_shape(light, shape);
+            let exact = area_irradiance_exact(&l, p, n);
+            let quad = area_irradiance_quadrature(&l, p, n, 16, &clear);
+            for v in exact.into_iter().chain([quad]) {
+                assert!(v.is_finite() && (0.0..=PI + 1e-12).contains(&v), "{l:?}: {v}");
+            }
+        }
+    }
+    // A huge light overhead covers the hemisphere: E/L → π.
+    let huge = area_irradiance_exact(&cases[5], p, n).unwrap();
+    assert!((huge - PI).abs() < 1e-3 * PI, "{huge}");
+    // Behind the surface: nothing.
+    assert_eq!(area_irradiance_exact(&cases[4], p, n), Some(0.0));
+    // The back of a one-sided light gives nothing either.
+    assert_eq!(area_irradiance_exact(&rect(DVec3::new(0.0, 0.0, 1.0), DVec3::Z, 0.5), p, n), Some(0.0));
+    // A sphere the point is inside of, or touching.
+    assert_eq!(sphere_irradiance(1.0, 0.5, 0.3), PI);
+    for cos in [-1.0, -0.5, 0.0, 1e-9, 0.5, 1.0, f64::NAN.max(0.2)] {
+        let e = sphere_irradiance(1.0, 1.0 + 1e-12, cos);
+        assert!(e.is_finite() && (0.0..=PI).contains(&e), "{cos}: {e}");
+    }
+}
+
+#[test]
+fn the_quadrature_takes_the_visibility_it_is_given() {
+    // A wall at x = 0 hides the light's half with x > 0: what is left is the rectangle's other
+    // half, whose edge formula the quadrature must equal.
+    let (p, n) = (DVec3::new(-0.5, 0.0, 0.0), DVec3::Z);
+    let light = AreaLight {
+        shape: AreaShape::Rect { half_x: 0.5, half_y: 0.5 },
+        center: DVec3::new(0.0, 0.0, 1.0),
+        normal: -DVec3::Z,
+        tangent: DVec3::X,
+    };
+    let left_half = AreaLight {
+        shape: AreaShape::Rect { half_x: 0.25, half_y: 0.5 },
+        center: DVec3::new(-0.25, 0.0, 1.0),
+        ..light
+    };
+    let wall = |_: DVec3, x: DVec3| x.x < 0.0;
+    let (shadowed, own) = area_irradiance_reference(&light, p, n, 64, &wall);
+    let exact = area_irradiance_exact(&left_half, p, n).unwrap();
+    assert!((shadowed - exact).abs() < 1e-4 * exact && own < 1e-3 * exact, "{shadowed} vs {exact} (±{own})");
+    let whole = area_irradiance_exact(&light, p, n).unwrap();
+    assert!(shadowed < 0.9 * whole, "the wall must take light away: {shadowed} of {whole}");
+}
+
+#[test]
+fn the_penumbra_widens_with_the_light_and_the_gap() {
+    assert_eq!(penumbra_width(0.5, 2.0, 1.0), 0.5);
+    assert_eq!(penumbra_width(1.0, 2.0, 1.0), 1.0);
+    assert_eq!(penumbra_width(0.5, 3.0, 1.0), 1.0);
+    // Receiver touching the occluder, or in front of it: no penumbra.
+    assert_eq!(penumbra_width(0.5, 1.0, 1.0), 0.0);
+    assert_eq!(penumbra_width(0.5, 0.5, 1.0), 0.0);
+    // A blocker at the light: capped, finite.
+    let w = penumbra_width(0.5, 2.0, 0.0);
+    assert!(w.is_finite() && w > 0.0, "{w}");
+}

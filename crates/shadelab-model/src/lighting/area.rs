@@ -253,6 +253,49 @@ pub fn area_irradiance_reference(
     (fine, (fine - coarse).abs())
 }
 
+/// The chapter's "replace the area source by point sources": the light's `k`×`k` equal-area
+/// cells as point lights at their centres, each (position, outward unit normal, area); a cell
+/// emits like a Lambertian point, intensity `L·ΔA·cos θ_l` towards `p`. Summed with binary
+/// visibility they are the quadrature above; `k = 1` is one point at the centre.
+pub fn point_sources(light: &AreaLight, p: DVec3, k: usize) -> Vec<(DVec3, DVec3, f64)> {
+    samples(light, p, k)
+}
+
+/// What the light adds to the Cook–Torrance specular term at `p` (unit normal `n`, unit view
+/// vector `v`), per channel and per unit radiance: Σ cos θ_l⁺ ΔA / r² · S(l) over `k`×`k`
+/// cells, where S is `specular_cook_torrance` (π ρ_s (N·L), the scale a point light of intensity
+/// I multiplies by I/d²). The reference at large `k`, the chapter's point sources at small `k`.
+#[allow(clippy::too_many_arguments)]
+pub fn specular_area_quadrature(
+    light: &AreaLight,
+    p: DVec3,
+    n: DVec3,
+    v: DVec3,
+    m: f64,
+    v_index: [f64; 3],
+    k: usize,
+    visible: &dyn Fn(DVec3, DVec3) -> bool,
+) -> [f64; 3] {
+    let mut sum = [0.0; 3];
+    for (x, nx, da) in samples(light, p, k) {
+        let to = x - p;
+        let r2 = to.length_squared();
+        if r2 <= AREA_CORNER_DIST_MIN * AREA_CORNER_DIST_MIN {
+            continue;
+        }
+        let l = to / r2.sqrt();
+        let cos_l = -nx.dot(l);
+        if cos_l <= 0.0 || !visible(p, x) {
+            continue;
+        }
+        let s = super::brdf::specular_cook_torrance(n, v, l, m, v_index);
+        for (c, sc) in sum.iter_mut().zip(s) {
+            *c += sc * cos_l * da / r2;
+        }
+    }
+    sum
+}
+
 /// The penumbra's width on a receiver at distance `d_receiver` from a light of size `w_light`
 /// whose blocker is at `d_blocker` (both measured from the light, in linear depth): similar
 /// triangles, w = w_light·(d_r − d_b)/d_b; 0 where the receiver is not behind the blocker.

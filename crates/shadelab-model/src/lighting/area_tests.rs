@@ -178,3 +178,48 @@ fn the_penumbra_widens_with_the_light_and_the_gap() {
     let w = penumbra_width(0.5, 2.0, 0.0);
     assert!(w.is_finite() && w > 0.0, "{w}");
 }
+
+#[test]
+fn the_chapters_point_sources_converge_to_the_reference_and_one_point_is_far_off() {
+    // A light close above the receiver, where one point source is what the chapter calls
+    // unnatural: its error falls as the light is cut into more points.
+    let light = rect(DVec3::new(0.3, 0.0, 0.6), DVec3::new(-0.3, 0.0, -1.0), 0.5);
+    let (p, n) = (DVec3::ZERO, DVec3::Z);
+    let exact = area_irradiance_exact(&light, p, n).unwrap();
+    let errors: Vec<f64> = [1, 2, 4, 8, 16]
+        .iter()
+        .map(|&k| (area_irradiance_quadrature(&light, p, n, k, &clear) - exact).abs() / exact)
+        .collect();
+    assert!(errors[0] > 0.05, "one point source should be visibly off here: {errors:?}");
+    assert!(errors.windows(2).all(|w| w[1] < w[0]), "the error must fall with k: {errors:?}");
+    assert!(errors[4] < 1e-3, "{errors:?}");
+    // k = 1 is the light's centre, carrying its whole area.
+    let one = point_sources(&light, p, 1);
+    assert_eq!(one.len(), 1);
+    assert!((one[0].0 - light.center).length() < 1e-12 && (one[0].2 - light.area()).abs() < 1e-12, "{one:?}");
+}
+
+#[test]
+fn the_specular_integral_converges_and_its_zero_size_limit_is_the_point_light() {
+    let (p, n) = (DVec3::ZERO, DVec3::Z);
+    let v = DVec3::new(-0.6, 0.1, 0.8).normalize();
+    let v_index = [1.5, 1.6, 1.7];
+    let light = rect(DVec3::new(1.0, -0.1, 1.4), DVec3::new(-0.6, 0.0, -1.0), 0.3);
+    for m in [0.15, 0.4] {
+        let coarse = specular_area_quadrature(&light, p, n, v, m, v_index, 64, &clear);
+        let fine = specular_area_quadrature(&light, p, n, v, m, v_index, 128, &clear);
+        for c in 0..3 {
+            assert!(fine[c] > 0.0 && (fine[c] - coarse[c]).abs() < 1e-3 * fine[c], "m {m}: {coarse:?} vs {fine:?}");
+        }
+    }
+    // A tiny light: the point light of intensity L·A·cos θ_l at its centre.
+    let tiny = rect(light.center, light.normal, 1e-4);
+    let to = tiny.center - p;
+    let l = to.normalize();
+    let i = tiny.area() * (-tiny.normal.dot(l)) / to.length_squared();
+    let point = super::super::brdf::specular_cook_torrance(n, v, l, 0.3, v_index).map(|s| s * i);
+    let area = specular_area_quadrature(&tiny, p, n, v, 0.3, v_index, 4, &clear);
+    for c in 0..3 {
+        assert!((area[c] - point[c]).abs() <= 1e-3 * point[c], "{area:?} vs {point:?}");
+    }
+}

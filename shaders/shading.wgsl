@@ -86,7 +86,7 @@ const SMOOTH_VERTEX_FLOATS: u32 = 6u;
 @group(3) @binding(3) var<storage, read> lit_colors: array<vec4<f32>>;
 
 // The light loop of a pipeline built for its scene's lights (LightLoop in
-// crates/shadelab-render/src/program.rs): LOOP_LIGHTS lights whose kinds are LOOP_KINDS,
+// crates/shadelab-render/src/light_loop.rs): LOOP_LIGHTS lights whose kinds are LOOP_KINDS,
 // LOOP_KIND_BITS a slot. Both are known when the pipeline is built, so the compiler unrolls the
 // loop, reads each light's uniforms at a fixed offset and keeps only its kind's code. The default,
 // LOOP_DYNAMIC, reads the count and the kinds from the uniforms (the uber pipeline).

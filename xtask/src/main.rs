@@ -165,7 +165,8 @@ fn viewer_build_is_fresh() -> Result<(), String> {
     // The user's `cargo run` comes from a plain shell: without the variables `cargo run` set
     // for xtask (the user's own CARGO_HOME, CARGO_TARGET_DIR and the like stay).
     for (k, _) in std::env::vars_os() {
-        let set_for_xtask = ["CARGO_PKG_", "CARGO_MANIFEST_", "CARGO_CRATE_NAME", "CARGO_BIN_NAME", "CARGO_PRIMARY_PACKAGE"];
+        let set_for_xtask =
+            ["CARGO_PKG_", "CARGO_MANIFEST_", "CARGO_CRATE_NAME", "CARGO_BIN_NAME", "CARGO_PRIMARY_PACKAGE"];
         if k.to_str().is_some_and(|k| set_for_xtask.iter().any(|p| k.starts_with(p))) {
             cmd.env_remove(k);
         }

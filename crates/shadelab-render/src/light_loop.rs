@@ -5,8 +5,8 @@
 //! drop the code of the kinds a slot does not hold (docs/performance.md measures the saving).
 
 use shadelab_model::Scene;
-use shadelab_model::params::NamedValue;
 use shadelab_model::lighting::lights::MAX_LIGHTS;
+use shadelab_model::params::NamedValue;
 
 /// Bits of `LOOP_KINDS` per light slot (`LOOP_KIND_BITS` in WGSL): a `LightKind::code`.
 pub const KIND_BITS: u32 = 2;

@@ -9,7 +9,12 @@ fn clear(_: DVec3, _: DVec3) -> bool {
 
 fn rect(center: DVec3, normal: DVec3, half: f64) -> AreaLight {
     let t = if normal.x.abs() < 0.9 { DVec3::X } else { DVec3::Y }.cross(normal).normalize();
-    AreaLight { shape: AreaShape::Rect { half_x: half, half_y: 0.7 * half }, center, normal: normal.normalize(), tangent: t }
+    AreaLight {
+        shape: AreaShape::Rect { half_x: half, half_y: 0.7 * half },
+        center,
+        normal: normal.normalize(),
+        tangent: t,
+    }
 }
 
 fn with_shape(l: AreaLight, shape: AreaShape) -> AreaLight {
@@ -20,8 +25,12 @@ fn with_shape(l: AreaLight, shape: AreaShape) -> AreaLight {
 /// receiver's horizon, seen edge-on.
 fn configurations() -> Vec<(AreaLight, DVec3, DVec3)> {
     let mut out = Vec::new();
-    let receivers =
-        [(DVec3::ZERO, DVec3::Z), (DVec3::new(0.3, -0.2, 0.0), DVec3::new(0.2, 0.1, 1.0).normalize()), (DVec3::ZERO, DVec3::X), (DVec3::ZERO, -DVec3::Z)];
+    let receivers = [
+        (DVec3::ZERO, DVec3::Z),
+        (DVec3::new(0.3, -0.2, 0.0), DVec3::new(0.2, 0.1, 1.0).normalize()),
+        (DVec3::ZERO, DVec3::X),
+        (DVec3::ZERO, -DVec3::Z),
+    ];
     let lights = [
         (DVec3::new(0.0, 0.0, 2.0), DVec3::new(0.0, 0.0, -1.0)),
         (DVec3::new(1.0, 0.5, 1.5), DVec3::new(-0.5, -0.2, -1.0)),
@@ -48,8 +57,7 @@ fn lamberts_edge_formula_equals_the_quadrature() {
         );
     }
     // Some of those configurations are lit, some clipped by the horizon, some dark.
-    let values: Vec<f64> =
-        configurations().iter().map(|(l, p, n)| area_irradiance_exact(l, *p, *n).unwrap()).collect();
+    let values: Vec<f64> = configurations().iter().map(|(l, p, n)| area_irradiance_exact(l, *p, *n).unwrap()).collect();
     assert!(values.iter().any(|v| *v > 0.05) && values.iter().any(|v| *v == 0.0), "{values:?}");
 }
 
@@ -61,7 +69,8 @@ fn the_sphere_cap_equals_the_quadrature_above_across_and_below_the_horizon() {
         for deg in [0.0, 30.0, 60.0, 80.0, 88.0, 90.0, 92.0, 100.0, 120.0, 180.0] {
             let theta = f64::to_radians(deg);
             let center = DVec3::new(theta.sin(), 0.0, theta.cos()) * d;
-            let light = AreaLight { shape: AreaShape::Sphere { radius: r }, center, normal: DVec3::Z, tangent: DVec3::X };
+            let light =
+                AreaLight { shape: AreaShape::Sphere { radius: r }, center, normal: DVec3::Z, tangent: DVec3::X };
             let exact = area_irradiance_exact(&light, p, n).unwrap();
             let (reference, own_error) = area_irradiance_reference(&light, p, n, 192, &clear);
             assert!(own_error < 1e-3 * reference.max(1e-3), "r {r} d {d} θ {deg}°: reference error {own_error:e}");

@@ -296,6 +296,56 @@ pub fn specular_area_quadrature(
     sum
 }
 
+/// The representative-point specular of a rectangle or sphere light, per unit radiance: the
+/// light's point nearest the mirror direction R = 2(N·V)N − V (the sphere: nearest to the ray;
+/// the rectangle: where the ray meets its plane, clamped to it), lit as a point light carrying the
+/// whole light (sphere: L·πr² at the centre's distance; rectangle: L·A·cos θ_l at that point's),
+/// with the lobe's peak scaled by m²/m'², m'² = m² + σ²/8 for a light of angular radius
+/// σ = ρ/d (ρ its equivalent radius): the reflected lobe spreads like a Gaussian of variance about
+/// m² per axis, a uniform disc of angular radius σ adds σ²/4·½, and the peak of the widened lobe
+/// falls as the variance grows, the total kept. `None` for the disk. docs/area-lights.md
+/// measures it against `specular_area_quadrature`.
+pub fn specular_representative_point(
+    light: &AreaLight,
+    p: DVec3,
+    n: DVec3,
+    v: DVec3,
+    m: f64,
+    v_index: [f64; 3],
+) -> Option<[f64; 3]> {
+    let r_dir = (2.0 * n.dot(v) * n - v).normalize_or_zero();
+    let to_c = light.center - p;
+    let d = to_c.length().max(AREA_CORNER_DIST_MIN);
+    let (point, intensity, rho) = match light.shape {
+        AreaShape::Sphere { radius } => {
+            let along = to_c.dot(r_dir) * r_dir - to_c;
+            let len = along.length();
+            let reach = if len > 0.0 { (radius.abs() / len).min(1.0) } else { 0.0 };
+            (p + to_c + along * reach, PI * radius * radius / (d * d), radius.abs())
+        }
+        AreaShape::Rect { half_x, half_y } => {
+            let b = light.normal.cross(light.tangent);
+            let denom = r_dir.dot(light.normal);
+            // The ray meets the plane ahead of p, or else its farthest reach along the plane.
+            let t = if denom < -1e-9 { (light.center - p).dot(light.normal) / denom } else { 1e6 * d };
+            let hit = p + r_dir * t.max(0.0) - light.center;
+            let x = hit.dot(light.tangent).clamp(-half_x.abs(), half_x.abs());
+            let y = hit.dot(b).clamp(-half_y.abs(), half_y.abs());
+            let q = light.center + light.tangent * x + b * y;
+            let to_q = q - p;
+            let r2 = to_q.length_squared().max(AREA_CORNER_DIST_MIN * AREA_CORNER_DIST_MIN);
+            let cos_l = (-light.normal.dot(to_q) / r2.sqrt()).max(0.0);
+            (q, light.area() * cos_l / r2, (light.area() / PI).sqrt())
+        }
+        AreaShape::Disk { .. } => return None,
+    };
+    let l = (point - p).normalize_or_zero();
+    let m = m.max(crate::guards::M_MIN);
+    let sigma = rho / d;
+    let norm = m * m / (m * m + sigma * sigma / 8.0);
+    Some(super::brdf::specular_cook_torrance(n, v, l, m, v_index).map(|s| s * intensity * norm))
+}
+
 /// The penumbra's width on a receiver at distance `d_receiver` from a light of size `w_light`
 /// whose blocker is at `d_blocker` (both measured from the light, in linear depth): similar
 /// triangles, w = w_light·(d_r − d_b)/d_b; 0 where the receiver is not behind the blocker.

@@ -232,3 +232,50 @@ fn the_specular_integral_converges_and_its_zero_size_limit_is_the_point_light() 
         assert!((area[c] - point[c]).abs() <= 1e-3 * point[c], "{area:?} vs {point:?}");
     }
 }
+
+/// The representative point against the specular integral, and against the plain point light at
+/// the centre, over roughness and light size: prints the table docs/area-lights.md gives.
+#[test]
+fn representative_point_specular_against_the_integral() {
+    let (p, n) = (DVec3::ZERO, DVec3::Z);
+    let v = DVec3::new(-0.5, 0.0, 0.85).normalize();
+    let v_index = [1.5; 3];
+    // Lights on the mirror direction of v and turned 8° and 20° off it, 2 m away.
+    let mut rows = Vec::new();
+    for off in [0.0f64, 8.0, 20.0] {
+        let mirror = f64::atan2(0.5, 0.85) + off.to_radians();
+        let c = DVec3::new(mirror.sin(), 0.0, mirror.cos()) * 2.0;
+        for (name, shape) in [
+            ("sphere r 0.1", AreaShape::Sphere { radius: 0.1 }),
+            ("sphere r 0.4", AreaShape::Sphere { radius: 0.4 }),
+            ("rect 0.2", AreaShape::Rect { half_x: 0.1, half_y: 0.1 }),
+            ("rect 0.8", AreaShape::Rect { half_x: 0.4, half_y: 0.4 }),
+        ] {
+            let light = AreaLight { shape, center: c, normal: (-c).normalize(), tangent: DVec3::Y };
+            for m in [0.1, 0.2, 0.4, 0.7] {
+                let reference = specular_area_quadrature(&light, p, n, v, m, v_index, 256, &clear)[0];
+                let rp = specular_representative_point(&light, p, n, v, m, v_index).unwrap()[0];
+                let l = c.normalize();
+                let point_i = match shape {
+                    AreaShape::Sphere { radius } => PI * radius * radius,
+                    _ => light.area(),
+                } / c.length_squared();
+                let centre = super::super::brdf::specular_cook_torrance(n, v, l, m, v_index)[0] * point_i;
+                assert!(reference.is_finite() && rp.is_finite() && reference > 0.0, "{name} m {m}");
+                rows.push((name, m, off, (rp - reference) / reference, (centre - reference) / reference));
+            }
+        }
+    }
+    for (name, m, off, rp, centre) in &rows {
+        eprintln!("AREA-SPEC | {name} | {off}° | {m} | {rp:+.3} | {centre:+.3} |");
+    }
+    // Where the highlight falls on a light large against the lobe, the representative point must
+    // beat the point light at the centre (the widening is what it adds there).
+    let on_light: Vec<_> =
+        rows.iter().filter(|r| r.2 == 0.0 && (r.0.ends_with("0.4") || r.0.ends_with("0.8")) && r.1 <= 0.2).collect();
+    assert_eq!(on_light.len(), 4);
+    for (name, m, _, rp, centre) in on_light {
+        assert!(rp.abs() < centre.abs(), "{name} m {m}: representative point {rp:+.3} vs centre {centre:+.3}");
+    }
+    // Off the light's edge it overshoots (docs/area-lights.md has the table this prints).
+}

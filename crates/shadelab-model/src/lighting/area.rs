@@ -219,22 +219,27 @@ pub fn area_irradiance_quadrature(
     k: usize,
     visible: &dyn Fn(DVec3, DVec3) -> bool,
 ) -> f64 {
-    samples(light, p, k)
-        .into_iter()
-        .map(|(x, nx, da)| {
-            let to = x - p;
-            let r2 = to.length_squared();
-            if r2 <= AREA_CORNER_DIST_MIN * AREA_CORNER_DIST_MIN {
-                return 0.0;
-            }
-            let l = to / r2.sqrt();
-            let (cos_p, cos_l) = (n.dot(l), -nx.dot(l));
-            if cos_p <= 0.0 || cos_l <= 0.0 || !visible(p, x) {
-                return 0.0;
-            }
-            cos_p * cos_l / r2 * da
-        })
-        .sum()
+    seen_cells(light, p, k, visible).map(|(l, weight)| weight * n.dot(l).max(0.0)).sum()
+}
+
+/// The light's cells that `p` sees: for each, the unit direction `l` to it and its weight
+/// cos θ_l ΔA / r² (what a point light's I/d² becomes), front faces only, visible only.
+fn seen_cells<'a>(
+    light: &AreaLight,
+    p: DVec3,
+    k: usize,
+    visible: &'a dyn Fn(DVec3, DVec3) -> bool,
+) -> impl Iterator<Item = (DVec3, f64)> + 'a {
+    samples(light, p, k).into_iter().filter_map(move |(x, nx, da)| {
+        let to = x - p;
+        let r2 = to.length_squared();
+        if r2 <= AREA_CORNER_DIST_MIN * AREA_CORNER_DIST_MIN {
+            return None;
+        }
+        let l = to / r2.sqrt();
+        let cos_l = -nx.dot(l);
+        (cos_l > 0.0 && visible(p, x)).then_some((l, cos_l * da / r2))
+    })
 }
 
 /// The reference with its own error: the quadrature at `k` and at 2`k` cells a side, returning
@@ -277,20 +282,10 @@ pub fn specular_area_quadrature(
     visible: &dyn Fn(DVec3, DVec3) -> bool,
 ) -> [f64; 3] {
     let mut sum = [0.0; 3];
-    for (x, nx, da) in samples(light, p, k) {
-        let to = x - p;
-        let r2 = to.length_squared();
-        if r2 <= AREA_CORNER_DIST_MIN * AREA_CORNER_DIST_MIN {
-            continue;
-        }
-        let l = to / r2.sqrt();
-        let cos_l = -nx.dot(l);
-        if cos_l <= 0.0 || !visible(p, x) {
-            continue;
-        }
+    for (l, weight) in seen_cells(light, p, k, visible) {
         let s = super::brdf::specular_cook_torrance(n, v, l, m, v_index);
         for (c, sc) in sum.iter_mut().zip(s) {
-            *c += sc * cos_l * da / r2;
+            *c += sc * weight;
         }
     }
     sum

@@ -91,15 +91,35 @@ impl Script {
             }
             ctx.request_repaint();
         } else if let Some(n) = self.exit_after {
-            if self.frames == n {
-                if let Some(line) = self.summary() {
+            if self.frames >= n {
+                // The summary once, on the last frame (closing can take another frame or two).
+                if self.frames == n
+                    && let Some(line) = self.summary()
+                {
                     println!("{line}");
                 }
-                ctx.send_viewport_cmd(egui::ViewportCommand::Close);
-            } else if self.frames > n {
                 ctx.send_viewport_cmd(egui::ViewportCommand::Close);
             }
             ctx.request_repaint();
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_summary_gives_the_medians_and_their_ratio() {
+        let mut s = Script::new(None, Some(10));
+        assert_eq!(s.summary(), None, "nothing timed yet");
+        s.intervals_ms = vec![40.0, 38.0, 90.0];
+        assert_eq!(s.summary(), None, "no scene pass read back yet");
+        s.scene_pass_ms = vec![20.0, 19.0, 21.0];
+        let line = s.summary().unwrap();
+        assert!(
+            line.contains("median frame interval 40.00 ms, median scene pass 20.00 ms, frame / scene pass 2.00"),
+            "{line}"
+        );
     }
 }

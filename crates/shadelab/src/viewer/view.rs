@@ -1,19 +1,19 @@
 //! The view: the scene drawn by the shared `Renderer` into an offscreen target at the central
-//! area's size, shown by egui as a texture (or the difference view's error map in its place),
-//! with the overlays on top (the self-shadow boundary drawn into the target after the frame).
+//! area's size, copied into the window by a paint callback (blit.rs), or the difference view's
+//! error map shown by egui in its place, with the overlays on top (the self-shadow boundary drawn
+//! into the target after the frame).
 
 use super::{Viewer, overlays};
 use eframe::egui::{self, Color32, Rect, pos2};
 use shadelab_model::params;
 use shadelab_render::{Program, Target};
 
-/// Format of the view's target: egui samples it as linear colour, like its own textures.
+/// Format of the view's target: sRGB-encoded bytes, as the window and egui's textures hold them.
 const VIEW_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba8UnormSrgb;
 
-/// The view's target and the egui texture that shows it.
+/// The view's target (blit.rs copies it into the window).
 pub(super) struct View {
     pub target: Target,
-    texture: egui::TextureId,
 }
 
 impl Viewer {
@@ -38,20 +38,10 @@ impl Viewer {
         }
         let device = &self.renderer.device;
         let target = Target::new(device, w, h, VIEW_FORMAT);
-        // egui takes a texture's values as sRGB-encoded: give it the stored bytes undecoded.
-        let shown = target.encoded_view();
-        let mut er = self.egui_renderer.write();
-        if let Some(blit) = er.callback_resources.get_mut::<super::blit::BlitResources>() {
+        if let Some(blit) = self.egui_renderer.write().callback_resources.get_mut::<super::blit::BlitResources>() {
             blit.set_view(device, &target);
         }
-        let texture = match &self.view {
-            Some(v) => {
-                er.update_egui_texture_from_wgpu_texture(device, &shown, wgpu::FilterMode::Linear, v.texture);
-                v.texture
-            }
-            None => er.register_native_texture(device, &shown, wgpu::FilterMode::Linear),
-        };
-        self.view = Some(View { target, texture });
+        self.view = Some(View { target });
     }
 
     /// The central area: steer the camera, draw the frame, show it with its overlays.
@@ -93,34 +83,35 @@ impl Viewer {
         self.normals.draw(&self.renderer, &view.target, &self.scene);
         // The lights' maps this frame drew, for their panel sections (read back only on a change).
         self.shadow_maps.update(ui.ctx(), &self.renderer, &self.gpu_scene, &self.scene);
-        let mut shown = view.texture;
+        // Another picture in the view's place (an egui texture), or the scene itself.
+        let mut shown = None;
         let analytic = shadelab_model::scene_variants::is_analytic(&self.scene);
         let factor = self.term == shadelab_model::terms::Term::Shadow;
         if factor {
             let ctx = ui.ctx().clone();
-            shown = self.shadow_factor.update(
+            shown = Some(self.shadow_factor.update(
                 &ctx,
                 &mut self.renderer,
                 &self.gpu_scene,
                 &self.scene,
                 &self.settings,
                 (w, h),
-            );
+            ));
         } else if self.difference.enabled && analytic {
             let ctx = ui.ctx().clone();
-            if let Some(t) =
-                self.difference.update(&ctx, &mut self.renderer, &self.gpu_scene, &self.scene, &self.settings, (w, h))
-            {
-                shown = t;
-            }
+            shown =
+                self.difference.update(&ctx, &mut self.renderer, &self.gpu_scene, &self.scene, &self.settings, (w, h));
         }
         (self.scene.ambient, self.scene.materials) = whole;
         let painter = ui.painter_at(rect);
-        if shown == view.texture {
+        match shown {
+            Some(t) => {
+                painter.image(t, rect, Rect::from_min_max(pos2(0.0, 0.0), pos2(1.0, 1.0)), Color32::WHITE);
+            }
             // The scene itself: its texels straight into the window (blit.rs).
-            painter.add(super::blit::shape(rect));
-        } else {
-            painter.image(shown, rect, Rect::from_min_max(pos2(0.0, 0.0), pos2(1.0, 1.0)), Color32::WHITE);
+            None => {
+                painter.add(super::blit::shape(rect));
+            }
         }
         if self.difference.enabled && analytic && !factor {
             let mode = format!("{} shading, {} specular", self.settings.shading, self.settings.specular);

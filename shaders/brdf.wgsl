@@ -93,12 +93,12 @@ fn specular_cook_torrance(n: vec3<f32>, v: vec3<f32>, l: vec3<f32>, m: f32, v_in
 }
 
 // What one light adds to the Phong illumination model (docs/model.md §3) at a point with unit
-// normal `n` and unit view vector `v`, for the light's sample `l`, `radiance` (light_sample in
-// lights.wgsl): I_L · (r_d·C·max(N·L, 0) + r_s·S), zero in the point's own shadow.
+// normal `n` and unit view vector `v`, for the light's sample `s` (light_sample in lights.wgsl):
+// I_L · (r_d·C·max(form, 0) + r_s·S(L)·spec_scale), form being N·L for a point light; the
+// specular is zero where N·L ≤ 0 (the point's own shadow).
 // `specular_model` is SPECULAR_PHONG or SPECULAR_COOK_TORRANCE; `v_index` is per channel.
 fn light_contribution(
-    l: vec3<f32>,
-    radiance: vec3<f32>,
+    s: LightSample,
     n: vec3<f32>,
     v: vec3<f32>,
     color: vec3<f32>,
@@ -110,21 +110,23 @@ fn light_contribution(
     v_index: vec3<f32>,
     specular_model: u32,
 ) -> vec3<f32> {
-    let n_dot_l = dot(n, l);
-    var lit = vec3(0.0);
-#if EFFECT_DIFFUSE
-    lit += r_d * color * diffuse_lambert(n_dot_l);
-#endif
+    let n_dot_l = dot(n, s.l);
+    let l = s.l;
+    var spec = vec3(0.0);
 #if EFFECT_SPECULAR_COOK_TORRANCE
     if (specular_model == SPECULAR_COOK_TORRANCE) {
-        lit += r_s * specular_cook_torrance(n, v, l, m, v_index);
+        spec += r_s * specular_cook_torrance(n, v, l, m, v_index);
     }
 #endif
 #if EFFECT_SPECULAR_PHONG
     if (specular_model == SPECULAR_PHONG) {
         let r = 2.0 * n_dot_l * n - l;
-        lit += r_s * vec3(select(0.0, specular_phong(dot(v, r), h, mirror), dot(n, v) > 0.0));
+        spec += r_s * vec3(select(0.0, specular_phong(dot(v, r), h, mirror), dot(n, v) > 0.0));
     }
 #endif
-    return select(vec3(0.0), radiance * lit, n_dot_l > 0.0);
+    var lit = select(vec3(0.0), spec * s.spec_scale, n_dot_l > 0.0);
+#if EFFECT_DIFFUSE
+    lit += r_d * color * diffuse_lambert(s.form);
+#endif
+    return s.radiance * lit;
 }

@@ -18,6 +18,9 @@ const FRESNEL_G_PLUS_C_MIN: f32 = 1e-6;
 const LIGHT_DIST_MIN: f32 = 1e-4;
 const D0_MIN: f32 = 1e-3;
 const SPOT_COS_SPAN_MIN: f32 = 1e-3;
+const EDGE_CROSS_MIN_LEN2: f32 = 1e-24;
+const AREA_POINT_LIMIT_ANGLE: f32 = 0.02;
+const BLOCKER_DIST_MIN: f32 = 1e-4;
 
 // Light slots in the scene uniform (scene::MAX_LIGHTS).
 const MAX_LIGHTS: u32 = 8u;

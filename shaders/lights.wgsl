@@ -7,6 +7,9 @@
 const LIGHT_DIRECTIONAL: u32 = 0u;
 const LIGHT_POINT: u32 = 1u;
 const LIGHT_SPOT: u32 = 2u;
+const LIGHT_RECT: u32 = 3u;
+const LIGHT_DISK: u32 = 4u;
+const LIGHT_SPHERE: u32 = 5u;
 const FALLOFF_QUADRATIC: u32 = 0u;
 const FALLOFF_LINEAR: u32 = 1u;
 
@@ -30,6 +33,17 @@ struct Light {
     // Point and spot lights: where the light ends; 0 = never.
     range: f32,
     _pad: f32,
+    // xyz: unit normal of a flat area light, the way it emits (kept apart from spot_axis, so that
+    // a permutation without spot lights reads nothing of theirs).
+    normal: vec4<f32>,
+    // xyz: unit tangent of a flat area light (the rectangle's width), perpendicular to its normal.
+    tangent: vec4<f32>,
+    // A rectangle's half-sizes; a disk's radius and its equal-area polygon's circumradius; a
+    // sphere's radius (in half_x).
+    half_x: f32,
+    half_y: f32,
+    _pad1: f32,
+    _pad2: f32,
 }
 
 // docs/model.md §6: I(d) = I0/(1 + α d²); in (0, 1] for α ≥ 0.
@@ -60,21 +74,29 @@ fn window_range(d: f32, range: f32) -> f32 {
 }
 
 struct LightSample {
-    // Unit vector from the surface towards the light.
+    // Unit vector from the surface towards the light (an area light's representative point).
     l: vec3<f32>,
     // Incident intensity I_L after falloff, per channel.
     radiance: vec3<f32>,
+    // The diffuse term's cosine factor: N·L, or an area light's area_form.
+    form: f32,
+    // What the specular term at l is scaled by: 1, or an area light's representative-point scale.
+    spec_scale: f32,
 }
 
-// Direction and intensity of one light at surface point `p` with normal `n`. A point or spot light
-// closer than LIGHT_DIST_MIN touches the surface: its direction is undefined, so L = N.
+// Direction, intensity and the diffuse and specular factors of one light at surface point `p`
+// with normal `n`, seen along `v`, roughness `m` (read by area lights only). A light with a
+// position closer than LIGHT_DIST_MIN touches the surface: its direction is undefined, so L = N.
+// An area light is its centre's point light with N·L replaced by its exact area form and the
+// specular taken at its representative point (area_lights.wgsl).
 // The `#if EFFECT_…` blocks are kept only in permutations whose scene calls for the effect
 // (crates/shadelab-model/src/effects/declared.rs decides; crates/shadelab-render/src/shaders.rs cuts).
-fn light_sample(light: Light, p: vec3<f32>, n: vec3<f32>) -> LightSample {
+fn light_sample(light: Light, p: vec3<f32>, n: vec3<f32>, v: vec3<f32>, m: f32) -> LightSample {
     var s: LightSample;
+    s.spec_scale = 1.0;
 #if EFFECT_POINT_LIGHTS
-    // Point and spot lights (a spot is a point light with a cone).
-    if (light.kind == LIGHT_POINT || light.kind == LIGHT_SPOT) {
+    // Point, spot and area lights (a spot is a point light with a cone).
+    if (light.kind != LIGHT_DIRECTIONAL) {
         let to_light = light.position.xyz - p;
         let d = length(to_light);
         s.l = select(n, to_light / max(d, LIGHT_DIST_MIN), d > LIGHT_DIST_MIN);
@@ -98,12 +120,22 @@ fn light_sample(light: Light, p: vec3<f32>, n: vec3<f32>) -> LightSample {
         }
 #endif
         s.radiance = light.radiance.rgb * f;
+        s.form = dot(n, s.l);
+#if EFFECT_AREA_LIGHTS
+        if (light.kind >= LIGHT_RECT) {
+            let a = area_specular_point(light, p, n, v, m);
+            s.l = a.l;
+            s.spec_scale = a.scale;
+            s.form = area_form(light, p, n);
+        }
+#endif
         return s;
     }
 #endif
 #if EFFECT_DIRECTIONAL_LIGHTS
     s.l = safe_normalize(-light.direction.xyz, n);
     s.radiance = light.radiance.rgb;
+    s.form = dot(n, s.l);
 #endif
     return s;
 }

@@ -91,8 +91,8 @@ const SMOOTH_VERTEX_FLOATS: u32 = 6u;
 // loop, reads each light's uniforms at a fixed offset and keeps only its kind's code. The default,
 // LOOP_DYNAMIC, reads the count and the kinds from the uniforms (the uber pipeline).
 const LOOP_DYNAMIC: u32 = 0xffffffffu;
-const LOOP_KIND_BITS: u32 = 2u;
-const LOOP_KIND_MASK: u32 = 3u;
+const LOOP_KIND_BITS: u32 = 3u;
+const LOOP_KIND_MASK: u32 = 7u;
 override LOOP_LIGHTS: u32 = LOOP_DYNAMIC;
 override LOOP_KINDS: u32 = 0u;
 
@@ -122,7 +122,7 @@ fn shade(p: vec3<f32>, n_in: vec3<f32>, surface: Surface, pixel: vec2<f32>) -> v
     for (var i = 0u; i < light_count; i++) {
         var light = globals.lights[i];
         light.kind = select(light.kind, (LOOP_KINDS >> (LOOP_KIND_BITS * i)) & LOOP_KIND_MASK, fixed_loop);
-        let s = light_sample(light, p, n);
+        let s = light_sample(light, p, n, v, surface.m);
         var visibility = 1.0;
 #if EFFECT_CAST_SHADOWS
         visibility = shadow_visibility(i, light, p, n, pixel);
@@ -131,7 +131,7 @@ fn shade(p: vec3<f32>, n_in: vec3<f32>, surface: Surface, pixel: vec2<f32>) -> v
         if (globals.illumination == ILLUMINATION_LAMBERT) {
             let li = clamp(s.radiance, vec3(0.0), vec3(1.0));
             i_max = max(i_max, li);
-            total += visibility * lambert_rule_lit(object.r_d * c, li, dot(n, s.l));
+            total += visibility * lambert_rule_lit(object.r_d * c, li, s.form);
             continue;
         }
 #endif
@@ -140,12 +140,12 @@ fn shade(p: vec3<f32>, n_in: vec3<f32>, surface: Surface, pixel: vec2<f32>) -> v
 #if EFFECT_TRANSMITTED_TERM
             total += transmitted_term(s.radiance, c, object.transmission);
 #endif
-            total += visibility * sum_contribution(s.radiance, dot(n, s.l), dot(n, v), c, object.r_d, object.r_s);
+            total += visibility * sum_contribution(s.radiance, s.form, dot(n, v), c, object.r_d, object.r_s);
             continue;
         }
 #endif
         total += visibility * light_contribution(
-            s.l, s.radiance, n, v, c, object.r_s, object.r_d, surface.m, surface.h, surface.mirror,
+            s, n, v, c, object.r_s, object.r_d, surface.m, surface.h, surface.mirror,
             v_index, globals.specular_model,
         );
     }

@@ -78,17 +78,17 @@ fn sweep(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workgroups)
     light.falloff_alpha = a_row.x;
     light.d0 = a_row.y;
     light.falloff_form = FALLOFF_QUADRATIC;
-    let quadratic = light_sample(light, vec3(0.0), n);
+    let quadratic = light_sample(light, vec3(0.0), n, v, m);
     light.falloff_form = FALLOFF_LINEAR;
-    let linear = light_sample(light, vec3(0.0), n);
+    let linear = light_sample(light, vec3(0.0), n, v, m);
 
     let f = f_fresnel_exact(dot(v, half), v_index);
     let ct = specular_cook_torrance(n, v, l, m, v_index);
     let c_phong = light_contribution(
-        quadratic.l, quadratic.radiance, n, v, SWEEP_COLOR, 1.0, 1.0, m, h_row.x, mirror, v_index, SPECULAR_PHONG,
+        quadratic, n, v, SWEEP_COLOR, 1.0, 1.0, m, h_row.x, mirror, v_index, SPECULAR_PHONG,
     );
     let c_ct = light_contribution(
-        linear.l, linear.radiance, n, v, SWEEP_COLOR, 1.0, 1.0, m, h_row.x, mirror, v_index,
+        linear, n, v, SWEEP_COLOR, 1.0, 1.0, m, h_row.x, mirror, v_index,
         SPECULAR_COOK_TORRANCE,
     );
 
@@ -105,7 +105,7 @@ fn sweep(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workgroups)
     put_rgb(base + COL_CONTRIBUTION_PHONG, c_phong);
     put_rgb(base + COL_CONTRIBUTION_COOK_TORRANCE, c_ct);
     // The other models at the linear falloff's sample; m in [0, 1] doubles as the share 1 − t.
-    let nl = dot(n, linear.l);
+    let nl = linear.form;
     let nv = dot(n, v);
     put_rgb(base + COL_LAMBERT_RULE_LIT, lambert_rule_lit(SWEEP_COLOR, linear.radiance, nl));
     put_rgb(base + COL_LAMBERT_RULE_FILL, lambert_rule_fill(SWEEP_COLOR, linear.radiance));
@@ -153,6 +153,20 @@ fn sweep(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workgroups)
     // incidence: no frame), its sign from V·L, scale h.
     let w = select(1.0, -1.0, dot(v, l) < 0.0);
     put_rgb(base + COL_NORMAL_MAPPED, normal_mapped(n, vec4(l, w), n_raw, h_row.x));
+
+    // Area lights at l·d facing −v, α as their size (0 to 1e6 m): the diffuse form and the
+    // specular point's scale of each shape.
+    var area: Light;
+    area.position = vec4(l * d, 1.0);
+    area.normal = vec4(-v, 0.0);
+    area.tangent = vec4(safe_normalize(cross(-v, vec3(0.0, 0.0, 1.0)), vec3(1.0, 0.0, 0.0)), 0.0);
+    area.half_x = 0.5 * a_row.x;
+    for (var k = 0u; k < 3u; k++) {
+        area.kind = LIGHT_RECT + k;
+        area.half_y = select(area.half_x, area.half_x * SWEEP_DISK_POLYGON_SCALE, area.kind == LIGHT_DISK);
+        outputs[base + COL_AREA_FORM + k] = area_form(area, vec3(0.0), n);
+        outputs[base + COL_AREA_SPEC_SCALE + k] = area_specular_point(area, vec3(0.0), n, v, m).scale;
+    }
 }
 
 // A colour's three channels into consecutive outputs from `at`.

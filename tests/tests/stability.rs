@@ -8,7 +8,7 @@ use shadelab_model::scene_variants;
 use shadelab_model::{LightKind, Overrides, PhongExponent, ShadingMode, Shape, SpecularModel};
 use shadelab_render::sweep::{self, ERROR_TOLERANCE, SweepInputs};
 use shadelab_render::{RenderSettings, render_image};
-use shadelab_tests::gpu;
+use shadelab_tests::{error, gpu, interior};
 
 #[test]
 fn sweep_of_the_shipped_wgsl_is_finite_bounded_and_close_to_f64() {
@@ -31,40 +31,6 @@ fn sweep_of_the_shipped_wgsl_is_finite_bounded_and_close_to_f64() {
         let compared = report.combinations * t.columns.len() - t.ill_conditioned;
         assert!(compared * 10 > report.combinations * t.columns.len() * 9, "{}: only {compared} compared", t.name);
     }
-}
-
-/// Pixels where the reference sees object `object` and so do all 8 neighbours (no silhouette).
-fn interior(r: &shadelab_model::reference::ReferenceImage, object: usize) -> Vec<(u32, u32)> {
-    let mut out = Vec::new();
-    for y in 1..r.height - 1 {
-        for x in 1..r.width - 1 {
-            let all = (0..9).all(|k| r.object_at(x + k % 3 - 1, y + k / 3 - 1) == Some(object));
-            if all {
-                out.push((x, y));
-            }
-        }
-    }
-    out
-}
-
-/// Mean and largest |GPU − reference| over the channels of `pixels`, and where the largest is.
-fn error(
-    gpu_img: &shadelab_render::LinearImage,
-    reference: &shadelab_model::reference::ReferenceImage,
-    pixels: &[(u32, u32)],
-) -> (f64, f64, (u32, u32)) {
-    let (mut sum, mut max, mut worst) = (0.0f64, 0.0f64, (0, 0));
-    for &(x, y) in pixels {
-        let (g, r) = (gpu_img.get(x, y), reference.get(x, y));
-        for c in 0..3 {
-            let e = (g[c] as f64 - r[c]).abs();
-            sum += e;
-            if e > max {
-                (max, worst) = (e, (x, y));
-            }
-        }
-    }
-    (sum / (3 * pixels.len().max(1)) as f64, max, worst)
 }
 
 #[test]

@@ -74,6 +74,22 @@ pub const SPOT_COS_SPAN_MIN: f64 = 1e-3;
 /// texel index, and 0 is a coordinate every wrap mode maps inside the image.
 pub const NONFINITE_UV: f64 = 0.0;
 
+/// Squared length under which the cross product of the unit directions to two neighbouring
+/// corners of an area light counts as zero: the edge is seen end-on (or the corners coincide),
+/// and its term in Lambert's edge formula is zero. 1e-24 is (1e-12)², below any edge f32 or f64
+/// resolves between unit vectors and far above either's smallest normal number.
+pub const EDGE_CROSS_MIN_LEN2: f64 = 1e-24;
+
+/// Angular radius (radians) under which an area light is lit as its centre's point light
+/// (a Lambertian point for a rectangle or disk). Lambert's edge formula sums terms of size σ to a
+/// total of size σ², so f32 loses about ε/σ² of it (1.5e-4 at 0.02), while the point's own
+/// error grows as σ² (4e-4 at 0.02): at 0.02 both stay under the zero-size test's 1e-3.
+pub const AREA_POINT_LIMIT_ANGLE: f64 = 0.02;
+
+/// Smallest blocker distance (m) in the penumbra width w_light·(d_r − d_b)/d_b: a blocker at the
+/// light would make it infinite; a tenth of a millimetre caps it.
+pub const BLOCKER_DIST_MIN: f64 = 1e-4;
+
 /// All guards by name, in the order they are declared (used by the WGSL ↔ Rust equality test and
 /// by the README table).
 pub const ALL: &[(&str, f64)] = &[
@@ -91,4 +107,7 @@ pub const ALL: &[(&str, f64)] = &[
     ("D0_MIN", D0_MIN),
     ("SPOT_COS_SPAN_MIN", SPOT_COS_SPAN_MIN),
     ("NONFINITE_UV", NONFINITE_UV),
+    ("EDGE_CROSS_MIN_LEN2", EDGE_CROSS_MIN_LEN2),
+    ("AREA_POINT_LIMIT_ANGLE", AREA_POINT_LIMIT_ANGLE),
+    ("BLOCKER_DIST_MIN", BLOCKER_DIST_MIN),
 ];

@@ -63,7 +63,13 @@ pub fn pick(scene: &Scene, (x, y): (u32, u32), (width, height): (u32, u32)) -> O
     let e = scene.camera.eye_h();
     let v = safe_normalize(e.truncate() - hit.point * e.w, DVec3::Y);
     let n = safe_normalize(hit.normal, v);
-    let lights = scene.lights.iter().take(MAX_LIGHTS).map(|l| light_sample(l, hit.point, n)).collect();
+    let lights = scene
+        .lights
+        .iter()
+        .take(MAX_LIGHTS)
+        .map(|l| light_sample(l, hit.point, n, v, material.m))
+        .map(|s| (s.l, s.radiance))
+        .collect();
     Some(Pick { pixel: (x, y), object: hit.object, material, point: hit.point, n, v, lights })
 }
 

@@ -10,7 +10,9 @@ use std::fmt;
 use std::str::FromStr;
 
 pub use crate::lighting::brdf::SpecularModel;
-pub use crate::lighting::lights::{CONE_ANGLE, CONE_ANGLE_F32, D0, FALLOFF, FalloffForm, INTENSITY, LightKind, RANGE};
+pub use crate::lighting::lights::{
+    CONE_ANGLE, CONE_ANGLE_F32, D0, FALLOFF, FalloffForm, INTENSITY, LIGHT_SIZE, LightKind, RANGE,
+};
 pub use crate::lighting::models::{IlluminationModel, ModelChoice};
 
 /// How lighting is distributed over a face (docs/model.md §8).

@@ -126,6 +126,9 @@ pub struct Overrides {
     pub falloff_form: Option<FalloffForm>,
     pub d0: Option<f64>,
     pub light: Option<LightKind>,
+    /// Every area light's width and height in metres (a disk's or sphere's diameter), within
+    /// `lights::LIGHT_SIZE`.
+    pub light_size: Option<f64>,
     /// Every light casts shadows (`Some(true)`) or none does (`Some(false)`).
     pub shadows: Option<bool>,
     /// Every light's shadow map side, within `shadows::SHADOW_RESOLUTION` (clamped into it).
@@ -181,6 +184,9 @@ impl Scene {
         for light in &mut self.lights {
             if let Some(kind) = o.light {
                 light.set_kind(kind);
+            }
+            if let Some(w) = o.light_size {
+                light.size = [w; 2];
             }
             if let Some(a) = o.falloff_alpha {
                 light.falloff_alpha = a;

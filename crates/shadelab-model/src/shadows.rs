@@ -245,7 +245,8 @@ pub fn shadow_projection(light: &Light, centre: DVec3, radius: f64, resolution: 
             let proj = DMat4::orthographic_rh(-radius, radius, -radius, radius, radius * 0.5, radius * 3.5);
             ShadowProjection { matrices: vec![proj * view], texel_world: 2.0 * radius / n, perspective: false }
         }
-        LightKind::Point | LightKind::Spot => {
+        // An area light's map is a point light's six faces from its centre (PCSS widens it).
+        LightKind::Point | LightKind::Spot | LightKind::Rect | LightKind::Disk | LightKind::Sphere => {
             let d = (centre - light.position).length();
             let far = if (d + radius).is_finite() { (d + radius).max(SHADOW_BOUNDS_RADIUS_MIN) } else { radius };
             let near = (d - radius).max(far * SHADOW_NEAR_OVER_FAR_MIN);

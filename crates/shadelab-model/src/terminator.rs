@@ -141,7 +141,9 @@ impl EdgeMesh {
             let (pa, pb) = (self.positions[a as usize], self.positions[b as usize]);
             let l = match light.kind {
                 LightKind::Directional => -light.direction,
-                LightKind::Point | LightKind::Spot => light.position - (pa + pb) * 0.5,
+                LightKind::Point | LightKind::Spot | LightKind::Rect | LightKind::Disk | LightKind::Sphere => {
+                    light.position - (pa + pb) * 0.5
+                }
             };
             let len2 = l.length_squared();
             if !(len2 > NORMALIZE_MIN_LEN2 && len2.is_finite()) {

@@ -9,7 +9,7 @@ use shadelab_model::lighting::lights::MAX_LIGHTS;
 use shadelab_model::params::NamedValue;
 
 /// Bits of `LOOP_KINDS` per light slot (`LOOP_KIND_BITS` in WGSL): a `LightKind::code`.
-pub const KIND_BITS: u32 = 2;
+pub const KIND_BITS: u32 = 3;
 
 /// How a pipeline's light loop is built. Part of the pipeline key: a scene whose light count or
 /// kinds change gets another pipeline (the viewer builds it while the uber pipeline draws).
@@ -19,7 +19,7 @@ pub enum LightLoop {
     #[default]
     Dynamic,
     /// Exactly `count` lights, slot i's kind code in bits `KIND_BITS·i` of `kinds`.
-    Fixed { count: u8, kinds: u16 },
+    Fixed { count: u8, kinds: u32 },
 }
 
 impl LightLoop {
@@ -27,8 +27,9 @@ impl LightLoop {
     pub fn for_scene(scene: &Scene) -> LightLoop {
         let lights = &scene.lights[..scene.lights.len().min(MAX_LIGHTS)];
         let kinds = lights.iter().enumerate().fold(0u32, |k, (i, l)| k | (l.kind.code() << (KIND_BITS * i as u32)));
-        // MAX_LIGHTS slots of KIND_BITS fit in 16 bits (held by a test).
-        LightLoop::Fixed { count: lights.len() as u8, kinds: kinds as u16 }
+        // MAX_LIGHTS slots of KIND_BITS fit in 24 bits (held by a test), exact in the f64 an
+        // override constant is given as.
+        LightLoop::Fixed { count: lights.len() as u8, kinds }
     }
 
     /// The pipeline-overridable constants that build it (none: the WGSL defaults, dynamic).
@@ -45,7 +46,7 @@ impl LightLoop {
             LightLoop::Dynamic => "lights from uniforms".into(),
             LightLoop::Fixed { count, kinds } => {
                 let names: Vec<&str> = (0..count as u32)
-                    .map(|i| (kinds as u32 >> (KIND_BITS * i)) & ((1 << KIND_BITS) - 1))
+                    .map(|i| (kinds >> (KIND_BITS * i)) & ((1 << KIND_BITS) - 1))
                     .map(|code| {
                         shadelab_model::LightKind::ALL
                             .iter()
@@ -69,7 +70,7 @@ mod tests {
         for (name, k) in LightKind::ALL {
             assert!(k.code() < 1 << KIND_BITS, "{name}: code {} needs more than {KIND_BITS} bits", k.code());
         }
-        assert!(MAX_LIGHTS as u32 * KIND_BITS <= 16, "LightLoop::Fixed.kinds is a u16");
+        assert!(MAX_LIGHTS as u32 * KIND_BITS <= 24, "LightLoop::Fixed.kinds must be exact as an f32 and f64");
     }
 
     #[test]
@@ -94,8 +95,8 @@ mod tests {
             l.set_kind(k);
         }
         let lp = LightLoop::for_scene(&scene);
-        let expect = LightKind::Spot.code() | LightKind::Directional.code() << 2 | LightKind::Point.code() << 4;
-        assert_eq!(lp, LightLoop::Fixed { count: 3, kinds: expect as u16 });
+        let expect = LightKind::Spot.code() | LightKind::Directional.code() << 3 | LightKind::Point.code() << 6;
+        assert_eq!(lp, LightLoop::Fixed { count: 3, kinds: expect });
         assert_eq!(lp.label(), "3 lights (spot, directional, point)");
         assert_eq!(lp.constants(), vec![("LOOP_LIGHTS", 3.0), ("LOOP_KINDS", expect as f64)]);
         assert!(LightLoop::Dynamic.constants().is_empty());

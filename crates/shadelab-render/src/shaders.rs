@@ -8,11 +8,13 @@
 use shadelab_model::effects::EffectKey;
 
 /// `(file name, source)` in the order they are concatenated.
-pub const FILES: [(&str, &str); 9] = [
+pub const FILES: [(&str, &str); 10] = [
     ("common.wgsl", include_str!("../../../shaders/common.wgsl")),
     ("brdf.wgsl", include_str!("../../../shaders/brdf.wgsl")),
     ("models.wgsl", include_str!("../../../shaders/models.wgsl")),
     ("lights.wgsl", include_str!("../../../shaders/lights.wgsl")),
+    // Only in permutations with area lights (the whole file is one `#if EFFECT_AREA_LIGHTS`).
+    ("area_lights.wgsl", include_str!("../../../shaders/area_lights.wgsl")),
     // The shadow projection math, without bindings (the sweep runs it): with cast shadows only.
     ("shadow_math.wgsl", include_str!("../../../shaders/shadow_math.wgsl")),
     // C and μ at a point: the material tinted by vertex colours and textures.
@@ -72,9 +74,9 @@ fn uber_defines() -> Vec<&'static str> {
 
 /// Constants, guards and the lighting terms with every effect, without entry points (for compute
 /// passes that evaluate the terms directly; the one texture binding of `surface` goes unused):
-/// `common`, `brdf`, `models`, `lights`, `shadow_math` and `surface`.
+/// `common`, `brdf`, `models`, `lights`, `area_lights`, `shadow_math` and `surface`.
 pub fn terms_source() -> String {
-    let raw = FILES[..6].iter().map(|(_, s)| *s).collect::<Vec<_>>().join("\n");
+    let raw = FILES[..7].iter().map(|(_, s)| *s).collect::<Vec<_>>().join("\n");
     preprocess(&raw, &uber_defines()).expect("the shipped WGSL preprocesses")
 }
 

@@ -53,7 +53,8 @@ impl ShadowPlan {
                 continue;
             }
             let n = match l.kind {
-                LightKind::Point => 6,
+                // An area light's map is its centre's cube, like a point light's.
+                LightKind::Point | LightKind::Rect | LightKind::Disk | LightKind::Sphere => 6,
                 LightKind::Directional if l.shadow.cascades => cascade_count(scene),
                 _ => 1,
             };
@@ -457,6 +458,7 @@ mod tests {
             LightKind::Directional => Light::directional(-towards, [1.0; 3], 1.0),
             LightKind::Point => Light::point(towards * 6.0, [1.0; 3], 1.0, 0.0),
             LightKind::Spot => Light::spot(towards * 6.0, -towards, [1.0; 3], 1.0, 0.0, (0.9, 1.2)),
+            k => Light::area(k, towards * 6.0, -towards, [0.5; 2], [1.0; 3], 1.0, 0.0),
         }];
         for l in &mut s.lights {
             l.shadow.filter = filter;

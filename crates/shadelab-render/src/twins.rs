@@ -9,11 +9,12 @@ use shadelab_model::params::NamedValue;
 use shadelab_model::{FalloffForm, IlluminationModel, LightKind, SpecularModel};
 
 /// Each WGSL file and the source of its f64 twin.
-const TWINS: [(&str, &str); 9] = [
+const TWINS: [(&str, &str); 10] = [
     ("common.wgsl", include_str!("../../shadelab-model/src/lighting/common.rs")),
     ("brdf.wgsl", include_str!("../../shadelab-model/src/lighting/brdf.rs")),
     ("models.wgsl", include_str!("../../shadelab-model/src/lighting/models.rs")),
     ("lights.wgsl", include_str!("../../shadelab-model/src/lighting/lights.rs")),
+    ("area_lights.wgsl", include_str!("../../shadelab-model/src/lighting/area.rs")),
     // The projection and cascade math, and the map lookup around it; the map sampling has
     // none (the reference traces shadow rays).
     (

@@ -4,6 +4,7 @@
 //! derives for the GPU and the f64 reference alike (`lighting/lights.rs`).
 
 use bytemuck::{Pod, Zeroable};
+use shadelab_model::lighting::area::{AreaShape, disk_polygon_scale};
 use shadelab_model::scene::MAX_LIGHTS;
 use shadelab_model::scene::UvTransform;
 use shadelab_model::shadows::MAX_SHADOW_LAYERS;
@@ -25,6 +26,16 @@ pub struct LightUniform {
     /// 0: the light never ends.
     pub range: f32,
     pub _pad: f32,
+    /// xyz: a flat area light's unit normal, the way it emits (`Light::spot_axis`).
+    pub normal: [f32; 4],
+    /// xyz: a flat area light's unit tangent (`Light::area_tangent`).
+    pub tangent: [f32; 4],
+    /// A rectangle's half-sizes; a disk's radius and its equal-area polygon's circumradius; a
+    /// sphere's radius in `half_x`.
+    pub half_x: f32,
+    pub half_y: f32,
+    pub _pad1: f32,
+    pub _pad2: f32,
 }
 
 #[repr(C)]
@@ -119,6 +130,12 @@ impl LightUniform {
     /// One light as `lights.wgsl`'s `Light` reads it.
     pub fn new(l: &Light) -> Self {
         let (cos_inner, cos_outer) = l.cone_cosines();
+        let (half_x, half_y) = match l.area_light().map(|a| a.shape) {
+            Some(AreaShape::Rect { half_x, half_y }) => (half_x, half_y),
+            Some(AreaShape::Disk { radius }) => (radius, radius * disk_polygon_scale()),
+            Some(AreaShape::Sphere { radius }) => (radius, radius),
+            None => (0.0, 0.0),
+        };
         LightUniform {
             position: l.position.as_vec3().extend(1.0).to_array(),
             direction: l.direction.as_vec3().extend(0.0).to_array(),
@@ -132,6 +149,12 @@ impl LightUniform {
             cos_outer: cos_outer as f32,
             range: l.range.unwrap_or(0.0) as f32,
             _pad: 0.0,
+            normal: l.spot_axis().as_vec3().extend(0.0).to_array(),
+            tangent: l.area_tangent().as_vec3().extend(0.0).to_array(),
+            half_x: half_x as f32,
+            half_y: half_y as f32,
+            _pad1: 0.0,
+            _pad2: 0.0,
         }
     }
 }

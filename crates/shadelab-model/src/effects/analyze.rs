@@ -76,6 +76,17 @@ pub fn analyze(scene: &Scene, specular: SpecularModel) -> Analysis {
         },
     );
     a.decide(Effect::SpotLights, n_spot > 0, format!("{n_spot} spot light(s)"));
+    let areas: Vec<String> = lights
+        .iter()
+        .enumerate()
+        .filter(|(_, l)| l.kind.is_area())
+        .map(|(i, l)| format!("{} light L{}", l.kind.name(), i + 1))
+        .collect();
+    a.decide(
+        Effect::AreaLights,
+        !areas.is_empty(),
+        if areas.is_empty() { "no rect, disk or sphere light".into() } else { areas.join(", ") },
+    );
     let ranged = points.iter().filter(|l| l.range.is_some()).count();
     a.decide(
         Effect::LightRange,

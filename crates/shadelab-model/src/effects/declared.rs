@@ -188,6 +188,27 @@ declare_effects! {
         functions: &["spot_cone"],
         members: &[("Light", "spot_axis"), ("Light", "cos_inner"), ("Light", "cos_outer")],
     },
+    /// Rectangle, disk and sphere lights (docs/area-lights.md): the exact area form for the
+    /// diffuse term and the representative point for the specular, on the point-light path.
+    AreaLights {
+        explain: "area lights",
+        name: "area lights",
+        label: "area",
+        define: Some("EFFECT_AREA_LIGHTS"),
+        functions: &[
+            "emitting_area",
+            "area_radius",
+            "area_corners",
+            "edge_term",
+            "polygon_irradiance",
+            "sphere_irradiance",
+            "area_irradiance",
+            "area_form",
+            "clamp_to_shape",
+            "area_specular_point",
+        ],
+        members: &[("Light", "normal"), ("Light", "tangent"), ("Light", "half_x"), ("Light", "half_y")],
+    },
     /// glTF's range window on point and spot lights that have a range (docs/model.md §9).
     LightRange {
         explain: "light range",

@@ -81,6 +81,8 @@ ranges! {
     Cone = params::CONE_ANGLE_F32;
     /// A light's range.
     LightRange = params::RANGE;
+    /// An area light's width or height.
+    LightSize = params::LIGHT_SIZE;
     /// A light's shadow map side in texels.
     ShadowSide = crate::shadows::SHADOW_RESOLUTION;
 }

@@ -5,7 +5,8 @@
 //! without lights gets a default one.
 
 use super::extras::{
-    self, Cone, Count, D0, Falloff, Flag, Intensity, LightRange, Named, Num, Rgb, ShadowSide, Unit, Vec3, agrees,
+    self, Cone, Count, D0, Falloff, Flag, Intensity, LightRange, LightSize, Named, Num, Rgb, ShadowSide, Unit, Vec3,
+    agrees,
 };
 use super::scene_file::{Reader, num, quat, rgb, vec3};
 use super::{GltfError, POINT_FALLOFF_ALPHA};
@@ -45,6 +46,17 @@ struct LightExtras {
     shadow_resolution: Option<Count<ShadowSide>>,
     shadow_filter: Option<Named<ShadowFilter>>,
     shadow_cascades: Option<Flag>,
+    /// An area light (`rect`, `disk`, `sphere`; KHR_lights_punctual has none): the file's light
+    /// is its point light (sphere) or hemisphere spot light (rectangle, disk), which other
+    /// viewers draw; shadelab draws the area light its centre, size and tangent describe.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    area: Option<Named<LightKind>>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    width: Option<Num<LightSize>>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    height: Option<Num<LightSize>>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    tangent: Option<Vec3>,
 }
 
 impl Reader<'_> {
@@ -127,6 +139,8 @@ impl Reader<'_> {
             outer_cone,
             range,
             shadow: ShadowSettings::default(),
+            size: [crate::lighting::lights::LIGHT_SIZE_DEFAULT; 2],
+            tangent: world.transform_vector3(DVec3::X),
         };
         let ex: LightExtras = extras::read(&self.cx, &l.extras, &what)?;
         let set = |field: &mut f64, v: Option<f64>| {
@@ -166,6 +180,23 @@ impl Reader<'_> {
         if let Some(f) = ex.shadow_filter {
             light.shadow.filter = f.0;
         }
+        match ex.area.map(|a| a.0) {
+            Some(area) if area.is_area() && kind != LightKind::Directional => light.kind = area,
+            Some(area) => self.cx.warn(format!(
+                "{what}: extras area \"{}\" ignored: it must be rect, disk or sphere on a point or spot light",
+                area.name()
+            )),
+            None => {
+                if ex.width.is_some() || ex.height.is_some() {
+                    self.cx.warn(format!("{what}: extras width and height ignored: not an area light"));
+                }
+            }
+        }
+        set(&mut light.size[0], ex.width.map(|v| v.0));
+        light.size[1] = ex.height.map_or(light.size[0], |v| v.0);
+        if let Some(t) = ex.tangent {
+            light.tangent = t.0;
+        }
         // glTF's f32 π/2 is a little above f64's: the cones are held to [0, π/2] after the check.
         let (inner, outer) = (light.inner_cone, light.outer_cone);
         let span = params::CONE_ANGLE_F32;
@@ -191,13 +222,20 @@ pub(super) fn write_light(i: usize, l: &Light) -> (Value, Value) {
     let pi = std::f64::consts::PI;
     let (kind, intensity) = match l.kind {
         LightKind::Directional => ("directional", l.intensity * pi),
-        LightKind::Point | LightKind::Spot => {
+        LightKind::Point | LightKind::Spot | LightKind::Rect | LightKind::Disk | LightKind::Sphere => {
+            // Other viewers see a sphere light as a point light, a flat one as a spot lighting
+            // the half-space in front of it.
+            let kind = match l.kind {
+                LightKind::Point | LightKind::Sphere => "point",
+                _ => "spot",
+            };
             let far =
                 if l.falloff_form == FalloffForm::Quadratic && l.falloff_alpha > 0.0 { l.falloff_alpha } else { 1.0 };
-            (l.kind.name(), l.intensity * pi / far)
+            (kind, l.intensity * pi / far)
         }
     };
     let spot = l.kind == LightKind::Spot;
+    let area = l.kind.is_area();
     let range = l.range.filter(|_| l.kind != LightKind::Directional);
     let ex = LightExtras {
         intensity: Some(l.intensity.into()),
@@ -215,6 +253,10 @@ pub(super) fn write_light(i: usize, l: &Light) -> (Value, Value) {
         shadow_resolution: Some(l.shadow.clamped().resolution.into()),
         shadow_filter: Some(Named(l.shadow.filter)),
         shadow_cascades: Some(Flag(l.shadow.cascades)),
+        area: area.then_some(Named(l.kind)),
+        width: area.then(|| l.size[0].into()),
+        height: area.then(|| l.size[1].into()),
+        tangent: area.then(|| Vec3(l.area_tangent())),
     };
     let mut light = json!({
         "type": kind,
@@ -224,6 +266,8 @@ pub(super) fn write_light(i: usize, l: &Light) -> (Value, Value) {
     });
     if spot {
         light["spot"] = json!({ "innerConeAngle": num(l.inner_cone), "outerConeAngle": num(l.outer_cone) });
+    } else if kind == "spot" {
+        light["spot"] = json!({ "innerConeAngle": 0.0, "outerConeAngle": num(params::CONE_ANGLE_F32.max) });
     }
     if let Some(r) = range {
         light["range"] = num(r);

@@ -1,29 +1,18 @@
-//! Area lights in f64 (docs/area-lights.md): what a rectangle, disk or sphere light of uniform
-//! radiance L delivers to a point, as the irradiance factor E/L = ∫ cos θ_p⁺ cos θ_l⁺ / r² dA.
-//! Exact where a closed form exists (Lambert's edge formula for a polygon, the spherical cap for a
-//! sphere, both clipped at the point's horizon), and the reference integral over the light's
-//! area by deterministic midpoint quadrature with binary visibility, which also reports its own
-//! error. The penumbra width the shadow filters aim for is here too. The WGSL twin does not exist
-//! yet: these are the reference the GPU's area lights will be held to.
+//! Area lights in f64 (docs/area-lights.md), the twin of `shaders/area_lights.wgsl`: what a
+//! rectangle, disk or sphere light of uniform radiance L delivers to a point, as the irradiance
+//! factor E/L = ∫ cos θ_p⁺ cos θ_l⁺ / r² dA. Exact where a closed form exists (Lambert's edge
+//! formula for a polygon, the spherical cap for a sphere, both clipped at the point's horizon;
+//! the disk as its equal-area polygon), the representative-point specular, and the reference
+//! integral over the light's area by deterministic midpoint quadrature with binary visibility,
+//! which also reports its own error. The penumbra width the shadow filters aim for is here too.
 
+use crate::guards::{AREA_POINT_LIMIT_ANGLE, BLOCKER_DIST_MIN, EDGE_CROSS_MIN_LEN2, LIGHT_DIST_MIN, M_MIN};
 use glam::DVec3;
 use std::f64::consts::{PI, TAU};
 
-/// Squared length under which the cross product of two directions to neighbouring polygon
-/// corners counts as zero: the edge is seen end-on (or the corners coincide), its solid angle
-/// and its term in Lambert's sum are zero. 1e-24 is (1e-12)², far below any edge a scene in
-/// double precision resolves, and far above f64's smallest normal.
-pub const EDGE_CROSS_MIN_LEN2: f64 = 1e-24;
-
-/// Distance under which a polygon corner counts as touching the shaded point: its direction is
-/// undefined, and the point lies on the light (E/L is then that of half the hemisphere or more,
-/// which the clipped formula reaches without it). Same value and reason as `LIGHT_DIST_MIN`.
-pub const AREA_CORNER_DIST_MIN: f64 = crate::guards::LIGHT_DIST_MIN;
-
-/// Smallest blocker distance in the penumbra width w_light·(d_r − d_b)/d_b: a receiver touching
-/// its occluder has d_b → 0 only when the light touches the occluder too; below 1e-4 (the
-/// scenes' unit is a metre: a tenth of a millimetre) the width is capped rather than infinite.
-pub const BLOCKER_DIST_MIN: f64 = 1e-4;
+/// Sides of the regular polygon a disk light is drawn as (`AREA_DISK_SIDES` in WGSL): of the
+/// disk's area, so its E/L is the disk's within 0.3 % (`area_tests`), at the cost of 16 edges.
+pub const AREA_DISK_SIDES: usize = 16;
 
 /// The shape of an area light, in its own frame: centred at the origin, emitting along +z
 /// (rectangle and disk emit from their front face only; a sphere from all of its surface).
@@ -57,6 +46,34 @@ impl AreaLight {
         }
     }
 
+    /// The area a point far away sees face-on: a flat light's area, a sphere's disc πr².
+    pub fn emitting_area(&self) -> f64 {
+        match self.shape {
+            AreaShape::Sphere { radius } => PI * radius * radius,
+            _ => self.area(),
+        }
+    }
+
+    /// The radius of the disc the light's farthest point lies on: its half-diagonal, its radius.
+    pub fn area_radius(&self) -> f64 {
+        match self.shape {
+            AreaShape::Rect { half_x, half_y } => half_x.hypot(half_y),
+            AreaShape::Disk { radius } | AreaShape::Sphere { radius } => radius.abs(),
+        }
+    }
+
+    /// The disk as a regular polygon of [`AREA_DISK_SIDES`] sides and the disk's area,
+    /// counter-clockwise seen from the side it emits to.
+    pub fn disk_corners(&self) -> Option<[DVec3; AREA_DISK_SIDES]> {
+        let AreaShape::Disk { radius } = self.shape else { return None };
+        let (t, b) = (self.tangent, self.normal.cross(self.tangent));
+        let r = radius.abs() * disk_polygon_scale();
+        Some(std::array::from_fn(|i| {
+            let phi = TAU * i as f64 / AREA_DISK_SIDES as f64;
+            self.center + (t * phi.cos() + b * phi.sin()) * r
+        }))
+    }
+
     /// The rectangle's corners, counter-clockwise seen from the side it emits to.
     pub fn rect_corners(&self) -> Option<[DVec3; 4]> {
         let AreaShape::Rect { half_x, half_y } = self.shape else { return None };
@@ -66,27 +83,42 @@ impl AreaLight {
     }
 }
 
+/// One edge's term of Lambert's edge formula: θ · n·(a × b)/|a × b| for unit directions `a`, `b`
+/// to its corners, θ their angle taken as atan2(|a × b|, a·b), which keeps its precision for
+/// small angles in f32 (acos of a dot near 1 does not); 0 for an edge seen end-on
+/// (`EDGE_CROSS_MIN_LEN2`).
+pub fn edge_term(a: DVec3, b: DVec3, n: DVec3) -> f64 {
+    let cross = a.cross(b);
+    let len2 = cross.length_squared();
+    if len2 <= EDGE_CROSS_MIN_LEN2 {
+        return 0.0;
+    }
+    let len = len2.sqrt();
+    len.atan2(a.dot(b)) * n.dot(cross) / len
+}
+
+/// The circumradius of the regular polygon of [`AREA_DISK_SIDES`] sides whose area is the unit
+/// disk's: π = ½·n·R²·sin(2π/n).
+pub fn disk_polygon_scale() -> f64 {
+    let n = AREA_DISK_SIDES as f64;
+    (TAU / (n * (TAU / n).sin())).sqrt()
+}
+
 /// Lambert's edge formula: E/L of a uniform polygon light at point `p` with unit normal `n`,
-/// ½ Σ_edges θ_i (n · (v_i × v_{i+1})/|v_i × v_{i+1}|) with v_i the unit directions to the corners.
-/// The polygon is first clipped at the plane through `p` normal to `n`, so the part below the
-/// horizon adds nothing; it emits towards the side from which its corners run counter-clockwise,
-/// and seen from behind it delivers 0.
+/// −½ Σ_edges [`edge_term`] of the unit directions to its corners. The polygon is first clipped
+/// at the plane through `p` normal to `n`, so the part below the horizon adds nothing; it emits
+/// towards the side from which its corners run counter-clockwise, and seen from behind it
+/// delivers 0. A corner touching `p` (closer than `LIGHT_DIST_MIN`) has no direction and is
+/// skipped.
 pub fn polygon_irradiance(p: DVec3, n: DVec3, corners: &[DVec3]) -> f64 {
     let clipped = clip_to_horizon(p, n, corners);
     if clipped.len() < 3 {
         return 0.0;
     }
-    let dirs: Vec<DVec3> = clipped.iter().map(|c| *c - p).filter(|d| d.length() > AREA_CORNER_DIST_MIN).collect();
+    let dirs: Vec<DVec3> = clipped.iter().map(|c| *c - p).filter(|d| d.length() > LIGHT_DIST_MIN).collect();
     let mut sum = 0.0;
     for i in 0..dirs.len() {
-        let (a, b) = (dirs[i].normalize(), dirs[(i + 1) % dirs.len()].normalize());
-        let cross = a.cross(b);
-        let len2 = cross.length_squared();
-        if len2 <= EDGE_CROSS_MIN_LEN2 {
-            continue;
-        }
-        let theta = a.dot(b).clamp(-1.0, 1.0).acos();
-        sum += theta * n.dot(cross) / len2.sqrt();
+        sum += edge_term(dirs[i].normalize(), dirs[(i + 1) % dirs.len()].normalize(), n);
     }
     // Counter-clockwise seen from p gives a negative sum with this orientation of the cross
     // products: the emitting side is the one whose sum is negative; the back side delivers 0.
@@ -140,15 +172,53 @@ pub fn sphere_irradiance(radius: f64, d: f64, cos_theta: f64) -> f64 {
 /// tilted, clipped form has no closed form here (the quadrature is its reference).
 pub fn area_irradiance_exact(light: &AreaLight, p: DVec3, n: DVec3) -> Option<f64> {
     match light.shape {
-        AreaShape::Rect { .. } => light.rect_corners().map(|c| polygon_irradiance(p, n, &c)),
+        AreaShape::Disk { .. } => None,
+        _ => Some(area_irradiance(light, p, n)),
+    }
+}
+
+/// E/L as the renderer computes it: [`area_irradiance_exact`], and the disk as its equal-area
+/// regular polygon of [`AREA_DISK_SIDES`] sides ([`AreaLight::disk_corners`]).
+pub fn area_irradiance(light: &AreaLight, p: DVec3, n: DVec3) -> f64 {
+    match light.shape {
+        AreaShape::Rect { .. } | AreaShape::Disk { .. } => polygon_irradiance(p, n, &area_corners(light)),
         AreaShape::Sphere { radius } => {
             let to = light.center - p;
             let d = to.length();
             let cos_theta = if d > 0.0 { n.dot(to) / d } else { 1.0 };
-            Some(sphere_irradiance(radius, d, cos_theta))
+            sphere_irradiance(radius, d, cos_theta)
         }
-        AreaShape::Disk { .. } => None,
     }
+}
+
+/// A flat light's corners, counter-clockwise seen from the side it emits to: the rectangle's
+/// four, the disk's equal-area polygon; none for a sphere.
+pub fn area_corners(light: &AreaLight) -> Vec<DVec3> {
+    match light.shape {
+        AreaShape::Rect { .. } => light.rect_corners().map_or(Vec::new(), |c| c.to_vec()),
+        AreaShape::Disk { .. } => light.disk_corners().map_or(Vec::new(), |c| c.to_vec()),
+        AreaShape::Sphere { .. } => Vec::new(),
+    }
+}
+
+/// The light's diffuse factor at `p` relative to its centre's point light (what `N·L` is for a
+/// point light; `LightSample.form` in WGSL): `d²·(E/L)/A_emit`, with `d` the distance to the
+/// centre and `A_emit` the area a point far away sees face-on (a sphere's disc πr², a flat light's
+/// area). Times the point light's `I·f(d)` it is the exact area integral, scaled to the point
+/// light at the centre; it tends to `cos θ_p` (sphere) or `cos θ_p·cos θ_l` (rectangle, disk: a
+/// Lambertian point) as the light shrinks. Under `AREA_POINT_LIMIT_ANGLE` it is that limit.
+pub fn area_form(light: &AreaLight, p: DVec3, n: DVec3) -> f64 {
+    let to = light.center - p;
+    let d = to.length();
+    if d <= LIGHT_DIST_MIN {
+        return 0.0;
+    }
+    let l = to / d;
+    if light.area_radius() < AREA_POINT_LIMIT_ANGLE * d {
+        let cos_l = if matches!(light.shape, AreaShape::Sphere { .. }) { 1.0 } else { (-light.normal.dot(l)).max(0.0) };
+        return n.dot(l).max(0.0) * cos_l;
+    }
+    d * d * area_irradiance(light, p, n) / light.emitting_area()
 }
 
 /// One sample of the quadrature: a point on the light, its outward unit normal, and its area.
@@ -233,7 +303,7 @@ fn seen_cells<'a>(
     samples(light, p, k).into_iter().filter_map(move |(x, nx, da)| {
         let to = x - p;
         let r2 = to.length_squared();
-        if r2 <= AREA_CORNER_DIST_MIN * AREA_CORNER_DIST_MIN {
+        if r2 <= LIGHT_DIST_MIN * LIGHT_DIST_MIN {
             return None;
         }
         let l = to / r2.sqrt();
@@ -291,15 +361,75 @@ pub fn specular_area_quadrature(
     sum
 }
 
-/// The representative-point specular of a rectangle or sphere light, per unit radiance: the
-/// light's point nearest the mirror direction R = 2(N·V)N − V (the sphere: nearest to the ray;
-/// the rectangle: where the ray meets its plane, clamped to it), lit as a point light carrying the
-/// whole light (sphere: L·πr² at the centre's distance; rectangle: L·A·cos θ_l at that point's),
-/// with the lobe's peak scaled by m²/m'², m'² = m² + σ²/8 for a light of angular radius
-/// σ = ρ/d (ρ its equivalent radius): the reflected lobe spreads like a Gaussian of variance about
-/// m² per axis, a uniform disc of angular radius σ adds σ²/4·½, and the peak of the widened lobe
-/// falls as the variance grows, the total kept. `None` for the disk. docs/area-lights.md
-/// measures it against `specular_area_quadrature`.
+/// The representative point of `light` for the specular term at `p` (unit normal `n`, unit view
+/// vector `v`, roughness `m`): the unit direction `l` to the light's point nearest the mirror
+/// direction R = 2(N·V)N − V (the sphere: nearest to the ray; a rectangle or disk: where the ray
+/// meets its plane, clamped to the shape, or the shape's edge in the ray's direction when the ray
+/// leaves the plane), and the scale of the centre's point light's specular there
+/// (`LightSample.spec_scale`): the flat light's `cos θ_l·d²/r²` at that point (1 for a sphere),
+/// times m²/m'², m'² = m² + σ²/8 for a light of angular radius σ = ρ/d (ρ the radius of the disc of
+/// its area): the reflected lobe spreads like a Gaussian of variance about m² per axis, a uniform
+/// disc of angular radius σ adds σ²/8, and the widened lobe's peak falls as the variance grows.
+/// Under `AREA_POINT_LIMIT_ANGLE` it is the centre with its point limit's scale.
+pub fn area_specular_point(light: &AreaLight, p: DVec3, n: DVec3, v: DVec3, m: f64) -> (DVec3, f64) {
+    let to_c = light.center - p;
+    let d = to_c.length();
+    if d <= LIGHT_DIST_MIN {
+        return (n, 0.0);
+    }
+    let flat = !matches!(light.shape, AreaShape::Sphere { .. });
+    let cos_at = |q: DVec3| if flat { (-light.normal.dot((q - p).normalize_or_zero())).max(0.0) } else { 1.0 };
+    if light.area_radius() < AREA_POINT_LIMIT_ANGLE * d {
+        return (to_c / d, cos_at(light.center));
+    }
+    let r_dir = (2.0 * n.dot(v) * n - v).normalize_or(n);
+    let (q, scale) = match light.shape {
+        AreaShape::Sphere { radius } => {
+            let along = to_c.dot(r_dir) * r_dir - to_c;
+            let len = along.length();
+            let reach = if len > 0.0 { (radius.abs() / len).min(1.0) } else { 0.0 };
+            (light.center + along * reach, 1.0)
+        }
+        AreaShape::Rect { .. } | AreaShape::Disk { .. } => {
+            let denom = r_dir.dot(light.normal);
+            let local = if denom < 0.0 {
+                p + r_dir * (to_c.dot(light.normal) / denom).max(0.0) - light.center
+            } else {
+                (r_dir - light.normal * denom).normalize_or_zero() * (2.0 * light.area_radius())
+            };
+            let q = light.center + clamp_to_shape(light, local);
+            let r2 = (q - p).length_squared().max(LIGHT_DIST_MIN * LIGHT_DIST_MIN);
+            (q, cos_at(q) * d * d / r2)
+        }
+    };
+    let m = m.max(M_MIN);
+    let sigma = (light.emitting_area() / PI).sqrt() / d;
+    let norm = m * m / (m * m + sigma * sigma / 8.0);
+    ((q - p).normalize_or(to_c / d), scale * norm)
+}
+
+/// A vector in a flat light's plane (from its centre) moved onto the shape: each axis clamped to
+/// the rectangle's half-size, or the length to the disk's radius.
+pub fn clamp_to_shape(light: &AreaLight, local: DVec3) -> DVec3 {
+    let (t, b) = (light.tangent, light.normal.cross(light.tangent));
+    let (x, y) = (local.dot(t), local.dot(b));
+    match light.shape {
+        AreaShape::Rect { half_x, half_y } => {
+            t * x.clamp(-half_x.abs(), half_x.abs()) + b * y.clamp(-half_y.abs(), half_y.abs())
+        }
+        AreaShape::Disk { radius } => {
+            let len = x.hypot(y);
+            let k = if len > radius.abs() { radius.abs() / len } else { 1.0 };
+            (t * x + b * y) * k
+        }
+        AreaShape::Sphere { .. } => local,
+    }
+}
+
+/// The representative-point Cook–Torrance specular per unit radiance, for comparison with
+/// [`specular_area_quadrature`]: [`area_specular_point`]'s direction and scale times the centre's
+/// point light `A_emit/d²` (the unit-radiance light seen from afar). docs/area-lights.md measures
+/// it.
 pub fn specular_representative_point(
     light: &AreaLight,
     p: DVec3,
@@ -307,38 +437,11 @@ pub fn specular_representative_point(
     v: DVec3,
     m: f64,
     v_index: [f64; 3],
-) -> Option<[f64; 3]> {
-    let r_dir = (2.0 * n.dot(v) * n - v).normalize_or_zero();
-    let to_c = light.center - p;
-    let d = to_c.length().max(AREA_CORNER_DIST_MIN);
-    let (point, intensity, rho) = match light.shape {
-        AreaShape::Sphere { radius } => {
-            let along = to_c.dot(r_dir) * r_dir - to_c;
-            let len = along.length();
-            let reach = if len > 0.0 { (radius.abs() / len).min(1.0) } else { 0.0 };
-            (p + to_c + along * reach, PI * radius * radius / (d * d), radius.abs())
-        }
-        AreaShape::Rect { half_x, half_y } => {
-            let b = light.normal.cross(light.tangent);
-            let denom = r_dir.dot(light.normal);
-            // The ray meets the plane ahead of p, or else its farthest reach along the plane.
-            let t = if denom < -1e-9 { (light.center - p).dot(light.normal) / denom } else { 1e6 * d };
-            let hit = p + r_dir * t.max(0.0) - light.center;
-            let x = hit.dot(light.tangent).clamp(-half_x.abs(), half_x.abs());
-            let y = hit.dot(b).clamp(-half_y.abs(), half_y.abs());
-            let q = light.center + light.tangent * x + b * y;
-            let to_q = q - p;
-            let r2 = to_q.length_squared().max(AREA_CORNER_DIST_MIN * AREA_CORNER_DIST_MIN);
-            let cos_l = (-light.normal.dot(to_q) / r2.sqrt()).max(0.0);
-            (q, light.area() * cos_l / r2, (light.area() / PI).sqrt())
-        }
-        AreaShape::Disk { .. } => return None,
-    };
-    let l = (point - p).normalize_or_zero();
-    let m = m.max(crate::guards::M_MIN);
-    let sigma = rho / d;
-    let norm = m * m / (m * m + sigma * sigma / 8.0);
-    Some(super::brdf::specular_cook_torrance(n, v, l, m, v_index).map(|s| s * intensity * norm))
+) -> [f64; 3] {
+    let d2 = (light.center - p).length_squared().max(LIGHT_DIST_MIN * LIGHT_DIST_MIN);
+    let (l, scale) = area_specular_point(light, p, n, v, m);
+    let k = scale * light.emitting_area() / d2;
+    super::brdf::specular_cook_torrance(n, v, l, m, v_index).map(|s| s * k)
 }
 
 /// The penumbra's width on a receiver at distance `d_receiver` from a light of size `w_light`
@@ -352,3 +455,7 @@ pub fn penumbra_width(w_light: f64, d_receiver: f64, d_blocker: f64) -> f64 {
 #[cfg(test)]
 #[path = "area_tests.rs"]
 mod tests;
+
+#[cfg(test)]
+#[path = "area_sample_tests.rs"]
+mod sample_tests;

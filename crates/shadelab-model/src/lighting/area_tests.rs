@@ -58,7 +58,7 @@ fn lamberts_edge_formula_equals_the_quadrature() {
     }
     // Some of those configurations are lit, some clipped by the horizon, some dark.
     let values: Vec<f64> = configurations().iter().map(|(l, p, n)| area_irradiance_exact(l, *p, *n).unwrap()).collect();
-    assert!(values.iter().any(|v| *v > 0.05) && values.iter().any(|v| *v == 0.0), "{values:?}");
+    assert!(values.iter().any(|v| *v > 0.05) && values.contains(&0.0), "{values:?}");
 }
 
 #[test]
@@ -254,7 +254,7 @@ fn representative_point_specular_against_the_integral() {
             let light = AreaLight { shape, center: c, normal: (-c).normalize(), tangent: DVec3::Y };
             for m in [0.1, 0.2, 0.4, 0.7] {
                 let reference = specular_area_quadrature(&light, p, n, v, m, v_index, 256, &clear)[0];
-                let rp = specular_representative_point(&light, p, n, v, m, v_index).unwrap()[0];
+                let rp = specular_representative_point(&light, p, n, v, m, v_index)[0];
                 let l = c.normalize();
                 let point_i = match shape {
                     AreaShape::Sphere { radius } => PI * radius * radius,

@@ -153,29 +153,34 @@ pub(crate) fn rho_s_forms(n: DVec3, v: DVec3, l: DVec3, m: f64, v_index: f64) ->
     (seed, modern)
 }
 
-/// docs/model.md §3: what one light adds, `I_L · (r_d·C·max(N·L, 0) + r_s·S)`, zero in own
-/// shadow; `l` and `radiance` are the light's sample ([`super::lights::light_sample`]).
-#[allow(clippy::too_many_arguments)]
+/// docs/model.md §3: what one light adds, `I_L · (r_d·C·max(form, 0) + r_s·S(L)·spec_scale)`
+/// for the light's sample `s` ([`super::lights::light_sample`]; `form` is `N·L` for a point
+/// light), the specular zero where `N·L ≤ 0` (the point's own shadow).
 pub fn light_contribution(
-    l: DVec3,
-    radiance: [f64; 3],
+    s: &super::lights::LightSample,
     n: DVec3,
     v: DVec3,
     mat: &Material,
     v_index: [f64; 3],
     specular: SpecularModel,
 ) -> [f64; 3] {
-    let n_dot_l = n.dot(l);
-    if n_dot_l <= 0.0 {
+    let n_dot_l = n.dot(s.l);
+    if n_dot_l <= 0.0 && s.form <= 0.0 {
         return [0.0; 3];
     }
-    let spec = match specular {
-        SpecularModel::CookTorrance => specular_cook_torrance(n, v, l, mat.m, v_index),
-        SpecularModel::Phong => {
-            let r = 2.0 * n_dot_l * n - l;
-            let s = if n.dot(v) > 0.0 { specular_phong(v.dot(r), mat.h.value(), mat.h.is_mirror()) } else { 0.0 };
-            [s; 3]
+    let spec = if n_dot_l <= 0.0 {
+        [0.0; 3]
+    } else {
+        match specular {
+            SpecularModel::CookTorrance => specular_cook_torrance(n, v, s.l, mat.m, v_index),
+            SpecularModel::Phong => {
+                let r = 2.0 * n_dot_l * n - s.l;
+                let x = if n.dot(v) > 0.0 { specular_phong(v.dot(r), mat.h.value(), mat.h.is_mirror()) } else { 0.0 };
+                [x; 3]
+            }
         }
     };
-    std::array::from_fn(|i| radiance[i] * (mat.r_d * mat.color[i] * diffuse_lambert(n_dot_l) + mat.r_s * spec[i]))
+    std::array::from_fn(|i| {
+        s.radiance[i] * (mat.r_d * mat.color[i] * diffuse_lambert(s.form) + mat.r_s * spec[i] * s.spec_scale)
+    })
 }

@@ -2,6 +2,7 @@
 //! kind and WGSL code, the `Light` parameters and their ranges, the values derived from them for
 //! both the GPU and the f64 reference, and its f64 terms.
 
+use super::area::{AreaLight, AreaShape, area_form, area_specular_point};
 use super::common::safe_normalize;
 use crate::guards::*;
 use crate::params::{NamedValue, ParamRange};
@@ -18,6 +19,12 @@ pub enum LightKind {
     /// A point source that lights only a cone (glTF's spot light): fully inside the inner cone,
     /// not at all outside the outer one, a smooth ramp between.
     Spot,
+    /// A rectangle of uniform radiance emitting from its front face (docs/area-lights.md).
+    Rect,
+    /// A disk of uniform radiance emitting from its front face.
+    Disk,
+    /// A sphere of uniform radiance.
+    Sphere,
 }
 
 impl LightKind {
@@ -27,14 +34,28 @@ impl LightKind {
             LightKind::Directional => 0,
             LightKind::Point => 1,
             LightKind::Spot => 2,
+            LightKind::Rect => 3,
+            LightKind::Disk => 4,
+            LightKind::Sphere => 5,
         }
+    }
+
+    /// A light with an area: rectangle, disk or sphere.
+    pub fn is_area(self) -> bool {
+        matches!(self, LightKind::Rect | LightKind::Disk | LightKind::Sphere)
     }
 }
 
 impl NamedValue for LightKind {
     const FLAG: &'static str = "--light";
-    const ALL: &'static [(&'static str, Self)] =
-        &[("directional", LightKind::Directional), ("point", LightKind::Point), ("spot", LightKind::Spot)];
+    const ALL: &'static [(&'static str, Self)] = &[
+        ("directional", LightKind::Directional),
+        ("point", LightKind::Point),
+        ("spot", LightKind::Spot),
+        ("rect", LightKind::Rect),
+        ("disk", LightKind::Disk),
+        ("sphere", LightKind::Sphere),
+    ];
 }
 
 /// Which distance falloff a point light uses.
@@ -98,6 +119,20 @@ pub const RANGE: ParamRange =
 pub const INTENSITY: ParamRange =
     ParamRange { flag: "intensity", symbol: "I_L", meaning: "light intensity I_L", min: 0.0, max: 1e3 };
 
+/// An area light's size in metres: a rectangle's width (and height), a disk's or sphere's
+/// diameter. 0 is the point-light limit; 10⁶ m is far beyond any scene (the sweep's huge light).
+pub const LIGHT_SIZE: ParamRange = ParamRange {
+    flag: "--light-size",
+    symbol: "w",
+    meaning: "area light size in m (rect side, disk or sphere diameter)",
+    min: 0.0,
+    max: 1e6,
+};
+
+/// The size an area light gets when a light is made one: half a metre, about the built-in
+/// scenes' objects' size, so its penumbra is plain to see.
+pub const LIGHT_SIZE_DEFAULT: f64 = 0.5;
+
 /// A light source (docs/model.md §6).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Light {
@@ -126,6 +161,12 @@ pub struct Light {
     pub range: Option<f64>,
     /// Whether and how the light casts shadows (docs/model.md §0).
     pub shadow: ShadowSettings,
+    /// Area lights: width and height in metres (a disk's or sphere's diameter in both), within
+    /// [`LIGHT_SIZE`]. A rectangle or disk emits along `direction` (its normal).
+    pub size: [f64; 2],
+    /// Area lights: the direction of a rectangle's width (made perpendicular to the normal when
+    /// used, see [`Light::area_light`]).
+    pub tangent: DVec3,
 }
 
 impl Light {
@@ -143,6 +184,8 @@ impl Light {
             outer_cone: SPOT_OUTER_CONE_DEFAULT,
             range: None,
             shadow: ShadowSettings::default(),
+            size: [LIGHT_SIZE_DEFAULT; 2],
+            tangent: DVec3::X,
         }
     }
     pub fn point(position: DVec3, color: [f64; 3], intensity: f64, falloff_alpha: f64) -> Self {
@@ -159,6 +202,8 @@ impl Light {
             outer_cone: SPOT_OUTER_CONE_DEFAULT,
             range: None,
             shadow: ShadowSettings::default(),
+            size: [LIGHT_SIZE_DEFAULT; 2],
+            tangent: DVec3::X,
         }
     }
     /// A spot light at `position` shining along `direction`, with cones `inner < outer` (radians).
@@ -179,6 +224,48 @@ impl Light {
         }
     }
 
+    /// An area light of `kind` centred at `position`, a flat one facing along `direction`, of
+    /// width and height `size` (a disk's or sphere's diameter in both).
+    pub fn area(
+        kind: LightKind,
+        position: DVec3,
+        direction: DVec3,
+        size: [f64; 2],
+        color: [f64; 3],
+        intensity: f64,
+        falloff_alpha: f64,
+    ) -> Self {
+        Light {
+            kind,
+            direction: direction.normalize_or(DVec3::NEG_Y),
+            size,
+            ..Light::point(position, color, intensity, falloff_alpha)
+        }
+    }
+
+    /// The light's shape placed in the world, for area kinds: centre, unit normal (the way it
+    /// emits), a unit tangent perpendicular to it (the rectangle's width), half-sizes or radius.
+    pub fn area_light(&self) -> Option<AreaLight> {
+        let half = |i: usize| self.size[i].abs() * 0.5;
+        let shape = match self.kind {
+            LightKind::Rect => AreaShape::Rect { half_x: half(0), half_y: half(1) },
+            LightKind::Disk => AreaShape::Disk { radius: half(0) },
+            LightKind::Sphere => AreaShape::Sphere { radius: half(0) },
+            _ => return None,
+        };
+        let normal = self.spot_axis();
+        Some(AreaLight { shape, center: self.position, normal, tangent: self.area_tangent() })
+    }
+
+    /// The unit tangent of a flat light (WGSL `Light.tangent`): `tangent` made perpendicular to
+    /// the normal, or any perpendicular when it is along the normal.
+    pub fn area_tangent(&self) -> DVec3 {
+        let normal = self.spot_axis();
+        let t = self.tangent - normal * self.tangent.dot(normal);
+        let any = if normal.x.abs() < 0.9 { DVec3::X } else { DVec3::Y };
+        safe_normalize(t, (any - normal * any.dot(normal)).normalize())
+    }
+
     /// Turn the light into another kind, keeping where it shines from: a directional light
     /// becomes a point or spot light `LIGHT_STAND_OFF` units back along its direction from the
     /// origin (a spot keeps the direction as its axis); a point light becomes a directional light
@@ -187,8 +274,10 @@ impl Light {
     pub fn set_kind(&mut self, kind: LightKind) {
         use LightKind::*;
         match (self.kind, kind) {
-            (Directional, Point | Spot) => self.position = -self.direction * LIGHT_STAND_OFF,
-            (Point, Directional | Spot) => self.direction = (-self.position).normalize_or(DVec3::NEG_Y),
+            (Directional, Point | Spot | Rect | Disk | Sphere) => self.position = -self.direction * LIGHT_STAND_OFF,
+            (Point, Directional | Spot | Rect | Disk | Sphere) => {
+                self.direction = (-self.position).normalize_or(DVec3::NEG_Y)
+            }
             _ => {}
         }
         self.kind = kind;
@@ -243,28 +332,53 @@ pub fn window_range(d: f64, range: f64) -> f64 {
     1.0 - x2 * x2
 }
 
-/// Direction to a light (unit) and its incident intensity `I_L` per channel at point `p` with
-/// normal `n`. A point or spot light closer than `LIGHT_DIST_MIN` touches the surface: `L = N`.
-pub fn light_sample(light: &Light, p: DVec3, n: DVec3) -> (DVec3, [f64; 3]) {
+/// One light at one point, as the illumination model uses it (WGSL `LightSample`).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LightSample {
+    /// Unit direction from the point towards the light (an area light's representative point).
+    pub l: DVec3,
+    /// Incident intensity `I_L` per channel after falloff.
+    pub radiance: [f64; 3],
+    /// The diffuse term's cosine factor: `N·L` for a point, spot or directional light; an area
+    /// light's [`area_form`].
+    pub form: f64,
+    /// What the specular term at `l` is scaled by: 1, or an area light's [`area_specular_point`]
+    /// scale.
+    pub spec_scale: f64,
+}
+
+/// Direction to a light (unit), its incident intensity `I_L` per channel, and the diffuse and
+/// specular factors at point `p` with unit normal `n`, seen along unit `v`, roughness `m` (read
+/// by area lights only). A light with a position closer than `LIGHT_DIST_MIN` touches the
+/// surface: `L = N`. An area light is its centre's point light (the same falloff at the distance
+/// to its centre) with `N·L` replaced by the exact area form and the specular taken at its
+/// representative point.
+pub fn light_sample(light: &Light, p: DVec3, n: DVec3, v: DVec3, m: f64) -> LightSample {
     let radiance = light.radiance();
-    match light.kind {
-        LightKind::Point | LightKind::Spot => {
-            let to_light = light.position - p;
-            let d = to_light.length();
-            let l = if d > LIGHT_DIST_MIN { to_light / d } else { n };
-            let mut f = match light.falloff_form {
-                FalloffForm::Quadratic => falloff_quadratic(d, light.falloff_alpha),
-                FalloffForm::Linear => falloff_linear(d, light.d0),
-            };
-            if let Some(range) = light.range {
-                f *= window_range(d, range);
-            }
-            if light.kind == LightKind::Spot {
-                let (cos_inner, cos_outer) = light.cone_cosines();
-                f *= spot_cone((-l).dot(light.spot_axis()), cos_inner, cos_outer);
-            }
-            (l, radiance.map(|r| r * f))
+    if light.kind == LightKind::Directional {
+        let l = safe_normalize(-light.direction, n);
+        return LightSample { l, radiance, form: n.dot(l), spec_scale: 1.0 };
+    }
+    let to_light = light.position - p;
+    let d = to_light.length();
+    let l = if d > LIGHT_DIST_MIN { to_light / d } else { n };
+    let mut f = match light.falloff_form {
+        FalloffForm::Quadratic => falloff_quadratic(d, light.falloff_alpha),
+        FalloffForm::Linear => falloff_linear(d, light.d0),
+    };
+    if let Some(range) = light.range {
+        f *= window_range(d, range);
+    }
+    if light.kind == LightKind::Spot {
+        let (cos_inner, cos_outer) = light.cone_cosines();
+        f *= spot_cone((-l).dot(light.spot_axis()), cos_inner, cos_outer);
+    }
+    let radiance = radiance.map(|r| r * f);
+    match light.area_light() {
+        Some(area) => {
+            let (l, spec_scale) = area_specular_point(&area, p, n, v, m);
+            LightSample { l, radiance, form: area_form(&area, p, n), spec_scale }
         }
-        LightKind::Directional => (safe_normalize(-light.direction, n), radiance),
+        None => LightSample { l, radiance, form: n.dot(l), spec_scale: 1.0 },
     }
 }

@@ -58,21 +58,22 @@ pub fn shade_with_visibility(
     // The Lambert rule's I: the brightest light at the point, per channel, in [0, 1].
     let mut i_max = [0.0f64; 3];
     for (k, light) in lights.iter().take(MAX_LIGHTS).enumerate() {
-        let (l, radiance) = light_sample(light, p, n);
+        let s = light_sample(light, p, n, v, mat.m);
+        let (l, radiance) = (s.l, s.radiance);
         let lit = match model {
             IlluminationModel::Lambert => {
                 let i = radiance.map(|x| x.clamp(0.0, 1.0));
                 i_max = std::array::from_fn(|j| i_max[j].max(i[j]));
-                lambert_rule_lit(c.map(|x| x * mat.r_d), i, n.dot(l))
+                lambert_rule_lit(c.map(|x| x * mat.r_d), i, s.form)
             }
             IlluminationModel::Sum => {
                 let t = transmitted_term(radiance, c, mat.transmission);
                 for i in 0..3 {
                     total[i] += t[i];
                 }
-                sum_contribution(radiance, n.dot(l), n.dot(v), c, mat.r_d, mat.r_s)
+                sum_contribution(radiance, s.form, n.dot(v), c, mat.r_d, mat.r_s)
             }
-            IlluminationModel::Phong => light_contribution(l, radiance, n, v, mat, v_index, specular),
+            IlluminationModel::Phong => light_contribution(&s, n, v, mat, v_index, specular),
         };
         if lit == [0.0; 3] {
             continue;

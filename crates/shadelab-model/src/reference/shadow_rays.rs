@@ -80,7 +80,8 @@ impl<'a> ShadowRays<'a> {
         let o = p + ng * (side * self.offset);
         match light.kind {
             LightKind::Directional => occluded(self.scene, self.inverses, o, l, f64::INFINITY),
-            LightKind::Point | LightKind::Spot => {
+            // An area light's hard shadow from its centre; `reference::area` has its soft one.
+            LightKind::Point | LightKind::Spot | LightKind::Rect | LightKind::Disk | LightKind::Sphere => {
                 // Also a non-finite distance: no ray to trace.
                 let touching = (light.position - p).length().partial_cmp(&LIGHT_DIST_MIN) != Some(Ordering::Greater);
                 if touching {

@@ -52,7 +52,7 @@ fn uniform_layouts_match_wgsl() {
     let module = parse(&lighting_source());
     assert_eq!(
         wgsl_layout(&module, "Light"),
-        rust_layout!(LightUniform: position, direction, radiance, kind, falloff_form, falloff_alpha, d0, spot_axis, cos_inner, cos_outer, range, _pad)
+        rust_layout!(LightUniform: position, direction, radiance, kind, falloff_form, falloff_alpha, d0, spot_axis, cos_inner, cos_outer, range, _pad, normal, tangent, half_x, half_y, _pad1, _pad2)
     );
     assert_eq!(
         wgsl_layout(&module, "Globals"),

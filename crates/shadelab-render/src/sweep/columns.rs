@@ -6,6 +6,7 @@
 use super::inputs::ShadowCase;
 use glam::DVec3;
 use shadelab_model::guards::{D0_MIN, M_MIN, N_DOT_V_MIN};
+use shadelab_model::lighting::area::{self, AreaLight, AreaShape};
 use shadelab_model::lighting::{brdf, common, lights, models};
 use shadelab_model::shadows;
 use shadelab_model::{FalloffForm, Light, LightKind, Material, PhongExponent, SpecularModel};
@@ -30,7 +31,7 @@ pub struct Column {
 const D_MAX: f64 = 1.0 / (4.0 * M_MIN * M_MIN);
 
 /// Every column in the order the kernel writes them (and the report lists them).
-pub const COLUMNS: [Column; 32] = [
+pub const COLUMNS: [Column; 34] = [
     col("diffuse_lambert", "DIFFUSE_LAMBERT", 1, 1.0, "N·L of unit vectors"),
     col("specular_phong", "SPECULAR_PHONG", 1, 1.0, "(V·R)^h with V·R clamped to [0, 1]"),
     col("d_beckmann", "D_BECKMANN", 1, D_MAX, "peak 1/(4 m²) at m = M_MIN"),
@@ -81,6 +82,14 @@ pub const COLUMNS: [Column; 32] = [
     col("occluded", "OCCLUDED", 1, 0.8, "r_a·(1 + s·(occ − 1)) with r_a = 0.8, occ and s in [0, 1]"),
     col("emitted", "EMITTED", 3, 1.0, "I_e·texel with I_e = μ and the texel clamped to [0, 1]"),
     Column { signed: true, ..col("normal_mapped", "NORMAL_MAPPED", 3, 1.0, "a unit vector, or N") },
+    col("area_form (rect, disk, sphere)", "AREA_FORM", 3, f64::INFINITY, "finite: d²·(E/L)/A, E/L ≤ π"),
+    col(
+        "area_specular_point scale (rect, disk, sphere)",
+        "AREA_SPEC_SCALE",
+        3,
+        f64::INFINITY,
+        "finite: cos θ_l·d²/r² ≤ d²/LIGHT_DIST_MIN²",
+    ),
 ];
 
 const fn col(name: &'static str, wgsl: &'static str, channels: usize, bound: f64, why_bound: &'static str) -> Column {
@@ -144,6 +153,7 @@ pub fn wgsl_columns() -> String {
     s += &format!("const SWEEP_CONE_PER_M: f32 = {:?};\n", SWEEP_CONE_PER_M as f32);
     s += &format!("const SWEEP_SHADOW_RESOLUTION: f32 = {:?};\n", SWEEP_SHADOW_RESOLUTION as f32);
     s += &format!("const SWEEP_OUTPUTS: u32 = {OUTPUTS}u;\n");
+    s += &format!("const SWEEP_DISK_POLYGON_SCALE: f32 = {:?};\n", area::disk_polygon_scale() as f32);
     for (c, r) in ranges() {
         s += &format!("const COL_{}: u32 = {}u;\n", c.wgsl, r.start);
     }
@@ -191,6 +201,8 @@ const PHONG_H_FROM_M: usize = offset("PHONG_H_FROM_M");
 const OCCLUDED: usize = offset("OCCLUDED");
 const EMITTED: usize = offset("EMITTED");
 const NORMAL_MAPPED: usize = offset("NORMAL_MAPPED");
+const AREA_FORM: usize = offset("AREA_FORM");
+const AREA_SPEC_SCALE: usize = offset("AREA_SPEC_SCALE");
 
 /// The f64 reference of the kernel's outputs for one combination's inputs.
 ///
@@ -225,10 +237,15 @@ pub(super) fn reference(
         d0,
         ..Light::point(DVec3::ZERO, [1.0; 3], 1.0, 0.0)
     };
-    let quadratic = lights::light_sample(&light, DVec3::ZERO, n);
+    // The GPU's unit direction, to its rounding; a point light's form is N·L of that direction.
+    let scaled = |mut s: lights::LightSample| {
+        s.l *= l_len;
+        s.form = n.dot(s.l);
+        s
+    };
+    let quadratic = scaled(lights::light_sample(&light, DVec3::ZERO, n, v, m));
     light.falloff_form = FalloffForm::Linear;
-    let linear = lights::light_sample(&light, DVec3::ZERO, n);
-    let (quadratic, linear) = ((quadratic.0 * l_len, quadratic.1), (linear.0 * l_len, linear.1));
+    let linear = scaled(lights::light_sample(&light, DVec3::ZERO, n, v, m));
     let mat = Material {
         color: SWEEP_COLOR,
         r_s: 1.0,
@@ -251,17 +268,17 @@ pub(super) fn reference(
     rgb(&mut out, SPECULAR_COOK_TORRANCE, brdf::specular_cook_torrance(n, v, l, m, v_index));
     out[FALLOFF_QUADRATIC] = lights::falloff_quadratic(d, alpha);
     out[FALLOFF_LINEAR] = lights::falloff_linear(d, d0);
-    let cp = brdf::light_contribution(quadratic.0, quadratic.1, n, v, &mat, v_index, SpecularModel::Phong);
+    let cp = brdf::light_contribution(&quadratic, n, v, &mat, v_index, SpecularModel::Phong);
     rgb(&mut out, CONTRIBUTION_PHONG, cp);
-    let cc = brdf::light_contribution(linear.0, linear.1, n, v, &mat, v_index, SpecularModel::CookTorrance);
+    let cc = brdf::light_contribution(&linear, n, v, &mat, v_index, SpecularModel::CookTorrance);
     rgb(&mut out, CONTRIBUTION_COOK_TORRANCE, cc);
     // The other models at the linear falloff's sample; m in [0, 1] doubles as the share 1 − t.
-    let (nl, nv) = (n.dot(linear.0), n.dot(v));
-    rgb(&mut out, LAMBERT_RULE_LIT, models::lambert_rule_lit(SWEEP_COLOR, linear.1, nl));
-    rgb(&mut out, LAMBERT_RULE_FILL, models::lambert_rule_fill(SWEEP_COLOR, linear.1));
+    let (nl, nv) = (linear.form, n.dot(v));
+    rgb(&mut out, LAMBERT_RULE_LIT, models::lambert_rule_lit(SWEEP_COLOR, linear.radiance, nl));
+    rgb(&mut out, LAMBERT_RULE_FILL, models::lambert_rule_fill(SWEEP_COLOR, linear.radiance));
     out[REFLECTED_COS_PHI] = models::reflected_cos_phi(nl, nv);
-    rgb(&mut out, SUM_CONTRIBUTION, models::sum_contribution(linear.1, nl, nv, SWEEP_COLOR, 1.0, 1.0));
-    rgb(&mut out, TRANSMITTED_TERM, models::transmitted_term(linear.1, SWEEP_COLOR, m));
+    rgb(&mut out, SUM_CONTRIBUTION, models::sum_contribution(linear.radiance, nl, nv, SWEEP_COLOR, 1.0, 1.0));
+    rgb(&mut out, TRANSMITTED_TERM, models::transmitted_term(linear.radiance, SWEEP_COLOR, m));
     out[SPOT_CONE] = lights::spot_cone(v.dot(l), inner.cos() * l_len, outer.cos() * l_len);
     out[WINDOW_RANGE] = lights::window_range(d, d0);
     let to_p = l * d;
@@ -296,6 +313,21 @@ pub(super) fn reference(
     let w = if v.dot(l) < 0.0 { -1.0 } else { 1.0 };
     let mapped = shadelab_model::scene::normal_mapped(n, [l.x, l.y, l.z, w], n_raw.to_array(), h);
     rgb(&mut out, NORMAL_MAPPED, mapped.to_array());
+    // Area lights at l·d facing −v, α as their size (0 to 1e6 m): the diffuse form and the
+    // specular point's scale of each shape.
+    let normal = -v;
+    let tangent = common::safe_normalize(normal.cross(DVec3::Z), DVec3::X);
+    let half = 0.5 * alpha;
+    let shapes = [
+        AreaShape::Rect { half_x: half, half_y: half },
+        AreaShape::Disk { radius: half },
+        AreaShape::Sphere { radius: half },
+    ];
+    for (k, shape) in shapes.into_iter().enumerate() {
+        let a = AreaLight { shape, center: l * d, normal, tangent };
+        out[AREA_FORM + k] = area::area_form(&a, DVec3::ZERO, n);
+        out[AREA_SPEC_SCALE + k] = area::area_specular_point(&a, DVec3::ZERO, n, v, m).1;
+    }
     out
 }
 

@@ -75,6 +75,7 @@ pub fn overrides(a: &SceneArgs) -> Overrides {
         falloff_form: a.falloff_form,
         d0: a.d0,
         light: a.light,
+        light_size: a.light_size,
         shadows: a.shadows,
         shadow_resolution: a.shadow_resolution,
         shadow_filter: a.shadow_filter,

@@ -248,10 +248,14 @@ pub struct SceneArgs {
     /// of cameras − 1, in the file's node order. A built-in scene has one.
     #[arg(long, value_name = "N")]
     pub camera: Option<String>,
-    /// Make every light directional, point or spot (a spot gets glTF's default cone, 45°, aimed
-    /// at the origin).
+    /// Make every light directional, point, spot, or an area light: rect, disk or sphere (a spot
+    /// gets glTF's default cone, 45°, and a rect or disk faces the origin; an area light is
+    /// --light-size wide, 0.5 m unless set).
     #[arg(long, value_name = "KIND", value_parser = values::named::<LightKind>())]
     pub light: Option<LightKind>,
+    #[arg(long, value_name = "METRES", value_parser = values::real(params::LIGHT_SIZE),
+          help = within("Width of every area light: a rect's side, a disk's or sphere's diameter", params::LIGHT_SIZE))]
+    pub light_size: Option<f64>,
     /// Cast shadows from every light (on) or from none (off) [default: each light's own setting,
     /// on unless a scene file says otherwise].
     #[arg(long, value_name = "ON|OFF", value_parser = values::on_off())]

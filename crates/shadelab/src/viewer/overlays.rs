@@ -39,8 +39,8 @@ pub(super) fn light_markers(
     let vp = scene.camera.projection(w as f64 / h as f64) * scene.camera.view();
     for (i, l) in scene.lights.iter().enumerate() {
         let p = match l.kind {
-            LightKind::Point | LightKind::Spot => l.position,
             LightKind::Directional => orbit_target - l.direction * DIRECTIONAL_MARKER_DISTANCE,
+            _ => l.position,
         };
         let clip = vp * p.extend(1.0);
         // Behind the eye the projection flips: divide by |w| so the marker keeps its side.

@@ -34,8 +34,15 @@ impl Viewer {
                     let mut kind = l.kind;
                     for (name, k) in LightKind::ALL {
                         let choice = ui.selectable_value(&mut kind, *k, *name);
-                        if *k == LightKind::Spot {
-                            choice.on_hover_text("a point light that lights only a cone (glTF's spot light)");
+                        let meaning = match k {
+                            LightKind::Spot => Some("a point light that lights only a cone (glTF's spot light)"),
+                            LightKind::Rect => Some("a rectangle emitting from its front face: soft shadows"),
+                            LightKind::Disk => Some("a disk emitting from its front face: soft shadows"),
+                            LightKind::Sphere => Some("a sphere emitting all round: soft shadows"),
+                            _ => None,
+                        };
+                        if let Some(m) = meaning {
+                            choice.on_hover_text(m);
                         }
                     }
                     l.set_kind(kind);
@@ -47,9 +54,36 @@ impl Viewer {
                 if positional {
                     vec3_row(ui, "position", &mut l.position);
                 }
-                if l.kind != LightKind::Point {
-                    vec3_row(ui, if positional { "axis" } else { "direction" }, &mut l.direction);
+                if !matches!(l.kind, LightKind::Point | LightKind::Sphere) {
+                    let name = match l.kind {
+                        LightKind::Directional => "direction",
+                        LightKind::Spot => "axis",
+                        _ => "normal",
+                    };
+                    vec3_row(ui, name, &mut l.direction);
                     l.direction = l.direction.normalize_or(DVec3::NEG_Y);
+                }
+                if l.kind.is_area() {
+                    // A rectangle has a width and a height; a disk or sphere one diameter.
+                    let (w, h) =
+                        if l.kind == LightKind::Rect { ("width m", Some("height m")) } else { ("diameter m", None) };
+                    ui.add(
+                        egui::Slider::new(&mut l.size[0], params::LIGHT_SIZE.min..=params::LIGHT_SIZE.max)
+                            .logarithmic(true)
+                            .text(w),
+                    )
+                    .on_hover_text(tooltip(&params::LIGHT_SIZE));
+                    match h {
+                        Some(h) => {
+                            ui.add(
+                                egui::Slider::new(&mut l.size[1], params::LIGHT_SIZE.min..=params::LIGHT_SIZE.max)
+                                    .logarithmic(true)
+                                    .text(h),
+                            )
+                            .on_hover_text(tooltip(&params::LIGHT_SIZE));
+                        }
+                        None => l.size[1] = l.size[0],
+                    }
                 }
                 ui.horizontal(|ui| {
                     let mut c = l.color.map(|v| v as f32);
@@ -95,7 +129,7 @@ impl Viewer {
                 }
                 shadow_ui(ui, i, l.kind == LightKind::Directional, &mut l.shadow);
                 let layers = match l.kind {
-                    LightKind::Point => 6,
+                    LightKind::Point | LightKind::Rect | LightKind::Disk | LightKind::Sphere => 6,
                     LightKind::Directional if l.shadow.cascades => cascades,
                     _ => 1,
                 };
@@ -157,7 +191,7 @@ fn shadow_map_ui(ui: &mut egui::Ui, light: usize, kind: LightKind, layers: u32, 
             .on_hover_text("the depth the light sees, as grey: near black, far light grey, nothing drawn white");
         maps.set(light, on);
         if let Some(view) = maps.view_mut(light)
-            && kind == LightKind::Point
+            && (kind == LightKind::Point || kind.is_area())
         {
             egui::ComboBox::from_id_salt(("shadow map face", light))
                 .selected_text(CUBE_FACES[view.face.min(5) as usize])

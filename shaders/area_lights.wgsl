@@ -1,0 +1,212 @@
+// Area lights (docs/area-lights.md): rectangle, disk and sphere lights of uniform radiance, lit
+// as their centre's point light with N·L replaced by the exact area form and the specular taken
+// at a representative point. The f64 twin is crates/shadelab-model/src/lighting/area.rs, with
+// the same names and guards. The whole file exists only in permutations with EFFECT_AREA_LIGHTS.
+
+#if EFFECT_AREA_LIGHTS
+// Sides of the regular polygon a disk light is drawn as (AREA_DISK_SIDES in area.rs).
+const AREA_DISK_SIDES: u32 = 16u;
+// Most corners a polygon keeps after the horizon clip: one more than it had.
+const AREA_CLIPPED_MAX: u32 = 17u;
+const AREA_PI: f32 = 3.14159265358979;
+
+// A flat light's corners (counter-clockwise seen from the side it emits to) and their count.
+struct AreaCorners {
+    at: array<vec3<f32>, AREA_DISK_SIDES>,
+    count: u32,
+}
+
+// The representative point: the unit direction to it and the scale of the centre's specular.
+struct AreaPoint {
+    l: vec3<f32>,
+    scale: f32,
+}
+
+// The area a point far away sees face-on: a flat light's area, a sphere's disc πr².
+fn emitting_area(light: Light) -> f32 {
+    if (light.kind == LIGHT_RECT) {
+        return 4.0 * light.half_x * light.half_y;
+    }
+    return AREA_PI * light.half_x * light.half_x;
+}
+
+// The radius of the disc the light's farthest point lies on: its half-diagonal, its radius.
+fn area_radius(light: Light) -> f32 {
+    if (light.kind == LIGHT_RECT) {
+        return length(vec2(light.half_x, light.half_y));
+    }
+    return light.half_x;
+}
+
+// The rectangle's four corners, or the disk as its equal-area regular polygon
+// (light.half_y holds that polygon's circumradius for a disk, LightUniform::new).
+fn area_corners(light: Light) -> AreaCorners {
+    var c: AreaCorners;
+    let t = light.tangent.xyz;
+    let b = cross(light.normal.xyz, t);
+    let o = light.position.xyz;
+    if (light.kind == LIGHT_RECT) {
+        c.at[0] = o - t * light.half_x - b * light.half_y;
+        c.at[1] = o + t * light.half_x - b * light.half_y;
+        c.at[2] = o + t * light.half_x + b * light.half_y;
+        c.at[3] = o - t * light.half_x + b * light.half_y;
+        c.count = 4u;
+        return c;
+    }
+    for (var i = 0u; i < AREA_DISK_SIDES; i++) {
+        let phi = 2.0 * AREA_PI * f32(i) / f32(AREA_DISK_SIDES);
+        c.at[i] = o + (t * cos(phi) + b * sin(phi)) * light.half_y;
+    }
+    c.count = AREA_DISK_SIDES;
+    return c;
+}
+
+// One edge's term of Lambert's edge formula, θ·n·(a × b)/|a × b| for unit directions a, b, θ as
+// atan2(|a × b|, a·b) (precise for small angles in f32); 0 for an edge seen end-on.
+fn edge_term(a: vec3<f32>, b: vec3<f32>, n: vec3<f32>) -> f32 {
+    let c = cross(a, b);
+    let len2 = dot(c, c);
+    if (len2 <= EDGE_CROSS_MIN_LEN2) {
+        return 0.0;
+    }
+    let len = sqrt(len2);
+    return atan2(len, dot(a, b)) * dot(n, c) / len;
+}
+
+// Lambert's edge formula: E/L of a uniform polygon light at `p` with unit normal `n`, the polygon
+// first clipped at the plane through p normal to n; 0 seen from behind. Corners closer than
+// LIGHT_DIST_MIN have no direction and are skipped.
+fn polygon_irradiance(p: vec3<f32>, n: vec3<f32>, corners: AreaCorners) -> f32 {
+    var dirs: array<vec3<f32>, AREA_CLIPPED_MAX>;
+    var kept = 0u;
+    var clipped = 0u;
+    for (var i = 0u; i < corners.count; i++) {
+        let a = corners.at[i] - p;
+        let b = corners.at[(i + 1u) % corners.count] - p;
+        let sa = dot(a, n);
+        let sb = dot(b, n);
+        if (sa > 0.0) {
+            clipped++;
+            if (length(a) > LIGHT_DIST_MIN) {
+                dirs[kept] = normalize(a);
+                kept++;
+            }
+        }
+        if ((sa > 0.0) != (sb > 0.0) && sa != sb) {
+            let x = a + (b - a) * (sa / (sa - sb));
+            clipped++;
+            if (length(x) > LIGHT_DIST_MIN) {
+                dirs[kept] = normalize(x);
+                kept++;
+            }
+        }
+    }
+    if (clipped < 3u) {
+        return 0.0;
+    }
+    var sum = 0.0;
+    for (var i = 0u; i < kept; i++) {
+        sum += edge_term(dirs[i], dirs[(i + 1u) % kept], n);
+    }
+    return max(-0.5 * sum, 0.0);
+}
+
+// E/L of a sphere light of radius `radius`, centre at distance `d` and angle θ from the normal:
+// the spherical cap, clipped at the horizon; π inside the sphere.
+fn sphere_irradiance(radius: f32, d: f32, cos_theta: f32) -> f32 {
+    let r = abs(radius);
+    if (d <= r) {
+        return AREA_PI;
+    }
+    let sin2_sigma = (r / d) * (r / d);
+    let cos_t = clamp(cos_theta, -1.0, 1.0);
+    let sin_t = sqrt(max(1.0 - cos_t * cos_t, 0.0));
+    if (cos_t * cos_t >= sin2_sigma || sin2_sigma <= 0.0) {
+        return max(AREA_PI * sin2_sigma * cos_t, 0.0);
+    }
+    let x = sqrt(max(1.0 / sin2_sigma - 1.0, 0.0));
+    let y = clamp(-x * cos_t / sin_t, -1.0, 1.0);
+    let s = sin_t * sqrt(max(1.0 - y * y, 0.0));
+    let e = (cos_t * acos(y) - x * s) * sin2_sigma + atan2(s, x);
+    return clamp(e, 0.0, AREA_PI);
+}
+
+// E/L of the light at `p`: the sphere's cap, or the flat light's edge formula.
+fn area_irradiance(light: Light, p: vec3<f32>, n: vec3<f32>) -> f32 {
+    if (light.kind == LIGHT_SPHERE) {
+        let to = light.position.xyz - p;
+        let d = length(to);
+        return sphere_irradiance(light.half_x, d, select(1.0, dot(n, to) / d, d > 0.0));
+    }
+    return polygon_irradiance(p, n, area_corners(light));
+}
+
+// The diffuse factor relative to the centre's point light, d²·(E/L)/A_emit; under
+// AREA_POINT_LIMIT_ANGLE the point limit cos θ_p (sphere) or cos θ_p·cos θ_l (flat lights).
+fn area_form(light: Light, p: vec3<f32>, n: vec3<f32>) -> f32 {
+    let to = light.position.xyz - p;
+    let d = length(to);
+    if (d <= LIGHT_DIST_MIN) {
+        return 0.0;
+    }
+    let l = to / d;
+    if (area_radius(light) < AREA_POINT_LIMIT_ANGLE * d) {
+        let cos_l = select(max(-dot(light.normal.xyz, l), 0.0), 1.0, light.kind == LIGHT_SPHERE);
+        return max(dot(n, l), 0.0) * cos_l;
+    }
+    return d * d * area_irradiance(light, p, n) / emitting_area(light);
+}
+
+// A vector in a flat light's plane (from its centre) moved onto the shape: clamped to the
+// rectangle's half-sizes, or in length to the disk's radius.
+fn clamp_to_shape(light: Light, local: vec3<f32>) -> vec3<f32> {
+    let t = light.tangent.xyz;
+    let b = cross(light.normal.xyz, t);
+    let x = dot(local, t);
+    let y = dot(local, b);
+    if (light.kind == LIGHT_RECT) {
+        return t * clamp(x, -light.half_x, light.half_x) + b * clamp(y, -light.half_y, light.half_y);
+    }
+    let len = length(vec2(x, y));
+    let k = select(1.0, light.half_x / len, len > light.half_x);
+    return (t * x + b * y) * k;
+}
+
+// The representative point for the specular term (area.rs explains the choice and the lobe's
+// widening m²/(m² + σ²/8)).
+fn area_specular_point(light: Light, p: vec3<f32>, n: vec3<f32>, v: vec3<f32>, m_in: f32) -> AreaPoint {
+    let to_c = light.position.xyz - p;
+    let d = length(to_c);
+    if (d <= LIGHT_DIST_MIN) {
+        return AreaPoint(n, 0.0);
+    }
+    let flat = light.kind != LIGHT_SPHERE;
+    let axis = light.normal.xyz;
+    if (area_radius(light) < AREA_POINT_LIMIT_ANGLE * d) {
+        return AreaPoint(to_c / d, select(1.0, max(-dot(axis, to_c / d), 0.0), flat));
+    }
+    let r_dir = safe_normalize(2.0 * dot(n, v) * n - v, n);
+    var q = vec3(0.0);
+    var scale = 1.0;
+    if (flat) {
+        let denom = dot(r_dir, axis);
+        var local = safe_normalize(r_dir - axis * denom, vec3(0.0)) * (2.0 * area_radius(light));
+        if (denom < 0.0) {
+            local = p + r_dir * max(dot(to_c, axis) / denom, 0.0) - light.position.xyz;
+        }
+        q = light.position.xyz + clamp_to_shape(light, local);
+        let to_q = q - p;
+        let r2 = max(dot(to_q, to_q), LIGHT_DIST_MIN * LIGHT_DIST_MIN);
+        scale = max(-dot(axis, safe_normalize(to_q, vec3(0.0))), 0.0) * d * d / r2;
+    } else {
+        let along = dot(to_c, r_dir) * r_dir - to_c;
+        let len = length(along);
+        let reach = select(0.0, min(light.half_x / len, 1.0), len > 0.0);
+        q = light.position.xyz + along * reach;
+    }
+    let m = max(m_in, M_MIN);
+    let sigma = sqrt(emitting_area(light) / AREA_PI) / d;
+    let norm = m * m / (m * m + sigma * sigma / 8.0);
+    return AreaPoint(safe_normalize(q - p, to_c / d), scale * norm);
+}
+#endif

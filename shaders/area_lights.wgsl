@@ -115,20 +115,48 @@ fn polygon_irradiance(p: vec3<f32>, n: vec3<f32>, corners: AreaCorners) -> f32 {
 // the spherical cap, clipped at the horizon; π inside the sphere.
 fn sphere_irradiance(radius: f32, d: f32, cos_theta: f32) -> f32 {
     let r = abs(radius);
-    if (d <= r) {
+    let sin2_sigma = (r / d) * (r / d);
+    // On or inside the sphere (also where r/d rounds to 1) the light is all round: π.
+    if (d <= r || sin2_sigma >= 1.0) {
         return AREA_PI;
     }
-    let sin2_sigma = (r / d) * (r / d);
     let cos_t = clamp(cos_theta, -1.0, 1.0);
     let sin_t = sqrt(max(1.0 - cos_t * cos_t, 0.0));
     if (cos_t * cos_t >= sin2_sigma || sin2_sigma <= 0.0) {
         return max(AREA_PI * sin2_sigma * cos_t, 0.0);
     }
-    let x = sqrt(max(1.0 / sin2_sigma - 1.0, 0.0));
-    let y = clamp(-x * cos_t / sin_t, -1.0, 1.0);
-    let s = sin_t * sqrt(max(1.0 - y * y, 0.0));
-    let e = (cos_t * acos(y) - x * s) * sin2_sigma + atan2(s, x);
+    // The horizon-clipped cap in the form that keeps f32's precision (area.rs derives it).
+    let delta = max(sin2_sigma - cos_t * cos_t, 0.0);
+    let sin_sigma = sqrt(sin2_sigma);
+    let cos_sigma = sqrt(max(1.0 - sin2_sigma, 0.0));
+    let sin_phi = min(sqrt(delta) / (sin_sigma * sin_t), 1.0);
+    let cos_phi = clamp(-cos_sigma * cos_t / (sin_sigma * sin_t), -1.0, 1.0);
+    let phi = atan2(sin_phi, cos_phi);
+    let u = sqrt(delta) / cos_sigma;
+    let e = sin2_sigma * sin_t * (sin_sigma / cos_sigma) * sin_minus_phi_cos(phi, sin_phi, cos_phi)
+        + atan_minus_u(u);
     return clamp(e, 0.0, AREA_PI);
+}
+
+// Below this argument the series replace the direct forms (AREA_SERIES_MAX in area.rs).
+const AREA_SERIES_MAX: f32 = 0.25;
+
+// sin φ − φ cos φ, by its series below AREA_SERIES_MAX.
+fn sin_minus_phi_cos(phi: f32, sin_phi: f32, cos_phi: f32) -> f32 {
+    if (abs(phi) < AREA_SERIES_MAX) {
+        let p2 = phi * phi;
+        return phi * p2 * (1.0 / 3.0 - p2 * (1.0 / 30.0 - p2 * (1.0 / 840.0 - p2 / 45360.0)));
+    }
+    return sin_phi - phi * cos_phi;
+}
+
+// atan u − u, by its series below AREA_SERIES_MAX.
+fn atan_minus_u(u: f32) -> f32 {
+    if (abs(u) < AREA_SERIES_MAX) {
+        let u2 = u * u;
+        return u * u2 * (-1.0 / 3.0 + u2 * (1.0 / 5.0 - u2 * (1.0 / 7.0 - u2 / 9.0)));
+    }
+    return atan(u) - u;
 }
 
 // E/L of the light at `p`: the sphere's cap, or the flat light's edge formula.

@@ -10,12 +10,15 @@
 const SHADOW_FILTER_HARD: u32 = 0u;
 const SHADOW_FILTER_PCF: u32 = 1u;
 const SHADOW_FILTER_POISSON: u32 = 2u;
+const SHADOW_FILTER_PCSS: u32 = 3u;
 
 // Twins of crates/shadelab-model/src/shadows.rs (shadows::WGSL_TWINS), reasons there.
 const MAX_SHADOW_LAYERS: u32 = 48u;
 const SHADOW_POISSON_TAPS: u32 = 16u;
 const SHADOW_POISSON_RADIUS_TEXELS: f32 = 2.0;
 const SHADOW_CASCADE_MARGIN_TEXELS: f32 = 3.0;
+const SHADOW_PCSS_TAPS: u32 = 16u;
+const SHADOW_PCSS_NEAREST_BLOCKER: f32 = 0.1;
 
 // One light's shadow map in the frame's array of maps.
 struct ShadowLight {
@@ -33,7 +36,12 @@ struct ShadowLight {
     uv_scale: f32,
     // 1 / the array's side: one texel in layer coordinates.
     texel_uv: f32,
-    _pad: f32,
+    // The light's size for its penumbra (0: no area); the map's depth range along its axis.
+    light_size: f32,
+    near: f32,
+    far: f32,
+    _pad0: f32,
+    _pad1: f32,
 }
 
 struct Shadows {
@@ -57,17 +65,16 @@ struct ShadowCasters {
 #endif
 @group(3) @binding(0) var<uniform> shadow_casters: ShadowCasters;
 
-#if EFFECT_SHADOW_POISSON
+#if EFFECT_SHADOW_POISSON||EFFECT_SHADOW_PCSS
 // A per-pixel angle in [0, 2π) (interleaved gradient noise of the screen position): rotates the
 // Poisson disk so its pattern turns into fine noise instead of banding.
 fn shadow_rotation(pixel: vec2<f32>) -> f32 {
     return 6.2831853 * fract(52.9829189 * fract(dot(pixel, vec2(0.06711056, 0.00583715))));
 }
 
-// SHADOW_FILTER_POISSON: the mean of SHADOW_POISSON_TAPS bilinear compares on a disk of
-// SHADOW_POISSON_RADIUS_TEXELS texels, rotated per pixel.
-fn shadow_compare_poisson(sl: ShadowLight, uv: vec2<f32>, layer: u32, depth: f32, pixel: vec2<f32>) -> f32 {
-    var disk = array<vec2<f32>, SHADOW_POISSON_TAPS>(
+// Point `i` of the 16-point Poisson disk of unit radius the soft filters tap.
+fn poisson_tap(i: u32) -> vec2<f32> {
+    var disk = array<vec2<f32>, 16>(
         vec2(-0.94201624, -0.39906216), vec2(0.94558609, -0.76890725),
         vec2(-0.09418410, -0.92938870), vec2(0.34495938, 0.29387760),
         vec2(-0.91588581, 0.45771432), vec2(-0.81544232, -0.87912464),
@@ -77,16 +84,86 @@ fn shadow_compare_poisson(sl: ShadowLight, uv: vec2<f32>, layer: u32, depth: f32
         vec2(-0.24188840, 0.99706507), vec2(-0.81409955, 0.91437590),
         vec2(0.19984126, 0.78641367), vec2(0.14383161, -0.14100790),
     );
+    return disk[i % 16u];
+}
+#endif
+
+#if EFFECT_SHADOW_POISSON
+// SHADOW_FILTER_POISSON: the mean of SHADOW_POISSON_TAPS bilinear compares on a disk of
+// SHADOW_POISSON_RADIUS_TEXELS texels, rotated per pixel.
+fn shadow_compare_poisson(sl: ShadowLight, uv: vec2<f32>, layer: u32, depth: f32, pixel: vec2<f32>) -> f32 {
     let a = shadow_rotation(pixel);
     let rot = mat2x2(cos(a), sin(a), -sin(a), cos(a)) * (SHADOW_POISSON_RADIUS_TEXELS * sl.texel_uv);
     // The taps stay inside the light's part of the layer (the rest is another size's border).
     let hi = vec2(sl.uv_scale - 0.5 * sl.texel_uv);
     var sum = 0.0;
     for (var i = 0u; i < SHADOW_POISSON_TAPS; i++) {
-        let q = clamp(uv + rot * disk[i], vec2(0.5 * sl.texel_uv), hi);
+        let q = clamp(uv + rot * poisson_tap(i), vec2(0.5 * sl.texel_uv), hi);
         sum += textureSampleCompareLevel(shadow_maps, shadow_linear, q, layer, depth);
     }
     return sum / f32(SHADOW_POISSON_TAPS);
+}
+#endif
+
+#if EFFECT_SHADOW_PCSS
+// Search tap `i` of SHADOW_PCSS_TAPS: a golden-angle spiral whose radius grows as the square of
+// its rank, so near blockers (small cones) are sampled as densely as far ones.
+fn pcss_search_tap(i: u32) -> vec2<f32> {
+    let r = (f32(i) + 0.5) / f32(SHADOW_PCSS_TAPS);
+    let angle = 2.3999632 * f32(i);
+    return r * r * vec2(cos(angle), sin(angle));
+}
+
+// SHADOW_FILTER_PCSS: percentage-closer soft shadows (docs/area-lights.md). The blocker search
+// takes SHADOW_PCSS_TAPS stored depths over the cone from the receiver to the light, where it
+// crosses the nearest blocker depth searched (SHADOW_PCSS_NEAREST_BLOCKER), and keeps those
+// inside the cone at their own depth; the blockers' mean linear depth d_b gives the penumbra
+// w = w_light·(d_r − d_b)/d_b at the receiver, and the filter's disk has radius w/2 there (its
+// ramp spans its diameter), at least one texel. Both patterns turn per pixel. Every tap compares
+// with the receiver's own plane there: a tap r away at the receiver may see that plane nearer the
+// light by r·tan θ (θ between N and L, `n_dot_l`), which must not shadow it. A light without an
+// area (w_light = 0) gets the hardware's 2×2 compare.
+fn shadow_compare_pcss(sl: ShadowLight, uv: vec2<f32>, layer: u32, depth: f32, n_dot_l: f32, pixel: vec2<f32>) -> f32 {
+    if (sl.light_size <= 0.0 || sl.perspective == 0u) {
+        return textureSampleCompareLevel(shadow_maps, shadow_linear, uv, layer, depth);
+    }
+    let a = shadow_rotation(pixel);
+    let rot = mat2x2(cos(a), sin(a), -sin(a), cos(a));
+    let lo = vec2(0.5 * sl.texel_uv);
+    let hi = vec2(sl.uv_scale - 0.5 * sl.texel_uv);
+    let d_r = shadow_linear_depth(depth, sl.near, sl.far);
+    let slope = receiver_slope(n_dot_l);
+    // Map tangent units to layer coordinates: a face spans 2 in tangent and uv_scale in uv.
+    let per_tan = 0.5 * sl.uv_scale;
+    let nearest = max(sl.near, SHADOW_PCSS_NEAREST_BLOCKER * d_r);
+    let search = min(pcss_search_radius(sl.light_size, d_r, nearest), 1.0);
+    var blockers = 0.0;
+    var depth_sum = 0.0;
+    for (var i = 0u; i < SHADOW_PCSS_TAPS; i++) {
+        let off = rot * pcss_search_tap(i) * search;
+        let q = clamp(uv + off * per_tan, lo, hi);
+        let z = shadow_linear_depth(textureLoad(shadow_maps, vec2<i32>(q / sl.texel_uv), i32(layer), 0), sl.near, sl.far);
+        // A blocker: nearer than the receiver's own plane there, and inside the cone from the
+        // receiver to the light at its own depth (the search region is that cone's widest part).
+        let r = length(off);
+        if (z < d_r - r * d_r * slope && r <= pcss_search_radius(sl.light_size, d_r, z)) {
+            blockers += 1.0;
+            depth_sum += z;
+        }
+    }
+    if (blockers == 0.0) {
+        return 1.0;
+    }
+    let w = penumbra_width(sl.light_size, d_r, depth_sum / blockers);
+    let radius = max(0.5 * w / max(d_r, BLOCKER_DIST_MIN), sl.texel_uv / per_tan);
+    var lit = 0.0;
+    for (var i = 0u; i < SHADOW_PCSS_TAPS; i++) {
+        let off = rot * poisson_tap(i) * radius;
+        let q = clamp(uv + off * per_tan, lo, hi);
+        let own = shadow_stored_depth(d_r - length(off) * d_r * slope, sl.near, sl.far);
+        lit += textureSampleCompareLevel(shadow_maps, shadow_linear, q, layer, own);
+    }
+    return lit / f32(SHADOW_PCSS_TAPS);
 }
 #endif
 
@@ -108,7 +185,8 @@ fn shadow_compare_pcf(uv: vec2<f32>, layer: u32, depth: f32) -> f32 {
 // filtered edges. Outside the map's square or depth range nothing is known: lit. Each filter is
 // its own effect, in the permutation only when some light uses it: a CPU rasterizer runs the
 // code of branches no pixel takes. A filter the permutation lacks leaves the light unshadowed.
-fn shadow_compare(sl: ShadowLight, layer: u32, t: vec3<f32>, pixel: vec2<f32>) -> f32 {
+// `n_dot_l` is the cosine between the point's normal and its light (PCSS's receiver plane).
+fn shadow_compare(sl: ShadowLight, layer: u32, t: vec3<f32>, n_dot_l: f32, pixel: vec2<f32>) -> f32 {
     if (any(t.xy < vec2(0.0)) || any(t.xy > vec2(1.0)) || t.z < 0.0 || t.z > 1.0) {
         return 1.0;
     }
@@ -126,6 +204,11 @@ fn shadow_compare(sl: ShadowLight, layer: u32, t: vec3<f32>, pixel: vec2<f32>) -
 #if EFFECT_SHADOW_PCF
     if (sl.shadow_filter == SHADOW_FILTER_PCF) {
         return shadow_compare_pcf(uv, layer, t.z);
+    }
+#endif
+#if EFFECT_SHADOW_PCSS
+    if (sl.shadow_filter == SHADOW_FILTER_PCSS) {
+        return shadow_compare_pcss(sl, uv, layer, t.z, n_dot_l, pixel);
     }
 #endif
     return 1.0;
@@ -188,7 +271,11 @@ fn shadow_visibility(i: u32, light: Light, p: vec3<f32>, n: vec3<f32>, pixel: ve
     }
 #endif
     let t = shadow_map_coord(shadows.matrices[min(layer, MAX_SHADOW_LAYERS - 1u)], q);
-    return shadow_compare(sl, layer, t, pixel);
+    var n_dot_l = 1.0;
+#if EFFECT_POINT_LIGHTS
+    n_dot_l = dot(n, safe_normalize(light.position.xyz - p, n));
+#endif
+    return shadow_compare(sl, layer, t, n_dot_l, pixel);
 }
 
 // The shadow pass: an object's smooth mesh drawn into one layer of the light's maps, the layer

@@ -167,6 +167,11 @@ fn sweep(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workgroups)
         outputs[base + COL_AREA_FORM + k] = area_form(area, vec3(0.0), n);
         outputs[base + COL_AREA_SPEC_SCALE + k] = area_specular_point(area, vec3(0.0), n, v, m).scale;
     }
+    outputs[base + COL_PENUMBRA_WIDTH] = penumbra_width(a_row.x, d, a_row.y);
+    outputs[base + COL_PCSS_SEARCH_RADIUS] = pcss_search_radius(a_row.x, d, a_row.y);
+    outputs[base + COL_SHADOW_LINEAR_DEPTH] = shadow_linear_depth(m, a_row.y, a_row.y + d);
+    outputs[base + COL_SHADOW_STORED_DEPTH] = shadow_stored_depth(d, a_row.y, a_row.y + d);
+    outputs[base + COL_RECEIVER_SLOPE] = receiver_slope(dot(n, l));
 }
 
 // A colour's three channels into consecutive outputs from `at`.

@@ -66,6 +66,11 @@ impl ReferenceImage {
     }
 }
 
+/// Cells a side of the quadrature over an area light's surface that gives the reference its
+/// soft shadows (`ShadowRays::area_visibility`): 16² = 256 shadow rays per pixel and light, so
+/// a penumbra is resolved into 256 levels, finer than an 8-bit image's steps across it.
+pub const REFERENCE_AREA_CELLS: usize = 16;
+
 /// Render the scene by ray casting in f64 at any resolution. A light whose `shadow.casts` is
 /// false lights every point its term reaches, exactly as without shadow rays.
 pub fn render_reference(scene: &Scene, specular: SpecularModel, width: u32, height: u32) -> ReferenceImage {
@@ -119,6 +124,7 @@ pub fn render_reference(scene: &Scene, specular: SpecularModel, width: u32, heig
             };
             let emit = |c: [f64; 3]| -> [f64; 3] { std::array::from_fn(|i| c[i] + emission[i]) };
             let mut hidden = 0u8;
+            let mut dimmed = false;
             let lit = shade_with_visibility(
                 p,
                 n,
@@ -129,6 +135,20 @@ pub fn render_reference(scene: &Scene, specular: SpecularModel, width: u32, heig
                 specular,
                 scene.illumination,
                 |i, light, l| {
+                    // An area light's soft shadow: the share of its cells a ray reaches; the
+                    // pixel counts as hidden from it when more than half of its light is blocked.
+                    let soft = light
+                        .shadow
+                        .casts
+                        .then(|| rays.area_visibility(light, p, n, hit.geometric_normal, REFERENCE_AREA_CELLS))
+                        .flatten();
+                    if let Some(v) = soft {
+                        if v < 0.5 {
+                            hidden |= 1 << i;
+                        }
+                        dimmed |= v < 1.0;
+                        return v;
+                    }
                     if light.shadow.casts && rays.hidden(light, p, hit.geometric_normal, l) {
                         hidden |= 1 << i;
                         0.0
@@ -138,7 +158,7 @@ pub fn render_reference(scene: &Scene, specular: SpecularModel, width: u32, heig
                 },
             );
             img.pixels.push(emit(lit));
-            img.unshadowed.push(emit(if hidden == 0 {
+            img.unshadowed.push(emit(if hidden == 0 && !dimmed {
                 lit
             } else {
                 shade(p, n, eye, mat, &scene.lights, scene.ambient, specular, scene.illumination)

@@ -10,7 +10,10 @@ mod material;
 mod texture;
 
 pub use crate::lighting::lights::{LIGHT_STAND_OFF, Light, MAX_LIGHTS, SPOT_OUTER_CONE_DEFAULT};
-pub use builtin::{BUILTIN_SCENES, default_scene, single_shape_scene};
+pub use builtin::{
+    BUILTIN_SCENES, PENUMBRA_LIGHT_HEIGHT, PENUMBRA_LIGHT_SIZE, PENUMBRA_PLATE_HALF, PENUMBRA_PLATE_HEIGHT,
+    default_scene, penumbra_scene, single_shape_scene,
+};
 pub use camera::{COMPOSED_ASPECT, Camera};
 pub use material::{
     Material, MaterialMaps, MetalRoughnessMap, NormalMap, OcclusionMap, SurfacePoint, emitted, metallic_scaled,

@@ -27,6 +27,10 @@ pub enum ShadowFilter {
     Pcf,
     /// Percentage-closer filtering over rotated Poisson-disk taps (a wider, smoother edge).
     Poisson,
+    /// Percentage-closer soft shadows: the penumbra of an area light, as wide as its size and
+    /// the blocker's and receiver's distances give (docs/area-lights.md); a light without an
+    /// area gets `Pcf`'s edge.
+    Pcss,
 }
 
 impl ShadowFilter {
@@ -36,14 +40,19 @@ impl ShadowFilter {
             ShadowFilter::Hard => 0,
             ShadowFilter::Pcf => 1,
             ShadowFilter::Poisson => 2,
+            ShadowFilter::Pcss => 3,
         }
     }
 }
 
 impl NamedValue for ShadowFilter {
     const FLAG: &'static str = "--shadow-filter";
-    const ALL: &'static [(&'static str, Self)] =
-        &[("hard", ShadowFilter::Hard), ("pcf", ShadowFilter::Pcf), ("poisson", ShadowFilter::Poisson)];
+    const ALL: &'static [(&'static str, Self)] = &[
+        ("hard", ShadowFilter::Hard),
+        ("pcf", ShadowFilter::Pcf),
+        ("poisson", ShadowFilter::Poisson),
+        ("pcss", ShadowFilter::Pcss),
+    ];
 }
 
 /// Side of a light's shadow map in texels (a cube face's side for a point light).
@@ -141,15 +150,78 @@ pub const SHADOW_BOUNDS_RADIUS_MIN: f64 = 1e-3;
 /// map, lit. 1e-20 keeps `c.xyz / w` finite in f32 for any |c.xyz| below 3e18.
 pub const SHADOW_CLIP_W_MIN: f64 = 1e-20;
 
+/// Taps of each of PCSS's two passes (`ShadowFilter::Pcss`): the blocker search and the filter
+/// each take the 16 rotated Poisson-disk points, like `Poisson`, so the two filters cost alike
+/// per tap; the study times PCSS against the other filters.
+pub const SHADOW_PCSS_TAPS: u32 = 16;
+
+/// The nearest blocker PCSS searches for, as a share of the receiver's distance from the light:
+/// a blocker nearer than a tenth casts a penumbra over 9 light sizes wide, more than 16 search
+/// taps resolve, and the search region (the cone from the receiver to the light where it crosses
+/// that depth) would cover the whole face. The search's taps are spread as the square of their
+/// rank, so near blockers are found as surely as far ones.
+pub const SHADOW_PCSS_NEAREST_BLOCKER: f64 = 0.1;
+
+/// The distance along a perspective map's view axis of a point whose stored depth is `depth`
+/// (the inverse of the map's depth, far·(z − near)/((far − near)·z)): PCSS averages blockers in
+/// this linear depth, not in the stored one.
+pub fn shadow_linear_depth(depth: f64, near: f64, far: f64) -> f64 {
+    far * near / (far - depth.clamp(0.0, 1.0) * (far - near)).max(near)
+}
+
+/// The stored depth of a point at linear depth `z` along a perspective map's axis (the inverse
+/// of [`shadow_linear_depth`]): PCSS compares each filter tap with its receiver plane's depth.
+/// A map without depth range (far ≤ near) or with its eye at depth 0 stores 0 everywhere.
+pub fn shadow_stored_depth(z: f64, near: f64, far: f64) -> f64 {
+    let zc = z.max(near);
+    if far <= near || zc <= 0.0 {
+        return 0.0;
+    }
+    far * (zc - near) / ((far - near) * zc)
+}
+
+/// Largest depth slope PCSS allows a receiver's plane, tan θ (84°): each tap at distance r across
+/// the light's view compares with the plane's depth r·tan θ nearer the light, so the receiver
+/// does not shadow itself; past 84° the bias would swallow every blocker, and N·L ≤ 0.1 there
+/// leaves the light dim anyway.
+pub const SHADOW_RECEIVER_SLOPE_MAX: f64 = 10.0;
+
+/// tan θ of the receiver's plane against the light, from the cosine `n_dot_l`, at most
+/// [`SHADOW_RECEIVER_SLOPE_MAX`].
+pub fn receiver_slope(n_dot_l: f64) -> f64 {
+    let c = n_dot_l.clamp(0.0, 1.0);
+    ((1.0 - c * c).sqrt() / c.max(1.0 / SHADOW_RECEIVER_SLOPE_MAX)).min(SHADOW_RECEIVER_SLOPE_MAX)
+}
+
+/// PCSS's blocker search radius on a perspective map, in units of the map's tangent (a cube face
+/// spans −1 to 1): the cone from the receiver at `d_receiver` to a light of size `w_light`,
+/// where it crosses the nearest depth a blocker can have (`near`, at least `BLOCKER_DIST_MIN`):
+/// ½·w_light·(1/near − 1/d_r), 0 for a receiver nearer than that.
+pub fn pcss_search_radius(w_light: f64, d_receiver: f64, near: f64) -> f64 {
+    let near = near.max(crate::guards::BLOCKER_DIST_MIN);
+    (0.5 * w_light.abs() * (1.0 / near - 1.0 / d_receiver.max(near))).max(0.0)
+}
+
+/// The penumbra's width on a receiver at distance `d_receiver` from a light of size `w_light`
+/// whose blocker is at `d_blocker` (both measured from the light, in linear depth): similar
+/// triangles, w = w_light·(d_r − d_b)/d_b; 0 where the receiver is not behind the blocker.
+pub fn penumbra_width(w_light: f64, d_receiver: f64, d_blocker: f64) -> f64 {
+    let d_b = d_blocker.max(crate::guards::BLOCKER_DIST_MIN);
+    (w_light.abs() * (d_receiver - d_b) / d_b).max(0.0)
+}
+
 /// The constants `shaders/shadows.wgsl` and `shaders/shadow_math.wgsl` repeat, by their WGSL name: the twin test holds them
 /// equal, and every `f32`/`u32` constant of that file (other than the filter codes) is here.
-pub const WGSL_TWINS: [(&str, f64); 6] = [
+pub const WGSL_TWINS: [(&str, f64); 9] = [
     ("SHADOW_NORMAL_OFFSET_TEXELS", SHADOW_NORMAL_OFFSET_TEXELS as f64),
     ("SHADOW_POISSON_TAPS", SHADOW_POISSON_TAPS as f64),
     ("SHADOW_POISSON_RADIUS_TEXELS", SHADOW_POISSON_RADIUS_TEXELS as f64),
     ("MAX_SHADOW_LAYERS", MAX_SHADOW_LAYERS as f64),
     ("SHADOW_CASCADE_MARGIN_TEXELS", SHADOW_CASCADE_MARGIN_TEXELS),
     ("SHADOW_CLIP_W_MIN", SHADOW_CLIP_W_MIN),
+    ("SHADOW_PCSS_TAPS", SHADOW_PCSS_TAPS as f64),
+    ("SHADOW_RECEIVER_SLOPE_MAX", SHADOW_RECEIVER_SLOPE_MAX),
+    ("SHADOW_PCSS_NEAREST_BLOCKER", SHADOW_PCSS_NEAREST_BLOCKER),
 ];
 
 /// The bounding sphere `(centre, radius)` of every object in world space (the corners of each
@@ -211,6 +283,9 @@ pub struct ShadowProjection {
     pub matrices: Vec<DMat4>,
     pub texel_world: f64,
     pub perspective: bool,
+    /// The depth range along the view axis (a perspective map's planes; PCSS linearizes with it).
+    pub near: f64,
+    pub far: f64,
 }
 
 /// The faces' view directions and up vectors, in [`shadow_face`]'s order: +x, −x, +y, −y, +z, −z.
@@ -243,7 +318,13 @@ pub fn shadow_projection(light: &Light, centre: DVec3, radius: f64, resolution: 
             let eye = centre - dir * (radius * 2.0);
             let view = DMat4::look_to_rh(eye, dir, up_for(dir));
             let proj = DMat4::orthographic_rh(-radius, radius, -radius, radius, radius * 0.5, radius * 3.5);
-            ShadowProjection { matrices: vec![proj * view], texel_world: 2.0 * radius / n, perspective: false }
+            ShadowProjection {
+                matrices: vec![proj * view],
+                texel_world: 2.0 * radius / n,
+                perspective: false,
+                near: radius * 0.5,
+                far: radius * 3.5,
+            }
         }
         // An area light's map is a point light's six faces from its centre (PCSS widens it).
         LightKind::Point | LightKind::Spot | LightKind::Rect | LightKind::Disk | LightKind::Sphere => {
@@ -255,11 +336,17 @@ pub fn shadow_projection(light: &Light, centre: DVec3, radius: f64, resolution: 
                 let half = light.outer_cone.clamp(1e-3, SPOT_SHADOW_HALF_ANGLE_MAX);
                 let view = DMat4::look_to_rh(light.position, axis, up_for(axis));
                 let proj = DMat4::perspective_rh(2.0 * half, 1.0, near, far);
-                ShadowProjection { matrices: vec![proj * view], texel_world: 2.0 * half.tan() / n, perspective: true }
+                ShadowProjection {
+                    matrices: vec![proj * view],
+                    texel_world: 2.0 * half.tan() / n,
+                    perspective: true,
+                    near,
+                    far,
+                }
             } else {
                 let proj = DMat4::perspective_rh(std::f64::consts::FRAC_PI_2, 1.0, near, far);
                 let matrices = FACES.iter().map(|(f, up)| proj * DMat4::look_to_rh(light.position, *f, *up)).collect();
-                ShadowProjection { matrices, texel_world: 2.0 / n, perspective: true }
+                ShadowProjection { matrices, texel_world: 2.0 / n, perspective: true, near, far }
             }
         }
     }

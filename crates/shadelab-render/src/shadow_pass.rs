@@ -235,7 +235,11 @@ pub fn shadows_uniform(scene: &Scene, plan: &ShadowPlan, aspect: f64) -> Shadows
             texel_world: p.texel_world as f32,
             uv_scale: map.resolution as f32 / plan.side as f32,
             texel_uv: 1.0 / plan.side as f32,
-            _pad: 0.0,
+            light_size: light.penumbra_size() as f32,
+            near: p.near as f32,
+            far: p.far as f32,
+            _pad0: 0.0,
+            _pad1: 0.0,
         };
     }
     u

@@ -45,7 +45,7 @@ const TWINS: [(&str, &str); 10] = [
 
 /// WGSL functions with no f64 twin, by file, and why. (Entry points are left out by naga's list:
 /// they are the GPU's stages, whose f64 counterpart is `reference::render_reference`.)
-const NO_TWIN: [(&str, &str, &str); 31] = [
+const NO_TWIN: [(&str, &str, &str); 34] = [
     ("common.wgsl", "is_nonfinite", "the NaN/∞ test on f32 bits; f64 code uses f64::is_finite"),
     ("common.wgsl", "any_nonfinite", "the debug view's test of a colour, built on is_nonfinite"),
     ("surface.wgsl", "sample_slot", "samples a GPU texture; its f64 side is scene::Texture::sample_as"),
@@ -71,11 +71,18 @@ const NO_TWIN: [(&str, &str, &str); 31] = [
     ("shading.wgsl", "phong_vertex", "Phong shading's vertex stage; the reference lights every pixel exactly"),
     ("screen_space.wgsl", "screen_or_perspective", "the rasterizer's screen-space interpolant; the reference has none"),
     ("shading.wgsl", "vertex_seed", "the shadow filter's noise seed; the reference traces exact shadow rays"),
-    ("shadows.wgsl", "shadow_rotation", "the Poisson filter's per-pixel noise; the reference has no filter"),
+    ("shadows.wgsl", "shadow_rotation", "the soft filters' per-pixel noise; the reference has no filter"),
     ("shadows.wgsl", "shadow_compare", "samples the shadow map; the reference traces rays instead"),
     ("shadows.wgsl", "shadow_compare_hard", "samples the shadow map (nearest); the reference traces rays"),
     ("shadows.wgsl", "shadow_compare_pcf", "samples the shadow map (2×2); the reference traces rays"),
     ("shadows.wgsl", "shadow_compare_poisson", "samples the shadow map (Poisson); the reference traces rays"),
+    (
+        "shadows.wgsl",
+        "shadow_compare_pcss",
+        "samples the shadow map (PCSS); the reference traces rays to the light's area",
+    ),
+    ("shadows.wgsl", "poisson_tap", "the soft filters' tap pattern; the reference has no filter"),
+    ("shadows.wgsl", "pcss_search_tap", "PCSS's blocker-search pattern; the reference has no filter"),
     ("shadows.wgsl", "shadow_visibility", "looks the point up in a shadow map; the reference traces a shadow ray"),
 ];
 

@@ -106,7 +106,13 @@ pub struct ShadowLightUniform {
     pub texel_world: f32,
     pub uv_scale: f32,
     pub texel_uv: f32,
-    pub _pad: f32,
+    /// `Light::penumbra_size` (PCSS; 0 for a light without an area).
+    pub light_size: f32,
+    /// The map's depth range along its view axis (PCSS linearizes the stored depth with it).
+    pub near: f32,
+    pub far: f32,
+    pub _pad0: f32,
+    pub _pad1: f32,
 }
 
 /// `shadows.wgsl`'s `Shadows` (@group(2) @binding(0)): each layer's light view-projection and

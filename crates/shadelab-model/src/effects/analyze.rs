@@ -202,6 +202,7 @@ pub fn analyze(scene: &Scene, specular: SpecularModel) -> Analysis {
         (Effect::ShadowFilterHard, ShadowFilter::Hard),
         (Effect::ShadowFilterPcf, ShadowFilter::Pcf),
         (Effect::ShadowFilterPoisson, ShadowFilter::Poisson),
+        (Effect::ShadowFilterPcss, ShadowFilter::Pcss),
     ] {
         let (used, why) = shadow_filter(lights, on, filter);
         a.decide(effect, used, why);

@@ -202,6 +202,8 @@ declare_effects! {
             "edge_term",
             "polygon_irradiance",
             "sphere_irradiance",
+            "sin_minus_phi_cos",
+            "atan_minus_u",
             "area_irradiance",
             "area_form",
             "clamp_to_shape",
@@ -252,8 +254,26 @@ declare_effects! {
         name: "Poisson shadow filter",
         label: "poisson",
         define: Some("EFFECT_SHADOW_POISSON"),
-        functions: &["shadow_compare_poisson", "shadow_rotation"],
+        functions: &["shadow_compare_poisson"],
         members: &[],
+    },
+    /// The `pcss` shadow filter: an area light's penumbra from a blocker search and a filter as
+    /// wide as the penumbra (docs/area-lights.md). Shares the rotated Poisson disk with `poisson`.
+    ShadowFilterPcss {
+        explain: "shadow filter pcss",
+        name: "PCSS shadow filter",
+        label: "pcss",
+        define: Some("EFFECT_SHADOW_PCSS"),
+        functions: &[
+            "shadow_compare_pcss",
+            "pcss_search_tap",
+            "shadow_linear_depth",
+            "shadow_stored_depth",
+            "receiver_slope",
+            "pcss_search_radius",
+            "penumbra_width",
+        ],
+        members: &[("ShadowLight", "light_size"), ("ShadowLight", "near"), ("ShadowLight", "far")],
     },
     /// A directional light's shadow map split along the view's depth into cascades, finest near
     /// the camera (docs/model.md §6).

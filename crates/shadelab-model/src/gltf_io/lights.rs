@@ -177,11 +177,18 @@ impl Reader<'_> {
         if let Some(c) = ex.shadow_cascades {
             light.shadow.cascades = c.0;
         }
+        let file_filter = ex.shadow_filter.is_some();
         if let Some(f) = ex.shadow_filter {
             light.shadow.filter = f.0;
         }
         match ex.area.map(|a| a.0) {
-            Some(area) if area.is_area() && kind != LightKind::Directional => light.kind = area,
+            Some(area) if area.is_area() && kind != LightKind::Directional => {
+                light.kind = area;
+                // Soft shadows unless the file chose a filter.
+                if !file_filter {
+                    light.shadow.filter = ShadowFilter::Pcss;
+                }
+            }
             Some(area) => self.cx.warn(format!(
                 "{what}: extras area \"{}\" ignored: it must be rect, disk or sphere on a point or spot light",
                 area.name()

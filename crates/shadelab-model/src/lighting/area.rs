@@ -6,7 +6,7 @@
 //! integral over the light's area by deterministic midpoint quadrature with binary visibility,
 //! which also reports its own error. The penumbra width the shadow filters aim for is here too.
 
-use crate::guards::{AREA_POINT_LIMIT_ANGLE, BLOCKER_DIST_MIN, EDGE_CROSS_MIN_LEN2, LIGHT_DIST_MIN, M_MIN};
+use crate::guards::{AREA_POINT_LIMIT_ANGLE, EDGE_CROSS_MIN_LEN2, LIGHT_DIST_MIN, M_MIN};
 use glam::DVec3;
 use std::f64::consts::{PI, TAU};
 
@@ -111,18 +111,44 @@ pub fn disk_polygon_scale() -> f64 {
 /// delivers 0. A corner touching `p` (closer than `LIGHT_DIST_MIN`) has no direction and is
 /// skipped.
 pub fn polygon_irradiance(p: DVec3, n: DVec3, corners: &[DVec3]) -> f64 {
+    (-0.5 * polygon_edge_sum(p, n, corners).0).max(0.0)
+}
+
+/// The sum of [`edge_term`]s over the polygon clipped at `p`'s horizon, and the sum of their
+/// magnitudes: where the horizon leaves a sliver the terms cancel, and an f32 sum keeps only
+/// its precision times the second over the first.
+pub fn polygon_edge_sum(p: DVec3, n: DVec3, corners: &[DVec3]) -> (f64, f64) {
     let clipped = clip_to_horizon(p, n, corners);
     if clipped.len() < 3 {
-        return 0.0;
+        return (0.0, 0.0);
     }
     let dirs: Vec<DVec3> = clipped.iter().map(|c| *c - p).filter(|d| d.length() > LIGHT_DIST_MIN).collect();
-    let mut sum = 0.0;
+    let (mut sum, mut magnitude) = (0.0, 0.0);
     for i in 0..dirs.len() {
-        sum += edge_term(dirs[i].normalize(), dirs[(i + 1) % dirs.len()].normalize(), n);
+        let t = edge_term(dirs[i].normalize(), dirs[(i + 1) % dirs.len()].normalize(), n);
+        sum += t;
+        magnitude += t.abs();
     }
     // Counter-clockwise seen from p gives a negative sum with this orientation of the cross
     // products: the emitting side is the one whose sum is negative; the back side delivers 0.
-    (-0.5 * sum).max(0.0)
+    (sum, magnitude)
+}
+
+/// How far [`area_form`] moves when each term of its sum moves by its own size (times 1):
+/// `d²·Σ|terms|/A_emit`, the edge terms' ½Σ|t| or the cap's two brackets; the stability sweep
+/// scales it by its input perturbation to tell a sliver the horizon leaves, where f32's sum
+/// cancels, from a well-conditioned form. 0 under the point limit.
+pub fn area_form_rounding(light: &AreaLight, p: DVec3, n: DVec3) -> f64 {
+    let to = light.center - p;
+    let d = to.length();
+    if d <= LIGHT_DIST_MIN || light.area_radius() < AREA_POINT_LIMIT_ANGLE * d {
+        return 0.0;
+    }
+    let magnitude = match light.shape {
+        AreaShape::Sphere { radius } => sphere_cap_terms(radius, d, n.dot(to) / d).1,
+        _ => 0.5 * polygon_edge_sum(p, n, &area_corners(light)).1,
+    };
+    d * d * magnitude / light.emitting_area()
 }
 
 /// The part of a polygon on the lit side of the plane through `p` normal to `n`
@@ -149,22 +175,66 @@ fn clip_to_horizon(p: DVec3, n: DVec3, corners: &[DVec3]) -> Vec<DVec3> {
 /// closed form of the horizon-clipped cap between. A point inside the sphere sees light all round:
 /// π.
 pub fn sphere_irradiance(radius: f64, d: f64, cos_theta: f64) -> f64 {
+    sphere_cap_terms(radius, d, cos_theta).0
+}
+
+/// [`sphere_irradiance`] and the magnitude of the terms it sums: where the horizon leaves a
+/// sliver of the cap they cancel, and an f32 sum keeps only its precision times the second over
+/// the first.
+pub fn sphere_cap_terms(radius: f64, d: f64, cos_theta: f64) -> (f64, f64) {
     let r = radius.abs();
-    if d <= r {
-        return PI;
-    }
     let sin2_sigma = (r / d).powi(2);
+    // On or inside the sphere (also where r/d rounds to 1) the light is all round: π.
+    if d <= r || sin2_sigma >= 1.0 {
+        return (PI, PI);
+    }
     let cos_t = cos_theta.clamp(-1.0, 1.0);
     let sin_t = (1.0 - cos_t * cos_t).max(0.0).sqrt();
     if cos_t * cos_t >= sin2_sigma || sin2_sigma <= 0.0 {
-        return (PI * sin2_sigma * cos_t).max(0.0);
+        let e = (PI * sin2_sigma * cos_t).max(0.0);
+        return (e, e);
     }
-    // Partly below the horizon (|cos θ| < sin σ, so sin θ > cos σ ≥ 0): x = cot σ, y = −x cot θ.
-    let x = (1.0 / sin2_sigma - 1.0).max(0.0).sqrt();
-    let y = (-x * cos_t / sin_t).clamp(-1.0, 1.0);
-    let s = sin_t * (1.0 - y * y).max(0.0).sqrt();
-    let e = (cos_t * y.acos() - x * s) * sin2_sigma + s.atan2(x);
-    e.clamp(0.0, PI)
+    // Partly below the horizon (|cos θ| < sin σ, so sin θ > cos σ ≥ 0). The textbook form
+    // (cos θ·acos y − cot σ·s)·sin²σ + atan(s/cot σ), y = −cot σ·cot θ, cancels from terms of
+    // size φ = acos y down to φ⁵ near the horizon's tangency; rewritten as
+    // sin²σ·sin θ·tan σ·(sin φ − φ cos φ) + (atan u − u), u = √δ/cos σ, δ = sin²σ − cos²θ, with
+    // both brackets as series for small arguments, it keeps more of f32's precision.
+    let delta = (sin2_sigma - cos_t * cos_t).max(0.0);
+    let sin_sigma = sin2_sigma.sqrt();
+    let cos_sigma = (1.0 - sin2_sigma).max(0.0).sqrt();
+    let sin_phi = (delta.sqrt() / (sin_sigma * sin_t)).min(1.0);
+    let cos_phi = (-cos_sigma * cos_t / (sin_sigma * sin_t)).clamp(-1.0, 1.0);
+    let phi = sin_phi.atan2(cos_phi);
+    let u = delta.sqrt() / cos_sigma;
+    let k = sin2_sigma * sin_t * (sin_sigma / cos_sigma);
+    let (a, b) = (k * sin_minus_phi_cos(phi, sin_phi, cos_phi), atan_minus_u(u));
+    // Each bracket's own terms: its series' leading term, or the two it subtracts.
+    let magnitude = if phi.abs() < AREA_SERIES_MAX { a.abs() } else { k * (sin_phi + (phi * cos_phi).abs()) }
+        + if u.abs() < AREA_SERIES_MAX { b.abs() } else { u.atan() + u };
+    ((a + b).clamp(0.0, PI), magnitude)
+}
+
+/// Below this argument the series of `sin φ − φ cos φ` and `atan u − u` replace their direct
+/// forms (`AREA_SERIES_MAX` in WGSL): there the direct forms cancel to 1/x² of their terms, and
+/// the series' first omitted term is under 4e-6 of the sum.
+pub const AREA_SERIES_MAX: f64 = 0.25;
+
+/// sin φ − φ cos φ, from φ³/3 − φ⁵/30 + φ⁷/840 − φ⁹/45360 below `AREA_SERIES_MAX`.
+pub fn sin_minus_phi_cos(phi: f64, sin_phi: f64, cos_phi: f64) -> f64 {
+    if phi.abs() < AREA_SERIES_MAX {
+        let p2 = phi * phi;
+        return phi * p2 * (1.0 / 3.0 - p2 * (1.0 / 30.0 - p2 * (1.0 / 840.0 - p2 / 45360.0)));
+    }
+    sin_phi - phi * cos_phi
+}
+
+/// atan u − u, from −u³/3 + u⁵/5 − u⁷/7 + u⁹/9 below `AREA_SERIES_MAX`.
+pub fn atan_minus_u(u: f64) -> f64 {
+    if u.abs() < AREA_SERIES_MAX {
+        let u2 = u * u;
+        return u * u2 * (-1.0 / 3.0 + u2 * (1.0 / 5.0 - u2 * (1.0 / 7.0 - u2 / 9.0)));
+    }
+    u.atan() - u
 }
 
 /// E/L of `light` at point `p` with unit normal `n` in closed form, where one exists: the
@@ -444,13 +514,8 @@ pub fn specular_representative_point(
     super::brdf::specular_cook_torrance(n, v, l, m, v_index).map(|s| s * k)
 }
 
-/// The penumbra's width on a receiver at distance `d_receiver` from a light of size `w_light`
-/// whose blocker is at `d_blocker` (both measured from the light, in linear depth): similar
-/// triangles, w = w_light·(d_r − d_b)/d_b; 0 where the receiver is not behind the blocker.
-pub fn penumbra_width(w_light: f64, d_receiver: f64, d_blocker: f64) -> f64 {
-    let d_b = d_blocker.max(BLOCKER_DIST_MIN);
-    (w_light.abs() * (d_receiver - d_b) / d_b).max(0.0)
-}
+/// The penumbra's width the shadow filters aim for, w_light·(d_r − d_b)/d_b (with PCSS's math).
+pub use crate::shadows::penumbra_width;
 
 #[cfg(test)]
 #[path = "area_tests.rs"]

@@ -6,7 +6,7 @@ use super::area::{AreaLight, AreaShape, area_form, area_specular_point};
 use super::common::safe_normalize;
 use crate::guards::*;
 use crate::params::{NamedValue, ParamRange};
-use crate::shadows::ShadowSettings;
+use crate::shadows::{ShadowFilter, ShadowSettings};
 use glam::DVec3;
 
 /// Light source kind (docs/model.md §6).
@@ -235,12 +235,16 @@ impl Light {
         intensity: f64,
         falloff_alpha: f64,
     ) -> Self {
-        Light {
-            kind,
-            direction: direction.normalize_or(DVec3::NEG_Y),
-            size,
-            ..Light::point(position, color, intensity, falloff_alpha)
-        }
+        let mut light = Light::point(position, color, intensity, falloff_alpha);
+        light.set_kind(kind);
+        Light { direction: direction.normalize_or(DVec3::NEG_Y), size, ..light }
+    }
+
+    /// The light's size for its penumbra (`ShadowLight.light_size` in WGSL): the diameter of the
+    /// disc of its area as seen face-on (a disk's or sphere's diameter, 1.13 × a square's side);
+    /// 0 for a light without an area.
+    pub fn penumbra_size(&self) -> f64 {
+        self.area_light().map_or(0.0, |a| 2.0 * (a.emitting_area() / std::f64::consts::PI).sqrt())
     }
 
     /// The light's shape placed in the world, for area kinds: centre, unit normal (the way it
@@ -279,6 +283,13 @@ impl Light {
                 self.direction = (-self.position).normalize_or(DVec3::NEG_Y)
             }
             _ => {}
+        }
+        // An area light's shadow is soft: it takes PCSS, which a light without an area gives back.
+        if kind.is_area() && !self.kind.is_area() && self.shadow.filter == ShadowFilter::Pcf {
+            self.shadow.filter = ShadowFilter::Pcss;
+        }
+        if !kind.is_area() && self.kind.is_area() && self.shadow.filter == ShadowFilter::Pcss {
+            self.shadow.filter = ShadowFilter::Pcf;
         }
         self.kind = kind;
     }

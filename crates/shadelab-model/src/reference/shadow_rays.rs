@@ -4,6 +4,7 @@
 
 use super::intersect::occluded;
 use crate::guards::LIGHT_DIST_MIN;
+use crate::lighting::area::area_irradiance_quadrature;
 use crate::lighting::lights::{Light, LightKind};
 use crate::scene::{Scene, Shape};
 use glam::{DMat4, DVec3};
@@ -80,7 +81,7 @@ impl<'a> ShadowRays<'a> {
         let o = p + ng * (side * self.offset);
         match light.kind {
             LightKind::Directional => occluded(self.scene, self.inverses, o, l, f64::INFINITY),
-            // An area light's hard shadow from its centre; `reference::area` has its soft one.
+            // An area light's hard shadow from its centre; `area_visibility` has its soft one.
             LightKind::Point | LightKind::Spot | LightKind::Rect | LightKind::Disk | LightKind::Sphere => {
                 // Also a non-finite distance: no ray to trace.
                 let touching = (light.position - p).length().partial_cmp(&LIGHT_DIST_MIN) != Some(Ordering::Greater);
@@ -94,5 +95,29 @@ impl<'a> ShadowRays<'a> {
                 t_max > 0.0 && occluded(self.scene, self.inverses, o, to_light / d, t_max)
             }
         }
+    }
+
+    /// The share of an area light's diffuse light that reaches `p` (unit normal `n`, geometric
+    /// normal `ng`): the light's E/L over `k`×`k` equal-area cells with a shadow ray to each
+    /// (binary visibility), over the same without shadows; 1 where the light delivers nothing.
+    /// The ray to each cell leaves and ends as in [`ShadowRays::hidden`]. `None` for a light
+    /// without an area.
+    pub fn area_visibility(&self, light: &Light, p: DVec3, n: DVec3, ng: DVec3, k: usize) -> Option<f64> {
+        let area = light.area_light()?;
+        let visible = |from: DVec3, x: DVec3| {
+            let to = x - from;
+            let side = if ng.dot(to) >= 0.0 { 1.0 } else { -1.0 };
+            let o = from + ng * (side * self.offset);
+            let to = x - o;
+            let d = to.length();
+            let end_offset = self.offset.max(SHADOW_RAY_OFFSET_REL * x.abs().max_element());
+            let t_max = d - end_offset;
+            !(t_max > 0.0 && occluded(self.scene, self.inverses, o, to / d, t_max))
+        };
+        let clear = area_irradiance_quadrature(&area, p, n, k, &|_, _| true);
+        if clear <= 0.0 {
+            return Some(1.0);
+        }
+        Some(area_irradiance_quadrature(&area, p, n, k, &visible) / clear)
     }
 }

@@ -6,7 +6,7 @@ use crate::params::PhongExponent;
 use glam::DVec3;
 
 /// Names of the scenes compiled into the binary.
-pub const BUILTIN_SCENES: &[&str] = &["default", "sphere", "cylinder", "pyramid", "cube", "field"];
+pub const BUILTIN_SCENES: &[&str] = &["default", "sphere", "cylinder", "pyramid", "cube", "field", "penumbra"];
 
 impl Scene {
     /// A built-in scene by name (see [`BUILTIN_SCENES`]).
@@ -18,8 +18,57 @@ impl Scene {
             "pyramid" => Some(single_shape_scene("pyramid", Shape::Pyramid, 1)),
             "cube" => Some(single_shape_scene("cube", Shape::Cube, 1)),
             "field" => Some(field_scene()),
+            "penumbra" => Some(penumbra_scene(PENUMBRA_PLATE_HEIGHT)),
             _ => None,
         }
+    }
+}
+
+/// Height of the `penumbra` scene's plate above the ground, m.
+pub const PENUMBRA_PLATE_HEIGHT: f64 = 0.5;
+/// Height of the `penumbra` scene's light above the ground, m.
+pub const PENUMBRA_LIGHT_HEIGHT: f64 = 2.5;
+/// Side of the `penumbra` scene's square light, m.
+pub const PENUMBRA_LIGHT_SIZE: f64 = 0.5;
+/// Half the side of the `penumbra` scene's square plate, m.
+pub const PENUMBRA_PLATE_HALF: f64 = 0.5;
+
+/// The `penumbra` scene (docs/area-lights.md): a thin square plate `plate_height` above the
+/// ground, under a square light facing down `PENUMBRA_LIGHT_HEIGHT` above it, so the plate's
+/// shadow has a penumbra of width `size·h/(H − h)` by similar triangles on every side.
+pub fn penumbra_scene(plate_height: f64) -> Scene {
+    let (ground_obj, ground_mat) = ground();
+    let plate =
+        Material { name: "plate".into(), color: [0.6, 0.55, 0.5], m: 0.4, h: h_like_m(0.4), ..Material::default() };
+    let half = PENUMBRA_PLATE_HALF;
+    let size = PENUMBRA_LIGHT_SIZE;
+    let mut light = Light::area(
+        crate::params::LightKind::Rect,
+        DVec3::new(0.0, PENUMBRA_LIGHT_HEIGHT, 0.0),
+        DVec3::NEG_Y,
+        [size, size],
+        [1.0, 0.97, 0.92],
+        1.2,
+        0.0,
+    );
+    light.tangent = DVec3::X;
+    Scene {
+        name: "penumbra".into(),
+        objects: vec![
+            ground_obj,
+            Object {
+                name: "plate".into(),
+                shape: Shape::Cube,
+                tessellation: 1,
+                transform: Transform::new(DVec3::new(0.0, plate_height, 0.0), DVec3::new(half, 0.01, half)),
+                material: 1,
+            },
+        ],
+        materials: vec![ground_mat, plate],
+        lights: vec![light],
+        ambient: [0.08; 3],
+        camera: Camera { eye: DVec3::new(1.3, 2.1, 2.6), target: DVec3::new(0.2, 0.15, 0.0), ..default_camera() },
+        ..default_scene()
     }
 }
 

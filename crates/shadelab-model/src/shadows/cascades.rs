@@ -165,7 +165,7 @@ pub fn cascade_projection(
         })
         .collect::<Vec<_>>();
     let texel_world = shadow_ortho_texel_world(matrices[0], n);
-    ShadowProjection { matrices, texel_world, perspective: false }
+    ShadowProjection { matrices, texel_world, perspective: false, near: radius * 0.5, far: radius * 3.5 }
 }
 
 /// The world size of one texel of orthographic map `m` with `resolution` texels across: the map

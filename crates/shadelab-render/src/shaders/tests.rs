@@ -64,7 +64,7 @@ fn uniform_layouts_match_wgsl() {
     );
     assert_eq!(
         wgsl_layout(&module, "ShadowLight"),
-        rust_layout!(ShadowLightUniform: first_layer, layers, shadow_filter, perspective, texel_world, uv_scale, texel_uv, _pad)
+        rust_layout!(ShadowLightUniform: first_layer, layers, shadow_filter, perspective, texel_world, uv_scale, texel_uv, light_size, near, far, _pad0, _pad1)
     );
     assert_eq!(wgsl_layout(&module, "Shadows"), rust_layout!(ShadowsUniform: matrices, lights));
 }

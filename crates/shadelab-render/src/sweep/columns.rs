@@ -31,7 +31,7 @@ pub struct Column {
 const D_MAX: f64 = 1.0 / (4.0 * M_MIN * M_MIN);
 
 /// Every column in the order the kernel writes them (and the report lists them).
-pub const COLUMNS: [Column; 34] = [
+pub const COLUMNS: [Column; 39] = [
     col("diffuse_lambert", "DIFFUSE_LAMBERT", 1, 1.0, "N·L of unit vectors"),
     col("specular_phong", "SPECULAR_PHONG", 1, 1.0, "(V·R)^h with V·R clamped to [0, 1]"),
     col("d_beckmann", "D_BECKMANN", 1, D_MAX, "peak 1/(4 m²) at m = M_MIN"),
@@ -90,6 +90,11 @@ pub const COLUMNS: [Column; 34] = [
         f64::INFINITY,
         "finite: cos θ_l·d²/r² ≤ d²/LIGHT_DIST_MIN²",
     ),
+    col("penumbra_width", "PENUMBRA_WIDTH", 1, f64::INFINITY, "finite: w·d_r/BLOCKER_DIST_MIN"),
+    col("pcss_search_radius", "PCSS_SEARCH_RADIUS", 1, f64::INFINITY, "finite: ½w/BLOCKER_DIST_MIN"),
+    col("shadow_linear_depth", "SHADOW_LINEAR_DEPTH", 1, f64::INFINITY, "between near and far"),
+    col("shadow_stored_depth", "SHADOW_STORED_DEPTH", 1, 1.0, "a depth in [0, 1]"),
+    col("receiver_slope", "RECEIVER_SLOPE", 1, shadows::SHADOW_RECEIVER_SLOPE_MAX, "tan θ capped"),
 ];
 
 const fn col(name: &'static str, wgsl: &'static str, channels: usize, bound: f64, why_bound: &'static str) -> Column {
@@ -166,6 +171,11 @@ const SWEEP_COLOR: [f64; 3] = [0.8, 0.5, 0.2];
 /// the GPU multiplies by.
 const SWEEP_CONE_PER_M: f64 = std::f32::consts::FRAC_PI_2 as f64;
 
+/// How many input perturbations an area form's summed terms are each rounded by on the GPU: each
+/// is an atan2 (WGSL bounds its error at 4096 ulps, against one for a product) of directions
+/// already a few ulps off; ten perturbations, 160 ulps, stays far inside that bound.
+const AREA_TERM_ROUNDING: f64 = 10.0;
+
 /// Map side the sweep's `shadow_ortho_texel_world` divides by (`SWEEP_SHADOW_RESOLUTION`).
 const SWEEP_SHADOW_RESOLUTION: f64 = 2048.0;
 
@@ -203,6 +213,11 @@ const EMITTED: usize = offset("EMITTED");
 const NORMAL_MAPPED: usize = offset("NORMAL_MAPPED");
 const AREA_FORM: usize = offset("AREA_FORM");
 const AREA_SPEC_SCALE: usize = offset("AREA_SPEC_SCALE");
+const PENUMBRA_WIDTH: usize = offset("PENUMBRA_WIDTH");
+const PCSS_SEARCH_RADIUS: usize = offset("PCSS_SEARCH_RADIUS");
+const SHADOW_LINEAR_DEPTH: usize = offset("SHADOW_LINEAR_DEPTH");
+const SHADOW_STORED_DEPTH: usize = offset("SHADOW_STORED_DEPTH");
+const RECEIVER_SLOPE: usize = offset("RECEIVER_SLOPE");
 
 /// The f64 reference of the kernel's outputs for one combination's inputs.
 ///
@@ -314,8 +329,12 @@ pub(super) fn reference(
     let mapped = shadelab_model::scene::normal_mapped(n, [l.x, l.y, l.z, w], n_raw.to_array(), h);
     rgb(&mut out, NORMAL_MAPPED, mapped.to_array());
     // Area lights at l·d facing −v, α as their size (0 to 1e6 m): the diffuse form and the
-    // specular point's scale of each shape.
+    // specular point's scale of each shape. Their corners' components are as large as the light,
+    // so their rounding moves the light's plane by about its size times the perturbation
+    // (`l_len − 1`, 0 for the exact model): a point within that of the plane is ill-conditioned,
+    // as is a sliver the horizon leaves, where the edge terms cancel.
     let normal = -v;
+    let plane_rounding = normal * (alpha * (l_len - 1.0));
     let tangent = common::safe_normalize(normal.cross(DVec3::Z), DVec3::X);
     let half = 0.5 * alpha;
     let shapes = [
@@ -324,10 +343,21 @@ pub(super) fn reference(
         AreaShape::Sphere { radius: half },
     ];
     for (k, shape) in shapes.into_iter().enumerate() {
-        let a = AreaLight { shape, center: l * d, normal, tangent };
-        out[AREA_FORM + k] = area::area_form(&a, DVec3::ZERO, n);
+        let a = AreaLight { shape, center: l * d + plane_rounding, normal, tangent };
+        // Each term of the form's sum is an atan2 of f32 directions, rounded by several times
+        // the inputs' perturbation (WGSL allows atan2 4096 ulps): the form's change is the sum of
+        // their magnitudes times AREA_TERM_ROUNDING perturbations.
+        let rounding = area::area_form_rounding(&a, DVec3::ZERO, n) * (l_len - 1.0) * AREA_TERM_ROUNDING;
+        out[AREA_FORM + k] = area::area_form(&a, DVec3::ZERO, n) + rounding;
         out[AREA_SPEC_SCALE + k] = area::area_specular_point(&a, DVec3::ZERO, n, v, m).1;
     }
+    // PCSS with a light α wide, the receiver at d and the blocker at d0 (d = d0 among them: a
+    // receiver touching its blocker); m as a stored depth between near d0 and far d0 + d.
+    out[PENUMBRA_WIDTH] = shadows::penumbra_width(alpha, d, d0);
+    out[PCSS_SEARCH_RADIUS] = shadows::pcss_search_radius(alpha, d, d0);
+    out[SHADOW_LINEAR_DEPTH] = shadows::shadow_linear_depth(m, d0, d0 + d);
+    out[SHADOW_STORED_DEPTH] = shadows::shadow_stored_depth(d, d0, d0 + d);
+    out[RECEIVER_SLOPE] = shadows::receiver_slope(n.dot(l));
     out
 }
 

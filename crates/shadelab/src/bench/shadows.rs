@@ -54,6 +54,7 @@ pub fn filter_name(f: ShadowFilter) -> &'static str {
         ShadowFilter::Hard => "hard",
         ShadowFilter::Pcf => "pcf",
         ShadowFilter::Poisson => "poisson",
+        ShadowFilter::Pcss => "pcss",
     }
 }
 
@@ -321,6 +322,7 @@ fn filter_color(f: ShadowFilter) -> RGBColor {
         ShadowFilter::Hard => RGBColor(200, 30, 30),
         ShadowFilter::Pcf => RGBColor(35, 90, 180),
         ShadowFilter::Poisson => RGBColor(30, 140, 50),
+        ShadowFilter::Pcss => RGBColor(150, 60, 170),
     }
 }
 

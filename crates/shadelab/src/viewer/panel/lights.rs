@@ -251,6 +251,10 @@ fn filter_meaning(f: ShadowFilter) -> &'static str {
         ShadowFilter::Hard => "one comparison at the nearest texel: a hard, aliased edge",
         ShadowFilter::Pcf => "the hardware's 2×2 comparison: an edge softened over one texel",
         ShadowFilter::Poisson => "rotated Poisson-disk taps: a wider, smoother edge, at more samples per pixel",
+        ShadowFilter::Pcss => {
+            "percentage-closer soft shadows: an area light's penumbra, as wide as the light's size and \
+             the occluder's and receiver's distances make it (a light without an area: pcf)"
+        }
     }
 }
 

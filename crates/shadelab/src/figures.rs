@@ -106,6 +106,26 @@ pub const FIGURES: &[Figure] = &[
         caption: "equation (1): the four-term sum's transmitted term I_t alone, with 1 − t = 0.5",
         flags: &["--model", "sum", "--transmission", "0.5", "--term", "transmitted"],
     },
+    Figure {
+        file: "area-point.png",
+        caption: "7.4: the plate lit by a point light: a hard shadow, what the chapter calls unnatural",
+        flags: &["--scene", "penumbra", "--light", "point"],
+    },
+    Figure {
+        file: "area-rect.png",
+        caption: "7.4: the same plate under a 0.5 m square light: the penumbra, PCSS",
+        flags: &["--scene", "penumbra", "--light", "rect"],
+    },
+    Figure {
+        file: "area-disk.png",
+        caption: "7.4: under a disk light 0.5 m across: the penumbra, PCSS",
+        flags: &["--scene", "penumbra", "--light", "disk"],
+    },
+    Figure {
+        file: "area-sphere.png",
+        caption: "7.4: under a sphere light 0.5 m across: the penumbra, PCSS",
+        flags: &["--scene", "penumbra", "--light", "sphere"],
+    },
 ];
 
 /// Every figure's size.

@@ -25,6 +25,8 @@ fn bad_values_exit_2_with_one_line_naming_flag_and_range() {
         (&["--specular", "blinn"], &["--specular", "phong, cook-torrance"]),
         (&["--light", "sun"], &["--light", "directional, point"]),
         (&["--falloff", "-2"], &["--falloff", "[0, 1000000]"]),
+        (&["--light-size", "-1"], &["--light-size", "[0, 1000000]"]),
+        (&["--light", "tube"], &["--light", "rect, disk, sphere"]),
         (&["--falloff-form", "cubic"], &["--falloff-form", "quadratic, linear"]),
         (&["--d0", "0"], &["--d0", "[0.001, 1000]"]),
         (&["--shadows", "maybe"], &["--shadows", "on, off"]),
@@ -366,6 +368,21 @@ fn explain_and_bench_effects() {
         "Cook–Torrance specular: off — the specular model is phong",
         "absorption: off — nothing transmits",
         "the pipeline is built for the scene's lights: the loop unrolled",
+    ] {
+        assert!(text.contains(needle), "missing '{needle}' in:\n{text}");
+    }
+    // An area light brings its code and PCSS; the explain line names the light.
+    let args =
+        ["render", "--explain", "--scene", "penumbra", "--light", "disk", "--light-size", "0.3", "--width", "32"];
+    let o = shadelab(&[&args[..], &["--height", "18", "--output", png.to_str().unwrap()]].concat());
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let text = String::from_utf8_lossy(&o.stdout);
+    for needle in [
+        "+area+",
+        "+pcss]",
+        "area lights: on — disk light L1",
+        "shadow filter pcss: on — 1 casting light(s) filter with pcss",
+        "light loop: 1 light (disk)",
     ] {
         assert!(text.contains(needle), "missing '{needle}' in:\n{text}");
     }

@@ -140,7 +140,7 @@ impl Reader<'_> {
             range,
             shadow: ShadowSettings::default(),
             size: [crate::lighting::lights::LIGHT_SIZE_DEFAULT; 2],
-            tangent: world.transform_vector3(DVec3::X),
+            tangent: DVec3::X,
         };
         let ex: LightExtras = extras::read(&self.cx, &l.extras, &what)?;
         let set = |field: &mut f64, v: Option<f64>| {
@@ -184,6 +184,10 @@ impl Reader<'_> {
         match ex.area.map(|a| a.0) {
             Some(area) if area.is_area() && kind != LightKind::Directional => {
                 light.kind = area;
+                // The file's spot cone stands in for a flat light's face; the light has none.
+                light.inner_cone = 0.0;
+                light.outer_cone = crate::scene::SPOT_OUTER_CONE_DEFAULT;
+                light.tangent = world.transform_vector3(DVec3::X);
                 // Soft shadows unless the file chose a filter.
                 if !file_filter {
                     light.shadow.filter = ShadowFilter::Pcss;

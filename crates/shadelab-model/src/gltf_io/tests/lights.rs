@@ -175,3 +175,66 @@ fn a_bad_shadow_setting_is_one_error_line_naming_the_key() {
         assert!(e.starts_with("<memory>: light 0: ") && e.contains(&says) && !e.contains('\n'), "{e}\nlacks: {says}");
     }
 }
+
+/// Area lights round-trip through `extras.shadelab` (kind, width, height, tangent, PCSS), while
+/// the file's KHR light is what other viewers draw: a point light for a sphere, a spot light
+/// lighting the half-space in front for a rectangle or disk. A bad width is one error line, and
+/// area extras on a directional light are dropped with a warning.
+#[test]
+fn area_lights_round_trip_as_extras_on_punctual_lights() {
+    let mut scene = Scene::builtin("sphere").unwrap();
+    let mut rect = Light::area(
+        LightKind::Rect,
+        DVec3::new(0.5, 2.5, 0.0),
+        DVec3::new(0.1, -1.0, 0.0),
+        [0.8, 0.3],
+        [1.0; 3],
+        2.0,
+        0.1,
+    );
+    rect.tangent = DVec3::new(0.0, 0.0, 1.0);
+    let disk = Light::area(LightKind::Disk, DVec3::new(-1.0, 2.0, 1.0), DVec3::NEG_Y, [0.4; 2], [1.0; 3], 1.0, 0.0);
+    let sphere =
+        Light::area(LightKind::Sphere, DVec3::new(1.0, 1.5, -1.0), DVec3::NEG_Y, [0.25; 2], [1.0; 3], 1.0, 0.2);
+    scene.lights = vec![rect, disk, sphere];
+    assert!(scene.lights.iter().all(|l| l.shadow.filter == ShadowFilter::Pcss), "area lights take PCSS");
+    let none = SceneSettings::default();
+    let json = scene_to_gltf_json(&scene, &none);
+    let file: Value = serde_json::from_str(&json).unwrap();
+    let types: Vec<&str> = file["extensions"]["KHR_lights_punctual"]["lights"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|l| l["type"].as_str().unwrap())
+        .collect();
+    assert_eq!(types, ["spot", "spot", "point"]);
+    let outer = &file["extensions"]["KHR_lights_punctual"]["lights"][0]["spot"]["outerConeAngle"];
+    assert!((outer.as_f64().unwrap() - std::f64::consts::FRAC_PI_2).abs() < 1e-6, "{outer}");
+    for bytes in [scene_to_glb(&scene, &none), json.into_bytes()] {
+        let back = load(&bytes);
+        assert_same_scene(&scene, &back.scene);
+        assert_eq!(
+            back.scene.lights.iter().map(|l| l.kind).collect::<Vec<_>>(),
+            [LightKind::Rect, LightKind::Disk, LightKind::Sphere]
+        );
+        assert!(back.scene.lights.iter().all(|l| l.shadow.filter == ShadowFilter::Pcss));
+        assert!(back.warnings.iter().all(|w| !w.contains("area")), "{:?}", back.warnings);
+    }
+    let e = load_scene_from_slice(&light_with_extras(json!({ "shadelab": { "area": "rect", "width": -1.0 } })))
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("extras.shadelab.width = -1") && e.contains("[0, 1000000]") && !e.contains('\n'), "{e}");
+    let e =
+        load_scene_from_slice(&light_with_extras(json!({ "shadelab": { "area": "tube" } }))).unwrap_err().to_string();
+    assert!(e.contains("extras.shadelab.area = \"tube\"") && e.contains("rect, disk, sphere"), "{e}");
+    // A directional light cannot have an area: kept directional, said so.
+    let dir = triangle(json!({
+        "extensionsUsed": ["KHR_lights_punctual"],
+        "extensions": { "KHR_lights_punctual": { "lights": [{ "type": "directional", "extras": { "shadelab": { "area": "disk" } } }] } },
+        "scenes": [{ "nodes": [0, 1] }],
+        "nodes": [{ "mesh": 0 }, { "extensions": { "KHR_lights_punctual": { "light": 0 } } }],
+    }));
+    let s = load(&dir);
+    assert_eq!(s.scene.lights[0].kind, LightKind::Directional);
+    assert!(s.warnings.iter().any(|w| w.contains("area \"disk\" ignored")), "{:?}", s.warnings);
+}

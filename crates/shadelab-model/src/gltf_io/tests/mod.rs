@@ -73,6 +73,10 @@ pub(crate) fn assert_same_scene(a: &Scene, b: &Scene) {
         assert_eq!(x.shadow, y.shadow);
         near(x.position, y.position, "light position");
         near(x.direction, y.direction, "light direction");
+        assert_eq!(x.size, y.size, "area light size");
+        if x.kind.is_area() {
+            near(x.area_tangent(), y.area_tangent(), "area light tangent");
+        }
     }
     let (c, d) = (&a.camera, &b.camera);
     near(c.eye, d.eye, "eye");

@@ -6,20 +6,22 @@
 #if EFFECT_AREA_LIGHTS
 // Sides of the regular polygon a disk light is drawn as (AREA_DISK_SIDES in area.rs).
 const AREA_DISK_SIDES: u32 = 16u;
-// Most corners a polygon keeps after the horizon clip: one more than it had.
-const AREA_CLIPPED_MAX: u32 = 17u;
 const AREA_PI: f32 = 3.14159265358979;
-
-// A flat light's corners (counter-clockwise seen from the side it emits to) and their count.
-struct AreaCorners {
-    at: array<vec3<f32>, AREA_DISK_SIDES>,
-    count: u32,
-}
 
 // The representative point: the unit direction to it and the scale of the centre's specular.
 struct AreaPoint {
     l: vec3<f32>,
     scale: f32,
+}
+
+// A walk over a polygon's corners clipped at a horizon, in order, without storing them: the
+// first and the previous kept unit direction, how many were kept and clipped, the edge terms' sum.
+struct EdgeWalk {
+    first: vec3<f32>,
+    prev: vec3<f32>,
+    kept: u32,
+    clipped: u32,
+    sum: f32,
 }
 
 // The area a point far away sees face-on: a flat light's area, a sphere's disc πr².
@@ -38,27 +40,24 @@ fn area_radius(light: Light) -> f32 {
     return light.half_x;
 }
 
-// The rectangle's four corners, or the disk as its equal-area regular polygon
-// (light.half_y holds that polygon's circumradius for a disk, LightUniform::new).
-fn area_corners(light: Light) -> AreaCorners {
-    var c: AreaCorners;
+// How many corners a flat light has: the rectangle's four, the disk's polygon's AREA_DISK_SIDES.
+fn area_corner_count(light: Light) -> u32 {
+    return select(AREA_DISK_SIDES, 4u, light.kind == LIGHT_RECT);
+}
+
+// Corner `i` of a flat light, counter-clockwise seen from the side it emits to: the rectangle's,
+// or the disk's equal-area regular polygon's (light.half_y holds its circumradius for a disk,
+// LightUniform::new). Computed, not indexed: a CPU rasterizer spills indexed arrays to memory.
+fn area_corner(light: Light, i: u32) -> vec3<f32> {
     let t = light.tangent.xyz;
     let b = cross(light.normal.xyz, t);
-    let o = light.position.xyz;
     if (light.kind == LIGHT_RECT) {
-        c.at[0] = o - t * light.half_x - b * light.half_y;
-        c.at[1] = o + t * light.half_x - b * light.half_y;
-        c.at[2] = o + t * light.half_x + b * light.half_y;
-        c.at[3] = o - t * light.half_x + b * light.half_y;
-        c.count = 4u;
-        return c;
+        let sx = select(-1.0, 1.0, i == 1u || i == 2u);
+        let sy = select(-1.0, 1.0, i >= 2u);
+        return light.position.xyz + t * (sx * light.half_x) + b * (sy * light.half_y);
     }
-    for (var i = 0u; i < AREA_DISK_SIDES; i++) {
-        let phi = 2.0 * AREA_PI * f32(i) / f32(AREA_DISK_SIDES);
-        c.at[i] = o + (t * cos(phi) + b * sin(phi)) * light.half_y;
-    }
-    c.count = AREA_DISK_SIDES;
-    return c;
+    let phi = 2.0 * AREA_PI * f32(i) / f32(AREA_DISK_SIDES);
+    return light.position.xyz + (t * cos(phi) + b * sin(phi)) * light.half_y;
 }
 
 // One edge's term of Lambert's edge formula, θ·n·(a × b)/|a × b| for unit directions a, b, θ as
@@ -73,42 +72,46 @@ fn edge_term(a: vec3<f32>, b: vec3<f32>, n: vec3<f32>) -> f32 {
     return atan2(len, dot(a, b)) * dot(n, c) / len;
 }
 
-// Lambert's edge formula: E/L of a uniform polygon light at `p` with unit normal `n`, the polygon
-// first clipped at the plane through p normal to n; 0 seen from behind. Corners closer than
-// LIGHT_DIST_MIN have no direction and are skipped.
-fn polygon_irradiance(p: vec3<f32>, n: vec3<f32>, corners: AreaCorners) -> f32 {
-    var dirs: array<vec3<f32>, AREA_CLIPPED_MAX>;
-    var kept = 0u;
-    var clipped = 0u;
-    for (var i = 0u; i < corners.count; i++) {
-        let a = corners.at[i] - p;
-        let b = corners.at[(i + 1u) % corners.count] - p;
+// The walk's next corner of the clipped polygon, `v` from the shaded point: counted, and unless
+// it touches the point (LIGHT_DIST_MIN, no direction) joined to the previous by its edge term.
+fn polygon_step(w_in: EdgeWalk, v: vec3<f32>, n: vec3<f32>) -> EdgeWalk {
+    var w = w_in;
+    w.clipped++;
+    if (length(v) > LIGHT_DIST_MIN) {
+        let u = normalize(v);
+        if (w.kept == 0u) {
+            w.first = u;
+        } else {
+            w.sum += edge_term(w.prev, u, n);
+        }
+        w.prev = u;
+        w.kept++;
+    }
+    return w;
+}
+
+// Lambert's edge formula: E/L of a flat light at `p` with unit normal `n`, its polygon clipped at
+// the plane through p normal to n, walked corner by corner; 0 seen from behind.
+fn polygon_irradiance(p: vec3<f32>, n: vec3<f32>, light: Light) -> f32 {
+    let count = area_corner_count(light);
+    var w = EdgeWalk(vec3(0.0), vec3(0.0), 0u, 0u, 0.0);
+    for (var i = 0u; i < count; i++) {
+        let a = area_corner(light, i) - p;
+        let b = area_corner(light, (i + 1u) % count) - p;
         let sa = dot(a, n);
         let sb = dot(b, n);
         if (sa > 0.0) {
-            clipped++;
-            if (length(a) > LIGHT_DIST_MIN) {
-                dirs[kept] = normalize(a);
-                kept++;
-            }
+            w = polygon_step(w, a, n);
         }
         if ((sa > 0.0) != (sb > 0.0) && sa != sb) {
-            let x = a + (b - a) * (sa / (sa - sb));
-            clipped++;
-            if (length(x) > LIGHT_DIST_MIN) {
-                dirs[kept] = normalize(x);
-                kept++;
-            }
+            w = polygon_step(w, a + (b - a) * (sa / (sa - sb)), n);
         }
     }
-    if (clipped < 3u) {
+    if (w.clipped < 3u) {
         return 0.0;
     }
-    var sum = 0.0;
-    for (var i = 0u; i < kept; i++) {
-        sum += edge_term(dirs[i], dirs[(i + 1u) % kept], n);
-    }
-    return max(-0.5 * sum, 0.0);
+    w.sum += edge_term(w.prev, w.first, n);
+    return max(-0.5 * w.sum, 0.0);
 }
 
 // E/L of a sphere light of radius `radius`, centre at distance `d` and angle θ from the normal:
@@ -166,7 +169,7 @@ fn area_irradiance(light: Light, p: vec3<f32>, n: vec3<f32>) -> f32 {
         let d = length(to);
         return sphere_irradiance(light.half_x, d, select(1.0, dot(n, to) / d, d > 0.0));
     }
-    return polygon_irradiance(p, n, area_corners(light));
+    return polygon_irradiance(p, n, light);
 }
 
 // The diffuse factor relative to the centre's point light, d²·(E/L)/A_emit; under

@@ -198,8 +198,10 @@ declare_effects! {
         functions: &[
             "emitting_area",
             "area_radius",
-            "area_corners",
+            "area_corner_count",
+            "area_corner",
             "edge_term",
+            "polygon_step",
             "polygon_irradiance",
             "sphere_irradiance",
             "sin_minus_phi_cos",

@@ -118,20 +118,56 @@ pub fn polygon_irradiance(p: DVec3, n: DVec3, corners: &[DVec3]) -> f64 {
 /// magnitudes: where the horizon leaves a sliver the terms cancel, and an f32 sum keeps only
 /// its precision times the second over the first.
 pub fn polygon_edge_sum(p: DVec3, n: DVec3, corners: &[DVec3]) -> (f64, f64) {
-    let clipped = clip_to_horizon(p, n, corners);
-    if clipped.len() < 3 {
+    let mut w = EdgeWalk::default();
+    for (k, &c) in corners.iter().enumerate() {
+        let (a, b) = (c - p, corners[(k + 1) % corners.len()] - p);
+        let (sa, sb) = (a.dot(n), b.dot(n));
+        if sa > 0.0 {
+            w = polygon_step(w, a, n);
+        }
+        if (sa > 0.0) != (sb > 0.0) && sa != sb {
+            w = polygon_step(w, a + (b - a) * (sa / (sa - sb)), n);
+        }
+    }
+    if w.clipped < 3 {
         return (0.0, 0.0);
     }
-    let dirs: Vec<DVec3> = clipped.iter().map(|c| *c - p).filter(|d| d.length() > LIGHT_DIST_MIN).collect();
-    let (mut sum, mut magnitude) = (0.0, 0.0);
-    for i in 0..dirs.len() {
-        let t = edge_term(dirs[i].normalize(), dirs[(i + 1) % dirs.len()].normalize(), n);
-        sum += t;
-        magnitude += t.abs();
-    }
+    let t = edge_term(w.prev, w.first, n);
     // Counter-clockwise seen from p gives a negative sum with this orientation of the cross
     // products: the emitting side is the one whose sum is negative; the back side delivers 0.
-    (sum, magnitude)
+    (w.sum + t, w.magnitude + t.abs())
+}
+
+/// A walk over a polygon's corners clipped at a horizon, in order, without storing them (WGSL
+/// `EdgeWalk`): the first and the previous kept unit direction, how many corners were kept and
+/// clipped, the edge terms' sum and (here only) the sum of their magnitudes.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct EdgeWalk {
+    pub first: DVec3,
+    pub prev: DVec3,
+    pub kept: u32,
+    pub clipped: u32,
+    pub sum: f64,
+    pub magnitude: f64,
+}
+
+/// The walk's next corner of the clipped polygon, `v` from the shaded point: counted, and unless
+/// it touches the point (`LIGHT_DIST_MIN`, no direction) joined to the previous by its edge term.
+pub fn polygon_step(mut w: EdgeWalk, v: DVec3, n: DVec3) -> EdgeWalk {
+    w.clipped += 1;
+    if v.length() > LIGHT_DIST_MIN {
+        let u = v.normalize();
+        if w.kept == 0 {
+            w.first = u;
+        } else {
+            let t = edge_term(w.prev, u, n);
+            w.sum += t;
+            w.magnitude += t.abs();
+        }
+        w.prev = u;
+        w.kept += 1;
+    }
+    w
 }
 
 /// How far [`area_form`] moves when each term of its sum moves by its own size (times 1):
@@ -149,24 +185,6 @@ pub fn area_form_rounding(light: &AreaLight, p: DVec3, n: DVec3) -> f64 {
         _ => 0.5 * polygon_edge_sum(p, n, &area_corners(light)).1,
     };
     d * d * magnitude / light.emitting_area()
-}
-
-/// The part of a polygon on the lit side of the plane through `p` normal to `n`
-/// (Sutherland–Hodgman against one plane).
-fn clip_to_horizon(p: DVec3, n: DVec3, corners: &[DVec3]) -> Vec<DVec3> {
-    let side = |c: DVec3| (c - p).dot(n);
-    let mut out = Vec::with_capacity(corners.len() + 1);
-    for i in 0..corners.len() {
-        let (a, b) = (corners[i], corners[(i + 1) % corners.len()]);
-        let (sa, sb) = (side(a), side(b));
-        if sa > 0.0 {
-            out.push(a);
-        }
-        if (sa > 0.0) != (sb > 0.0) && sa != sb {
-            out.push(a + (b - a) * (sa / (sa - sb)));
-        }
-    }
-    out
 }
 
 /// E/L of a uniform sphere light of radius `r` whose centre is at `d` from the point, at angle θ
@@ -264,10 +282,25 @@ pub fn area_irradiance(light: &AreaLight, p: DVec3, n: DVec3) -> f64 {
 /// A flat light's corners, counter-clockwise seen from the side it emits to: the rectangle's
 /// four, the disk's equal-area polygon; none for a sphere.
 pub fn area_corners(light: &AreaLight) -> Vec<DVec3> {
+    (0..area_corner_count(light)).map(|i| area_corner(light, i)).collect()
+}
+
+/// How many corners a flat light has: the rectangle's four, the disk's polygon's
+/// [`AREA_DISK_SIDES`]; none for a sphere.
+pub fn area_corner_count(light: &AreaLight) -> usize {
     match light.shape {
-        AreaShape::Rect { .. } => light.rect_corners().map_or(Vec::new(), |c| c.to_vec()),
-        AreaShape::Disk { .. } => light.disk_corners().map_or(Vec::new(), |c| c.to_vec()),
-        AreaShape::Sphere { .. } => Vec::new(),
+        AreaShape::Rect { .. } => 4,
+        AreaShape::Disk { .. } => AREA_DISK_SIDES,
+        AreaShape::Sphere { .. } => 0,
+    }
+}
+
+/// Corner `i` of a flat light ([`AreaLight::rect_corners`], [`AreaLight::disk_corners`]).
+pub fn area_corner(light: &AreaLight, i: usize) -> DVec3 {
+    match light.shape {
+        AreaShape::Rect { .. } => light.rect_corners().map_or(light.center, |c| c[i % 4]),
+        AreaShape::Disk { .. } => light.disk_corners().map_or(light.center, |c| c[i % AREA_DISK_SIDES]),
+        AreaShape::Sphere { .. } => light.center,
     }
 }
 

@@ -22,7 +22,8 @@ pub const RESOLUTIONS: [u32; 5] = [256, 512, 1024, 2048, 4096];
 /// Sides of `--quick`: both ends and the middle.
 pub const QUICK_RESOLUTIONS: [u32; 3] = [256, 1024, 4096];
 /// Every filter, in the order of the table.
-pub const FILTERS: [ShadowFilter; 3] = [ShadowFilter::Hard, ShadowFilter::Pcf, ShadowFilter::Poisson];
+pub const FILTERS: [ShadowFilter; 4] =
+    [ShadowFilter::Hard, ShadowFilter::Pcf, ShadowFilter::Poisson, ShadowFilter::Pcss];
 
 /// What one row measures.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -32,6 +33,9 @@ pub enum Config {
     /// The same with PCF and the directional lights' cascades off (one map fitted to the whole
     /// scene); measured only for a scene whose view calls for cascades.
     OneMap { resolution: u32 },
+    /// Every area light drawn as its centre's point light with PCF (the chapter's one point
+    /// source); measured only for a scene with area lights.
+    PointLights { resolution: u32 },
     /// The same frame with no light casting (no shadow pass).
     Off,
     /// `Program::NullBaseline`: the same geometry, a constant colour.
@@ -43,6 +47,7 @@ impl Config {
         match self {
             Config::Shadows { resolution, filter } => format!("{resolution} {}", filter_name(filter)),
             Config::OneMap { resolution } => format!("{resolution} pcf, one map (no cascades)"),
+            Config::PointLights { resolution } => format!("{resolution} pcf, area lights as point lights"),
             Config::Off => "shadows off".into(),
             Config::Baseline => "null-shader baseline".into(),
         }
@@ -108,6 +113,15 @@ fn one_map(scene: &Scene, resolution: u32) -> Scene {
     s
 }
 
+/// The scene with every area light its centre's point light, casting at `resolution` with PCF.
+fn as_point_lights(scene: &Scene, resolution: u32) -> Scene {
+    let mut s = with_shadows(scene, resolution, ShadowFilter::Pcf);
+    for l in s.lights.iter_mut().filter(|l| l.kind.is_area()) {
+        l.set_kind(shadelab_model::LightKind::Point);
+    }
+    s
+}
+
 /// Whether the scene's view gives its directional lights cascades (then the one-map rows are
 /// measured beside them).
 fn has_cascades(scene: &Scene) -> bool {
@@ -151,6 +165,11 @@ pub fn run_plan(
             uploads.push(upload(&mut r, &one_map(scene, resolution))?);
             configs.push((Config::OneMap { resolution }, uploads.len() - 1, one_map(scene, resolution)));
         }
+        if scene.lights.iter().any(|l| l.kind.is_area()) {
+            let points = as_point_lights(scene, resolution);
+            uploads.push(upload(&mut r, &points)?);
+            configs.push((Config::PointLights { resolution }, uploads.len() - 1, points));
+        }
     }
     let program = |c: Config, s: &Scene| match c {
         Config::Baseline => Program::NullBaseline,
@@ -180,7 +199,7 @@ pub fn run_plan(
     for (i, (c, g, _)) in configs.iter().enumerate() {
         let m = median(&mut samples[i]);
         let side = match c {
-            Config::Shadows { .. } | Config::OneMap { .. } => {
+            Config::Shadows { .. } | Config::OneMap { .. } | Config::PointLights { .. } => {
                 r.shadow_plan(&uploads[*g]).and_then(|p| p.lights.iter().flatten().map(|l| l.resolution).max())
             }
             _ => None,
@@ -231,6 +250,7 @@ pub fn csv(report: &Report) -> String {
         let (kind, res, filter) = match r.config {
             Config::Shadows { resolution, filter } => ("shadows", resolution.to_string(), filter_name(filter)),
             Config::OneMap { resolution } => ("one-map", resolution.to_string(), "pcf"),
+            Config::PointLights { resolution } => ("point-lights", resolution.to_string(), "pcf"),
             Config::Off => ("off", String::new(), ""),
             Config::Baseline => ("baseline", String::new(), ""),
         };

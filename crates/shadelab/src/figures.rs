@@ -126,6 +126,16 @@ pub const FIGURES: &[Figure] = &[
         caption: "7.4: under a sphere light 0.5 m across: the penumbra, PCSS",
         flags: &["--scene", "penumbra", "--light", "sphere"],
     },
+    Figure {
+        file: "penumbra-error-pcf.png",
+        caption: "7.4: the shadow factor's FLIP error against the reference's soft shadow, PCF: the whole penumbra is off",
+        flags: &["--scene", "penumbra", "--shadow-filter", "pcf", "--term", "shadow", "--difference"],
+    },
+    Figure {
+        file: "penumbra-error-pcss.png",
+        caption: "7.4: the same with PCSS: a thin line where its umbra ends early, the penumbra close",
+        flags: &["--scene", "penumbra", "--shadow-filter", "pcss", "--term", "shadow", "--difference"],
+    },
 ];
 
 /// Every figure's size.

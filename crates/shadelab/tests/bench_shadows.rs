@@ -1,6 +1,6 @@
 //! `shadelab bench shadows --quick` on lavapipe at a tiny size: a CSV row per resolution ×
-//! filter plus shadows off and the baseline, every number finite, and a larger PCF map no worse
-//! than the smallest.
+//! filter plus shadows off and the baseline, every number finite, a larger PCF map no worse than
+//! the smallest, and PCSS equal to PCF where no light has an area.
 
 use std::process::Command;
 
@@ -24,7 +24,8 @@ fn quick_run_writes_every_row_with_finite_numbers() {
     let col = |name: &str| header.iter().position(|h| *h == name).unwrap_or_else(|| panic!("no column {name}"));
     let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
     let resolutions = shadelab::bench::shadows::QUICK_RESOLUTIONS;
-    let filters = ["hard", "pcf", "poisson"];
+    let filters: Vec<&str> =
+        shadelab::bench::shadows::FILTERS.iter().map(|f| shadelab::bench::shadows::filter_name(*f)).collect();
     assert_eq!(rows.len(), resolutions.len() * filters.len() + 2, "{text}");
     let find = |kind: &str, res: &str, filter: &str| {
         rows.iter()
@@ -37,7 +38,7 @@ fn quick_run_writes_every_row_with_finite_numbers() {
         v
     };
     for res in resolutions {
-        for filter in filters {
+        for &filter in &filters {
             let r = find("shadows", &res.to_string(), filter);
             for name in
                 ["median_ms", "p10_ms", "p90_ms", "ratio_to_baseline", "ratio_to_off", "rmse", "share_disagreeing"]
@@ -45,6 +46,11 @@ fn quick_run_writes_every_row_with_finite_numbers() {
                 number(r, name);
             }
         }
+    }
+    // The default scene has no area light: PCSS is PCF's compare there, the same image.
+    for res in resolutions {
+        let rmse = |filter: &str| number(find("shadows", &res.to_string(), filter), "rmse");
+        assert_eq!(rmse("pcss"), rmse("pcf"), "at {res}");
     }
     let off = find("off", "", "");
     for name in ["median_ms", "ratio_to_baseline", "rmse", "share_disagreeing"] {

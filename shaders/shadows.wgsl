@@ -271,9 +271,12 @@ fn shadow_visibility(i: u32, light: Light, p: vec3<f32>, n: vec3<f32>, pixel: ve
     }
 #endif
     let t = shadow_map_coord(shadows.matrices[min(layer, MAX_SHADOW_LAYERS - 1u)], q);
+    // PCSS's receiver plane: the cosine to the light's centre (it has one only as a point light).
     var n_dot_l = 1.0;
+#if EFFECT_SHADOW_PCSS
 #if EFFECT_POINT_LIGHTS
     n_dot_l = dot(n, safe_normalize(light.position.xyz - p, n));
+#endif
 #endif
     return shadow_compare(sl, layer, t, n_dot_l, pixel);
 }

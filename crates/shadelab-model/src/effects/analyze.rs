@@ -3,7 +3,8 @@
 //! whether the shader must contain it, and why. The effects that are on make the scene's
 //! [`EffectKey`].
 
-use super::declared::{Effect, EffectKey};
+use super::EffectKey;
+use super::declared::Effect;
 use crate::params::NamedValue;
 use crate::params::{FalloffForm, IlluminationModel, LightKind, SpecularModel};
 use crate::scene::Scene;

@@ -1,10 +1,13 @@
 //! Effects: what a shader permutation may contain and what a scene calls for. Each effect is
-//! declared once ([`DECLARED`], in `declared.rs`); the analysis (`analyze.rs`) decides, per
+//! declared once ([`DECLARED`], in `declared.rs`; the set a permutation holds, [`EffectKey`], in
+//! `key.rs`); the analysis (`analyze.rs`) decides, per
 //! scene, which of them the shader must hold, each with its reason. The renderer builds one
 //! pipeline per set ([`EffectKey`]), whose shader holds only those effects.
 
 mod analyze;
 mod declared;
+mod key;
 
 pub use analyze::{ABSORPTION_LINEAR_BELOW, ABSORPTION_NEGLECT_BELOW, Analysis, Decision, analyze};
-pub use declared::{DECLARED, Declaration, Effect, EffectKey, TEXTURE_COORDS, TEXTURE_EFFECTS};
+pub use declared::{DECLARED, Declaration, Effect, TEXTURE_COORDS, TEXTURE_EFFECTS};
+pub use key::EffectKey;

@@ -61,26 +61,6 @@ impl AreaLight {
             AreaShape::Disk { radius } | AreaShape::Sphere { radius } => radius.abs(),
         }
     }
-
-    /// The disk as a regular polygon of [`AREA_DISK_SIDES`] sides and the disk's area,
-    /// counter-clockwise seen from the side it emits to.
-    pub fn disk_corners(&self) -> Option<[DVec3; AREA_DISK_SIDES]> {
-        let AreaShape::Disk { radius } = self.shape else { return None };
-        let (t, b) = (self.tangent, self.normal.cross(self.tangent));
-        let r = radius.abs() * disk_polygon_scale();
-        Some(std::array::from_fn(|i| {
-            let phi = TAU * i as f64 / AREA_DISK_SIDES as f64;
-            self.center + (t * phi.cos() + b * phi.sin()) * r
-        }))
-    }
-
-    /// The rectangle's corners, counter-clockwise seen from the side it emits to.
-    pub fn rect_corners(&self) -> Option<[DVec3; 4]> {
-        let AreaShape::Rect { half_x, half_y } = self.shape else { return None };
-        let (t, b) = (self.tangent, self.normal.cross(self.tangent));
-        let at = |sx: f64, sy: f64| self.center + t * (sx * half_x) + b * (sy * half_y);
-        Some([at(-1.0, -1.0), at(1.0, -1.0), at(1.0, 1.0), at(-1.0, 1.0)])
-    }
 }
 
 /// One edge's term of Lambert's edge formula: θ · n·(a × b)/|a × b| for unit directions `a`, `b`
@@ -266,7 +246,7 @@ pub fn area_irradiance_exact(light: &AreaLight, p: DVec3, n: DVec3) -> Option<f6
 }
 
 /// E/L as the renderer computes it: [`area_irradiance_exact`], and the disk as its equal-area
-/// regular polygon of [`AREA_DISK_SIDES`] sides ([`AreaLight::disk_corners`]).
+/// regular polygon of [`AREA_DISK_SIDES`] sides ([`area_corner`]).
 pub fn area_irradiance(light: &AreaLight, p: DVec3, n: DVec3) -> f64 {
     match light.shape {
         AreaShape::Rect { .. } | AreaShape::Disk { .. } => polygon_irradiance(p, n, &area_corners(light)),
@@ -295,11 +275,21 @@ pub fn area_corner_count(light: &AreaLight) -> usize {
     }
 }
 
-/// Corner `i` of a flat light ([`AreaLight::rect_corners`], [`AreaLight::disk_corners`]).
+/// Corner `i` of a flat light, counter-clockwise seen from the side it emits to: the
+/// rectangle's, or the disk's regular polygon of [`AREA_DISK_SIDES`] sides with the disk's area
+/// (WGSL `area_corner`, which computes it the same way rather than indexing a list).
 pub fn area_corner(light: &AreaLight, i: usize) -> DVec3 {
+    let (t, b) = (light.tangent, light.normal.cross(light.tangent));
     match light.shape {
-        AreaShape::Rect { .. } => light.rect_corners().map_or(light.center, |c| c[i % 4]),
-        AreaShape::Disk { .. } => light.disk_corners().map_or(light.center, |c| c[i % AREA_DISK_SIDES]),
+        AreaShape::Rect { half_x, half_y } => {
+            let sx = if i % 4 == 1 || i % 4 == 2 { 1.0 } else { -1.0 };
+            let sy = if i % 4 >= 2 { 1.0 } else { -1.0 };
+            light.center + t * (sx * half_x) + b * (sy * half_y)
+        }
+        AreaShape::Disk { radius } => {
+            let phi = TAU * (i % AREA_DISK_SIDES) as f64 / AREA_DISK_SIDES as f64;
+            light.center + (t * phi.cos() + b * phi.sin()) * (radius.abs() * disk_polygon_scale())
+        }
         AreaShape::Sphere { .. } => light.center,
     }
 }
@@ -403,6 +393,12 @@ fn seen_cells<'a>(
     k: usize,
     visible: &'a dyn Fn(DVec3, DVec3) -> bool,
 ) -> impl Iterator<Item = (DVec3, f64)> + 'a {
+    front_cells(light, p, k).filter(move |c| visible(p, c.0)).map(|(_, l, weight)| (l, weight))
+}
+
+/// The light's cells whose front `p` faces: each cell's point, the unit direction `l` to it and
+/// its weight cos θ_l ΔA / r², visible or not.
+fn front_cells(light: &AreaLight, p: DVec3, k: usize) -> impl Iterator<Item = (DVec3, DVec3, f64)> + use<> {
     samples(light, p, k).into_iter().filter_map(move |(x, nx, da)| {
         let to = x - p;
         let r2 = to.length_squared();
@@ -411,8 +407,31 @@ fn seen_cells<'a>(
         }
         let l = to / r2.sqrt();
         let cos_l = -nx.dot(l);
-        (cos_l > 0.0 && visible(p, x)).then_some((l, cos_l * da / r2))
+        (cos_l > 0.0).then_some((x, l, cos_l * da / r2))
     })
+}
+
+/// The share of the light's E/L over `k`×`k` cells that reaches `p`, the cells `visible` hides
+/// taken out, in one walk over the cells; 1 where the light delivers nothing. The reference's
+/// soft shadow.
+pub fn area_visible_share(
+    light: &AreaLight,
+    p: DVec3,
+    n: DVec3,
+    k: usize,
+    visible: &dyn Fn(DVec3, DVec3) -> bool,
+) -> f64 {
+    let (mut clear, mut seen) = (0.0, 0.0);
+    for (x, l, weight) in front_cells(light, p, k) {
+        let e = weight * n.dot(l).max(0.0);
+        if e > 0.0 {
+            clear += e;
+            if visible(p, x) {
+                seen += e;
+            }
+        }
+    }
+    if clear > 0.0 { seen / clear } else { 1.0 }
 }
 
 /// The reference with its own error: the quadrature at `k` and at 2`k` cells a side, returning

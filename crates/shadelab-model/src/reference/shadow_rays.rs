@@ -4,7 +4,7 @@
 
 use super::intersect::occluded;
 use crate::guards::LIGHT_DIST_MIN;
-use crate::lighting::area::area_irradiance_quadrature;
+use crate::lighting::area::area_visible_share;
 use crate::lighting::lights::{Light, LightKind};
 use crate::scene::{Scene, Shape};
 use glam::{DMat4, DVec3};
@@ -114,10 +114,6 @@ impl<'a> ShadowRays<'a> {
             let t_max = d - end_offset;
             !(t_max > 0.0 && occluded(self.scene, self.inverses, o, to / d, t_max))
         };
-        let clear = area_irradiance_quadrature(&area, p, n, k, &|_, _| true);
-        if clear <= 0.0 {
-            return Some(1.0);
-        }
-        Some(area_irradiance_quadrature(&area, p, n, k, &visible) / clear)
+        Some(area_visible_share(&area, p, n, k, &visible))
     }
 }

@@ -42,8 +42,19 @@ struct Light {
     // sphere's radius (in half_x).
     half_x: f32,
     half_y: f32,
-    _pad1: f32,
+    // An area light: 0 for its exact area form, k for k point sources on it (area_points.wgsl).
+    area_points: u32,
     _pad2: f32,
+}
+
+// Whether an area light is drawn as k point sources (only permutations with EFFECT_AREA_POINTS
+// draw any that way).
+fn drawn_as_points(light: Light) -> bool {
+#if EFFECT_AREA_POINTS
+    return light.kind >= LIGHT_RECT && light.area_points > 0u;
+#else
+    return false;
+#endif
 }
 
 // docs/model.md §6: I(d) = I0/(1 + α d²); in (0, 1] for α ≥ 0.
@@ -122,7 +133,7 @@ fn light_sample(light: Light, p: vec3<f32>, n: vec3<f32>, v: vec3<f32>, m: f32) 
         s.radiance = light.radiance.rgb * f;
         s.form = dot(n, s.l);
 #if EFFECT_AREA_LIGHTS
-        if (light.kind >= LIGHT_RECT) {
+        if (light.kind >= LIGHT_RECT && !drawn_as_points(light)) {
             let a = area_specular_point(light, p, n, v, m);
             s.l = a.l;
             s.spec_scale = a.scale;

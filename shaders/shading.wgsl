@@ -122,32 +122,58 @@ fn shade(p: vec3<f32>, n_in: vec3<f32>, surface: Surface, pixel: vec2<f32>) -> v
     for (var i = 0u; i < light_count; i++) {
         var light = globals.lights[i];
         light.kind = select(light.kind, (LOOP_KINDS >> (LOOP_KIND_BITS * i)) & LOOP_KIND_MASK, fixed_loop);
-        let s = light_sample(light, p, n, v, surface.m);
-        var visibility = 1.0;
+        let base = light_sample(light, p, n, v, surface.m);
+        // An area light drawn as k point sources is k samples, each with its own shadow.
+        var samples = 1u;
+#if EFFECT_AREA_POINTS
+#if EFFECT_POINT_LIGHTS
+        samples = area_point_count(light);
+#endif
+#endif
+        for (var j = 0u; j < samples; j++) {
+            var s = base;
+            // Where the light's shadow is cast from (a directional light's has no position).
+            var origin = vec3(0.0);
+#if EFFECT_POINT_LIGHTS
+            origin = light.position.xyz;
+#endif
+#if EFFECT_AREA_POINTS
+#if EFFECT_POINT_LIGHTS
+            if (drawn_as_points(light)) {
+                s = area_point_sample(base, light, j, p, n);
+                origin = area_emitter(light, j).position;
+            }
+#endif
+#endif
+            var visibility = 1.0;
 #if EFFECT_CAST_SHADOWS
-        visibility = shadow_visibility(i, light, p, n, pixel);
+            visibility = shadow_visibility(i, light, origin, j, p, n, pixel);
 #endif
 #if EFFECT_LAMBERT_RULE
-        if (globals.illumination == ILLUMINATION_LAMBERT) {
-            let li = clamp(s.radiance, vec3(0.0), vec3(1.0));
-            i_max = max(i_max, li);
-            total += visibility * lambert_rule_lit(object.r_d * c, li, s.form);
-            continue;
-        }
+            if (globals.illumination == ILLUMINATION_LAMBERT) {
+                let li = clamp(s.radiance, vec3(0.0), vec3(1.0));
+                i_max = max(i_max, li);
+                total += visibility * lambert_rule_lit(object.r_d * c, li, s.form);
+                continue;
+            }
 #endif
 #if EFFECT_FOUR_TERM_SUM
-        if (globals.illumination == ILLUMINATION_SUM) {
+            if (globals.illumination == ILLUMINATION_SUM) {
 #if EFFECT_TRANSMITTED_TERM
-            total += transmitted_term(s.radiance, c, object.transmission);
+                // The transmitted term is the light's, once (not per point source).
+                if (j == 0u) {
+                    total += transmitted_term(s.radiance, c, object.transmission);
+                }
 #endif
-            total += visibility * sum_contribution(s.radiance, s.form, dot(n, v), c, object.r_d, object.r_s);
-            continue;
+                total += visibility * sum_contribution(s.radiance, s.form, dot(n, v), c, object.r_d, object.r_s);
+                continue;
+            }
+#endif
+            total += visibility * light_contribution(
+                s, n, v, c, object.r_s, object.r_d, surface.m, surface.h, surface.mirror,
+                v_index, globals.specular_model,
+            );
         }
-#endif
-        total += visibility * light_contribution(
-            s, n, v, c, object.r_s, object.r_d, surface.m, surface.h, surface.mirror,
-            v_index, globals.specular_model,
-        );
     }
 #if EFFECT_LAMBERT_RULE
     if (globals.illumination == ILLUMINATION_LAMBERT) {

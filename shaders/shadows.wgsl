@@ -13,18 +13,17 @@ const SHADOW_FILTER_POISSON: u32 = 2u;
 const SHADOW_FILTER_PCSS: u32 = 3u;
 
 // Twins of crates/shadelab-model/src/shadows.rs (shadows::WGSL_TWINS), reasons there.
-const MAX_SHADOW_LAYERS: u32 = 48u;
+const MAX_SHADOW_LAYERS: u32 = 144u;
 const SHADOW_POISSON_TAPS: u32 = 16u;
 const SHADOW_POISSON_RADIUS_TEXELS: f32 = 2.0;
 const SHADOW_CASCADE_MARGIN_TEXELS: f32 = 3.0;
-const SHADOW_PCSS_TAPS: u32 = 16u;
 const SHADOW_PCSS_NEAREST_BLOCKER: f32 = 0.1;
 
 // One light's shadow map in the frame's array of maps.
 struct ShadowLight {
     first_layer: u32,
     // 0: the light casts no shadow; 1: a spot light or a directional light's one map; 2…4: a
-    // directional light's cascades, finest first; 6: a point light's faces.
+    // directional light's cascades, finest first; 6 per cube: a point or area light's faces.
     layers: u32,
     // SHADOW_FILTER_HARD, _PCF or _POISSON.
     shadow_filter: u32,
@@ -40,8 +39,11 @@ struct ShadowLight {
     light_size: f32,
     near: f32,
     far: f32,
-    _pad0: f32,
-    _pad1: f32,
+    // Cube lights: how many cubes follow first_layer (one per point source of an area light
+    // drawn as points, as many as fit); 1 otherwise.
+    cubes: u32,
+    // Taps of each of PCSS's two passes (ShadowSettings::pcss_taps, 4 to 64).
+    pcss_taps: u32,
 }
 
 struct Shadows {
@@ -71,7 +73,9 @@ struct ShadowCasters {
 fn shadow_rotation(pixel: vec2<f32>) -> f32 {
     return 6.2831853 * fract(52.9829189 * fract(dot(pixel, vec2(0.06711056, 0.00583715))));
 }
+#endif
 
+#if EFFECT_SHADOW_POISSON
 // Point `i` of the 16-point Poisson disk of unit radius the soft filters tap.
 fn poisson_tap(i: u32) -> vec2<f32> {
     var disk = array<vec2<f32>, 16>(
@@ -86,9 +90,7 @@ fn poisson_tap(i: u32) -> vec2<f32> {
     );
     return disk[i % 16u];
 }
-#endif
 
-#if EFFECT_SHADOW_POISSON
 // SHADOW_FILTER_POISSON: the mean of SHADOW_POISSON_TAPS bilinear compares on a disk of
 // SHADOW_POISSON_RADIUS_TEXELS texels, rotated per pixel.
 fn shadow_compare_poisson(sl: ShadowLight, uv: vec2<f32>, layer: u32, depth: f32, pixel: vec2<f32>) -> f32 {
@@ -106,16 +108,24 @@ fn shadow_compare_poisson(sl: ShadowLight, uv: vec2<f32>, layer: u32, depth: f32
 #endif
 
 #if EFFECT_SHADOW_PCSS
-// Search tap `i` of SHADOW_PCSS_TAPS: a golden-angle spiral whose radius grows as the square of
-// its rank, so near blockers (small cones) are sampled as densely as far ones.
-fn pcss_search_tap(i: u32) -> vec2<f32> {
-    let r = (f32(i) + 0.5) / f32(SHADOW_PCSS_TAPS);
+// Search tap `i` of `n`: a golden-angle spiral whose radius grows as the square of its rank, so
+// near blockers (small cones) are sampled as densely as far ones.
+fn pcss_search_tap(i: u32, n: u32) -> vec2<f32> {
+    let r = (f32(i) + 0.5) / f32(n);
     let angle = 2.3999632 * f32(i);
     return r * r * vec2(cos(angle), sin(angle));
 }
 
+// Filter tap `i` of `n` on the unit disk: the golden-angle spiral with radius √((i + ½)/n), as
+// even a cover of the disk as a Poisson disk for any n (Vogel's).
+fn pcss_filter_tap(i: u32, n: u32) -> vec2<f32> {
+    let r = sqrt((f32(i) + 0.5) / f32(n));
+    let angle = 2.3999632 * f32(i);
+    return r * vec2(cos(angle), sin(angle));
+}
+
 // SHADOW_FILTER_PCSS: percentage-closer soft shadows (docs/area-lights.md). The blocker search
-// takes SHADOW_PCSS_TAPS stored depths over the cone from the receiver to the light, where it
+// takes sl.pcss_taps stored depths over the cone from the receiver to the light, where it
 // crosses the nearest blocker depth searched (SHADOW_PCSS_NEAREST_BLOCKER), and keeps those
 // inside the cone at their own depth; the blockers' mean linear depth d_b gives the penumbra
 // w = w_light·(d_r − d_b)/d_b at the receiver, and the filter's disk has radius w/2 there (its
@@ -137,10 +147,11 @@ fn shadow_compare_pcss(sl: ShadowLight, uv: vec2<f32>, layer: u32, depth: f32, n
     let per_tan = 0.5 * sl.uv_scale;
     let nearest = max(sl.near, SHADOW_PCSS_NEAREST_BLOCKER * d_r);
     let search = min(pcss_search_radius(sl.light_size, d_r, nearest), 1.0);
+    let taps = max(sl.pcss_taps, 1u);
     var blockers = 0.0;
     var depth_sum = 0.0;
-    for (var i = 0u; i < SHADOW_PCSS_TAPS; i++) {
-        let off = rot * pcss_search_tap(i) * search;
+    for (var i = 0u; i < taps; i++) {
+        let off = rot * pcss_search_tap(i, taps) * search;
         let q = clamp(uv + off * per_tan, lo, hi);
         let z = shadow_linear_depth(textureLoad(shadow_maps, vec2<i32>(q / sl.texel_uv), i32(layer), 0), sl.near, sl.far);
         // A blocker: nearer than the receiver's own plane there, and inside the cone from the
@@ -157,13 +168,13 @@ fn shadow_compare_pcss(sl: ShadowLight, uv: vec2<f32>, layer: u32, depth: f32, n
     let w = penumbra_width(sl.light_size, d_r, depth_sum / blockers);
     let radius = max(0.5 * w / max(d_r, BLOCKER_DIST_MIN), sl.texel_uv / per_tan);
     var lit = 0.0;
-    for (var i = 0u; i < SHADOW_PCSS_TAPS; i++) {
-        let off = rot * poisson_tap(i) * radius;
+    for (var i = 0u; i < taps; i++) {
+        let off = rot * pcss_filter_tap(i, taps) * radius;
         let q = clamp(uv + off * per_tan, lo, hi);
         let own = shadow_stored_depth(d_r - length(off) * d_r * slope, sl.near, sl.far);
         lit += textureSampleCompareLevel(shadow_maps, shadow_linear, q, layer, own);
     }
-    return lit / f32(SHADOW_PCSS_TAPS);
+    return lit / f32(taps);
 }
 #endif
 
@@ -234,19 +245,23 @@ fn shadow_cascade(sl: ShadowLight, p: vec3<f32>, n: vec3<f32>) -> u32 {
 #endif
 
 // How much of light `i` reaches world point `p` with unit normal `n`: 1 lit, 0 in a cast shadow.
-// The receiver is first moved along its normal by SHADOW_NORMAL_OFFSET_TEXELS texels of the
-// light's map at that point (the normal offset; the slope-scaled bias is the shadow pass's).
-fn shadow_visibility(i: u32, light: Light, p: vec3<f32>, n: vec3<f32>, pixel: vec2<f32>) -> f32 {
+// `origin` is where the light (or its point source `j`, drawn as points) sits; a cube light's
+// j-th cube holds that source's map. The receiver is first moved along its normal by
+// SHADOW_NORMAL_OFFSET_TEXELS texels of the light's map at that point (the normal offset; the
+// slope-scaled bias is the shadow pass's).
+fn shadow_visibility(i: u32, light: Light, origin: vec3<f32>, j: u32, p: vec3<f32>, n: vec3<f32>, pixel: vec2<f32>) -> f32 {
     let sl = shadows.lights[i];
     if (sl.layers == 0u) {
         return 1.0;
     }
     var layer = sl.first_layer;
     var dist = 0.0;
+    // Cube lights have 6 layers a cube; a directional light at most 4 cascades, a spot 1.
+    let cube_light = sl.layers >= 6u;
 #if EFFECT_POINT_LIGHTS
     // Point and spot lights only: a directional light's position is not read.
-    let to_p = p - light.position.xyz;
-    if (sl.layers == 6u) {
+    let to_p = p - origin;
+    if (cube_light) {
         dist = max(max(abs(to_p.x), abs(to_p.y)), abs(to_p.z));
     }
 #if EFFECT_SPOT_LIGHTS
@@ -265,9 +280,13 @@ fn shadow_visibility(i: u32, light: Light, p: vec3<f32>, n: vec3<f32>, pixel: ve
 #endif
     let q = p + n * (SHADOW_NORMAL_OFFSET_TEXELS * texel);
 #if EFFECT_POINT_LIGHTS
-    // A point light's face is chosen after the offset (the offset point may cross into the next).
-    if (sl.layers == 6u) {
-        layer += shadow_face(q - light.position.xyz);
+    // A cube's face is chosen after the offset (the offset point may cross into the next).
+    if (cube_light) {
+        var cube = 0u;
+#if EFFECT_AREA_POINTS
+        cube = j % max(sl.cubes, 1u);
+#endif
+        layer += 6u * cube + shadow_face(q - origin);
     }
 #endif
     let t = shadow_map_coord(shadows.matrices[min(layer, MAX_SHADOW_LAYERS - 1u)], q);
@@ -275,7 +294,7 @@ fn shadow_visibility(i: u32, light: Light, p: vec3<f32>, n: vec3<f32>, pixel: ve
     var n_dot_l = 1.0;
 #if EFFECT_SHADOW_PCSS
 #if EFFECT_POINT_LIGHTS
-    n_dot_l = dot(n, safe_normalize(light.position.xyz - p, n));
+    n_dot_l = dot(n, safe_normalize(origin - p, n));
 #endif
 #endif
     return shadow_compare(sl, layer, t, n_dot_l, pixel);

@@ -11,7 +11,7 @@ use std::str::FromStr;
 
 pub use crate::lighting::brdf::SpecularModel;
 pub use crate::lighting::lights::{
-    CONE_ANGLE, CONE_ANGLE_F32, D0, FALLOFF, FalloffForm, INTENSITY, LIGHT_SIZE, LightKind, RANGE,
+    AREA_POINTS, CONE_ANGLE, CONE_ANGLE_F32, D0, FALLOFF, FalloffForm, INTENSITY, LIGHT_SIZE, LightKind, RANGE,
 };
 pub use crate::lighting::models::{IlluminationModel, ModelChoice};
 

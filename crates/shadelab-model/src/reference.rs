@@ -9,6 +9,8 @@ mod tests;
 
 pub use shadow_rays::SHADOW_RAY_OFFSET_REL;
 
+use crate::Light;
+use crate::lighting::area_points::area_emitter;
 use crate::lighting::shading::{shade, shade_with_visibility};
 use crate::params::SpecularModel;
 use crate::scene::{BACKGROUND, Material, Scene, UvFootprint};
@@ -73,7 +75,17 @@ pub const REFERENCE_AREA_CELLS: usize = 16;
 
 /// Render the scene by ray casting in f64 at any resolution. A light whose `shadow.casts` is
 /// false lights every point its term reaches, exactly as without shadow rays.
+/// An area light drawn as k point sources is integrated exactly here: the reference is what the
+/// approximation is measured against ([`render_drawn`] draws the approximation in f64).
 pub fn render_reference(scene: &Scene, specular: SpecularModel, width: u32, height: u32) -> ReferenceImage {
+    let exact: Vec<Light> = scene.lights.iter().map(|l| Light { area_points: 0, ..l.clone() }).collect();
+    render_drawn(&Scene { lights: exact, ..scene.clone() }, specular, width, height)
+}
+
+/// The scene as the GPU draws it, in f64: an area light drawn as k point sources is k point
+/// sources with a hard shadow ray each (the f64 twin of that approximation); otherwise
+/// [`render_reference`].
+pub fn render_drawn(scene: &Scene, specular: SpecularModel, width: u32, height: u32) -> ReferenceImage {
     let inverses: Vec<DMat4> = scene.objects.iter().map(|o| o.transform.matrix().inverse()).collect();
     let rays = ShadowRays::new(scene, &inverses);
     let n = (width * height) as usize;
@@ -134,7 +146,14 @@ pub fn render_reference(scene: &Scene, specular: SpecularModel, width: u32, heig
                 scene.ambient,
                 specular,
                 scene.illumination,
-                |i, light, l| {
+                |i, light, j, l| {
+                    // A point source of an area light drawn as points: its own hard shadow.
+                    if light.drawn_as_points() {
+                        let at = Light { position: area_emitter(light, j).position, area_points: 0, ..light.clone() };
+                        let blocked = light.shadow.casts && rays.hidden(&at, p, hit.geometric_normal, l);
+                        dimmed |= blocked;
+                        return if blocked { 0.0 } else { 1.0 };
+                    }
                     // An area light's soft shadow: the share of its cells a ray reaches; the
                     // pixel counts as hidden from it when more than half of its light is blocked.
                     let soft = light

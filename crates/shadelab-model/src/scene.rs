@@ -132,11 +132,16 @@ pub struct Overrides {
     /// Every area light's width and height in metres (a disk's or sphere's diameter), within
     /// `lights::LIGHT_SIZE`.
     pub light_size: Option<f64>,
+    /// Every area light drawn as this many point sources (0: its exact area form), within
+    /// `lights::AREA_POINTS`.
+    pub area_points: Option<u32>,
     /// Every light casts shadows (`Some(true)`) or none does (`Some(false)`).
     pub shadows: Option<bool>,
     /// Every light's shadow map side, within `shadows::SHADOW_RESOLUTION` (clamped into it).
     pub shadow_resolution: Option<u32>,
     pub shadow_filter: Option<ShadowFilter>,
+    /// Every light's PCSS taps per pass, within `shadows::PCSS_TAPS`.
+    pub pcss_taps: Option<u32>,
     /// Every directional light may use cascades (`Some(true)`) or keeps one map (`Some(false)`).
     pub shadow_cascades: Option<bool>,
     /// The illumination model (`--model`, with the specular model it fixes kept elsewhere).
@@ -191,6 +196,9 @@ impl Scene {
             if let Some(w) = o.light_size {
                 light.size = [w; 2];
             }
+            if let Some(k) = o.area_points {
+                light.area_points = k;
+            }
             if let Some(a) = o.falloff_alpha {
                 light.falloff_alpha = a;
             }
@@ -208,6 +216,9 @@ impl Scene {
             }
             if let Some(f) = o.shadow_filter {
                 light.shadow.filter = f;
+            }
+            if let Some(n) = o.pcss_taps {
+                light.shadow = ShadowSettings { pcss_taps: n, ..light.shadow }.clamped();
             }
             if let Some(c) = o.shadow_cascades {
                 light.shadow.cascades = c;
@@ -302,7 +313,13 @@ mod tests {
             ..Default::default()
         };
         s.apply(&o);
-        let want = ShadowSettings { casts: false, resolution: 512, filter: ShadowFilter::Poisson, cascades: false };
+        let want = ShadowSettings {
+            casts: false,
+            resolution: 512,
+            filter: ShadowFilter::Poisson,
+            cascades: false,
+            ..Default::default()
+        };
         assert!(s.lights.iter().all(|l| l.shadow == want), "{:?}", s.lights);
         // Only what is given changes; a resolution outside the range is held to it.
         s.apply(&Overrides { shadows: Some(true), shadow_resolution: Some(1 << 20), ..Default::default() });

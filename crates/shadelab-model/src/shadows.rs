@@ -64,6 +64,11 @@ pub const SHADOW_RESOLUTION: ParamRange = ParamRange {
     max: 4096.0,
 };
 
+/// Taps of each of PCSS's two passes (blocker search, filter): 4 is a coarse but usable
+/// penumbra, 64 four times the default's cost; the study times several.
+pub const PCSS_TAPS: ParamRange =
+    ParamRange { flag: "--pcss-taps", symbol: "n", meaning: "taps of each PCSS pass", min: 4.0, max: 64.0 };
+
 /// The shadow map side a light gets unless it says otherwise.
 pub const SHADOW_RESOLUTION_DEFAULT: u32 = 2048;
 
@@ -78,19 +83,29 @@ pub struct ShadowSettings {
     /// A directional light may split its map into cascades when the view calls for them
     /// ([`cascade_count`]); off, it keeps one map fitted to the whole scene.
     pub cascades: bool,
+    /// Taps of each of PCSS's two passes, within [`PCSS_TAPS`].
+    pub pcss_taps: u32,
 }
 
 impl Default for ShadowSettings {
     fn default() -> Self {
-        ShadowSettings { casts: true, resolution: SHADOW_RESOLUTION_DEFAULT, filter: ShadowFilter::Pcf, cascades: true }
+        ShadowSettings {
+            casts: true,
+            resolution: SHADOW_RESOLUTION_DEFAULT,
+            filter: ShadowFilter::Pcf,
+            cascades: true,
+            pcss_taps: SHADOW_PCSS_TAPS,
+        }
     }
 }
 
 impl ShadowSettings {
-    /// The settings with the resolution kept inside [`SHADOW_RESOLUTION`].
+    /// The settings with the resolution kept inside [`SHADOW_RESOLUTION`] and the PCSS taps
+    /// inside [`PCSS_TAPS`].
     pub fn clamped(self) -> ShadowSettings {
         let r = (self.resolution as f64).clamp(SHADOW_RESOLUTION.min, SHADOW_RESOLUTION.max) as u32;
-        ShadowSettings { resolution: r, ..self }
+        let taps = (self.pcss_taps as f64).clamp(PCSS_TAPS.min, PCSS_TAPS.max) as u32;
+        ShadowSettings { resolution: r, pcss_taps: taps, ..self }
     }
 }
 
@@ -123,8 +138,9 @@ pub const SHADOW_POISSON_TAPS: u32 = 16;
 /// visibly softer than `Pcf`, while staying inside the normal offset's margin at contact points.
 pub const SHADOW_POISSON_RADIUS_TEXELS: f32 = 2.0;
 /// Shadow-map layers: one per directional or spot light, six per point light (its cube faces),
-/// so 8 point lights fill them (`scene::MAX_LIGHTS` × 6).
-pub const MAX_SHADOW_LAYERS: u32 = crate::scene::MAX_LIGHTS as u32 * 6;
+/// six per point source of an area light drawn as points. 24 cubes: 8 point lights, or 7 and an
+/// area light as the most points (`AREA_POINTS`, 16). 9 KiB of matrices in the uniform.
+pub const MAX_SHADOW_LAYERS: u32 = 24 * 6;
 /// Most memory all of a frame's shadow maps may take: 512 MiB. One 2D array holds every layer at
 /// one side; when the layers at the largest requested side would need more, the side is halved
 /// until they fit (8 point lights × 6 faces × 4096² × 4 bytes would be 3 GiB, and get 1024²).
@@ -150,9 +166,9 @@ pub const SHADOW_BOUNDS_RADIUS_MIN: f64 = 1e-3;
 /// map, lit. 1e-20 keeps `c.xyz / w` finite in f32 for any |c.xyz| below 3e18.
 pub const SHADOW_CLIP_W_MIN: f64 = 1e-20;
 
-/// Taps of each of PCSS's two passes (`ShadowFilter::Pcss`): the blocker search and the filter
-/// each take the 16 rotated Poisson-disk points, like `Poisson`, so the two filters cost alike
-/// per tap; the study times PCSS against the other filters.
+/// The default taps of each of PCSS's two passes (`ShadowFilter::Pcss`): 16, as many as
+/// `Poisson` takes, so the two filters cost alike per pass; `ShadowSettings::pcss_taps` sets
+/// another count within [`PCSS_TAPS`], and `bench shadows` times 8, 16 and 32.
 pub const SHADOW_PCSS_TAPS: u32 = 16;
 
 /// The nearest blocker PCSS searches for, as a share of the receiver's distance from the light:
@@ -212,14 +228,13 @@ pub fn penumbra_width(w_light: f64, d_receiver: f64, d_blocker: f64) -> f64 {
 
 /// The constants `shaders/shadows.wgsl` and `shaders/shadow_math.wgsl` repeat, by their WGSL name: the twin test holds them
 /// equal, and every `f32`/`u32` constant of that file (other than the filter codes) is here.
-pub const WGSL_TWINS: [(&str, f64); 9] = [
+pub const WGSL_TWINS: [(&str, f64); 8] = [
     ("SHADOW_NORMAL_OFFSET_TEXELS", SHADOW_NORMAL_OFFSET_TEXELS as f64),
     ("SHADOW_POISSON_TAPS", SHADOW_POISSON_TAPS as f64),
     ("SHADOW_POISSON_RADIUS_TEXELS", SHADOW_POISSON_RADIUS_TEXELS as f64),
     ("MAX_SHADOW_LAYERS", MAX_SHADOW_LAYERS as f64),
     ("SHADOW_CASCADE_MARGIN_TEXELS", SHADOW_CASCADE_MARGIN_TEXELS),
     ("SHADOW_CLIP_W_MIN", SHADOW_CLIP_W_MIN),
-    ("SHADOW_PCSS_TAPS", SHADOW_PCSS_TAPS as f64),
     ("SHADOW_RECEIVER_SLOPE_MAX", SHADOW_RECEIVER_SLOPE_MAX),
     ("SHADOW_PCSS_NEAREST_BLOCKER", SHADOW_PCSS_NEAREST_BLOCKER),
 ];
@@ -350,6 +365,36 @@ pub fn shadow_projection(light: &Light, centre: DVec3, radius: f64, resolution: 
             }
         }
     }
+}
+
+/// How many shadow cubes each light slot of `scene` gets (the first `MAX_LIGHTS`): 0 for a light
+/// that casts none or has no cube (directional, spot), 1 for a point or area light, its k for an
+/// area light drawn as k points, as many as `MAX_SHADOW_LAYERS` leaves once every other casting
+/// light has its layers (then point source j uses cube j mod the count). `ShadowPlan` lays the
+/// layers out from this; the effect analysis reports a light that got fewer than its k.
+pub fn shadow_cubes(scene: &Scene) -> Vec<u32> {
+    let lights: Vec<&Light> = scene.lights.iter().take(crate::scene::MAX_LIGHTS).collect();
+    let own = |l: &Light| -> u32 {
+        match l.kind {
+            _ if !l.shadow.casts => 0,
+            LightKind::Point | LightKind::Rect | LightKind::Disk | LightKind::Sphere => 6,
+            LightKind::Directional if l.shadow.cascades => cascade_count(scene),
+            _ => 1,
+        }
+    };
+    let mut spare = MAX_SHADOW_LAYERS.saturating_sub(lights.iter().map(|l| own(l)).sum());
+    lights
+        .iter()
+        .map(|l| {
+            if own(l) != 6 {
+                return 0;
+            }
+            let want = crate::lighting::area_points::area_point_count(l);
+            let extra = (want - 1).min(spare / 6);
+            spare -= 6 * extra;
+            1 + extra
+        })
+        .collect()
 }
 
 /// The cube face that sees direction `d` from a point light (its largest axis; ties go to x,

@@ -8,13 +8,15 @@
 use shadelab_model::effects::EffectKey;
 
 /// `(file name, source)` in the order they are concatenated.
-pub const FILES: [(&str, &str); 10] = [
+pub const FILES: [(&str, &str); 11] = [
     ("common.wgsl", include_str!("../../../shaders/common.wgsl")),
     ("brdf.wgsl", include_str!("../../../shaders/brdf.wgsl")),
     ("models.wgsl", include_str!("../../../shaders/models.wgsl")),
     ("lights.wgsl", include_str!("../../../shaders/lights.wgsl")),
     // Only in permutations with area lights (the whole file is one `#if EFFECT_AREA_LIGHTS`).
     ("area_lights.wgsl", include_str!("../../../shaders/area_lights.wgsl")),
+    // Only in permutations with area lights drawn as k point sources (`#if EFFECT_AREA_POINTS`).
+    ("area_points.wgsl", include_str!("../../../shaders/area_points.wgsl")),
     // The shadow projection math, without bindings (the sweep runs it): with cast shadows only.
     ("shadow_math.wgsl", include_str!("../../../shaders/shadow_math.wgsl")),
     // C and μ at a point: the material tinted by vertex colours and textures.
@@ -74,9 +76,9 @@ fn uber_defines() -> Vec<&'static str> {
 
 /// Constants, guards and the lighting terms with every effect, without entry points (for compute
 /// passes that evaluate the terms directly; the one texture binding of `surface` goes unused):
-/// `common`, `brdf`, `models`, `lights`, `area_lights`, `shadow_math` and `surface`.
+/// `common`, `brdf`, `models`, `lights`, `area_lights`, `area_points`, `shadow_math` and `surface`.
 pub fn terms_source() -> String {
-    let raw = FILES[..7].iter().map(|(_, s)| *s).collect::<Vec<_>>().join("\n");
+    let raw = FILES[..8].iter().map(|(_, s)| *s).collect::<Vec<_>>().join("\n");
     preprocess(&raw, &uber_defines()).expect("the shipped WGSL preprocesses")
 }
 

@@ -16,18 +16,23 @@ use crate::uniforms::{ShadowLightUniform, ShadowsUniform};
 use crate::upload::SceneGpu;
 use crate::vertex::SmoothVertex;
 use bytemuck::Zeroable;
+use shadelab_model::lighting::area_points::area_emitter;
 use shadelab_model::shadows::{
     MAX_SHADOW_LAYERS, SHADOW_CONSTANT_BIAS, SHADOW_DEPTH_BIAS_CLAMP, SHADOW_MAP_BUDGET_BYTES, SHADOW_RESOLUTION,
-    SHADOW_SLOPE_BIAS, SHADOW_TEXEL_BYTES, cascade_count, cascade_projection, scene_bounds, shadow_projection,
+    SHADOW_SLOPE_BIAS, SHADOW_TEXEL_BYTES, cascade_count, cascade_projection, scene_bounds, shadow_cubes,
+    shadow_projection,
 };
-use shadelab_model::{LightKind, Scene};
+use shadelab_model::{Light, LightKind, Scene};
 
 /// Where one light's map lies in the array.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct LightMap {
     pub first_layer: u32,
-    /// 1; a directional light's cascades (up to `SHADOW_CASCADES_MAX`); 6 for a point light.
+    /// 1; a directional light's cascades (up to `SHADOW_CASCADES_MAX`); 6 for a point light, and
+    /// 6 per cube of an area light drawn as points.
     pub layers: u32,
+    /// Cube lights: how many cubes follow `first_layer` (`shadows::shadow_cubes`); 1 otherwise.
+    pub cubes: u32,
     /// Its side in texels (its resolution, at most the array's side).
     pub resolution: u32,
 }
@@ -47,19 +52,20 @@ impl ShadowPlan {
     pub fn for_scene(scene: &Scene, limits: &wgpu::Limits) -> ShadowPlan {
         let mut lights = Vec::new();
         let (mut layers, mut side) = (0u32, 0u32);
-        for l in scene.lights.iter().take(shadelab_model::scene::MAX_LIGHTS) {
+        let cubes = shadow_cubes(scene);
+        for (l, &c) in scene.lights.iter().zip(&cubes) {
             if !l.shadow.casts {
                 lights.push(None);
                 continue;
             }
             let n = match l.kind {
-                // An area light's map is its centre's cube, like a point light's.
-                LightKind::Point | LightKind::Rect | LightKind::Disk | LightKind::Sphere => 6,
+                // An area light's map is its centre's cube, or one per point source.
+                LightKind::Point | LightKind::Rect | LightKind::Disk | LightKind::Sphere => 6 * c,
                 LightKind::Directional if l.shadow.cascades => cascade_count(scene),
                 _ => 1,
             };
             let resolution = l.shadow.clamped().resolution;
-            lights.push(Some(LightMap { first_layer: layers, layers: n, resolution }));
+            lights.push(Some(LightMap { first_layer: layers, layers: n, cubes: c.max(1), resolution }));
             layers += n;
             side = side.max(resolution);
         }
@@ -227,19 +233,29 @@ pub fn shadows_uniform(scene: &Scene, plan: &ShadowPlan, aspect: f64) -> Shadows
             u.matrices[(map.first_layer as usize + k).min(MAX_SHADOW_LAYERS as usize - 1)] =
                 m.as_mat4().to_cols_array_2d();
         }
+        // An area light drawn as points: each point source's cube, from where it sits.
+        for j in (0..map.cubes).filter(|_| light.drawn_as_points()) {
+            let at = Light { position: area_emitter(light, j).position, ..light.clone() };
+            let q = shadow_projection(&at, centre, radius, map.resolution);
+            for (k, m) in q.matrices.iter().enumerate() {
+                u.matrices[(map.first_layer as usize + 6 * j as usize + k).min(MAX_SHADOW_LAYERS as usize - 1)] =
+                    m.as_mat4().to_cols_array_2d();
+            }
+        }
         *slot = ShadowLightUniform {
             first_layer: map.first_layer,
             layers: map.layers,
-            shadow_filter: light.shadow.filter.code(),
+            shadow_filter: light.drawn_shadow_filter().code(),
             perspective: p.perspective as u32,
             texel_world: p.texel_world as f32,
             uv_scale: map.resolution as f32 / plan.side as f32,
             texel_uv: 1.0 / plan.side as f32,
-            light_size: light.penumbra_size() as f32,
+            // Drawn as points, each point's shadow is hard: no penumbra of its own.
+            light_size: if light.drawn_as_points() { 0.0 } else { light.penumbra_size() as f32 },
             near: p.near as f32,
             far: p.far as f32,
-            _pad0: 0.0,
-            _pad1: 0.0,
+            cubes: map.cubes,
+            pcss_taps: light.shadow.clamped().pcss_taps,
         };
     }
     u

@@ -9,12 +9,13 @@ use shadelab_model::params::NamedValue;
 use shadelab_model::{FalloffForm, IlluminationModel, LightKind, SpecularModel};
 
 /// Each WGSL file and the source of its f64 twin.
-const TWINS: [(&str, &str); 10] = [
+const TWINS: [(&str, &str); 11] = [
     ("common.wgsl", include_str!("../../shadelab-model/src/lighting/common.rs")),
     ("brdf.wgsl", include_str!("../../shadelab-model/src/lighting/brdf.rs")),
     ("models.wgsl", include_str!("../../shadelab-model/src/lighting/models.rs")),
     ("lights.wgsl", include_str!("../../shadelab-model/src/lighting/lights.rs")),
     ("area_lights.wgsl", include_str!("../../shadelab-model/src/lighting/area.rs")),
+    ("area_points.wgsl", include_str!("../../shadelab-model/src/lighting/area_points.rs")),
     // The projection and cascade math, and the map lookup around it; the map sampling has
     // none (the reference traces shadow rays).
     (
@@ -45,7 +46,7 @@ const TWINS: [(&str, &str); 10] = [
 
 /// WGSL functions with no f64 twin, by file, and why. (Entry points are left out by naga's list:
 /// they are the GPU's stages, whose f64 counterpart is `reference::render_reference`.)
-const NO_TWIN: [(&str, &str, &str); 34] = [
+const NO_TWIN: [(&str, &str, &str); 35] = [
     ("common.wgsl", "is_nonfinite", "the NaN/∞ test on f32 bits; f64 code uses f64::is_finite"),
     ("common.wgsl", "any_nonfinite", "the debug view's test of a colour, built on is_nonfinite"),
     ("surface.wgsl", "sample_slot", "samples a GPU texture; its f64 side is scene::Texture::sample_as"),
@@ -83,6 +84,7 @@ const NO_TWIN: [(&str, &str, &str); 34] = [
     ),
     ("shadows.wgsl", "poisson_tap", "the soft filters' tap pattern; the reference has no filter"),
     ("shadows.wgsl", "pcss_search_tap", "PCSS's blocker-search pattern; the reference has no filter"),
+    ("shadows.wgsl", "pcss_filter_tap", "PCSS's filter pattern; the reference has no filter"),
     ("shadows.wgsl", "shadow_visibility", "looks the point up in a shadow map; the reference traces a shadow ray"),
 ];
 

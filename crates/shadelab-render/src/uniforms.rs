@@ -34,7 +34,8 @@ pub struct LightUniform {
     /// sphere's radius in `half_x`.
     pub half_x: f32,
     pub half_y: f32,
-    pub _pad1: f32,
+    /// 0: an area light's exact form; k: k point sources (`Light::area_points`).
+    pub area_points: u32,
     pub _pad2: f32,
 }
 
@@ -111,8 +112,11 @@ pub struct ShadowLightUniform {
     /// The map's depth range along its view axis (PCSS linearizes the stored depth with it).
     pub near: f32,
     pub far: f32,
-    pub _pad0: f32,
-    pub _pad1: f32,
+    /// Cube lights: the cubes from `first_layer` on (an area light drawn as points has one per
+    /// point source, as many as fit); 1 otherwise.
+    pub cubes: u32,
+    /// `ShadowSettings::pcss_taps`.
+    pub pcss_taps: u32,
 }
 
 /// `shadows.wgsl`'s `Shadows` (@group(2) @binding(0)): each layer's light view-projection and
@@ -159,7 +163,7 @@ impl LightUniform {
             tangent: l.area_tangent().as_vec3().extend(0.0).to_array(),
             half_x: half_x as f32,
             half_y: half_y as f32,
-            _pad1: 0.0,
+            area_points: if l.drawn_as_points() { l.area_points } else { 0 },
             _pad2: 0.0,
         }
     }

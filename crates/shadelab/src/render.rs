@@ -1,5 +1,6 @@
 //! `shadelab render`: one headless frame to PNG or EXR.
 
+use crate::cli::SmallAreaLights;
 use crate::{Failure, cli};
 use anyhow::Context;
 use shadelab_model::ShadingMode;
@@ -85,9 +86,15 @@ pub fn run(args: &cli::RenderArgs) -> Result<(), Failure> {
     // One term alone is the scene with the other terms' coefficients at 0 (--save-scene keeps
     // the whole scene).
     let whole = scene;
-    let scene = args.term.scene(&whole);
+    let mut scene = args.term.scene(&whole);
     let settings = RenderSettings { debug_nonfinite: args.debug_nonfinite, ..mode };
     let (width, height) = args.size.pixels();
+    // An area light too small on screen for its area to show is drawn as a point light, saying why.
+    if args.small_area_lights == SmallAreaLights::Point {
+        for line in shadelab_model::effects::draw_small_area_lights_as_points(&mut scene, height) {
+            println!("{line}");
+        }
+    }
     let kind = image_kind(&args.output)?;
     let factor = args.term == shadelab_model::terms::Term::Shadow;
     if factor && !args.overlay.is_empty() {

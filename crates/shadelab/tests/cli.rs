@@ -122,7 +122,13 @@ fn every_scene_flag_is_accepted() {
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     // The shadow flags reach every light (the saved scene holds them).
     let lights = shadelab_model::gltf_io::load_scene(&saved).unwrap().scene.lights;
-    let want = ShadowSettings { casts: false, resolution: 512, filter: ShadowFilter::Poisson, cascades: false };
+    let want = ShadowSettings {
+        casts: false,
+        resolution: 512,
+        filter: ShadowFilter::Poisson,
+        cascades: false,
+        ..Default::default()
+    };
     assert!(!lights.is_empty() && lights.iter().all(|l| l.shadow == want), "{lights:?}");
     for scene in ["default", "sphere", "cylinder", "pyramid", "cube"] {
         let o = shadelab(&[

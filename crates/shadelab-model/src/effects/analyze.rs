@@ -80,13 +80,36 @@ pub fn analyze(scene: &Scene, specular: SpecularModel) -> Analysis {
     let areas: Vec<String> = lights
         .iter()
         .enumerate()
-        .filter(|(_, l)| l.kind.is_area())
+        .filter(|(_, l)| l.kind.is_area() && !l.drawn_as_points())
         .map(|(i, l)| format!("{} light L{}", l.kind.name(), i + 1))
         .collect();
     a.decide(
         Effect::AreaLights,
         !areas.is_empty(),
-        if areas.is_empty() { "no rect, disk or sphere light".into() } else { areas.join(", ") },
+        if areas.is_empty() {
+            "no rect, disk or sphere light drawn with its exact area form".into()
+        } else {
+            areas.join(", ")
+        },
+    );
+    let cubes = crate::shadows::shadow_cubes(scene);
+    let as_points: Vec<String> = lights
+        .iter()
+        .enumerate()
+        .filter(|(_, l)| l.drawn_as_points())
+        .map(|(i, l)| {
+            let k = l.area_points;
+            let shared = match cubes.get(i) {
+                Some(&c) if c > 0 && c < k => format!(" sharing {c} shadow cubes (MAX_SHADOW_LAYERS)"),
+                _ => String::new(),
+            };
+            format!("{} light L{} as {k} point source(s){shared}", l.kind.name(), i + 1)
+        })
+        .collect();
+    a.decide(
+        Effect::AreaPoints,
+        !as_points.is_empty(),
+        if as_points.is_empty() { "no area light drawn as point sources".into() } else { as_points.join(", ") },
     );
     let ranged = points.iter().filter(|l| l.range.is_some()).count();
     a.decide(
@@ -370,7 +393,7 @@ fn shadow_filter(lights: &[crate::scene::Light], shadows: bool, filter: ShadowFi
     if !shadows {
         return (false, "no cast shadows".into());
     }
-    let n = lights.iter().filter(|l| l.shadow.casts && l.shadow.filter == filter).count();
+    let n = lights.iter().filter(|l| l.shadow.casts && l.drawn_shadow_filter() == filter).count();
     if n > 0 {
         (true, format!("{n} casting light(s) filter with {name}"))
     } else {

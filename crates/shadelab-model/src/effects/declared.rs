@@ -210,7 +210,26 @@ declare_effects! {
             "clamp_to_shape",
             "area_specular_point",
         ],
-        members: &[("Light", "normal"), ("Light", "tangent"), ("Light", "half_x"), ("Light", "half_y")],
+        // Its shape's members (normal, tangent, half sizes) are read by area_points too.
+        members: &[],
+    },
+    /// Area lights drawn as the chapter's k point sources (docs/area-lights.md): k samples in
+    /// the light loop, each with its own hard shadow; also a light too small on screen for its
+    /// area to show, drawn as one.
+    AreaPoints {
+        explain: "area lights as points",
+        name: "area lights as points",
+        label: "apoints",
+        define: Some("EFFECT_AREA_POINTS"),
+        functions: &[
+            "area_point_count",
+            "area_lattice",
+            "concentric_disk",
+            "fibonacci_sphere",
+            "area_emitter",
+            "area_point_sample",
+        ],
+        members: &[("Light", "area_points"), ("ShadowLight", "cubes")],
     },
     /// glTF's range window on point and spot lights that have a range (docs/model.md §9).
     LightRange {
@@ -259,7 +278,7 @@ declare_effects! {
         members: &[],
     },
     /// The `pcss` shadow filter: an area light's penumbra from a blocker search and a filter as
-    /// wide as the penumbra (docs/area-lights.md). Shares the rotated Poisson disk with `poisson`.
+    /// wide as the penumbra (docs/area-lights.md). Shares the per-pixel rotation with `poisson`.
     ShadowFilterPcss {
         explain: "shadow filter pcss",
         name: "PCSS shadow filter",
@@ -268,13 +287,19 @@ declare_effects! {
         functions: &[
             "shadow_compare_pcss",
             "pcss_search_tap",
+            "pcss_filter_tap",
             "shadow_linear_depth",
             "shadow_stored_depth",
             "receiver_slope",
             "pcss_search_radius",
             "penumbra_width",
         ],
-        members: &[("ShadowLight", "light_size"), ("ShadowLight", "near"), ("ShadowLight", "far")],
+        members: &[
+            ("ShadowLight", "light_size"),
+            ("ShadowLight", "near"),
+            ("ShadowLight", "far"),
+            ("ShadowLight", "pcss_taps"),
+        ],
     },
     /// A directional light's shadow map split along the view's depth into cascades, finest near
     /// the camera (docs/model.md §6).

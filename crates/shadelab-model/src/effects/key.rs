@@ -134,7 +134,7 @@ mod tests {
         assert_eq!(format!("{k:?}"), "EffectKey(diffuse+cook-torrance+point+range)");
         assert_eq!(
             EffectKey::UBER.without(Effect::Ambient).label(),
-            "diffuse+phong+cook-torrance+lambert+sum+it+dir+point+quad+linear+spot+area+range+shadows+hard+pcf+poisson+pcss+cascades+texture+vcolor+mrtex+aotex+emit+emittex+normtex"
+            "diffuse+phong+cook-torrance+lambert+sum+it+dir+point+quad+linear+spot+area+apoints+range+shadows+hard+pcf+poisson+pcss+cascades+texture+vcolor+mrtex+aotex+emit+emittex+normtex"
         );
         assert_eq!(Effect::SpecularPhong.to_string(), "Phong specular (V·R)^h");
     }

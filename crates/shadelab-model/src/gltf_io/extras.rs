@@ -83,6 +83,10 @@ ranges! {
     LightRange = params::RANGE;
     /// An area light's width or height.
     LightSize = params::LIGHT_SIZE;
+    /// How many point sources an area light is drawn as.
+    AreaPoints = params::AREA_POINTS;
+    /// PCSS's taps per pass.
+    PcssTaps = crate::shadows::PCSS_TAPS;
     /// A light's shadow map side in texels.
     ShadowSide = crate::shadows::SHADOW_RESOLUTION;
 }

@@ -5,8 +5,8 @@
 //! without lights gets a default one.
 
 use super::extras::{
-    self, Cone, Count, D0, Falloff, Flag, Intensity, LightRange, LightSize, Named, Num, Rgb, ShadowSide, Unit, Vec3,
-    agrees,
+    self, AreaPoints, Cone, Count, D0, Falloff, Flag, Intensity, LightRange, LightSize, Named, Num, PcssTaps, Rgb,
+    ShadowSide, Unit, Vec3, agrees,
 };
 use super::scene_file::{Reader, num, quat, rgb, vec3};
 use super::{GltfError, POINT_FALLOFF_ALPHA};
@@ -46,6 +46,8 @@ struct LightExtras {
     shadow_resolution: Option<Count<ShadowSide>>,
     shadow_filter: Option<Named<ShadowFilter>>,
     shadow_cascades: Option<Flag>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pcss_taps: Option<Count<PcssTaps>>,
     /// An area light (`rect`, `disk`, `sphere`; KHR_lights_punctual has none): the file's light
     /// is its point light (sphere) or hemisphere spot light (rectangle, disk), which other
     /// viewers draw; shadelab draws the area light its centre, size and tangent describe.
@@ -57,6 +59,9 @@ struct LightExtras {
     height: Option<Num<LightSize>>,
     #[serde(skip_serializing_if = "Option::is_none")]
     tangent: Option<Vec3>,
+    /// How many point sources the area light is drawn as (0: its exact area form).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    points: Option<Count<AreaPoints>>,
 }
 
 impl Reader<'_> {
@@ -141,6 +146,7 @@ impl Reader<'_> {
             shadow: ShadowSettings::default(),
             size: [crate::lighting::lights::LIGHT_SIZE_DEFAULT; 2],
             tangent: DVec3::X,
+            area_points: 0,
         };
         let ex: LightExtras = extras::read(&self.cx, &l.extras, &what)?;
         let set = |field: &mut f64, v: Option<f64>| {
@@ -177,6 +183,9 @@ impl Reader<'_> {
         if let Some(c) = ex.shadow_cascades {
             light.shadow.cascades = c.0;
         }
+        if let Some(n) = ex.pcss_taps {
+            light.shadow.pcss_taps = n.0;
+        }
         let file_filter = ex.shadow_filter.is_some();
         if let Some(f) = ex.shadow_filter {
             light.shadow.filter = f.0;
@@ -198,8 +207,8 @@ impl Reader<'_> {
                 area.name()
             )),
             None => {
-                if ex.width.is_some() || ex.height.is_some() {
-                    self.cx.warn(format!("{what}: extras width and height ignored: not an area light"));
+                if ex.width.is_some() || ex.height.is_some() || ex.points.is_some() {
+                    self.cx.warn(format!("{what}: extras width, height and points ignored: not an area light"));
                 }
             }
         }
@@ -207,6 +216,9 @@ impl Reader<'_> {
         light.size[1] = ex.height.map_or(light.size[0], |v| v.0);
         if let Some(t) = ex.tangent {
             light.tangent = t.0;
+        }
+        if let Some(k) = ex.points.filter(|_| light.kind.is_area()) {
+            light.area_points = k.0;
         }
         // glTF's f32 π/2 is a little above f64's: the cones are held to [0, π/2] after the check.
         let (inner, outer) = (light.inner_cone, light.outer_cone);
@@ -264,10 +276,12 @@ pub(super) fn write_light(i: usize, l: &Light) -> (Value, Value) {
         shadow_resolution: Some(l.shadow.clamped().resolution.into()),
         shadow_filter: Some(Named(l.shadow.filter)),
         shadow_cascades: Some(Flag(l.shadow.cascades)),
+        pcss_taps: (l.shadow.filter == ShadowFilter::Pcss).then(|| l.shadow.clamped().pcss_taps.into()),
         area: area.then_some(Named(l.kind)),
         width: area.then(|| l.size[0].into()),
         height: area.then(|| l.size[1].into()),
         tangent: area.then(|| Vec3(l.area_tangent())),
+        points: area.then(|| l.area_points.into()),
     };
     let mut light = json!({
         "type": kind,

@@ -129,6 +129,17 @@ pub const LIGHT_SIZE: ParamRange = ParamRange {
     max: 1e6,
 };
 
+/// How many point sources an area light is replaced by (0: none, the exact area form). 16
+/// points take 96 shadow-map layers (a cube each), which is what one light may take of
+/// `MAX_SHADOW_LAYERS`.
+pub const AREA_POINTS: ParamRange = ParamRange {
+    flag: "--area-points",
+    symbol: "k",
+    meaning: "point sources an area light is replaced by (0: exact area form)",
+    min: 0.0,
+    max: 16.0,
+};
+
 /// The size an area light gets when a light is made one: half a metre, about the built-in
 /// scenes' objects' size, so its penumbra is plain to see.
 pub const LIGHT_SIZE_DEFAULT: f64 = 0.5;
@@ -167,6 +178,10 @@ pub struct Light {
     /// Area lights: the direction of a rectangle's width (made perpendicular to the normal when
     /// used, see [`Light::area_light`]).
     pub tangent: DVec3,
+    /// Area lights: 0 draws the exact area form; k ≥ 1 replaces the light by the chapter's k
+    /// point sources on it, each with its own hard shadow (`area_points.rs`), within
+    /// [`AREA_POINTS`].
+    pub area_points: u32,
 }
 
 impl Light {
@@ -186,6 +201,7 @@ impl Light {
             shadow: ShadowSettings::default(),
             size: [LIGHT_SIZE_DEFAULT; 2],
             tangent: DVec3::X,
+            area_points: 0,
         }
     }
     pub fn point(position: DVec3, color: [f64; 3], intensity: f64, falloff_alpha: f64) -> Self {
@@ -204,6 +220,7 @@ impl Light {
             shadow: ShadowSettings::default(),
             size: [LIGHT_SIZE_DEFAULT; 2],
             tangent: DVec3::X,
+            area_points: 0,
         }
     }
     /// A spot light at `position` shining along `direction`, with cones `inner < outer` (radians).
@@ -292,6 +309,22 @@ impl Light {
             self.shadow.filter = ShadowFilter::Pcf;
         }
         self.kind = kind;
+    }
+
+    /// Whether the light is drawn as the chapter's k point sources (an area light with
+    /// `area_points` ≥ 1) instead of its exact area form.
+    pub fn drawn_as_points(&self) -> bool {
+        self.kind.is_area() && self.area_points > 0
+    }
+
+    /// The shadow filter the light is drawn with: its own, except that PCSS becomes PCF where the
+    /// light is drawn as points (each point casts a hard shadow; their mean is the penumbra).
+    /// The effect analysis and the shadow uniform both ask this, so they cannot disagree.
+    pub fn drawn_shadow_filter(&self) -> ShadowFilter {
+        match self.shadow.filter {
+            ShadowFilter::Pcss if self.drawn_as_points() => ShadowFilter::Pcf,
+            f => f,
+        }
     }
 
     /// The incident intensity `I_L` per channel before falloff: colour × intensity (WGSL
@@ -385,7 +418,7 @@ pub fn light_sample(light: &Light, p: DVec3, n: DVec3, v: DVec3, m: f64) -> Ligh
         f *= spot_cone((-l).dot(light.spot_axis()), cos_inner, cos_outer);
     }
     let radiance = radiance.map(|r| r * f);
-    match light.area_light() {
+    match light.area_light().filter(|_| light.area_points == 0) {
         Some(area) => {
             let (l, spec_scale) = area_specular_point(&area, p, n, v, m);
             LightSample { l, radiance, form: area_form(&area, p, n), spec_scale }

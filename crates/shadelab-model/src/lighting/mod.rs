@@ -5,11 +5,14 @@
 //! - [`brdf`] ↔ `brdf.wgsl`: the terms of the illumination model and the specular models.
 //! - [`lights`] ↔ `lights.wgsl`: the light sources, their parameters and falloffs.
 //! - [`models`] ↔ `models.wgsl`: the Lambert rule and the four-term sum, and the model choice.
+//! - [`area`] ↔ `area_lights.wgsl`, [`area_points`] ↔ `area_points.wgsl`: area lights, exact and
+//!   as k point sources.
 //! - [`shading`] ↔ `shading.wgsl`: the sum over the lights at one point.
 //!
 //! The test `every_wgsl_function_has_a_rust_twin` (in `shadelab-render`) holds the pairing.
 
 pub mod area;
+pub mod area_points;
 pub mod brdf;
 pub mod common;
 pub mod lights;

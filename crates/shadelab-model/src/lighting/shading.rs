@@ -3,6 +3,7 @@
 //! point (its cast shadow, docs/model.md §0). The GPU's transforms, entry points and debug view have no
 //! f64 twin here (see the exception list of `every_wgsl_function_has_a_rust_twin`).
 
+use super::area_points::{area_point_count, area_point_sample};
 use super::brdf::{SpecularModel, fresnel_v_from_mu, light_contribution};
 use super::common::safe_normalize;
 use super::lights::{Light, MAX_LIGHTS, light_sample};
@@ -24,11 +25,12 @@ pub fn shade(
     specular: SpecularModel,
     model: IlluminationModel,
 ) -> [f64; 3] {
-    shade_with_visibility(p, n_in, eye, mat, lights, ambient, specular, model, |_, _, _| 1.0)
+    shade_with_visibility(p, n_in, eye, mat, lights, ambient, specular, model, |_, _, _, _| 1.0)
 }
 
-/// [`shade`] with each light's term scaled by `visibility(i, light, l)`, the share of light `i`
-/// that reaches `p` along the unit direction `l` to it (1: lit, 0: in a cast shadow). It is
+/// [`shade`] with each light's term scaled by `visibility(i, light, j, l)`, the share of light
+/// `i` (its point source `j` where it is drawn as points, else 0) that reaches `p` along the unit
+/// direction `l` to it (1: lit, 0: in a cast shadow). It is
 /// asked only of lights that would add something (a non-zero term), so a point in its own
 /// shadow (N·L ≤ 0) costs no shadow query; a visibility of 1 adds the term exactly as `shade`.
 /// The Lambert rule's fill and the four-term sum's transmitted term are not shadowed: the fill
@@ -44,7 +46,7 @@ pub fn shade_with_visibility(
     ambient: [f64; 3],
     specular: SpecularModel,
     model: IlluminationModel,
-    mut visibility: impl FnMut(usize, &Light, DVec3) -> f64,
+    mut visibility: impl FnMut(usize, &Light, u32, DVec3) -> f64,
 ) -> [f64; 3] {
     // The view vector: toward the eye (w = 1), or the orthographic camera's one direction (w = 0).
     let v = safe_normalize(eye.truncate() - p * eye.w, DVec3::Y);
@@ -58,33 +60,38 @@ pub fn shade_with_visibility(
     // The Lambert rule's I: the brightest light at the point, per channel, in [0, 1].
     let mut i_max = [0.0f64; 3];
     for (k, light) in lights.iter().take(MAX_LIGHTS).enumerate() {
-        let s = light_sample(light, p, n, v, mat.m);
-        let (l, radiance) = (s.l, s.radiance);
-        let lit = match model {
-            IlluminationModel::Lambert => {
-                let i = radiance.map(|x| x.clamp(0.0, 1.0));
-                i_max = std::array::from_fn(|j| i_max[j].max(i[j]));
-                lambert_rule_lit(c.map(|x| x * mat.r_d), i, s.form)
-            }
-            IlluminationModel::Sum => {
-                let t = transmitted_term(radiance, c, mat.transmission);
-                for i in 0..3 {
-                    total[i] += t[i];
+        let base = light_sample(light, p, n, v, mat.m);
+        // An area light drawn as k point sources is k samples, each with its own visibility.
+        for j in 0..area_point_count(light) {
+            let s = if light.drawn_as_points() { area_point_sample(&base, light, j, p, n) } else { base };
+            let (l, radiance) = (s.l, s.radiance);
+            let lit = match model {
+                IlluminationModel::Lambert => {
+                    let i = radiance.map(|x| x.clamp(0.0, 1.0));
+                    i_max = std::array::from_fn(|j| i_max[j].max(i[j]));
+                    lambert_rule_lit(c.map(|x| x * mat.r_d), i, s.form)
                 }
-                sum_contribution(radiance, s.form, n.dot(v), c, mat.r_d, mat.r_s)
+                IlluminationModel::Sum => {
+                    // The transmitted term is the light's, once (not per point source).
+                    let t = if j == 0 { transmitted_term(radiance, c, mat.transmission) } else { [0.0; 3] };
+                    for i in 0..3 {
+                        total[i] += t[i];
+                    }
+                    sum_contribution(radiance, s.form, n.dot(v), c, mat.r_d, mat.r_s)
+                }
+                IlluminationModel::Phong => light_contribution(&s, n, v, mat, v_index, specular),
+            };
+            if lit == [0.0; 3] {
+                continue;
             }
-            IlluminationModel::Phong => light_contribution(&s, n, v, mat, v_index, specular),
-        };
-        if lit == [0.0; 3] {
-            continue;
-        }
-        // A NaN visibility counts as none, like 0.
-        let w = visibility(k, light, l).clamp(0.0, 1.0);
-        if w.is_nan() || w == 0.0 {
-            continue;
-        }
-        for i in 0..3 {
-            total[i] += if w == 1.0 { lit[i] } else { lit[i] * w };
+            // A NaN visibility counts as none, like 0.
+            let w = visibility(k, light, j, l).clamp(0.0, 1.0);
+            if w.is_nan() || w == 0.0 {
+                continue;
+            }
+            for i in 0..3 {
+                total[i] += if w == 1.0 { lit[i] } else { lit[i] * w };
+            }
         }
     }
     if model == IlluminationModel::Lambert {

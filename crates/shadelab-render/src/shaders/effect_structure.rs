@@ -37,6 +37,10 @@ fn wgsl_blocks_are_the_declared_defines() {
 const INSIDE_SHADOWS: [Effect; 4] =
     [Effect::ShadowFilterHard, Effect::ShadowFilterPcf, Effect::ShadowFilterPoisson, Effect::ShadowCascades];
 
+/// The area lights' two ways (area_lights.wgsl, area_points.wgsl): reached only on the point
+/// lights' path, so their subsets are validated on a few bases rather than multiplying the rest.
+const AREA: [Effect; 2] = [Effect::AreaLights, Effect::AreaPoints];
+
 /// The effects of a surface's texture and vertex colours (surface.wgsl), independent of the rest.
 const SURFACE: [Effect; 7] = [
     Effect::NormalTexture,
@@ -60,14 +64,16 @@ fn union(a: EffectKey, b: EffectKey) -> EffectKey {
 }
 
 /// Every permutation validates in naga with every entry point: all 2^n subsets of the effects
-/// outside the shadow code (with the shadow sub-effects all on), and every subset of the shadow
-/// sub-effects on a few bases (their code is nested in the shadow block, so the full product
+/// outside the shadow, area and surface code (with the shadow sub-effects all on), and every
+/// subset of the shadow sub-effects, the area effects and the surface effects on a few bases (their code is nested in the shadow block, so the full product
 /// would only repeat these).
 #[test]
 fn every_permutation_validates_in_naga() {
     let raw = raw_lighting_source();
-    let outside: Vec<Effect> =
-        Effect::ALL.into_iter().filter(|e| !INSIDE_SHADOWS.contains(e) && !SURFACE.contains(e)).collect();
+    let outside: Vec<Effect> = Effect::ALL
+        .into_iter()
+        .filter(|e| !INSIDE_SHADOWS.contains(e) && !SURFACE.contains(e) && !AREA.contains(e))
+        .collect();
     let all_inside: EffectKey = INSIDE_SHADOWS.into_iter().collect();
     let mut keys: Vec<EffectKey> = subsets(&outside).into_iter().map(|k| union(k, all_inside)).collect();
     let bases: [EffectKey; 3] = [
@@ -78,6 +84,20 @@ fn every_permutation_validates_in_naga() {
     for base in bases {
         let base = INSIDE_SHADOWS.into_iter().fold(base, |k, e| k.without(e));
         keys.extend(subsets(&INSIDE_SHADOWS).into_iter().map(|k| union(k, base)));
+    }
+    // The area effects on every other effect, none, a shadowed point light, and the chapter's
+    // other models (each sample of the light loop goes through them).
+    let area_bases: [EffectKey; 4] = [
+        EffectKey::UBER,
+        EffectKey::NONE,
+        [Effect::PointLights, Effect::CastShadows, Effect::ShadowFilterPcf, Effect::ShadowFilterPcss]
+            .into_iter()
+            .collect(),
+        [Effect::PointLights, Effect::LambertRule, Effect::FourTermSum, Effect::TransmittedTerm].into_iter().collect(),
+    ];
+    for base in area_bases {
+        let base = AREA.into_iter().fold(base, |k, e| k.without(e));
+        keys.extend(subsets(&AREA).into_iter().map(|k| union(k, base)));
     }
     // The surface effects touch only surface.wgsl and Phong shading's interpolants: each of
     // their subsets with every other effect on, and with none.

@@ -52,7 +52,7 @@ fn uniform_layouts_match_wgsl() {
     let module = parse(&lighting_source());
     assert_eq!(
         wgsl_layout(&module, "Light"),
-        rust_layout!(LightUniform: position, direction, radiance, kind, falloff_form, falloff_alpha, d0, spot_axis, cos_inner, cos_outer, range, _pad, normal, tangent, half_x, half_y, _pad1, _pad2)
+        rust_layout!(LightUniform: position, direction, radiance, kind, falloff_form, falloff_alpha, d0, spot_axis, cos_inner, cos_outer, range, _pad, normal, tangent, half_x, half_y, area_points, _pad2)
     );
     assert_eq!(
         wgsl_layout(&module, "Globals"),
@@ -64,7 +64,7 @@ fn uniform_layouts_match_wgsl() {
     );
     assert_eq!(
         wgsl_layout(&module, "ShadowLight"),
-        rust_layout!(ShadowLightUniform: first_layer, layers, shadow_filter, perspective, texel_world, uv_scale, texel_uv, light_size, near, far, _pad0, _pad1)
+        rust_layout!(ShadowLightUniform: first_layer, layers, shadow_filter, perspective, texel_world, uv_scale, texel_uv, light_size, near, far, cubes, pcss_taps)
     );
     assert_eq!(wgsl_layout(&module, "Shadows"), rust_layout!(ShadowsUniform: matrices, lights));
 }

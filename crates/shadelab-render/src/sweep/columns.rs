@@ -7,6 +7,7 @@ use super::inputs::ShadowCase;
 use glam::DVec3;
 use shadelab_model::guards::{D0_MIN, M_MIN, N_DOT_V_MIN};
 use shadelab_model::lighting::area::{self, AreaLight, AreaShape};
+use shadelab_model::lighting::area_points::area_point_sample;
 use shadelab_model::lighting::{brdf, common, lights, models};
 use shadelab_model::shadows;
 use shadelab_model::{FalloffForm, Light, LightKind, Material, PhongExponent, SpecularModel};
@@ -31,7 +32,7 @@ pub struct Column {
 const D_MAX: f64 = 1.0 / (4.0 * M_MIN * M_MIN);
 
 /// Every column in the order the kernel writes them (and the report lists them).
-pub const COLUMNS: [Column; 39] = [
+pub const COLUMNS: [Column; 40] = [
     col("diffuse_lambert", "DIFFUSE_LAMBERT", 1, 1.0, "N·L of unit vectors"),
     col("specular_phong", "SPECULAR_PHONG", 1, 1.0, "(V·R)^h with V·R clamped to [0, 1]"),
     col("d_beckmann", "D_BECKMANN", 1, D_MAX, "peak 1/(4 m²) at m = M_MIN"),
@@ -89,6 +90,13 @@ pub const COLUMNS: [Column; 39] = [
         3,
         f64::INFINITY,
         "finite: cos θ_l·d²/r² ≤ d²/LIGHT_DIST_MIN²",
+    ),
+    col(
+        "area_point_sample form, k = 1 + ⌊7m⌋ summed (rect, disk, sphere)",
+        "AREA_POINTS_FORM",
+        3,
+        f64::INFINITY,
+        "finite: Σ gain·d²/max(r², LIGHT_DIST_MIN²)",
     ),
     col("penumbra_width", "PENUMBRA_WIDTH", 1, f64::INFINITY, "finite: w·d_r/BLOCKER_DIST_MIN"),
     col("pcss_search_radius", "PCSS_SEARCH_RADIUS", 1, f64::INFINITY, "finite: ½w/BLOCKER_DIST_MIN"),
@@ -213,6 +221,7 @@ const EMITTED: usize = offset("EMITTED");
 const NORMAL_MAPPED: usize = offset("NORMAL_MAPPED");
 const AREA_FORM: usize = offset("AREA_FORM");
 const AREA_SPEC_SCALE: usize = offset("AREA_SPEC_SCALE");
+const AREA_POINTS_FORM: usize = offset("AREA_POINTS_FORM");
 const PENUMBRA_WIDTH: usize = offset("PENUMBRA_WIDTH");
 const PCSS_SEARCH_RADIUS: usize = offset("PCSS_SEARCH_RADIUS");
 const SHADOW_LINEAR_DEPTH: usize = offset("SHADOW_LINEAR_DEPTH");
@@ -350,6 +359,13 @@ pub(super) fn reference(
         let rounding = area::area_form_rounding(&a, DVec3::ZERO, n) * (l_len - 1.0) * AREA_TERM_ROUNDING;
         out[AREA_FORM + k] = area::area_form(&a, DVec3::ZERO, n) + rounding;
         out[AREA_SPEC_SCALE + k] = area::area_specular_point(&a, DVec3::ZERO, n, v, m).1;
+        // The same light as k = 1 + ⌊7m⌋ point sources: their forms summed.
+        let kind = [LightKind::Rect, LightKind::Disk, LightKind::Sphere][k];
+        let mut light = Light::area(kind, a.center, normal, [alpha; 2], [1.0; 3], 1.0, 0.0);
+        (light.tangent, light.area_points) = (tangent, 1 + (m * 7.0) as u32);
+        let base = lights::LightSample { l, radiance: [1.0; 3], form: 0.0, spec_scale: 1.0 };
+        out[AREA_POINTS_FORM + k] =
+            (0..light.area_points).map(|j| area_point_sample(&base, &light, j, DVec3::ZERO, n).form).sum();
     }
     // PCSS with a light α wide, the receiver at d and the blocker at d0 (d = d0 among them: a
     // receiver touching its blocker); m as a stored depth between near d0 and far d0 + d.

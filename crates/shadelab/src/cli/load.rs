@@ -76,9 +76,11 @@ pub fn overrides(a: &SceneArgs) -> Overrides {
         d0: a.d0,
         light: a.light,
         light_size: a.light_size,
+        area_points: a.area_points,
         shadows: a.shadows,
         shadow_resolution: a.shadow_resolution,
         shadow_filter: a.shadow_filter,
+        pcss_taps: a.pcss_taps,
         shadow_cascades: a.shadow_cascades,
         // `--model` is a mode flag (ModeArgs::settle).
         illumination: None,

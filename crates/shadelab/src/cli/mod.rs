@@ -14,7 +14,7 @@ use clap::{Args, Parser, Subcommand};
 use shadelab_model::gltf_io::{LoadedScene, SceneSettings};
 use shadelab_model::params::{self, PhongExponent};
 use shadelab_model::scene::BUILTIN_SCENES;
-use shadelab_model::shadows::{SHADOW_RESOLUTION, ShadowFilter};
+use shadelab_model::shadows::{PCSS_TAPS, SHADOW_RESOLUTION, ShadowFilter};
 use shadelab_model::{
     FalloffForm, IlluminationModel, Interpolation, LightKind, ModelChoice, Overrides, ShadingMode, SpecularModel,
 };
@@ -256,6 +256,9 @@ pub struct SceneArgs {
     #[arg(long, value_name = "METRES", value_parser = values::real(params::LIGHT_SIZE),
           help = within("Width of every area light: a rect's side, a disk's or sphere's diameter", params::LIGHT_SIZE))]
     pub light_size: Option<f64>,
+    #[arg(long, value_name = "K", value_parser = values::count(params::AREA_POINTS),
+          help = within("Draw every area light as the chapter's K point sources, each with its own hard shadow (0: the exact area form)", params::AREA_POINTS))]
+    pub area_points: Option<u32>,
     /// Cast shadows from every light (on) or from none (off) [default: each light's own setting,
     /// on unless a scene file says otherwise].
     #[arg(long, value_name = "ON|OFF", value_parser = values::on_off())]
@@ -267,10 +270,22 @@ pub struct SceneArgs {
     /// comparison) or poisson (rotated Poisson-disk taps).
     #[arg(long, value_name = "FILTER", value_parser = values::named::<ShadowFilter>())]
     pub shadow_filter: Option<ShadowFilter>,
+    #[arg(long, value_name = "N", value_parser = values::count(PCSS_TAPS),
+          help = within("Taps of each of PCSS's two passes (blocker search, filter) of every light", PCSS_TAPS))]
+    pub pcss_taps: Option<u32>,
     /// Let every directional light split its shadow map into cascades when the view spans a
     /// depth ratio over 8 (on), or keep one map fitted to the scene (off) [default: on].
     #[arg(long, value_name = "ON|OFF", value_parser = values::on_off())]
     pub shadow_cascades: Option<bool>,
+}
+
+/// `render --small-area-lights`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum SmallAreaLights {
+    /// Drawn as a point light (the reason is printed).
+    Point,
+    /// Drawn with their area.
+    Area,
 }
 
 #[derive(Args, Debug)]
@@ -295,6 +310,10 @@ pub struct RenderArgs {
     /// Print the effects the scene calls for (the shader holds only those), each with its reason.
     #[arg(long)]
     pub explain: bool,
+    /// How to draw an area light whose penumbra and highlight would be under a pixel wide from
+    /// the camera: as a point light, printing why (point), or with its area all the same (area).
+    #[arg(long, value_name = "AS", value_enum, default_value_t = SmallAreaLights::Point)]
+    pub small_area_lights: SmallAreaLights,
     /// Draw one term of the model alone: all (the default), ambient (I_amb·r_a·C), diffuse
     /// (Σ I_L·r_d·C·(N·L), cast shadows included) or specular (Σ I_L·r_s·S), which add up to the
     /// whole image; or shadow, the cast-shadow factor as grey.

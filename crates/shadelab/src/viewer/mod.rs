@@ -104,6 +104,8 @@ pub struct Viewer {
     /// The scene pass's timestamps, read back without waiting (`TimestampRing`).
     ring: shadelab_render::timestamp_ring::TimestampRing,
     frame_ms: Option<f64>,
+    /// The last frame's area lights drawn as point lights, with the reason (the panel shows them).
+    small_area_lights: Vec<String>,
     continuous: bool,
     selected_material: usize,
     mu_linked: bool,
@@ -175,6 +177,7 @@ impl Viewer {
             egui_renderer: rs.renderer.clone(),
             view: None,
             frame_ms: None,
+            small_area_lights: Vec::new(),
             continuous: exit_after.is_some(),
             mu_linked: true,
             script: Script::new(screenshot_path, exit_after),

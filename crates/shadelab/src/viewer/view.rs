@@ -67,8 +67,10 @@ impl Viewer {
         self.ensure_view(w, h);
         let view = self.view.as_ref().expect("view just made");
         // One term alone: the other terms' coefficients at 0 for this frame (and the reference).
-        let whole = (self.scene.ambient, self.scene.materials.clone());
+        let whole = (self.scene.ambient, self.scene.materials.clone(), self.scene.lights.clone());
         self.term.apply(&mut self.scene);
+        // An area light too small on screen to show its area: a point light this frame, and why.
+        self.small_area_lights = shadelab_model::effects::draw_small_area_lights_as_points(&mut self.scene, h);
         self.renderer.write_uniforms(&self.gpu_scene, &self.scene, &view.target, &self.settings);
         let program = Program::for_scene(&self.scene, &self.settings);
         // With timestamps the frame is timed in the ring and never waited for (the panel shows
@@ -102,7 +104,7 @@ impl Viewer {
             shown =
                 self.difference.update(&ctx, &mut self.renderer, &self.gpu_scene, &self.scene, &self.settings, (w, h));
         }
-        (self.scene.ambient, self.scene.materials) = whole;
+        (self.scene.ambient, self.scene.materials, self.scene.lights) = whole;
         let painter = ui.painter_at(rect);
         match shown {
             Some(t) => {

@@ -28,6 +28,9 @@ impl Viewer {
                 took.as_secs_f64() * 1e3
             ));
         }
+        for line in &self.small_area_lights {
+            ui.small(line);
+        }
         egui::CollapsingHeader::new("effects called for").default_open(false).show(ui, |ui| {
             ui.small(format!("pipeline [{}]", analysis.key.label()));
             ui.small(shading_meaning(self.settings.shading));

@@ -84,6 +84,13 @@ impl Viewer {
                         }
                         None => l.size[1] = l.size[0],
                     }
+                    // 0: the exact area form; k: the chapter's k point sources, to show what it
+                    // calls unnatural (k = 1) and how k hard shadows converge to the penumbra.
+                    ui.add(
+                        egui::Slider::new(&mut l.area_points, 0..=params::AREA_POINTS.max as u32)
+                            .text("points k (0 = exact)"),
+                    )
+                    .on_hover_text(tooltip(&params::AREA_POINTS));
                 }
                 ui.horizontal(|ui| {
                     let mut c = l.color.map(|v| v as f32);
@@ -171,6 +178,11 @@ fn shadow_ui(ui: &mut egui::Ui, light: usize, directional: bool, shadow: &mut Sh
                 })
                 .response
                 .on_hover_text(format!("shadow filter: {}", filter_meaning(shadow.filter)));
+            if shadow.filter == ShadowFilter::Pcss {
+                let taps = shadelab_model::shadows::PCSS_TAPS;
+                ui.add(egui::Slider::new(&mut shadow.pcss_taps, taps.min as u32..=taps.max as u32).text("taps"))
+                    .on_hover_text(format!("{}: {}, in [{}, {}]", taps.symbol, taps.meaning, taps.min, taps.max));
+            }
             if directional {
                 ui.checkbox(&mut shadow.cascades, "cascades").on_hover_text(
                     "split the map along the view's depth when the objects in view span a depth ratio over 8, \

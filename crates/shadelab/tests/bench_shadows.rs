@@ -68,3 +68,45 @@ fn quick_run_writes_every_row_with_finite_numbers() {
         resolutions[0]
     );
 }
+
+/// With an area light the study adds PCSS at other tap counts and the light as k point sources:
+/// each row is there with finite numbers, 16 point sources come nearer the exact image than one,
+/// and some rows are on the Pareto front.
+#[test]
+fn an_area_light_scene_measures_every_method() {
+    let dir = std::path::PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("bench-shadows-area");
+    let _ = std::fs::remove_dir_all(&dir);
+    let o = Command::new(env!("CARGO_BIN_EXE_shadelab"))
+        .args(["bench", "shadows", "--scene", "penumbra", "--quick", "--width", "160", "--height", "90"])
+        .args(["--frames", "1", "--warmup", "0", "--output"])
+        .arg(&dir)
+        .env("SHADELAB_ADAPTER", "lavapipe")
+        .output()
+        .expect("run shadelab");
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let text = std::fs::read_to_string(dir.join("shadows.csv")).unwrap();
+    let mut lines = text.lines();
+    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let col = |name: &str| header.iter().position(|h| *h == name).unwrap_or_else(|| panic!("no column {name}"));
+    let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
+    let rmse = |kind: &str, res: u32, field: &str, value: &str| -> f64 {
+        let r = rows
+            .iter()
+            .find(|r| r[col("config")] == kind && r[col("resolution")] == res.to_string() && r[col(field)] == value)
+            .unwrap_or_else(|| panic!("no row {kind} {res} {field}={value}:\n{text}"));
+        let v: f64 = r[col("rmse")].parse().unwrap();
+        assert!(v.is_finite() && r[col("median_ms")].parse::<f64>().unwrap().is_finite());
+        v
+    };
+    for res in shadelab::bench::shadows::QUICK_RESOLUTIONS {
+        for taps in shadelab::bench::shadows::PCSS_TAP_COUNTS {
+            rmse("pcss-taps", res, "pcss_taps", &taps.to_string());
+        }
+        let by_k: Vec<f64> = shadelab::bench::shadows::POINT_COUNTS
+            .iter()
+            .map(|k| rmse("points", res, "points", &k.to_string()))
+            .collect();
+        assert!(by_k.last() < by_k.first(), "at {res}: RMSE by k {by_k:?}");
+    }
+    assert!(rows.iter().any(|r| r[col("pareto")] == "true"), "{text}");
+}

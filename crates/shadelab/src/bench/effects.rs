@@ -1,10 +1,12 @@
 //! `shadelab bench effects`: what specialization saves. Each scene drawn by its specialized
-//! pipeline, by the uber pipeline and, per effect, by the specialized pipeline without it.
+//! pipeline, by the uber pipeline and, per effect, by the specialized pipeline without it; where
+//! an area light is too small on screen for its area to show (drawn as a point light, as
+//! `render` draws it), also with its area kept.
 
 use crate::{Failure, cli};
 use anyhow::Context;
-use shadelab_model::{ShadingMode, SpecularModel};
-use shadelab_render::timing::{FrameTimer, median, quantile_sorted};
+use shadelab_model::{Scene, ShadingMode, SpecularModel};
+use shadelab_render::timing::{FrameTimer, TimedDraw, median, quantile_sorted};
 use shadelab_render::{AdapterChoice, Gpu, RenderSettings, Renderer, Target};
 
 /// `shadelab bench effects`: specialized vs uber vs per-effect floors, per scene and shading.
@@ -17,10 +19,11 @@ pub fn run(args: &cli::BenchEffectsArgs) -> Result<(), Failure> {
         .iter()
         .map(|name| cli::scene(&cli::SceneArgs { scene: name.clone(), ..cli::SceneArgs::default() }))
         .collect::<Result<Vec<_>, _>>()?;
-    if let Some(m) = args.model {
-        for s in &mut scenes {
+    for s in &mut scenes {
+        if let Some(m) = args.model {
             s.apply(&shadelab_model::Overrides::for_model(m));
         }
+        s.apply(&shadelab_model::Overrides { light: args.light, light_size: args.light_size, ..Default::default() });
     }
     let gpu = Gpu::headless(AdapterChoice::from_env()).context("opening a GPU adapter")?;
     let mut r = Renderer::new(&gpu.device, &gpu.queue);
@@ -31,7 +34,13 @@ pub fn run(args: &cli::BenchEffectsArgs) -> Result<(), Failure> {
     println!("| scene | shading | pipeline | effects | median ms | p10–p90 ms | × specialized |");
     println!("|---|---|---|---|---:|---|---:|");
     let specular = args.model.and_then(|m| m.split().1).unwrap_or(SpecularModel::CookTorrance);
-    for scene in &scenes {
+    for kept in &scenes {
+        // As `render` draws it: an area light too small to show its area is a point light.
+        let mut drawn = kept.clone();
+        for line in shadelab_model::effects::draw_small_area_lights_as_points(&mut drawn, height) {
+            println!("# {}: {line}", kept.name);
+        }
+        let scene = &drawn;
         let gs = r.upload(scene).map_err(|e| Failure::Usage(format!("{}: {e}", scene.name)))?;
         for shading in ShadingMode::ALL_MODES {
             let base = RenderSettings::new(shading, specular);
@@ -47,12 +56,25 @@ pub fn run(args: &cli::BenchEffectsArgs) -> Result<(), Failure> {
                     RenderSettings { specialization: Specialization::Fixed(key.without(e)), ..base },
                 ));
             }
-            let settings: Vec<(Program, RenderSettings)> =
-                programs.iter().map(|(_, s)| (Program::for_scene(scene, s), *s)).collect();
-            let mut samples = timer.interleaved(&mut r, &gs, scene, &target, &settings, frames, warmup);
+            // Each row with its scene: the drawn one, and the one keeping small lights' areas.
+            let mut rows: Vec<(&Scene, String, RenderSettings)> =
+                programs.into_iter().map(|(name, s)| (scene, name, s)).collect();
+            if drawn.lights != kept.lights {
+                rows.insert(1, (kept, "specialized, small area lights kept".into(), rows[0].2));
+            }
+            let draws: Vec<TimedDraw> = rows
+                .iter()
+                .map(|(sc, _, s)| TimedDraw {
+                    gpu_scene: &gs,
+                    scene: sc,
+                    program: Program::for_scene(sc, s),
+                    settings: *s,
+                })
+                .collect();
+            let mut samples = timer.interleaved_draws(&mut r, &target, &draws, frames, warmup);
             let specialized = median(&mut samples[0]);
-            for (i, (name, s)) in programs.iter().enumerate() {
-                let effects = Program::for_scene(scene, s).effects();
+            for (i, (sc, name, s)) in rows.iter().enumerate() {
+                let effects = Program::for_scene(sc, s).effects();
                 let m = median(&mut samples[i]);
                 println!(
                     "| {} | {} | {} | {} | {:.3} | {:.3}–{:.3} | {:.3} |",

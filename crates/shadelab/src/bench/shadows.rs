@@ -1,13 +1,16 @@
-//! `shadelab bench shadows`: what shadow accuracy costs (docs/model.md §6). One scene with every
-//! light's shadow map at each resolution × filter, beside the same frame without shadows and the
-//! null-shader baseline, all interleaved frame by frame; each against the f64 reference's exact
-//! shadows (image RMSE and the share of pixels whose lit/shadowed state disagrees). Writes a CSV,
-//! a Markdown table and a plot of error share against time.
+//! `shadelab bench shadows`: what shadow accuracy costs (docs/model.md §6, docs/area-lights.md).
+//! One scene with every light's shadow map at each resolution × filter, beside the same frame
+//! without shadows and the null-shader baseline, all interleaved frame by frame; each against the
+//! f64 reference's exact shadows (image RMSE and the share of pixels whose lit/shadowed state
+//! disagrees). A scene with area lights adds their other methods: PCSS at 8 and 32 taps, the
+//! light as k = 1, 4, 16 point sources with a hard shadow each, and as the point light. Writes a
+//! CSV, a Markdown table with the Pareto front of (time, RMSE), and a plot of both.
+
+mod plot;
+pub use plot::plot;
 
 use crate::{Failure, cli};
 use anyhow::Context;
-use plotters::coord::combinators::BindKeyPoints;
-use plotters::prelude::*;
 use shadelab_model::Scene;
 use shadelab_model::reference::render_reference;
 use shadelab_model::shadows::ShadowFilter;
@@ -24,6 +27,11 @@ pub const QUICK_RESOLUTIONS: [u32; 3] = [256, 1024, 4096];
 /// Every filter, in the order of the table.
 pub const FILTERS: [ShadowFilter; 4] =
     [ShadowFilter::Hard, ShadowFilter::Pcf, ShadowFilter::Poisson, ShadowFilter::Pcss];
+/// PCSS's other tap counts measured for a scene with area lights (the filter's rows take the
+/// default `SHADOW_PCSS_TAPS`, 16).
+pub const PCSS_TAP_COUNTS: [u32; 2] = [8, 32];
+/// The k of the k-point-source rows (a scene with area lights).
+pub const POINT_COUNTS: [u32; 3] = [1, 4, 16];
 
 /// What one row measures.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -36,6 +44,11 @@ pub enum Config {
     /// Every area light drawn as its centre's point light with PCF (the chapter's one point
     /// source); measured only for a scene with area lights.
     PointLights { resolution: u32 },
+    /// PCSS with `taps` taps per pass (a scene with area lights).
+    PcssTaps { resolution: u32, taps: u32 },
+    /// Every area light as `k` point sources, each with a PCF hard shadow from its own cube (a
+    /// scene with area lights).
+    Points { resolution: u32, k: u32 },
     /// The same frame with no light casting (no shadow pass).
     Off,
     /// `Program::NullBaseline`: the same geometry, a constant colour.
@@ -48,6 +61,10 @@ impl Config {
             Config::Shadows { resolution, filter } => format!("{resolution} {}", filter_name(filter)),
             Config::OneMap { resolution } => format!("{resolution} pcf, one map (no cascades)"),
             Config::PointLights { resolution } => format!("{resolution} pcf, area lights as point lights"),
+            Config::PcssTaps { resolution, taps } => format!("{resolution} pcss, {taps} taps"),
+            Config::Points { resolution, k } => {
+                format!("{resolution} pcf, area lights as {k} point source{}", if k == 1 { "" } else { "s" })
+            }
             Config::Off => "shadows off".into(),
             Config::Baseline => "null-shader baseline".into(),
         }
@@ -78,6 +95,9 @@ pub struct Row {
     pub rmse: Option<f64>,
     /// Share of pixels whose lit/shadowed state disagrees with the reference; `None` for the baseline.
     pub share_disagreeing: Option<f64>,
+    /// On the Pareto front of (median time, RMSE): no other row is as fast and as accurate and
+    /// better in one of them.
+    pub pareto: bool,
 }
 
 /// Everything a run produced.
@@ -122,6 +142,34 @@ fn as_point_lights(scene: &Scene, resolution: u32) -> Scene {
     s
 }
 
+/// The scene with every area light as `k` point sources, casting at `resolution` with PCF.
+fn as_points(scene: &Scene, resolution: u32, k: u32) -> Scene {
+    let mut s = with_shadows(scene, resolution, ShadowFilter::Pcf);
+    for l in s.lights.iter_mut().filter(|l| l.kind.is_area()) {
+        l.area_points = k;
+    }
+    s
+}
+
+/// The scene with every light casting at `resolution` with PCSS of `taps` taps per pass.
+fn with_pcss_taps(scene: &Scene, resolution: u32, taps: u32) -> Scene {
+    let mut s = with_shadows(scene, resolution, ShadowFilter::Pcss);
+    for l in &mut s.lights {
+        l.shadow.pcss_taps = taps;
+    }
+    s
+}
+
+/// Mark the rows with an error that no other row beats in both median time and RMSE.
+pub fn mark_pareto(rows: &mut [Row]) {
+    let scored: Vec<(usize, f64, f64)> =
+        rows.iter().enumerate().filter_map(|(i, r)| Some((i, r.median_ms, r.rmse?))).collect();
+    for &(i, t, e) in &scored {
+        let beaten = scored.iter().any(|&(j, u, f)| j != i && u <= t && f <= e && (u < t || f < e));
+        rows[i].pareto = !beaten;
+    }
+}
+
 /// Whether the scene's view gives its directional lights cascades (then the one-map rows are
 /// measured beside them).
 fn has_cascades(scene: &Scene) -> bool {
@@ -154,6 +202,7 @@ pub fn run_plan(
         vec![(Config::Baseline, 0, off_scene.clone()), (Config::Off, 0, off_scene.clone())];
     for &resolution in resolutions {
         uploads.push(upload(&mut r, &with_shadows(scene, resolution, ShadowFilter::Pcf))?);
+        let filters_upload = uploads.len() - 1;
         for filter in FILTERS {
             configs.push((
                 Config::Shadows { resolution, filter },
@@ -169,6 +218,16 @@ pub fn run_plan(
             let points = as_point_lights(scene, resolution);
             uploads.push(upload(&mut r, &points)?);
             configs.push((Config::PointLights { resolution }, uploads.len() - 1, points));
+            // Tap counts are a uniform: they share the filters' upload (the same maps).
+            for taps in PCSS_TAP_COUNTS {
+                let s = with_pcss_taps(scene, resolution, taps);
+                configs.push((Config::PcssTaps { resolution, taps }, filters_upload, s));
+            }
+            for k in POINT_COUNTS {
+                let points = as_points(scene, resolution, k);
+                uploads.push(upload(&mut r, &points)?);
+                configs.push((Config::Points { resolution, k }, uploads.len() - 1, points));
+            }
         }
     }
     let program = |c: Config, s: &Scene| match c {
@@ -199,7 +258,11 @@ pub fn run_plan(
     for (i, (c, g, _)) in configs.iter().enumerate() {
         let m = median(&mut samples[i]);
         let side = match c {
-            Config::Shadows { .. } | Config::OneMap { .. } | Config::PointLights { .. } => {
+            Config::Shadows { .. }
+            | Config::OneMap { .. }
+            | Config::PointLights { .. }
+            | Config::PcssTaps { .. }
+            | Config::Points { .. } => {
                 r.shadow_plan(&uploads[*g]).and_then(|p| p.lights.iter().flatten().map(|l| l.resolution).max())
             }
             _ => None,
@@ -221,8 +284,10 @@ pub fn run_plan(
             ratio_to_off: m / off_ms,
             rmse,
             share_disagreeing: share,
+            pareto: false,
         });
     }
+    mark_pareto(&mut rows);
     // Shadow rows first (resolution, then filter), then shadows off, then the baseline.
     rows.rotate_left(2);
     let n = rows.len();
@@ -241,7 +306,7 @@ pub fn run_plan(
 }
 
 /// The CSV header; one line per row follows (empty fields where a row has no value).
-pub const CSV_HEADER: &str = "config,resolution,map_side,filter,frames,median_ms,p10_ms,p90_ms,ratio_to_baseline,ratio_to_off,rmse,share_disagreeing";
+pub const CSV_HEADER: &str = "config,resolution,map_side,filter,frames,median_ms,p10_ms,p90_ms,ratio_to_baseline,ratio_to_off,rmse,share_disagreeing,pcss_taps,points,pareto";
 
 pub fn csv(report: &Report) -> String {
     let mut s = String::from(CSV_HEADER);
@@ -251,13 +316,23 @@ pub fn csv(report: &Report) -> String {
             Config::Shadows { resolution, filter } => ("shadows", resolution.to_string(), filter_name(filter)),
             Config::OneMap { resolution } => ("one-map", resolution.to_string(), "pcf"),
             Config::PointLights { resolution } => ("point-lights", resolution.to_string(), "pcf"),
+            Config::PcssTaps { resolution, .. } => ("pcss-taps", resolution.to_string(), "pcss"),
+            Config::Points { resolution, .. } => ("points", resolution.to_string(), "pcf"),
             Config::Off => ("off", String::new(), ""),
             Config::Baseline => ("baseline", String::new(), ""),
+        };
+        let (taps, points) = match r.config {
+            Config::Shadows { filter: ShadowFilter::Pcss, .. } => {
+                (shadelab_model::shadows::SHADOW_PCSS_TAPS.to_string(), String::new())
+            }
+            Config::PcssTaps { taps, .. } => (taps.to_string(), String::new()),
+            Config::Points { k, .. } => (String::new(), k.to_string()),
+            _ => (String::new(), String::new()),
         };
         let opt = |v: Option<f64>| v.map_or(String::new(), |x| format!("{x:.6e}"));
         let _ = writeln!(
             s,
-            "{kind},{res},{},{filter},{},{:.4},{:.4},{:.4},{:.4},{:.4},{},{}",
+            "{kind},{res},{},{filter},{},{:.4},{:.4},{:.4},{:.4},{:.4},{},{},{taps},{points},{}",
             r.side.map_or(String::new(), |v| v.to_string()),
             report.frames,
             r.median_ms,
@@ -266,7 +341,8 @@ pub fn csv(report: &Report) -> String {
             r.ratio_to_baseline,
             r.ratio_to_off,
             opt(r.rmse),
-            opt(r.share_disagreeing)
+            opt(r.share_disagreeing),
+            r.pareto
         );
     }
     s
@@ -290,14 +366,14 @@ pub fn markdown(report: &Report) -> String {
     );
     let _ = writeln!(
         s,
-        "Map side: what the GPU used (every layer fits in `SHADOW_MAP_BUDGET_BYTES`, so a request may be halved). ×base: over the null-shader baseline; ×off: over the same frame without shadows. Disagree: share of pixels lit on one side and in a cast shadow on the other.\n"
+        "Map side: what the GPU used (every layer fits in `SHADOW_MAP_BUDGET_BYTES`, so a request may be halved). ×base: over the null-shader baseline; ×off: over the same frame without shadows. Disagree: share of pixels lit on one side and in a cast shadow on the other. Pareto: no other row is both as fast and as accurate (RMSE).\n"
     );
-    let _ = writeln!(s, "| shadows | map side | median ms | p10–p90 ms | ×base | ×off | RMSE | disagree |");
-    let _ = writeln!(s, "|---|---:|---:|---|---:|---:|---:|---:|");
+    let _ = writeln!(s, "| shadows | map side | median ms | p10–p90 ms | ×base | ×off | RMSE | disagree | Pareto |");
+    let _ = writeln!(s, "|---|---:|---:|---|---:|---:|---:|---:|:---:|");
     for r in &report.rows {
         let _ = writeln!(
             s,
-            "| {} | {} | {:.3} | {:.3}–{:.3} | {:.2} | {:.2} | {} | {} |",
+            "| {} | {} | {:.3} | {:.3}–{:.3} | {:.2} | {:.2} | {} | {} | {} |",
             r.config.name(),
             r.side.map_or(String::new(), |v| v.to_string()),
             r.median_ms,
@@ -307,176 +383,10 @@ pub fn markdown(report: &Report) -> String {
             r.ratio_to_off,
             r.rmse.map_or(String::new(), |v| format!("{v:.3e}")),
             r.share_disagreeing.map_or(String::new(), |v| format!("{:.3} %", v * 100.0)),
+            if r.pareto { "●" } else { "" },
         );
     }
     s
-}
-
-/// Text is drawn with egui's bundled font, so the plot needs no system fonts (as `plots.rs`).
-fn register_font() {
-    static ONCE: std::sync::Once = std::sync::Once::new();
-    ONCE.call_once(|| {
-        plotters::style::register_font("sans-serif", FontStyle::Normal, epaint_default_fonts::UBUNTU_LIGHT)
-            .unwrap_or_else(|_| panic!("egui's bundled font is a valid TrueType font"));
-    });
-}
-
-fn plot_err(e: impl std::fmt::Display) -> anyhow::Error {
-    anyhow::anyhow!("drawing the plot: {e}")
-}
-
-/// Axis labels at 1, 2, 5 × 10^k in `lo..hi` (a log axis otherwise labels every step or only
-/// powers of ten).
-fn nice_points(lo: f64, hi: f64) -> Vec<f64> {
-    let mut out = Vec::new();
-    let mut decade = 10f64.powf(lo.log10().floor());
-    while decade <= hi {
-        out.extend([1.0, 2.0, 5.0].map(|m| m * decade).into_iter().filter(|v| (lo..hi).contains(v)));
-        decade *= 10.0;
-    }
-    out
-}
-
-fn filter_color(f: ShadowFilter) -> RGBColor {
-    match f {
-        ShadowFilter::Hard => RGBColor(200, 30, 30),
-        ShadowFilter::Pcf => RGBColor(35, 90, 180),
-        ShadowFilter::Poisson => RGBColor(30, 140, 50),
-        ShadowFilter::Pcss => RGBColor(150, 60, 170),
-    }
-}
-
-/// Disagreeing share against median GPU time (log x), a line per filter through its
-/// resolutions (each point labelled with its map side), the shadows-off and baseline times as
-/// vertical lines.
-pub fn plot(report: &Report, path: &Path) -> anyhow::Result<()> {
-    register_font();
-    let size = (1200u32, 800u32);
-    let mut buf = vec![0u8; (size.0 * size.1 * 3) as usize];
-    let time_of = |c: Config| report.rows.iter().find(|r| r.config == c).map_or(f64::NAN, |r| r.median_ms);
-    let (off_ms, base_ms) = (time_of(Config::Off), time_of(Config::Baseline));
-    let off_share = report
-        .rows
-        .iter()
-        .find(|r| r.config == Config::Off)
-        .and_then(|r| r.share_disagreeing)
-        .map_or(String::new(), |v| format!(", {:.2} % disagree", v * 100.0));
-    {
-        let root = BitMapBackend::with_buffer(&mut buf, size).into_drawing_area();
-        root.fill(&WHITE).map_err(plot_err)?;
-        let times = report.rows.iter().map(|r| r.median_ms).filter(|v| v.is_finite() && *v > 0.0);
-        let (lo, hi) = times.fold((f64::INFINITY, 0.0f64), |(a, b), v| (a.min(v), b.max(v)));
-        let (lo, hi) = if lo.is_finite() && hi > lo { (lo / 1.3, hi * 1.3) } else { (1e-3, 1.0) };
-        // The shadow rows set the height: shadows off disagrees wherever the reference is shadowed.
-        let ymax = report
-            .rows
-            .iter()
-            .filter(|r| matches!(r.config, Config::Shadows { .. } | Config::OneMap { .. }))
-            .filter_map(|r| r.share_disagreeing)
-            .fold(0.0, f64::max)
-            * 100.0
-            * 1.15
-            + 1e-3;
-        let mut chart = ChartBuilder::on(&root)
-            .caption(
-                format!(
-                    "Shadow error vs time, '{}' {}×{}: {} ({})",
-                    report.scene,
-                    report.size.0,
-                    report.size.1,
-                    report.device,
-                    report.time_source.label()
-                ),
-                ("sans-serif", 18),
-            )
-            .margin(14)
-            .x_label_area_size(45)
-            .y_label_area_size(70)
-            .build_cartesian_2d((lo..hi).log_scale().with_key_points(nice_points(lo, hi)), 0.0..ymax)
-            .map_err(plot_err)?;
-        chart
-            .configure_mesh()
-            .x_desc("median GPU ms per frame (log)")
-            .y_desc("pixels with lit/shadowed state disagreeing with the reference, %")
-            .x_label_formatter(&|v| format!("{v}"))
-            .draw()
-            .map_err(plot_err)?;
-        for (ms, name, color) in
-            [(off_ms, "shadows off", RGBColor(110, 110, 110)), (base_ms, "null-shader baseline", BLACK)]
-        {
-            if ms.is_finite() && ms > 0.0 {
-                chart
-                    .draw_series(LineSeries::new([(ms, 0.0), (ms, ymax)], color.stroke_width(1)))
-                    .map_err(plot_err)?
-                    .label(format!(
-                        "{name} ({ms:.3} ms{})",
-                        if name == "shadows off" { off_share.clone() } else { String::new() }
-                    ))
-                    .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], color.stroke_width(2)));
-            }
-        }
-        let one_map_pts: Vec<(f64, f64)> = report
-            .rows
-            .iter()
-            .filter(|r| matches!(r.config, Config::OneMap { .. }))
-            .filter_map(|r| Some((r.median_ms, r.share_disagreeing? * 100.0)))
-            .collect();
-        if !one_map_pts.is_empty() {
-            let color = RGBColor(150, 150, 150);
-            chart
-                .draw_series(LineSeries::new(one_map_pts.iter().copied(), color.stroke_width(2)))
-                .map_err(plot_err)?
-                .label("pcf, one map (no cascades)")
-                .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], color.stroke_width(3)));
-            chart.draw_series(one_map_pts.iter().map(|p| Circle::new(*p, 4, color.filled()))).map_err(plot_err)?;
-        }
-        for filter in FILTERS {
-            let color = filter_color(filter);
-            // Hard and PCF often coincide: PCF's labels go below its points.
-            let label_offset = if filter == ShadowFilter::Pcf { (6, 6) } else { (6, -16) };
-            let pts: Vec<(f64, f64, String, bool)> = report
-                .rows
-                .iter()
-                .filter_map(|r| match r.config {
-                    Config::Shadows { resolution, filter: f } if f == filter => {
-                        let side = r.side.unwrap_or(resolution);
-                        let label =
-                            if side == resolution { format!("{side}") } else { format!("{resolution} (used {side})") };
-                        Some((r.median_ms, r.share_disagreeing? * 100.0, label, side != resolution))
-                    }
-                    _ => None,
-                })
-                .collect();
-            chart
-                .draw_series(LineSeries::new(pts.iter().map(|p| (p.0, p.1)), color.stroke_width(2)))
-                .map_err(plot_err)?
-                .label(filter_name(filter))
-                .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], color.stroke_width(3)));
-            chart
-                .draw_series(pts.iter().map(|p| {
-                    EmptyElement::at((p.0, p.1))
-                        + Circle::new((0, 0), 4, color.filled())
-                        + Text::new(
-                            p.2.clone(),
-                            // A halved map lands on the smaller side's point: its label one line lower.
-                            (label_offset.0, label_offset.1 + if p.3 { 14 } else { 0 }),
-                            ("sans-serif", 13).into_font().color(&color),
-                        )
-                }))
-                .map_err(plot_err)?;
-        }
-        chart
-            .configure_series_labels()
-            .position(SeriesLabelPosition::UpperLeft)
-            .background_style(WHITE.mix(0.85))
-            .border_style(BLACK)
-            .label_font(("sans-serif", 14))
-            .draw()
-            .map_err(plot_err)?;
-        root.present().map_err(plot_err)?;
-    }
-    image::RgbImage::from_raw(size.0, size.1, buf).ok_or_else(|| anyhow::anyhow!("plot buffer size"))?.save(path)?;
-    Ok(())
 }
 
 /// Files a run writes into its output folder.
@@ -502,7 +412,7 @@ pub fn run(args: &cli::BenchShadowsArgs) -> Result<(), Failure> {
         .map_err(|e| Failure::Usage(format!("--output: cannot create folder '{}': {e}", args.output.display())))?;
     let gpu = Gpu::headless(shadelab_render::AdapterChoice::from_env()).context("opening a GPU adapter")?;
     let command = std::iter::once("shadelab".to_string()).chain(std::env::args().skip(1)).collect::<Vec<_>>().join(" ");
-    eprintln!("# shadelab bench shadows — {} rows on {}", resolutions.len() * FILTERS.len() + 2, gpu.describe());
+    eprintln!("# shadelab bench shadows — scene '{}' on {}", scene.name, gpu.describe());
     let report = run_plan(&gpu, &scene, resolutions, args.size.pixels(), frames, warmup, &command)?;
     let paths = write_outputs(&report, &args.output)?;
     print!("{}", markdown(&report));

@@ -190,6 +190,12 @@ pub struct BenchEffectsArgs {
     /// [default: each scene's, with Cook–Torrance specular].
     #[arg(long, value_parser = values::named::<ModelChoice>())]
     pub model: Option<ModelChoice>,
+    /// Make every light of every scene this kind (directional, point, spot, rect, disk, sphere).
+    #[arg(long, value_name = "KIND", value_parser = values::named::<LightKind>())]
+    pub light: Option<LightKind>,
+    #[arg(long, value_name = "METRES", value_parser = values::real(params::LIGHT_SIZE),
+          help = within("Width of every area light", params::LIGHT_SIZE))]
+    pub light_size: Option<f64>,
     #[command(flatten)]
     pub size: SizeArgs,
     #[arg(long, default_value = "50", value_parser = values::count(FRAMES),

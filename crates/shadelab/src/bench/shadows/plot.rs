@@ -1,0 +1,210 @@
+//! The plot of `bench shadows`: RMSE against median GPU time, both logarithmic, one line per
+//! method through its map resolutions (each point labelled with its map side), the Pareto front
+//! dashed through the rows no other row beats, the shadows-off and baseline times as vertical
+//! lines.
+
+use super::{Config, FILTERS, Report, Row, filter_name};
+use plotters::coord::combinators::BindKeyPoints;
+use plotters::prelude::*;
+use shadelab_model::shadows::ShadowFilter;
+use std::path::Path;
+
+/// Text is drawn with egui's bundled font, so the plot needs no system fonts (as `plots.rs`).
+fn register_font() {
+    static ONCE: std::sync::Once = std::sync::Once::new();
+    ONCE.call_once(|| {
+        plotters::style::register_font("sans-serif", FontStyle::Normal, epaint_default_fonts::UBUNTU_LIGHT)
+            .unwrap_or_else(|_| panic!("egui's bundled font is a valid TrueType font"));
+    });
+}
+
+fn plot_err(e: impl std::fmt::Display) -> anyhow::Error {
+    anyhow::anyhow!("drawing the plot: {e}")
+}
+
+/// Axis labels at 1, 2, 5 × 10^k in `lo..hi` (a log axis otherwise labels every step or only
+/// powers of ten).
+fn nice_points(lo: f64, hi: f64) -> Vec<f64> {
+    let mut out = Vec::new();
+    let mut decade = 10f64.powf(lo.log10().floor());
+    while decade <= hi {
+        out.extend([1.0, 2.0, 5.0].map(|m| m * decade).into_iter().filter(|v| (lo..hi).contains(v)));
+        decade *= 10.0;
+    }
+    out
+}
+
+/// One line of the plot: a method, its colour, and whether a row belongs to it.
+struct Method {
+    name: String,
+    color: RGBColor,
+    of: Box<dyn Fn(Config) -> Option<u32>>,
+}
+
+/// The methods in the order of the legend; `of` gives the row's requested resolution.
+fn methods() -> Vec<Method> {
+    let filter_color = |f: ShadowFilter| match f {
+        ShadowFilter::Hard => RGBColor(200, 30, 30),
+        ShadowFilter::Pcf => RGBColor(35, 90, 180),
+        ShadowFilter::Poisson => RGBColor(30, 140, 50),
+        ShadowFilter::Pcss => RGBColor(150, 60, 170),
+    };
+    let mut v: Vec<Method> = FILTERS
+        .into_iter()
+        .map(|f| Method {
+            name: if f == ShadowFilter::Pcss { "pcss, 16 taps".into() } else { filter_name(f).into() },
+            color: filter_color(f),
+            of: Box::new(move |c| match c {
+                Config::Shadows { resolution, filter } if filter == f => Some(resolution),
+                _ => None,
+            }),
+        })
+        .collect();
+    v.push(Method {
+        name: "pcf, one map (no cascades)".into(),
+        color: RGBColor(150, 150, 150),
+        of: Box::new(|c| if let Config::OneMap { resolution } = c { Some(resolution) } else { None }),
+    });
+    for (taps, color) in super::PCSS_TAP_COUNTS.into_iter().zip([RGBColor(200, 140, 220), RGBColor(90, 20, 110)]) {
+        v.push(Method {
+            name: format!("pcss, {taps} taps"),
+            color,
+            of: Box::new(move |c| match c {
+                Config::PcssTaps { resolution, taps: t } if t == taps => Some(resolution),
+                _ => None,
+            }),
+        });
+    }
+    v.push(Method {
+        name: "area lights as point lights".into(),
+        color: RGBColor(120, 80, 30),
+        of: Box::new(|c| if let Config::PointLights { resolution } = c { Some(resolution) } else { None }),
+    });
+    let point_colors = [RGBColor(240, 150, 30), RGBColor(20, 170, 170), RGBColor(10, 90, 90)];
+    for (k, color) in super::POINT_COUNTS.into_iter().zip(point_colors) {
+        v.push(Method {
+            name: format!("{k} point source{}", if k == 1 { "" } else { "s" }),
+            color,
+            of: Box::new(move |c| match c {
+                Config::Points { resolution, k: n } if n == k => Some(resolution),
+                _ => None,
+            }),
+        });
+    }
+    v
+}
+
+fn log_range(values: impl Iterator<Item = f64>, pad: f64) -> (f64, f64) {
+    let (lo, hi) =
+        values.filter(|v| v.is_finite() && *v > 0.0).fold((f64::INFINITY, 0.0f64), |(a, b), v| (a.min(v), b.max(v)));
+    if lo.is_finite() && hi > lo { (lo / pad, hi * pad) } else { (1e-3, 1.0) }
+}
+
+/// RMSE against median GPU time, a line per method, the Pareto front dashed.
+pub fn plot(report: &Report, path: &Path) -> anyhow::Result<()> {
+    register_font();
+    let size = (1300u32, 850u32);
+    let mut buf = vec![0u8; (size.0 * size.1 * 3) as usize];
+    let time_of = |c: Config| report.rows.iter().find(|r| r.config == c).map_or(f64::NAN, |r| r.median_ms);
+    let (off_ms, base_ms) = (time_of(Config::Off), time_of(Config::Baseline));
+    let scored: Vec<&Row> = report.rows.iter().filter(|r| r.rmse.is_some()).collect();
+    {
+        let root = BitMapBackend::with_buffer(&mut buf, size).into_drawing_area();
+        root.fill(&WHITE).map_err(plot_err)?;
+        let (xlo, xhi) = log_range(report.rows.iter().map(|r| r.median_ms), 1.3);
+        let (ylo, yhi) = log_range(scored.iter().filter_map(|r| r.rmse), 1.5);
+        let mut chart = ChartBuilder::on(&root)
+            .caption(
+                format!(
+                    "Error vs time, '{}' {}×{}: {} ({})",
+                    report.scene,
+                    report.size.0,
+                    report.size.1,
+                    report.device,
+                    report.time_source.label()
+                ),
+                ("sans-serif", 18),
+            )
+            .margin(14)
+            .x_label_area_size(45)
+            .y_label_area_size(80)
+            .build_cartesian_2d(
+                (xlo..xhi).log_scale().with_key_points(nice_points(xlo, xhi)),
+                (ylo..yhi).log_scale().with_key_points(nice_points(ylo, yhi)),
+            )
+            .map_err(plot_err)?;
+        chart
+            .configure_mesh()
+            .x_desc("median GPU ms per frame (log)")
+            .y_desc("RMSE against the exact reference (linear RGB, log)")
+            .x_label_formatter(&|v| format!("{v}"))
+            .y_label_formatter(&|v| format!("{v:.0e}"))
+            .draw()
+            .map_err(plot_err)?;
+        for (ms, name, color) in
+            [(off_ms, "shadows off", RGBColor(110, 110, 110)), (base_ms, "null-shader baseline", BLACK)]
+        {
+            if ms.is_finite() && ms > 0.0 {
+                chart
+                    .draw_series(LineSeries::new([(ms, ylo), (ms, yhi)], color.stroke_width(1)))
+                    .map_err(plot_err)?
+                    .label(format!("{name} ({ms:.3} ms)"))
+                    .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], color.stroke_width(2)));
+            }
+        }
+        // The Pareto front: its rows in order of time, joined by a dashed step line.
+        let mut front: Vec<(f64, f64)> =
+            scored.iter().filter(|r| r.pareto).map(|r| (r.median_ms, r.rmse.unwrap_or(f64::NAN))).collect();
+        front.sort_by(|a, b| a.0.total_cmp(&b.0));
+        let steps: Vec<(f64, f64)> = front
+            .iter()
+            .enumerate()
+            .flat_map(|(i, p)| if i == 0 { vec![*p] } else { vec![(p.0, front[i - 1].1), *p] })
+            .collect();
+        chart
+            .draw_series(DashedLineSeries::new(steps, 6, 4, BLACK.stroke_width(2)))
+            .map_err(plot_err)?
+            .label("Pareto front (no row both faster and more accurate)")
+            .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], BLACK.stroke_width(2)));
+        for m in methods() {
+            let mut pts: Vec<(f64, f64, String)> = scored
+                .iter()
+                .filter_map(|r| {
+                    let resolution = (m.of)(r.config)?;
+                    let side = r.side.unwrap_or(resolution);
+                    let label =
+                        if side == resolution { format!("{side}") } else { format!("{resolution} (used {side})") };
+                    Some((r.median_ms, r.rmse?, label))
+                })
+                .collect();
+            if pts.is_empty() {
+                continue;
+            }
+            pts.sort_by(|a, b| a.0.total_cmp(&b.0));
+            let color = m.color;
+            chart
+                .draw_series(LineSeries::new(pts.iter().map(|p| (p.0, p.1)), color.stroke_width(2)))
+                .map_err(plot_err)?
+                .label(m.name)
+                .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], color.stroke_width(3)));
+            chart
+                .draw_series(pts.iter().map(|p| {
+                    EmptyElement::at((p.0, p.1))
+                        + Circle::new((0, 0), 4, color.filled())
+                        + Text::new(p.2.clone(), (6, -14), ("sans-serif", 12).into_font().color(&color))
+                }))
+                .map_err(plot_err)?;
+        }
+        chart
+            .configure_series_labels()
+            .position(SeriesLabelPosition::LowerLeft)
+            .background_style(WHITE.mix(0.85))
+            .border_style(BLACK)
+            .label_font(("sans-serif", 13))
+            .draw()
+            .map_err(plot_err)?;
+        root.present().map_err(plot_err)?;
+    }
+    image::RgbImage::from_raw(size.0, size.1, buf).ok_or_else(|| anyhow::anyhow!("plot buffer size"))?.save(path)?;
+    Ok(())
+}

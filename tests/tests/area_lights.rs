@@ -114,7 +114,8 @@ fn top_view(plate_h: f64) -> Scene {
 /// The 10–90 % width of the plate's penumbra on the ground as its height h varies, against the
 /// similar-triangles prediction w = size·h/(H − h): the f64 reference (the light's integral over
 /// 64² cells with binary visibility against the plate) rises as 0.8·w, the 10–90 % of a square
-/// light's linear ramp; PCSS follows it within 25 %; PCF stays one texel wide whatever h.
+/// light's linear ramp; PCSS and the light as 16 point sources (the mean of their hard shadows)
+/// follow it within 25 %; PCF stays one texel wide whatever h.
 /// Prints the table docs/area-lights.md gives.
 #[test]
 fn pcss_penumbra_widths_follow_the_similar_triangles() {
@@ -142,8 +143,9 @@ fn pcss_penumbra_widths_follow_the_similar_triangles() {
                 area_irradiance_quadrature(&light, p, DVec3::Y, 64, &blocked) / clear
             })
             .collect();
-        let mut gpu_width = |filter: ShadowFilter| {
+        let mut gpu_width = |filter: ShadowFilter, points: u32| {
             scene.lights[0].shadow.filter = filter;
+            scene.lights[0].area_points = points;
             scene.set_shadows(true);
             let on = render_image(gpu(), &scene, w, h, &settings).unwrap();
             scene.set_shadows(false);
@@ -156,16 +158,19 @@ fn pcss_penumbra_widths_follow_the_similar_triangles() {
                 .collect();
             width_10_90(&v, step)
         };
-        let (pcss, pcf) = (gpu_width(ShadowFilter::Pcss), gpu_width(ShadowFilter::Pcf));
+        let (pcss, pcf) = (gpu_width(ShadowFilter::Pcss, 0), gpu_width(ShadowFilter::Pcf, 0));
+        let points = gpu_width(ShadowFilter::Pcf, 16).expect("16 point sources' profile crosses 10 % and 90 %");
         let exact = width_10_90(&reference, step).expect("the reference crosses 10 % and 90 %");
         let pcss = pcss.expect("PCSS's profile crosses 10 % and 90 %");
         let pcf = pcf.expect("PCF's profile crosses 10 % and 90 %");
         eprintln!(
-            "PENUMBRA | {plate_h} | {predicted:.4} | {:.4} | {exact:.4} | {pcss:.4} | {pcf:.4} |",
+            "PENUMBRA | {plate_h} | {predicted:.4} | {:.4} | {exact:.4} | {pcss:.4} | {pcf:.4} | {points:.4} |",
             0.8 * predicted
         );
         assert!((exact - 0.8 * predicted).abs() <= 0.05 * predicted + 2.0 * step, "h {plate_h}: reference {exact}");
         assert!((pcss - exact).abs() <= 0.25 * exact + 2.0 * step, "h {plate_h}: PCSS {pcss} against {exact}");
+        // 16 hard shadows make a ramp of 16 steps: its crossings are off by up to two steps.
+        assert!((points - exact).abs() <= 0.25 * exact + 2.0 * step, "h {plate_h}: 16 points {points} against {exact}");
         table.push((exact, pcss, pcf));
     }
     // PCF's edge does not widen with the height; the reference's grows sixteenfold.

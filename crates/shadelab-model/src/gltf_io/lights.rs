@@ -276,7 +276,7 @@ pub(super) fn write_light(i: usize, l: &Light) -> (Value, Value) {
         shadow_resolution: Some(l.shadow.clamped().resolution.into()),
         shadow_filter: Some(Named(l.shadow.filter)),
         shadow_cascades: Some(Flag(l.shadow.cascades)),
-        pcss_taps: (l.shadow.filter == ShadowFilter::Pcss).then(|| l.shadow.clamped().pcss_taps.into()),
+        pcss_taps: Some(l.shadow.clamped().pcss_taps.into()),
         area: area.then_some(Named(l.kind)),
         width: area.then(|| l.size[0].into()),
         height: area.then(|| l.size[1].into()),

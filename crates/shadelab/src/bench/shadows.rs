@@ -28,8 +28,8 @@ pub const QUICK_RESOLUTIONS: [u32; 3] = [256, 1024, 4096];
 pub const FILTERS: [ShadowFilter; 4] =
     [ShadowFilter::Hard, ShadowFilter::Pcf, ShadowFilter::Poisson, ShadowFilter::Pcss];
 /// PCSS's other tap counts measured for a scene with area lights (the filter's rows take the
-/// default `SHADOW_PCSS_TAPS`, 16).
-pub const PCSS_TAP_COUNTS: [u32; 2] = [8, 32];
+/// default `SHADOW_PCSS_TAPS`, 32).
+pub const PCSS_TAP_COUNTS: [u32; 2] = [8, 16];
 /// The k of the k-point-source rows (a scene with area lights).
 pub const POINT_COUNTS: [u32; 3] = [1, 4, 16];
 

@@ -57,6 +57,7 @@ fn extras_are_written_and_read_by_the_same_types() {
         resolution: 300,
         filter: crate::shadows::ShadowFilter::Poisson,
         cascades: false,
+        pcss_taps: 16,
     };
     let settings = SceneSettings { shading: Some(ShadingMode::Flat), specular: Some(SpecularModel::CookTorrance) };
     let doc: Value = serde_json::from_str(&scene_to_gltf_json(&scene, &settings)).unwrap();
@@ -67,7 +68,7 @@ fn extras_are_written_and_read_by_the_same_types() {
     assert_eq!(doc["materials"][1]["extras"]["shadelab"]["h"], json!("mirror"));
     assert_eq!(
         keys(&doc["extensions"]["KHR_lights_punctual"]["lights"][0]),
-        "I_L alpha casts_shadows color d0 direction falloff_form inner_cone outer_cone position range \
+        "I_L alpha casts_shadows color d0 direction falloff_form inner_cone outer_cone pcss_taps position range \
          shadow_cascades shadow_filter shadow_resolution"
     );
     assert_eq!(keys(&doc["scenes"][0]), "ambient shading specular");

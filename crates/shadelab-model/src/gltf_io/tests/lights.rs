@@ -129,11 +129,16 @@ fn light_with_extras(extras: Value) -> Vec<u8> {
 fn shadow_settings_round_trip_exactly() {
     let mut scene = Scene::builtin("default").unwrap();
     let settings = [
-        ShadowSettings { casts: false, resolution: 256, filter: ShadowFilter::Hard, cascades: true },
-        ShadowSettings { casts: true, resolution: 4096, filter: ShadowFilter::Poisson, cascades: false },
-        ShadowSettings { casts: true, resolution: 1000, filter: ShadowFilter::Pcf, cascades: true },
+        ShadowSettings { casts: false, resolution: 256, filter: ShadowFilter::Hard, cascades: true, pcss_taps: 16 },
+        ShadowSettings { casts: true, resolution: 4096, filter: ShadowFilter::Poisson, cascades: false, pcss_taps: 16 },
+        ShadowSettings { casts: true, resolution: 1000, filter: ShadowFilter::Pcf, cascades: true, pcss_taps: 16 },
+        ShadowSettings { casts: true, resolution: 512, filter: ShadowFilter::Pcss, cascades: true, pcss_taps: 32 },
     ];
     scene.lights.push(Light::spot(DVec3::new(1.0, 3.0, 0.0), DVec3::NEG_Y, [1.0; 3], 2.0, 0.1, (0.2, 0.5)));
+    let mut area =
+        Light::area(LightKind::Rect, DVec3::new(0.0, 2.0, 0.0), DVec3::NEG_Y, [0.4, 0.3], [1.0; 3], 1.0, 0.0);
+    area.area_points = 9;
+    scene.lights.push(area);
     for (l, s) in scene.lights.iter_mut().zip(settings) {
         l.shadow = s;
     }
@@ -142,6 +147,7 @@ fn shadow_settings_round_trip_exactly() {
         let back = load(&bytes).scene;
         assert_same_scene(&scene, &back);
         assert_eq!(back.lights.iter().map(|l| l.shadow).collect::<Vec<_>>(), settings);
+        assert_eq!(back.lights[3].area_points, 9, "the area light's point sources");
     }
     // A file without the keys gets the model's defaults; each key alone changes only itself.
     let s = load(&light_with_extras(json!({}))).scene;

@@ -52,7 +52,11 @@ fn methods() -> Vec<Method> {
     let mut v: Vec<Method> = FILTERS
         .into_iter()
         .map(|f| Method {
-            name: if f == ShadowFilter::Pcss { "pcss, 16 taps".into() } else { filter_name(f).into() },
+            name: if f == ShadowFilter::Pcss {
+                format!("pcss, {} taps", shadelab_model::shadows::SHADOW_PCSS_TAPS)
+            } else {
+                filter_name(f).into()
+            },
             color: filter_color(f),
             of: Box::new(move |c| match c {
                 Config::Shadows { resolution, filter } if filter == f => Some(resolution),

@@ -161,7 +161,8 @@ fn sweep(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workgroups)
     area.normal = vec4(-v, 0.0);
     area.tangent = vec4(safe_normalize(cross(-v, vec3(0.0, 0.0, 1.0)), vec3(1.0, 0.0, 0.0)), 0.0);
     area.half_x = 0.5 * a_row.x;
-    // The same light as k = 1 + ⌊7m⌋ point sources: their forms summed.
+    // The same light as k = 1 + ⌊7m⌋ point sources: their forms, each clipped at 0 as the diffuse
+    // term takes it, summed.
     area.area_points = 1u + u32(m * 7.0);
     let centre_sample = LightSample(l, vec3(1.0), 0.0, 1.0);
     for (var k = 0u; k < 3u; k++) {
@@ -171,7 +172,7 @@ fn sweep(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workgroups)
         outputs[base + COL_AREA_SPEC_SCALE + k] = area_specular_point(area, vec3(0.0), n, v, m).scale;
         var form_sum = 0.0;
         for (var j = 0u; j < area.area_points; j++) {
-            form_sum += area_point_sample(centre_sample, area, j, vec3(0.0), n).form;
+            form_sum += diffuse_lambert(area_point_sample(centre_sample, area, j, vec3(0.0), n).form);
         }
         outputs[base + COL_AREA_POINTS_FORM + k] = form_sum;
     }

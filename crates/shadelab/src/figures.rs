@@ -127,6 +127,16 @@ pub const FIGURES: &[Figure] = &[
         flags: &["--scene", "penumbra", "--light", "sphere"],
     },
     Figure {
+        file: "area-points-4.png",
+        caption: "7.4: the square light as the chapter's 4 point sources: four hard shadows, unnatural",
+        flags: &["--scene", "penumbra", "--light", "rect", "--area-points", "4"],
+    },
+    Figure {
+        file: "area-points-16.png",
+        caption: "7.4: as 16 point sources, each with its own hard shadow: the penumbra in 16 steps",
+        flags: &["--scene", "penumbra", "--light", "rect", "--area-points", "16"],
+    },
+    Figure {
         file: "penumbra-error-pcf.png",
         caption: "7.4: the shadow factor's FLIP error against the reference's soft shadow, PCF: the whole penumbra is off",
         flags: &["--scene", "penumbra", "--shadow-filter", "pcf", "--term", "shadow", "--difference"],
@@ -135,6 +145,11 @@ pub const FIGURES: &[Figure] = &[
         file: "penumbra-error-pcss.png",
         caption: "7.4: the same with PCSS: a thin line where its umbra ends early, the penumbra close",
         flags: &["--scene", "penumbra", "--shadow-filter", "pcss", "--term", "shadow", "--difference"],
+    },
+    Figure {
+        file: "penumbra-error-points16.png",
+        caption: "7.4: the same with the light as 16 point sources: steps inside the penumbra, its edges in place",
+        flags: &["--scene", "penumbra", "--area-points", "16", "--term", "shadow", "--difference"],
     },
 ];
 

@@ -92,7 +92,7 @@ pub const COLUMNS: [Column; 40] = [
         "finite: cos θ_l·d²/r² ≤ d²/LIGHT_DIST_MIN²",
     ),
     col(
-        "area_point_sample form, k = 1 + ⌊7m⌋ summed (rect, disk, sphere)",
+        "area_point_sample form⁺, k = 1 + ⌊7m⌋ summed (rect, disk, sphere)",
         "AREA_POINTS_FORM",
         3,
         f64::INFINITY,
@@ -359,13 +359,15 @@ pub(super) fn reference(
         let rounding = area::area_form_rounding(&a, DVec3::ZERO, n) * (l_len - 1.0) * AREA_TERM_ROUNDING;
         out[AREA_FORM + k] = area::area_form(&a, DVec3::ZERO, n) + rounding;
         out[AREA_SPEC_SCALE + k] = area::area_specular_point(&a, DVec3::ZERO, n, v, m).1;
-        // The same light as k = 1 + ⌊7m⌋ point sources: their forms summed.
+        // The same light as k = 1 + ⌊7m⌋ point sources: their forms, each clipped at 0 as the
+        // diffuse term takes it, summed.
         let kind = [LightKind::Rect, LightKind::Disk, LightKind::Sphere][k];
         let mut light = Light::area(kind, a.center, normal, [alpha; 2], [1.0; 3], 1.0, 0.0);
         (light.tangent, light.area_points) = (tangent, 1 + (m * 7.0) as u32);
         let base = lights::LightSample { l, radiance: [1.0; 3], form: 0.0, spec_scale: 1.0 };
-        out[AREA_POINTS_FORM + k] =
-            (0..light.area_points).map(|j| area_point_sample(&base, &light, j, DVec3::ZERO, n).form).sum();
+        out[AREA_POINTS_FORM + k] = (0..light.area_points)
+            .map(|j| brdf::diffuse_lambert(area_point_sample(&base, &light, j, DVec3::ZERO, n).form))
+            .sum();
     }
     // PCSS with a light α wide, the receiver at d and the blocker at d0 (d = d0 among them: a
     // receiver touching its blocker); m as a stored depth between near d0 and far d0 + d.

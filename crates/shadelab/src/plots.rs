@@ -1,5 +1,6 @@
 //! The accuracy study's plots (plotters, drawn into a buffer and saved as PNG): error against
-//! time with the Pareto front, and how time grows with lights and pixels.
+//! time with the Pareto front, and how time grows with lights and pixels; and the helpers every
+//! plot shares (the font, log axes, saving).
 
 use crate::bench::accuracy::{Report, Row, Study};
 use plotters::coord::combinators::{BindKeyPoints, LogCoord, WithKeyPoints};
@@ -48,7 +49,7 @@ fn label(shading: Option<ShadingMode>, specular: Option<SpecularModel>) -> Strin
 }
 
 /// Log-axis range that holds every value, padded by a factor on each side.
-fn log_range(values: impl Iterator<Item = f64>) -> std::ops::Range<f64> {
+pub(crate) fn log_range(values: impl Iterator<Item = f64>) -> std::ops::Range<f64> {
     let (lo, hi) = values
         .filter(|v| v.is_finite() && *v > 0.0)
         .fold((f64::INFINITY, 0.0f64), |(lo, hi), v| (lo.min(v), hi.max(v)));
@@ -77,17 +78,17 @@ fn nice_points(r: &std::ops::Range<f64>) -> Vec<f64> {
 }
 
 /// A log axis over a range with [`nice_points`] as its labels.
-fn log_axis(r: std::ops::Range<f64>) -> WithKeyPoints<LogCoord<f64>> {
+pub(crate) fn log_axis(r: std::ops::Range<f64>) -> WithKeyPoints<LogCoord<f64>> {
     let points = nice_points(&r);
     r.log_scale().with_key_points(points)
 }
 
-fn save(buf: Vec<u8>, (w, h): (u32, u32), path: &Path) -> anyhow::Result<()> {
+pub(crate) fn save(buf: Vec<u8>, (w, h): (u32, u32), path: &Path) -> anyhow::Result<()> {
     image::RgbImage::from_raw(w, h, buf).ok_or_else(|| anyhow::anyhow!("plot buffer size"))?.save(path)?;
     Ok(())
 }
 
-fn plot_err(e: impl std::fmt::Display) -> anyhow::Error {
+pub(crate) fn plot_err(e: impl std::fmt::Display) -> anyhow::Error {
     anyhow::anyhow!("drawing the plot: {e}")
 }
 

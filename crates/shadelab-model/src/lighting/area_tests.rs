@@ -279,3 +279,50 @@ fn representative_point_specular_against_the_integral() {
     }
     // Off the light's edge it overshoots (docs/area-lights.md has the table this prints).
 }
+
+/// A sphere occluder in front of a sphere light, exactly: seen from the point, the light and the
+/// occluder are two spherical caps, and where the occluder's cap lies wholly inside the light's
+/// (both above the horizon) the light the point loses is the occluder's cap's own E/L, the light's
+/// radiance being the same over it; where the caps do not meet it loses nothing. The reference
+/// (the quadrature with a shadow ray to each cell) meets both within its own error. Where the caps
+/// overlap in part their lens has no closed form (the projected lens of two ellipses) and the
+/// quadrature is the reference.
+#[test]
+fn a_sphere_occluder_removes_its_own_cap_from_a_sphere_light() {
+    let (p, n) = (DVec3::ZERO, DVec3::new(0.1, 0.0, 1.0).normalize());
+    let (light_r, light_at) = (0.6, DVec3::new(0.4, 0.2, 3.0));
+    let light = AreaLight {
+        shape: AreaShape::Sphere { radius: light_r },
+        center: light_at,
+        normal: DVec3::Z,
+        tangent: DVec3::X,
+    };
+    let axis = light_at.normalize();
+    let side = axis.cross(DVec3::Y).normalize();
+    // Inside the light's cap (σ_L = asin(0.6/3.04) ≈ 11.4°): the occluder's cap, σ_O = asin(0.1/1.2)
+    // ≈ 4.8°, 3° off the light's axis; then well clear of it.
+    let inside = (axis * (3.0f64.to_radians()).cos() + side * (3.0f64.to_radians()).sin()) * 1.2;
+    let clear_of = (axis * (30.0f64.to_radians()).cos() + side * (30.0f64.to_radians()).sin()) * 1.2;
+    let occluder_r = 0.1;
+    let unoccluded = area_irradiance_exact(&light, p, n).unwrap();
+    for (centre, cut) in [(inside, true), (clear_of, false)] {
+        let blocked = |a: DVec3, b: DVec3| {
+            // The segment a→b misses the occluder: its nearest point is farther than the radius.
+            let ab = b - a;
+            let t = ((centre - a).dot(ab) / ab.length_squared()).clamp(0.0, 1.0);
+            (a + ab * t - centre).length() > occluder_r
+        };
+        let d = centre.length();
+        let lost = if cut { sphere_irradiance(occluder_r, d, n.dot(centre) / d) } else { 0.0 };
+        let exact = unoccluded - lost;
+        let (reference, own_error) = area_irradiance_reference(&light, p, n, 96, &blocked);
+        assert!(own_error < 5e-3 * reference, "reference error {own_error:e} of {reference}");
+        assert!(
+            (exact - reference).abs() <= 2.0 * own_error + 1e-6,
+            "occluder inside = {cut}: two caps {exact} vs quadrature {reference} (±{own_error:e}), unoccluded {unoccluded}"
+        );
+        if cut {
+            assert!(lost > 0.1 * unoccluded, "the occluder must take a visible share: {lost} of {unoccluded}");
+        }
+    }
+}

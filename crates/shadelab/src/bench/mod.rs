@@ -5,5 +5,6 @@ pub mod accuracy;
 pub mod effects;
 pub mod load;
 pub mod mesh;
+pub mod penumbra;
 pub mod render;
 pub mod shadows;

@@ -120,6 +120,17 @@ pub enum BenchCommand {
     /// frame without shadows and the null-shader baseline, interleaved, each against the f64
     /// reference's exact shadows. Writes a CSV, a Markdown table and a plot.
     Shadows(BenchShadowsArgs),
+    /// The 10–90 % width of the `penumbra` scene's soft shadow as its plate rises, against the
+    /// similar-triangles prediction: the f64 reference, PCSS, 16 point sources and PCF. Writes a
+    /// CSV, a Markdown table and a plot.
+    Penumbra(BenchPenumbraArgs),
+}
+
+#[derive(Args, Debug)]
+pub struct BenchPenumbraArgs {
+    /// Folder for penumbra.csv, penumbra.md and penumbra.png.
+    #[arg(long, default_value = "bench-penumbra", value_name = "DIR")]
+    pub output: PathBuf,
 }
 
 #[derive(Args, Debug)]

@@ -263,6 +263,11 @@ impl Viewer {
         self.renderer.pipelines.pipeline_builds
     }
 
+    /// The last frame's area lights drawn as point lights, each with its reason (the panel's lines).
+    pub fn small_area_lights(&self) -> &[String] {
+        &self.small_area_lights
+    }
+
     /// The scene being shown (parameters edited by the panel).
     pub fn scene_mut(&mut self) -> &mut Scene {
         &mut self.scene

@@ -4,35 +4,10 @@
 //! lines.
 
 use super::{Config, FILTERS, Report, Row, filter_name};
-use plotters::coord::combinators::BindKeyPoints;
+use crate::plots::{log_axis, log_range, plot_err, register_font, save};
 use plotters::prelude::*;
 use shadelab_model::shadows::ShadowFilter;
 use std::path::Path;
-
-/// Text is drawn with egui's bundled font, so the plot needs no system fonts (as `plots.rs`).
-fn register_font() {
-    static ONCE: std::sync::Once = std::sync::Once::new();
-    ONCE.call_once(|| {
-        plotters::style::register_font("sans-serif", FontStyle::Normal, epaint_default_fonts::UBUNTU_LIGHT)
-            .unwrap_or_else(|_| panic!("egui's bundled font is a valid TrueType font"));
-    });
-}
-
-fn plot_err(e: impl std::fmt::Display) -> anyhow::Error {
-    anyhow::anyhow!("drawing the plot: {e}")
-}
-
-/// Axis labels at 1, 2, 5 × 10^k in `lo..hi` (a log axis otherwise labels every step or only
-/// powers of ten).
-fn nice_points(lo: f64, hi: f64) -> Vec<f64> {
-    let mut out = Vec::new();
-    let mut decade = 10f64.powf(lo.log10().floor());
-    while decade <= hi {
-        out.extend([1.0, 2.0, 5.0].map(|m| m * decade).into_iter().filter(|v| (lo..hi).contains(v)));
-        decade *= 10.0;
-    }
-    out
-}
 
 /// One line of the plot: a method, its colour, and whether a row belongs to it.
 struct Method {
@@ -98,12 +73,6 @@ fn methods() -> Vec<Method> {
     v
 }
 
-fn log_range(values: impl Iterator<Item = f64>, pad: f64) -> (f64, f64) {
-    let (lo, hi) =
-        values.filter(|v| v.is_finite() && *v > 0.0).fold((f64::INFINITY, 0.0f64), |(a, b), v| (a.min(v), b.max(v)));
-    if lo.is_finite() && hi > lo { (lo / pad, hi * pad) } else { (1e-3, 1.0) }
-}
-
 /// RMSE against median GPU time, a line per method, the Pareto front dashed.
 pub fn plot(report: &Report, path: &Path) -> anyhow::Result<()> {
     register_font();
@@ -115,8 +84,9 @@ pub fn plot(report: &Report, path: &Path) -> anyhow::Result<()> {
     {
         let root = BitMapBackend::with_buffer(&mut buf, size).into_drawing_area();
         root.fill(&WHITE).map_err(plot_err)?;
-        let (xlo, xhi) = log_range(report.rows.iter().map(|r| r.median_ms), 1.3);
-        let (ylo, yhi) = log_range(scored.iter().filter_map(|r| r.rmse), 1.5);
+        let x = log_range(report.rows.iter().map(|r| r.median_ms));
+        let y = log_range(scored.iter().filter_map(|r| r.rmse));
+        let (ylo, yhi) = (y.start, y.end);
         let mut chart = ChartBuilder::on(&root)
             .caption(
                 format!(
@@ -132,10 +102,7 @@ pub fn plot(report: &Report, path: &Path) -> anyhow::Result<()> {
             .margin(14)
             .x_label_area_size(45)
             .y_label_area_size(80)
-            .build_cartesian_2d(
-                (xlo..xhi).log_scale().with_key_points(nice_points(xlo, xhi)),
-                (ylo..yhi).log_scale().with_key_points(nice_points(ylo, yhi)),
-            )
+            .build_cartesian_2d(log_axis(x), log_axis(y))
             .map_err(plot_err)?;
         chart
             .configure_mesh()
@@ -209,6 +176,5 @@ pub fn plot(report: &Report, path: &Path) -> anyhow::Result<()> {
             .map_err(plot_err)?;
         root.present().map_err(plot_err)?;
     }
-    image::RgbImage::from_raw(size.0, size.1, buf).ok_or_else(|| anyhow::anyhow!("plot buffer size"))?.save(path)?;
-    Ok(())
+    save(buf, size, path)
 }

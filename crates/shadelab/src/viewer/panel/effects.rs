@@ -11,8 +11,14 @@ const BUILD_POLL: std::time::Duration = std::time::Duration::from_millis(50);
 
 impl Viewer {
     pub(super) fn effects_ui(&mut self, ui: &mut egui::Ui) {
+        // The lights as the last frame drew them: small area lights as point lights.
+        let lights = self.scene.lights.clone();
+        if let Some(view) = &self.view {
+            shadelab_model::effects::draw_small_area_lights_as_points(&mut self.scene, view.target.height);
+        }
         let analysis = shadelab_model::effects::analyze(&self.scene, self.settings.specular);
         let drawn = Program::for_scene(&self.scene, &self.settings).effects();
+        self.scene.lights = lights;
         if self.renderer.pipelines.building() {
             ui.label(
                 egui::RichText::new(format!("compiling pipeline [{}]… drawn with the uber pipeline", drawn.label()))

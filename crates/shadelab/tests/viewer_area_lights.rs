@@ -1,0 +1,51 @@
+//! The viewer's area lights, driven by egui_kittest on lavapipe: a light too small on screen is
+//! drawn as a point light and the panel says why; a light as k point sources draws with its slider.
+
+use egui_kittest::Harness;
+use egui_kittest::kittest::Queryable;
+use shadelab::viewer::Viewer;
+use shadelab_model::{LightKind, Overrides};
+
+fn harness() -> Harness<'static, Viewer> {
+    let mut h = Harness::builder()
+        .with_size(egui::vec2(1100.0, 900.0))
+        .wgpu()
+        .build_eframe(|cc| Viewer::new(cc, None, None).expect("viewer"));
+    h.run_steps(2);
+    h
+}
+
+#[test]
+fn a_small_area_light_is_a_point_light_and_the_panel_says_why() {
+    let mut h = harness();
+    let tiny = Overrides { light: Some(LightKind::Rect), light_size: Some(0.001), ..Default::default() };
+    h.state_mut().scene_mut().apply(&tiny);
+    h.run_steps(3);
+    let lines = h.state().small_area_lights().to_vec();
+    assert_eq!(lines.len(), 2, "{lines:?}");
+    assert!(lines.iter().all(|l| l.starts_with("rect light L") && l.ends_with("drawn as a point light")));
+    assert!(h.query_by_label(&lines[0]).is_some(), "the panel shows '{}'", lines[0]);
+    // The scene itself keeps its area lights: the rule applies to each frame, not to the edits.
+    assert!(h.state_mut().scene_mut().lights.iter().all(|l| l.area_points == 0));
+    // A light large enough to show its area keeps it, and the lines go.
+    let large = Overrides { light_size: Some(0.5), ..Default::default() };
+    h.state_mut().scene_mut().apply(&large);
+    h.run_steps(3);
+    assert!(h.state().small_area_lights().is_empty());
+    assert!(h.query_by_label(&lines[0]).is_none());
+}
+
+#[test]
+fn a_light_as_point_sources_has_its_slider_and_draws() {
+    let mut h = harness();
+    let points = Overrides { light: Some(LightKind::Disk), area_points: Some(4), ..Default::default() };
+    h.state_mut().scene_mut().apply(&points);
+    h.run_steps(2);
+    h.get_by_label("L1 — disk").click();
+    h.run_steps(3);
+    assert!(h.query_all_by_label("points k (0 = exact)").next().is_some(), "the light's section has the k slider");
+    assert!(h.state().message().is_none_or(|(_, error)| !error), "{:?}", h.state().message());
+    let shot = h.render().expect("render");
+    // Kept for a look: target/tmp/viewer-area-points.png.
+    shot.save(std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join("viewer-area-points.png")).unwrap();
+}

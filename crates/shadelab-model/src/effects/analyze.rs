@@ -10,10 +10,7 @@ use crate::params::{FalloffForm, IlluminationModel, LightKind, SpecularModel};
 use crate::scene::Scene;
 use crate::shadows::ShadowFilter;
 
-/// Absorption inside a translucent material below this `a·d` is neglected (docs/model.md §7).
-pub const ABSORPTION_NEGLECT_BELOW: f64 = 0.2;
-/// Absorption below this `a·d` is linearized, `e^(−a·d) ≈ 1 − a·d` (docs/model.md §7).
-pub const ABSORPTION_LINEAR_BELOW: f64 = 0.5;
+pub use crate::lighting::transmission::{ABSORPTION_LINEAR_BELOW, ABSORPTION_NEGLECT_BELOW};
 
 /// One decision of the analysis: the effect, whether and how it is simulated, and why.
 #[derive(Clone, Debug, PartialEq)]
@@ -262,14 +259,18 @@ pub fn analyze(scene: &Scene, specular: SpecularModel) -> Analysis {
         .map(|m| m.absorption.iter().cloned().fold(0.0, f64::max) * m.thickness)
         .fold(0.0f64, f64::max);
     // The reasons name the chapter's section 7.5 (docs/model.md §7).
-    let (state, reason) = if transmitting.is_empty() {
-        ("off", "nothing transmits".to_string())
-    } else if ad < ABSORPTION_NEGLECT_BELOW {
-        ("neglected", format!("a·d = {ad:.3} < {ABSORPTION_NEGLECT_BELOW} (docs/model.md §7)"))
-    } else if ad < ABSORPTION_LINEAR_BELOW {
-        ("linear 1 − a·d", format!("a·d = {ad:.3} < {ABSORPTION_LINEAR_BELOW} (docs/model.md §7)"))
-    } else {
-        ("exact e^(−a·d)", format!("a·d = {ad:.3} ≥ {ABSORPTION_LINEAR_BELOW} (docs/model.md §7)"))
+    use crate::lighting::transmission::{AbsorptionForm, absorption_regime};
+    let (state, reason) = match absorption_regime(ad) {
+        _ if transmitting.is_empty() => ("off", "nothing transmits".to_string()),
+        AbsorptionForm::Neglected => {
+            ("neglected", format!("a·d = {ad:.3} < {ABSORPTION_NEGLECT_BELOW} (docs/model.md §7)"))
+        }
+        AbsorptionForm::Linear => {
+            ("linear 1 − a·d", format!("a·d = {ad:.3} < {ABSORPTION_LINEAR_BELOW} (docs/model.md §7)"))
+        }
+        AbsorptionForm::Exact => {
+            ("exact e^(−a·d)", format!("a·d = {ad:.3} ≥ {ABSORPTION_LINEAR_BELOW} (docs/model.md §7)"))
+        }
     };
     a.note(Effect::Absorption, state, reason);
     a

@@ -9,6 +9,9 @@
 //!   as k point sources.
 //! - [`shading`] ↔ `shading.wgsl`: the sum over the lights at one point.
 //!
+//! - [`transmission`]: light through a surface (Snell, Fresnel from either side, absorption),
+//!   f64 only until the GPU draws transparent materials.
+//!
 //! The test `every_wgsl_function_has_a_rust_twin` (in `shadelab-render`) holds the pairing.
 
 pub mod area;
@@ -18,3 +21,4 @@ pub mod common;
 pub mod lights;
 pub mod models;
 pub mod shading;
+pub mod transmission;

@@ -296,13 +296,19 @@ pub struct SceneArgs {
     pub shadow_cascades: Option<bool>,
 }
 
-/// `render --small-area-lights`.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+/// `render --small-area-lights`: how an area light too small on screen for its area to show
+/// is drawn.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum SmallAreaLights {
     /// Drawn as a point light (the reason is printed).
     Point,
     /// Drawn with their area.
     Area,
+}
+
+impl shadelab_model::params::NamedValue for SmallAreaLights {
+    const FLAG: &'static str = "--small-area-lights";
+    const ALL: &'static [(&'static str, Self)] = &[("point", SmallAreaLights::Point), ("area", SmallAreaLights::Area)];
 }
 
 #[derive(Args, Debug)]
@@ -329,7 +335,7 @@ pub struct RenderArgs {
     pub explain: bool,
     /// How to draw an area light whose penumbra and highlight would be under a pixel wide from
     /// the camera: as a point light, printing why (point), or with its area all the same (area).
-    #[arg(long, value_name = "AS", value_enum, default_value_t = SmallAreaLights::Point)]
+    #[arg(long, value_name = "point|area", default_value = "point", value_parser = values::named::<SmallAreaLights>())]
     pub small_area_lights: SmallAreaLights,
     /// Draw one term of the model alone: all (the default), ambient (I_amb·r_a·C), diffuse
     /// (Σ I_L·r_d·C·(N·L), cast shadows included) or specular (Σ I_L·r_s·S), which add up to the

@@ -176,6 +176,8 @@ fn a_bad_shadow_setting_is_one_error_line_naming_the_key() {
         ),
         (json!({ "casts_shadows": "yes" }), "extras.shadelab.casts_shadows = \"yes\" is not true or false".into()),
         (json!({ "casts_shadows": null }), "extras.shadelab.casts_shadows = null is not true or false".into()),
+        (json!({ "pcss_taps": 2 }), "extras.shadelab.pcss_taps = 2 is not an integer in [4, 64]".into()),
+        (json!({ "points": 17 }), "extras.shadelab.points = 17 is not an integer in [0, 16]".into()),
     ] {
         let e = load_scene_from_slice(&light_with_extras(json!({ "shadelab": bad }))).unwrap_err().to_string();
         assert!(e.starts_with("<memory>: light 0: ") && e.contains(&says) && !e.contains('\n'), "{e}\nlacks: {says}");

@@ -176,6 +176,19 @@ fn sweep(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workgroups)
         }
         outputs[base + COL_AREA_POINTS_FORM + k] = form_sum;
     }
+    // Light through a surface at N, met along −V: into v (μ's red channel) and out of it; absorption
+    // over a·d = α·d; the chord from l·d·m towards V through a sphere of radius α at the origin.
+    let c = dot(n, v);
+    outputs[base + COL_FRESNEL_DIELECTRIC] = fresnel_dielectric(c, v_index.x);
+    outputs[base + COL_FRESNEL_DIELECTRIC + 1u] = fresnel_dielectric(c, 1.0 / v_index.x);
+    let refracted = refract_snell(-v, n, 1.0 / v_index.x);
+    outputs[base + COL_REFRACT_SNELL] = refracted.x;
+    outputs[base + COL_REFRACT_SNELL + 1u] = refracted.y;
+    outputs[base + COL_REFRACT_SNELL + 2u] = refracted.z;
+    outputs[base + COL_REFRACT_SNELL + 3u] = refracted.w;
+    outputs[base + COL_ABSORPTION] = absorption_exact(a_row.x * d);
+    outputs[base + COL_ABSORPTION + 1u] = absorption_rule(a_row.x * d);
+    outputs[base + COL_SPHERE_CHORD] = sphere_chord(l * (d * m), v, vec3(0.0), a_row.x);
     outputs[base + COL_PENUMBRA_WIDTH] = penumbra_width(a_row.x, d, a_row.y);
     outputs[base + COL_PCSS_SEARCH_RADIUS] = pcss_search_radius(a_row.x, d, a_row.y);
     outputs[base + COL_SHADOW_LINEAR_DEPTH] = shadow_linear_depth(m, a_row.y, a_row.y + d);

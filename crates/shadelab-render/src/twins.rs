@@ -263,3 +263,27 @@ fn a_light_is_packed_from_the_models_derived_values() {
     assert_eq!(u.radiance, [2.0, 1.0, 0.5, 1.0]);
     assert_eq!((u.kind, u.falloff_form), (LightKind::Spot.code(), FalloffForm::Quadratic.code()));
 }
+
+/// The transmission terms (`shaders/transmission.wgsl`), which only the sweep compiles until the
+/// renderer draws transparent materials, have their f64 twins too, and the rule's thresholds and
+/// regime codes equal the model's.
+#[test]
+fn the_transmission_terms_have_rust_twins() {
+    use shadelab_model::lighting::transmission::{
+        ABSORPTION_LINEAR_BELOW, ABSORPTION_NEGLECT_BELOW, AbsorptionForm as F,
+    };
+    let rust = declared(include_str!("../../shadelab-model/src/lighting/transmission.rs"));
+    let wgsl = declared(crate::sweep::TRANSMISSION);
+    assert!(!wgsl.is_empty());
+    for f in &wgsl {
+        assert!(rust.contains(f), "transmission.wgsl: fn {f} has no twin in lighting/transmission.rs");
+    }
+    let module = parse(&crate::sweep::sweep_source());
+    assert_eq!(wgsl_constant(&module, "ABSORPTION_NEGLECT_BELOW"), Some(ABSORPTION_NEGLECT_BELOW as f32 as f64));
+    assert_eq!(wgsl_constant(&module, "ABSORPTION_LINEAR_BELOW"), Some(ABSORPTION_LINEAR_BELOW as f32 as f64));
+    for (name, form) in
+        [("ABSORPTION_EXACT", F::Exact), ("ABSORPTION_LINEAR", F::Linear), ("ABSORPTION_NEGLECTED", F::Neglected)]
+    {
+        assert_eq!(wgsl_constant(&module, name), Some(form as u32 as f64), "{name}: AbsorptionForm's code");
+    }
+}

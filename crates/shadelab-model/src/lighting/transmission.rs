@@ -2,8 +2,8 @@
 //! total internal reflection, the chapter's exact Fresnel factor at an interface met from either
 //! side, absorption by Beer–Lambert and by the chapter's rule (linear below a·d = 0.5, neglected
 //! below 0.2), and the exact chord through a sphere. The effect analysis reads the rule's
-//! thresholds; the renderer does not draw transparent materials yet, and these are the terms its
-//! WGSL will twin.
+//! thresholds; the renderer does not draw transparent materials yet. The WGSL twin is
+//! `shaders/transmission.wgsl`, which only the stability sweep compiles so far.
 
 use crate::guards::FRESNEL_G_PLUS_C_MIN;
 use glam::DVec3;
@@ -59,7 +59,8 @@ pub fn absorption_rule(ad: f64) -> f64 {
 /// angle the refracted ray runs along the surface.
 pub fn refract_snell(i: DVec3, n: DVec3, eta: f64) -> Option<DVec3> {
     let cos_i = (-i.dot(n)).clamp(0.0, 1.0);
-    let cos2_t = 1.0 - eta * eta * (1.0 - cos_i * cos_i);
+    // 1 − η²·sin²θ_i, grouped so that η = 1 gives cos²θ_i without cancelling at grazing angles.
+    let cos2_t = (1.0 - eta) * (1.0 + eta) + eta * eta * cos_i * cos_i;
     if cos2_t < 0.0 {
         return None;
     }
@@ -73,29 +74,50 @@ pub fn refract_snell(i: DVec3, n: DVec3, eta: f64) -> Option<DVec3> {
 pub fn fresnel_dielectric(c: f64, v: f64) -> f64 {
     let c = c.clamp(0.0, 1.0);
     let v = v.max(0.0);
-    let g2 = (v - 1.0) * (v + 1.0) + c * c;
+    // g² = v² − 1 + c², grouped to keep what cancels exact: (v − 1)(v + 1) + c² near grazing (v
+    // = 1 gives c² exactly), v² − (1 − c)(1 + c) from c = ½ up (c = 1 gives v² exactly, where the
+    // other grouping loses a small v² to the 1s).
+    let sin2 = (1.0 - c) * (1.0 + c);
+    let g2 = if c < 0.5 { (v - 1.0) * (v + 1.0) + c * c } else { v * v - sin2 };
     if g2 < 0.0 {
         return 1.0;
     }
     let g = g2.sqrt();
     let a = (g - c) / (g + c).max(FRESNEL_G_PLUS_C_MIN);
-    // c(g − c) + 1 ≥ 1 − c² ≥ 0, and it is v > 0 at c = 1.
-    let b = (c * (g + c) - 1.0) / (c * (g - c) + 1.0).max(FRESNEL_G_PLUS_C_MIN);
+    // c(g + c) − 1 = cg − sin²θ and c(g − c) + 1 = cg + sin²θ ≥ 0 (v at c = 1), without the 1s.
+    let b = (c * g - sin2) / (c * g + sin2).max(FRESNEL_G_PLUS_C_MIN);
     (0.5 * a * a * (1.0 + b * b)).clamp(0.0, 1.0)
 }
 
-/// How far a ray from `o` along unit `d`, inside a sphere (`centre`, `radius`), travels before it
-/// leaves: the far root of |o + t·d − c|² = r², 0 for a ray on the surface heading out. Taken as
-/// c/q with q the larger root factor where the direct form would cancel, so a point near the
-/// surface keeps its precision.
+/// How long the part of the ray from `o` along unit `d` inside a sphere (`centre`, `radius`) is:
+/// from inside, the chord to the far side; from outside, the whole chord ahead; 0 for a ray that
+/// misses it, touches it, has it behind, or leaves it from the surface. The roots of
+/// |o + t·d − c|² = r² are taken each in the form that does not cancel (their product is c), so a
+/// point next to the surface keeps its precision, and b² − c as r² less the squared distance
+/// from the centre to the line, |oc × d|², so a near miss far away is not lost to the rounding
+/// of b².
 pub fn sphere_chord(o: DVec3, d: DVec3, centre: DVec3, radius: f64) -> f64 {
     let oc = o - centre;
     let b = oc.dot(d);
     let c = oc.length_squared() - radius * radius;
-    let root = (b * b - c).max(0.0).sqrt();
-    // The far root is −b + √(b² − c); for b > 0 it is −c/(b + √(b² − c)) without cancelling.
-    let t = if b <= 0.0 { -b + root } else { -c / (b + root).max(f64::MIN_POSITIVE) };
-    t.max(0.0)
+    // |oc × d| is the line's distance from the centre (|d| = 1), without the cancellation of
+    // oc − (oc·d)·d when the ray aims almost at the centre from far away.
+    let disc = radius * radius - oc.cross(d).length_squared();
+    if disc <= 0.0 {
+        return 0.0;
+    }
+    let root = disc.sqrt();
+    // Far root −b + √disc and near root −b − √disc; where one would cancel it is c over the other.
+    let (far, near) = if b <= 0.0 { (-b + root, c / (-b + root)) } else { (-c / (b + root), -b - root) };
+    // Behind: nothing; from inside: to the far side; from outside: far − near, which is 2√disc
+    // without cancelling two long distances.
+    if far <= 0.0 {
+        0.0
+    } else if near <= 0.0 {
+        far
+    } else {
+        2.0 * root
+    }
 }
 
 #[cfg(test)]
@@ -192,5 +214,11 @@ mod tests {
         // A point a hair inside the surface, heading in: the whole chord, to full precision.
         let d = (c - exit).normalize();
         assert!((sphere_chord(exit + d * 1e-12, d, c, r) - 2.0 * r).abs() < 1e-9);
+        // From outside: the whole chord ahead; nothing for a miss, a touch or a sphere behind.
+        let far = c - DVec3::X * 10.0 + DVec3::Y * b;
+        assert!((sphere_chord(far, DVec3::X, c, r) - 2.0 * (r * r - b * b).sqrt()).abs() < 1e-12);
+        assert_eq!(sphere_chord(far + DVec3::Y, DVec3::X, c, r), 0.0);
+        assert_eq!(sphere_chord(c - DVec3::X * 10.0 + DVec3::Y * r, DVec3::X, c, r), 0.0);
+        assert_eq!(sphere_chord(far, -DVec3::X, c, r), 0.0);
     }
 }

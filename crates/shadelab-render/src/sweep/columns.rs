@@ -8,7 +8,7 @@ use glam::DVec3;
 use shadelab_model::guards::{D0_MIN, M_MIN, N_DOT_V_MIN};
 use shadelab_model::lighting::area::{self, AreaLight, AreaShape};
 use shadelab_model::lighting::area_points::area_point_sample;
-use shadelab_model::lighting::{brdf, common, lights, models};
+use shadelab_model::lighting::{brdf, common, lights, models, transmission};
 use shadelab_model::shadows;
 use shadelab_model::{FalloffForm, Light, LightKind, Material, PhongExponent, SpecularModel};
 
@@ -32,7 +32,7 @@ pub struct Column {
 const D_MAX: f64 = 1.0 / (4.0 * M_MIN * M_MIN);
 
 /// Every column in the order the kernel writes them (and the report lists them).
-pub const COLUMNS: [Column; 40] = [
+pub const COLUMNS: [Column; 44] = [
     col("diffuse_lambert", "DIFFUSE_LAMBERT", 1, 1.0, "N·L of unit vectors"),
     col("specular_phong", "SPECULAR_PHONG", 1, 1.0, "(V·R)^h with V·R clamped to [0, 1]"),
     col("d_beckmann", "D_BECKMANN", 1, D_MAX, "peak 1/(4 m²) at m = M_MIN"),
@@ -98,6 +98,13 @@ pub const COLUMNS: [Column; 40] = [
         f64::INFINITY,
         "finite: Σ gain·d²/max(r², LIGHT_DIST_MIN²)",
     ),
+    col("fresnel_dielectric (into v, out of v)", "FRESNEL_DIELECTRIC", 2, 1.0, "a reflectance in [0, 1]; 1 under TIR"),
+    Column {
+        signed: true,
+        ..col("refract_snell (xyz, refracted)", "REFRACT_SNELL", 4, 1.0, "a unit direction and a 0/1 flag")
+    },
+    col("absorption_exact, absorption_rule (a·d = α·d)", "ABSORPTION", 2, 1.0, "a share in [0, 1], underflowing to 0"),
+    col("sphere_chord", "SPHERE_CHORD", 1, f64::INFINITY, "finite: at most the diameter 2α"),
     col("penumbra_width", "PENUMBRA_WIDTH", 1, f64::INFINITY, "finite: w·d_r/BLOCKER_DIST_MIN"),
     col("pcss_search_radius", "PCSS_SEARCH_RADIUS", 1, f64::INFINITY, "finite: ½w/BLOCKER_DIST_MIN"),
     col("shadow_linear_depth", "SHADOW_LINEAR_DEPTH", 1, f64::INFINITY, "between near and far"),
@@ -222,6 +229,10 @@ const NORMAL_MAPPED: usize = offset("NORMAL_MAPPED");
 const AREA_FORM: usize = offset("AREA_FORM");
 const AREA_SPEC_SCALE: usize = offset("AREA_SPEC_SCALE");
 const AREA_POINTS_FORM: usize = offset("AREA_POINTS_FORM");
+const FRESNEL_DIELECTRIC: usize = offset("FRESNEL_DIELECTRIC");
+const REFRACT_SNELL: usize = offset("REFRACT_SNELL");
+const ABSORPTION: usize = offset("ABSORPTION");
+const SPHERE_CHORD: usize = offset("SPHERE_CHORD");
 const PENUMBRA_WIDTH: usize = offset("PENUMBRA_WIDTH");
 const PCSS_SEARCH_RADIUS: usize = offset("PCSS_SEARCH_RADIUS");
 const SHADOW_LINEAR_DEPTH: usize = offset("SHADOW_LINEAR_DEPTH");
@@ -369,6 +380,17 @@ pub(super) fn reference(
             .map(|j| brdf::diffuse_lambert(area_point_sample(&base, &light, j, DVec3::ZERO, n).form))
             .sum();
     }
+    // Light through a surface at N, met along −V: into a medium of index v (μ's red channel) and
+    // out of it (total internal reflection past its critical angle); absorption over a·d = α·d
+    // (0 to 1e10); the chord from l·d·m towards V through a sphere of radius α at the origin.
+    let (vr, c) = (v_index[0], n.dot(v));
+    out[FRESNEL_DIELECTRIC] = transmission::fresnel_dielectric(c, vr);
+    out[FRESNEL_DIELECTRIC + 1] = transmission::fresnel_dielectric(c, 1.0 / vr);
+    let refracted = transmission::refract_snell(-v, n, 1.0 / vr).map_or([0.0; 4], |t| [t.x, t.y, t.z, 1.0]);
+    out[REFRACT_SNELL..REFRACT_SNELL + 4].copy_from_slice(&refracted);
+    out[ABSORPTION] = transmission::absorption_exact(alpha * d);
+    out[ABSORPTION + 1] = transmission::absorption_rule(alpha * d);
+    out[SPHERE_CHORD] = transmission::sphere_chord(l * (d * m), v, DVec3::ZERO, alpha);
     // PCSS with a light α wide, the receiver at d and the blocker at d0 (d = d0 among them: a
     // receiver touching its blocker); m as a stored depth between near d0 and far d0 + d.
     out[PENUMBRA_WIDTH] = shadows::penumbra_width(alpha, d, d0);

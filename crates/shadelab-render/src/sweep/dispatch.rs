@@ -10,9 +10,14 @@ use wgpu::util::DeviceExt;
 /// The stability sweep's kernel (`shaders/sweep.wgsl`).
 pub const SWEEP_KERNEL: &str = include_str!("../../../../shaders/sweep.wgsl");
 
-/// The sweep's compute module: the shipped terms, the generated columns, then the kernel.
+/// The transmission terms (`shaders/transmission.wgsl`): not drawn yet, so only the sweep
+/// compiles them.
+pub const TRANSMISSION: &str = include_str!("../../../../shaders/transmission.wgsl");
+
+/// The sweep's compute module: the shipped terms, the transmission terms, the generated columns,
+/// then the kernel.
 pub fn sweep_source() -> String {
-    format!("{}\n{}\n{}", shaders::terms_source(), wgsl_columns(), SWEEP_KERNEL)
+    format!("{}\n{}\n{}\n{}", shaders::terms_source(), TRANSMISSION, wgsl_columns(), SWEEP_KERNEL)
 }
 
 /// Run the kernel over every combination and read its outputs back (`OUTPUTS` floats each).

@@ -1,0 +1,99 @@
+// Light through a surface (docs/model.md §7, the chapter's 7.5): Snell's law with total internal
+// reflection, the exact Fresnel factor met from either side, absorption by Beer–Lambert and by
+// the chapter's rule, the chord through a sphere. The f64 twin is
+// crates/shadelab-model/src/lighting/transmission.rs, with the same names. The renderer does not
+// draw transparent materials yet: only the stability sweep compiles this file.
+
+// The chapter's a·d thresholds (the twin's ABSORPTION_NEGLECT_BELOW, ABSORPTION_LINEAR_BELOW).
+const ABSORPTION_NEGLECT_BELOW: f32 = 0.2;
+const ABSORPTION_LINEAR_BELOW: f32 = 0.5;
+// The forms absorption_regime returns (the twin's AbsorptionForm, in its order).
+const ABSORPTION_EXACT: u32 = 0u;
+const ABSORPTION_LINEAR: u32 = 1u;
+const ABSORPTION_NEGLECTED: u32 = 2u;
+
+// The form the chapter's rule picks for optical depth a·d.
+fn absorption_regime(ad: f32) -> u32 {
+    if (ad < ABSORPTION_NEGLECT_BELOW) {
+        return ABSORPTION_NEGLECTED;
+    }
+    if (ad < ABSORPTION_LINEAR_BELOW) {
+        return ABSORPTION_LINEAR;
+    }
+    return ABSORPTION_EXACT;
+}
+
+// e^(−a·d), a·d held at 0 or above; underflows to 0, never NaN.
+fn absorption_exact(ad: f32) -> f32 {
+    return exp(-max(ad, 0.0));
+}
+
+// The chapter's share: 1, 1 − a·d or e^(−a·d) by absorption_regime.
+fn absorption_rule(ad_in: f32) -> f32 {
+    let ad = max(ad_in, 0.0);
+    let form = absorption_regime(ad);
+    if (form == ABSORPTION_NEGLECTED) {
+        return 1.0;
+    }
+    if (form == ABSORPTION_LINEAR) {
+        return 1.0 - ad;
+    }
+    return absorption_exact(ad);
+}
+
+// Snell's law: xyz the unit direction refracted from incident `i` at normal `n` (facing the
+// incident side), eta = n_i/n_t; w = 1 when refracted, 0 (and xyz 0) under total internal
+// reflection.
+fn refract_snell(i: vec3<f32>, n: vec3<f32>, eta: f32) -> vec4<f32> {
+    let cos_i = clamp(-dot(i, n), 0.0, 1.0);
+    // 1 − η²·sin²θ_i, grouped so that η = 1 gives cos²θ_i without cancelling at grazing angles.
+    let cos2_t = (1.0 - eta) * (1.0 + eta) + eta * eta * cos_i * cos_i;
+    if (cos2_t < 0.0) {
+        return vec4(0.0);
+    }
+    return vec4(i * eta + n * (eta * cos_i - sqrt(cos2_t)), 1.0);
+}
+
+// The exact unpolarized Fresnel factor met at cos θ_i = c, v = n_t/n_i from either side; 1 under
+// total internal reflection.
+fn fresnel_dielectric(c_in: f32, v_in: f32) -> f32 {
+    let c = clamp(c_in, 0.0, 1.0);
+    let v = max(v_in, 0.0);
+    // g² = v² − 1 + c², grouped as the twin says: exact at grazing for v = 1 and at c = 1.
+    let sin2 = (1.0 - c) * (1.0 + c);
+    let g2 = select(v * v - sin2, (v - 1.0) * (v + 1.0) + c * c, c < 0.5);
+    if (g2 < 0.0) {
+        return 1.0;
+    }
+    let g = sqrt(g2);
+    let a = (g - c) / max(g + c, FRESNEL_G_PLUS_C_MIN);
+    // c(g + c) − 1 and c(g − c) + 1 without the cancelling 1s.
+    let b = (c * g - sin2) / max(c * g + sin2, FRESNEL_G_PLUS_C_MIN);
+    return clamp(0.5 * a * a * (1.0 + b * b), 0.0, 1.0);
+}
+
+// How long the part of the ray from `o` along unit `d` inside a sphere is: the chord ahead, from
+// inside or outside; 0 for a miss, a touch, a sphere behind. Each root in the form that does not
+// cancel; b² − c as r² less the squared distance from the centre to the line, |oc × d|².
+fn sphere_chord(o: vec3<f32>, d: vec3<f32>, centre: vec3<f32>, radius: f32) -> f32 {
+    let oc = o - centre;
+    let b = dot(oc, d);
+    let c = dot(oc, oc) - radius * radius;
+    let perp = cross(oc, d);
+    let disc = radius * radius - dot(perp, perp);
+    if (disc <= 0.0) {
+        return 0.0;
+    }
+    let root = sqrt(disc);
+    var far = -b + root;
+    var near = c / (-b + root);
+    if (b > 0.0) {
+        far = -c / (b + root);
+        near = -b - root;
+    }
+    // Behind: nothing; from inside: to the far side; from outside: far − near, as 2√disc.
+    if (far <= 0.0) {
+        return 0.0;
+    }
+    return select(2.0 * root, far, near <= 0.0);
+}

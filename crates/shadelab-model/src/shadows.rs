@@ -169,8 +169,8 @@ pub const SHADOW_CLIP_W_MIN: f64 = 1e-20;
 /// The default taps of each of PCSS's two passes (`ShadowFilter::Pcss`): 32. The blocker search's
 /// spiral puts n·√q of its taps in a blocker cone q of the search region wide; on the `penumbra`
 /// scene (q ≈ 1/13 with the plate 1 m up) 16 taps put 4 there, too few to find a plate edge
-/// covering the cone's outer tenth, and the penumbra measured 0.56–0.77 of the filter's width;
-/// 32 put 9 and measure 0.73–0.86 (64: 0.91–0.94), the `area_lights` width test.
+/// covering the cone's outer tenth, and the penumbra's 10–90 % width measured 0.64–0.77 of the
+/// reference's; 32 put 9 and measure 0.73–0.86 (64: 0.84–0.92), `bench penumbra`.
 /// `ShadowSettings::pcss_taps` sets another count within [`PCSS_TAPS`].
 pub const SHADOW_PCSS_TAPS: u32 = 32;
 

@@ -76,10 +76,9 @@ fn area_emitter(light: Light, j: u32) -> AreaEmitter {
     return AreaEmitter(light.position.xyz, vec3(0.0), 1.0);
 }
 
-// Point source `j` at `p` with unit normal `n`: the centre's sample `base` with the direction to
-// the source and its factor gain·cos θ_e·d²/r² (r² at least LIGHT_DIST_MIN²) on both terms.
-fn area_point_sample(base: LightSample, light: Light, j: u32, p: vec3<f32>, n: vec3<f32>) -> LightSample {
-    let e = area_emitter(light, j);
+// Point source `e` (area_emitter) at `p` with unit normal `n`: the centre's sample `base` with the
+// direction to the source and its factor gain·cos θ_e·d²/r² (r² at least LIGHT_DIST_MIN²).
+fn area_point_sample(base: LightSample, light: Light, e: AreaEmitter, p: vec3<f32>, n: vec3<f32>) -> LightSample {
     let to_c = light.position.xyz - p;
     let d2 = dot(to_c, to_c);
     let to = e.position - p;

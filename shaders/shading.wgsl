@@ -140,8 +140,9 @@ fn shade(p: vec3<f32>, n_in: vec3<f32>, surface: Surface, pixel: vec2<f32>) -> v
 #if EFFECT_AREA_POINTS
 #if EFFECT_POINT_LIGHTS
             if (drawn_as_points(light)) {
-                s = area_point_sample(base, light, j, p, n);
-                origin = area_emitter(light, j).position;
+                let e = area_emitter(light, j);
+                s = area_point_sample(base, light, e, p, n);
+                origin = e.position;
             }
 #endif
 #endif

@@ -172,7 +172,7 @@ fn sweep(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workgroups)
         outputs[base + COL_AREA_SPEC_SCALE + k] = area_specular_point(area, vec3(0.0), n, v, m).scale;
         var form_sum = 0.0;
         for (var j = 0u; j < area.area_points; j++) {
-            form_sum += diffuse_lambert(area_point_sample(centre_sample, area, j, vec3(0.0), n).form);
+            form_sum += diffuse_lambert(area_point_sample(centre_sample, area, area_emitter(area, j), vec3(0.0), n).form);
         }
         outputs[base + COL_AREA_POINTS_FORM + k] = form_sum;
     }

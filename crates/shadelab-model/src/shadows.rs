@@ -385,11 +385,13 @@ pub fn shadow_cubes(scene: &Scene) -> Vec<u32> {
             _ => 1,
         }
     };
-    let mut spare = MAX_SHADOW_LAYERS.saturating_sub(lights.iter().map(|l| own(l)).sum());
+    let own: Vec<u32> = lights.iter().map(|l| own(l)).collect();
+    let mut spare = MAX_SHADOW_LAYERS.saturating_sub(own.iter().sum());
     lights
         .iter()
-        .map(|l| {
-            if own(l) != 6 {
+        .zip(own)
+        .map(|(l, own)| {
+            if own != 6 {
                 return 0;
             }
             let want = crate::lighting::area_points::area_point_count(l);

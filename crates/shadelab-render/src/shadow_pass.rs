@@ -224,24 +224,29 @@ pub fn shadows_uniform(scene: &Scene, plan: &ShadowPlan, aspect: f64) -> Shadows
     let Some((centre, radius)) = scene_bounds(scene) else { return u };
     for ((slot, light), map) in u.lights.iter_mut().zip(&scene.lights).zip(&plan.lights) {
         let Some(map) = map else { continue };
-        let p = if light.kind == LightKind::Directional && map.layers > 1 {
-            cascade_projection(light, scene, aspect, (centre, radius), map.resolution, map.layers)
-        } else {
-            shadow_projection(light, centre, radius, map.resolution)
+        // One projection per cube (an area light drawn as points has one per point source, each
+        // from where it sits); the others have one map, from the light itself.
+        let project = |at: &Light| {
+            if at.kind == LightKind::Directional && map.layers > 1 {
+                cascade_projection(at, scene, aspect, (centre, radius), map.resolution, map.layers)
+            } else {
+                shadow_projection(at, centre, radius, map.resolution)
+            }
         };
-        for (k, m) in p.matrices.iter().enumerate() {
-            u.matrices[(map.first_layer as usize + k).min(MAX_SHADOW_LAYERS as usize - 1)] =
-                m.as_mat4().to_cols_array_2d();
-        }
-        // An area light drawn as points: each point source's cube, from where it sits.
-        for j in (0..map.cubes).filter(|_| light.drawn_as_points()) {
-            let at = Light { position: area_emitter(light, j).position, ..light.clone() };
-            let q = shadow_projection(&at, centre, radius, map.resolution);
+        let mut first = None;
+        for j in 0..map.cubes {
+            let q = if light.drawn_as_points() {
+                project(&Light { position: area_emitter(light, j).position, ..light.clone() })
+            } else {
+                project(light)
+            };
             for (k, m) in q.matrices.iter().enumerate() {
                 u.matrices[(map.first_layer as usize + 6 * j as usize + k).min(MAX_SHADOW_LAYERS as usize - 1)] =
                     m.as_mat4().to_cols_array_2d();
             }
+            first.get_or_insert(q);
         }
+        let Some(p) = first else { continue };
         *slot = ShadowLightUniform {
             first_layer: map.first_layer,
             layers: map.layers,

@@ -56,8 +56,12 @@ fn box_distances(p: DVec3, (lo, hi): (DVec3, DVec3)) -> (f64, f64) {
 /// - a camera or light inside an object's box, or an object within the light's radius: no bound
 ///   (infinite), so the light keeps its area.
 pub fn small_area_light(scene: &Scene, light: &Light, height: u32) -> Option<SmallAreaLight> {
+    bounds_of(scene, &object_boxes(scene), light, height)
+}
+
+/// [`small_area_light`] with the scene's object boxes already made (they walk every mesh).
+fn bounds_of(scene: &Scene, boxes: &[(DVec3, DVec3)], light: &Light, height: u32) -> Option<SmallAreaLight> {
     let area = light.area_light()?;
-    let boxes = object_boxes(scene);
     if boxes.is_empty() {
         return None;
     }
@@ -118,12 +122,17 @@ pub fn small_area_light(scene: &Scene, light: &Light, height: u32) -> Option<Sma
 /// penumbra ≤ 0.4 px, highlight ≤ 0.3 px, r/d 0.001: drawn as a point light".
 pub fn draw_small_area_lights_as_points(scene: &mut Scene, height: u32) -> Vec<String> {
     let mut lines = Vec::new();
+    let exact = |l: &Light| l.kind.is_area() && l.area_points == 0;
+    if !scene.lights.iter().take(MAX_LIGHTS).any(exact) {
+        return lines;
+    }
+    let boxes = object_boxes(scene);
     for i in 0..scene.lights.len().min(MAX_LIGHTS) {
         let light = &scene.lights[i];
-        if !light.kind.is_area() || light.area_points > 0 {
+        if !exact(light) {
             continue;
         }
-        let Some(b) = small_area_light(scene, light, height).filter(SmallAreaLight::is_small) else { continue };
+        let Some(b) = bounds_of(scene, &boxes, light, height).filter(SmallAreaLight::is_small) else { continue };
         let size = match light.kind {
             LightKind::Rect => format!("{} × {} m", light.size[0], light.size[1]),
             _ => format!("{} m across", light.size[0]),

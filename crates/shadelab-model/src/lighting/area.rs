@@ -450,14 +450,6 @@ pub fn area_irradiance_reference(
     (fine, (fine - coarse).abs())
 }
 
-/// The chapter's "replace the area source by point sources": the light's `k`×`k` equal-area
-/// cells as point lights at their centres, each (position, outward unit normal, area); a cell
-/// emits like a Lambertian point, intensity `L·ΔA·cos θ_l` towards `p`. Summed with binary
-/// visibility they are the quadrature above; `k = 1` is one point at the centre.
-pub fn point_sources(light: &AreaLight, p: DVec3, k: usize) -> Vec<(DVec3, DVec3, f64)> {
-    samples(light, p, k)
-}
-
 /// What the light adds to the Cook–Torrance specular term at `p` (unit normal `n`, unit view
 /// vector `v`), per channel and per unit radiance: Σ cos θ_l⁺ ΔA / r² · S(l) over `k`×`k`
 /// cells, where S is `specular_cook_torrance` (π ρ_s (N·L), the scale a point light of intensity

@@ -95,12 +95,11 @@ pub fn area_emitter(light: &Light, j: u32) -> AreaEmitter {
     }
 }
 
-/// Point source `j` of `light` at point `p` with unit normal `n`: the centre's sample `base`
-/// (its falloff and colour) with the direction to the point source and its factor
+/// Point source `e` of `light` ([`area_emitter`]) at point `p` with unit normal `n`: the centre's
+/// sample `base` (its falloff and colour) with the direction to the point source and its factor
 /// gain·cos θ_e·d²/r² (d to the centre, r to the source, r² at least LIGHT_DIST_MIN²) on both
 /// the diffuse form and the specular. Summed over j this converges to the area form.
-pub fn area_point_sample(base: &LightSample, light: &Light, j: u32, p: DVec3, n: DVec3) -> LightSample {
-    let e = area_emitter(light, j);
+pub fn area_point_sample(base: &LightSample, light: &Light, e: &AreaEmitter, p: DVec3, n: DVec3) -> LightSample {
     let d2 = (light.position - p).length_squared();
     let to = e.position - p;
     let r = to.length();
@@ -126,7 +125,7 @@ mod tests {
 
     fn form_sum(light: &Light, p: DVec3, n: DVec3) -> f64 {
         let base = light_sample(light, p, n, DVec3::Y, 0.3);
-        (0..area_point_count(light)).map(|j| area_point_sample(&base, light, j, p, n).form).sum()
+        (0..area_point_count(light)).map(|j| area_point_sample(&base, light, &area_emitter(light, j), p, n).form).sum()
     }
 
     #[test]

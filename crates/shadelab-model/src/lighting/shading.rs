@@ -3,7 +3,7 @@
 //! point (its cast shadow, docs/model.md §0). The GPU's transforms, entry points and debug view have no
 //! f64 twin here (see the exception list of `every_wgsl_function_has_a_rust_twin`).
 
-use super::area_points::{area_point_count, area_point_sample};
+use super::area_points::{area_emitter, area_point_count, area_point_sample};
 use super::brdf::{SpecularModel, fresnel_v_from_mu, light_contribution};
 use super::common::safe_normalize;
 use super::lights::{Light, MAX_LIGHTS, light_sample};
@@ -63,7 +63,11 @@ pub fn shade_with_visibility(
         let base = light_sample(light, p, n, v, mat.m);
         // An area light drawn as k point sources is k samples, each with its own visibility.
         for j in 0..area_point_count(light) {
-            let s = if light.drawn_as_points() { area_point_sample(&base, light, j, p, n) } else { base };
+            let s = if light.drawn_as_points() {
+                area_point_sample(&base, light, &area_emitter(light, j), p, n)
+            } else {
+                base
+            };
             let (l, radiance) = (s.l, s.radiance);
             let lit = match model {
                 IlluminationModel::Lambert => {

@@ -7,7 +7,7 @@ use super::inputs::ShadowCase;
 use glam::DVec3;
 use shadelab_model::guards::{D0_MIN, M_MIN, N_DOT_V_MIN};
 use shadelab_model::lighting::area::{self, AreaLight, AreaShape};
-use shadelab_model::lighting::area_points::area_point_sample;
+use shadelab_model::lighting::area_points::{area_emitter, area_point_sample};
 use shadelab_model::lighting::{brdf, common, lights, models, transmission};
 use shadelab_model::shadows;
 use shadelab_model::{FalloffForm, Light, LightKind, Material, PhongExponent, SpecularModel};
@@ -377,7 +377,9 @@ pub(super) fn reference(
         (light.tangent, light.area_points) = (tangent, 1 + (m * 7.0) as u32);
         let base = lights::LightSample { l, radiance: [1.0; 3], form: 0.0, spec_scale: 1.0 };
         out[AREA_POINTS_FORM + k] = (0..light.area_points)
-            .map(|j| brdf::diffuse_lambert(area_point_sample(&base, &light, j, DVec3::ZERO, n).form))
+            .map(|j| {
+                brdf::diffuse_lambert(area_point_sample(&base, &light, &area_emitter(&light, j), DVec3::ZERO, n).form)
+            })
             .sum();
     }
     // Light through a surface at N, met along −V: into a medium of index v (μ's red channel) and

@@ -21,6 +21,7 @@ const SPOT_COS_SPAN_MIN: f32 = 1e-3;
 const EDGE_CROSS_MIN_LEN2: f32 = 1e-24;
 const AREA_POINT_LIMIT_ANGLE: f32 = 0.02;
 const BLOCKER_DIST_MIN: f32 = 1e-4;
+const QUADRIC_A_MIN: f32 = 1e-30;
 
 // Light slots in the scene uniform (scene::MAX_LIGHTS).
 const MAX_LIGHTS: u32 = 8u;

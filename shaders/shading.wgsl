@@ -66,6 +66,18 @@ struct Object {
     normal_scale: f32,
     // The normal texture's transform (its rotation: uv_rotations.w).
     normal_uv: vec4<f32>,
+    // World to object space (the glass pass's analytic exit, glass.wgsl).
+    inverse_model: mat4x4<f32>,
+    // rgb: the refractive index v per channel; w: 1 where the channels differ.
+    ior: vec4<f32>,
+    // rgb: the absorption coefficient a per channel per world unit.
+    absorption: vec4<f32>,
+    // Shape::exit_code (SHAPE_MESH: the back faces).
+    exit_shape: u32,
+    // The absorption form picked for the object (ABSORPTION_…).
+    absorption_form: u32,
+    // The longest path inside: the path-length view's white.
+    longest_chord: f32,
 }
 
 const FLAG_DEBUG_NONFINITE: u32 = 1u;

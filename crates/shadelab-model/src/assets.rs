@@ -81,6 +81,7 @@ fn ground(tessellation: u32, color: [f64; 3]) -> (Object, Material) {
 pub fn figure_7_3_pyramid() -> Scene {
     let (ground, ground_mat) = ground(16, [0.55, 0.55, 0.52]);
     Scene {
+        absorption: Default::default(),
         name: "figure 7.3: pyramid in parallel light".into(),
         objects: vec![
             ground,
@@ -135,6 +136,7 @@ pub fn gouraud_vs_phong() -> Scene {
         ..Material::default()
     };
     Scene {
+        absorption: Default::default(),
         name: "Gouraud vs Phong shading".into(),
         objects: vec![
             ground,
@@ -222,6 +224,7 @@ pub fn material_board() -> Scene {
             h: PhongExponent::from_m(0.15),
             mu: p.mu,
             transmission,
+            ior: None,
             absorption,
             thickness: if transmission > 0.0 { 0.76 } else { 0.0 },
             base_color_texture: None,
@@ -247,6 +250,7 @@ pub fn material_board() -> Scene {
         sphere(format!("plastic m={m}"), mat, row_x(i, roughness.len()), 1.3);
     }
     Scene {
+        absorption: Default::default(),
         name: "material board".into(),
         objects,
         materials,

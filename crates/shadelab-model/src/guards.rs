@@ -90,6 +90,11 @@ pub const AREA_POINT_LIMIT_ANGLE: f64 = 0.02;
 /// light would make it infinite; a tenth of a millimetre caps it.
 pub const BLOCKER_DIST_MIN: f64 = 1e-4;
 
+/// Smallest quadratic coefficient `a = |d|²` (a ray's squared length across a sphere or a
+/// cylinder's side) the glass exit divides by: only a zero direction gets below it, and
+/// `shape_exit` turns that away first; 1e-30 stays a normal f32.
+pub const QUADRIC_A_MIN: f64 = 1e-30;
+
 /// All guards by name, in the order they are declared (used by the WGSL ↔ Rust equality test and
 /// by the README table).
 pub const ALL: &[(&str, f64)] = &[
@@ -110,4 +115,5 @@ pub const ALL: &[(&str, f64)] = &[
     ("EDGE_CROSS_MIN_LEN2", EDGE_CROSS_MIN_LEN2),
     ("AREA_POINT_LIMIT_ANGLE", AREA_POINT_LIMIT_ANGLE),
     ("BLOCKER_DIST_MIN", BLOCKER_DIST_MIN),
+    ("QUADRIC_A_MIN", QUADRIC_A_MIN),
 ];

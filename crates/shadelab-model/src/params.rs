@@ -172,6 +172,19 @@ pub const TRANSMISSION: ParamRange = ParamRange {
     min: 0.0,
     max: 1.0,
 };
+/// A transparent material's refractive index `v` per channel, given directly (docs/transparency.md);
+/// without it `v` follows μ. 1 is no interface; diamond is 2.42, and 3 covers every clear solid.
+pub const IOR: ParamRange =
+    ParamRange { flag: "--ior", symbol: "v", meaning: "refractive index v (per channel)", min: 1.0, max: 3.0 };
+/// Absorption coefficient `a` per channel, per metre (docs/transparency.md): 100/m takes a 5 cm
+/// path past a·d = 5, where e^(−a·d) leaves under 1 % of the light.
+pub const ABSORPTION: ParamRange = ParamRange {
+    flag: "--absorption-coef",
+    symbol: "a",
+    meaning: "absorption coefficient a per metre (per channel)",
+    min: 0.0,
+    max: 100.0,
+};
 /// Phong exponent `h` (docs/model.md §3); "mirror" is accepted besides the numbers.
 pub const H: ParamRange = ParamRange {
     flag: "--h",
@@ -221,18 +234,22 @@ pub fn parse_h(text: &str) -> Result<PhongExponent, ParamError> {
 
 /// Parse `μ` as `R,G,B` or one value for all three channels.
 pub fn parse_mu(text: &str) -> Result<[f64; 3], ParamError> {
-    let parts: Vec<&str> = text.split(',').collect();
-    match parts.as_slice() {
-        [one] => {
-            let v = MU.parse(one)?;
-            Ok([v; 3])
+    MU.parse_rgb(text)
+}
+
+impl ParamRange {
+    /// A per-channel value: `R,G,B` or one value for all three, each in the range.
+    pub fn parse_rgb(&self, text: &str) -> Result<[f64; 3], ParamError> {
+        let parts: Vec<&str> = text.split(',').collect();
+        match parts.as_slice() {
+            [one] => Ok([self.parse(one)?; 3]),
+            [r, g, b] => Ok([self.parse(r)?, self.parse(g)?, self.parse(b)?]),
+            _ => Err(ParamError::NotANumber {
+                flag: self.flag.into(),
+                value: text.into(),
+                allowed: format!("R,G,B or one value, each in [{}, {}]", self.min, self.max),
+            }),
         }
-        [r, g, b] => Ok([MU.parse(r)?, MU.parse(g)?, MU.parse(b)?]),
-        _ => Err(ParamError::NotANumber {
-            flag: MU.flag.into(),
-            value: text.into(),
-            allowed: "R,G,B or one value, each in [0, 1]".into(),
-        }),
     }
 }
 

@@ -2,11 +2,13 @@
 //! the *analytic* shapes (exact normals, no tessellation), shaded by the f64 model, with exact
 //! hard cast shadows from shadow rays. The ground truth for tests and for the accuracy study.
 
+mod glass;
 mod intersect;
 mod shadow_rays;
 #[cfg(test)]
 mod tests;
 
+pub use glass::{GLASS_MAX_DEPTH, GLASS_MIN_WEIGHT, SECONDARY_RAY_OFFSET};
 pub use shadow_rays::SHADOW_RAY_OFFSET_REL;
 
 use crate::Light;
@@ -88,6 +90,7 @@ pub fn render_reference(scene: &Scene, specular: SpecularModel, width: u32, heig
 pub fn render_drawn(scene: &Scene, specular: SpecularModel, width: u32, height: u32) -> ReferenceImage {
     let inverses: Vec<DMat4> = scene.objects.iter().map(|o| o.transform.matrix().inverse()).collect();
     let rays = ShadowRays::new(scene, &inverses);
+    let ctx = Context { scene, inverses: &inverses, rays: &rays, specular };
     let n = (width * height) as usize;
     let mut img = ReferenceImage {
         width,
@@ -108,6 +111,16 @@ pub fn render_drawn(scene: &Scene, specular: SpecularModel, width: u32, height: 
                 img.hidden.push(0);
                 continue;
             };
+            let eye = scene.camera.eye_h();
+            if scene.drawn_as_glass(hit.object) {
+                // A transparent object: its surface and what the traced paths bring through it.
+                let shaded = ctx.glass(&hit, dir, eye);
+                img.pixels.push(shaded.lit);
+                img.unshadowed.push(shaded.unshadowed);
+                img.object.push(Some(hit.object));
+                img.hidden.push(shaded.hidden);
+                continue;
+            }
             let mi = scene.objects[hit.object].material;
             let material = &scene.materials[mi];
             // The pixel's footprint in texture coordinates, as the GPU's derivatives take it: the
@@ -121,70 +134,110 @@ pub fn render_drawn(scene: &Scene, specular: SpecularModel, width: u32, height: 
                 let (a, b, c, d) = (uv_at(x0, y)?, uv_at(x0 + 1, y)?, uv_at(x, y0)?, uv_at(x, y0 + 1)?);
                 Some(UvFootprint { dx: [b[0] - a[0], b[1] - a[1]], dy: [d[0] - c[0], d[1] - c[1]] })
             });
-            // The shading normal, perturbed by the material's normal texture where it has one.
-            let n = material.normal_at(&scene.textures, hit.uv, footprint.as_ref(), hit.normal, hit.tangent);
-            let (p, eye) = (hit.point, scene.camera.eye_h());
-            // The point's parameters in a copy of its material (the copies are made once, not per
-            // pixel); its emission is added to whatever the model gives.
-            let (mat, emission) = if material.varies(hit.vertex_color) {
-                let at = material.surface_at(&scene.textures, hit.uv, footprint.as_ref(), hit.vertex_color);
-                let m = &mut tinted[mi];
-                (m.color, m.mu, m.m, m.h, m.r_a) = (at.color, at.mu, at.m, at.h, at.r_a);
-                (&*m, at.emission)
-            } else {
-                (material, material.emission)
-            };
-            let emit = |c: [f64; 3]| -> [f64; 3] { std::array::from_fn(|i| c[i] + emission[i]) };
-            let mut hidden = 0u8;
-            let mut dimmed = false;
-            let lit = shade_with_visibility(
-                p,
-                n,
-                eye,
-                mat,
-                &scene.lights,
-                scene.ambient,
-                specular,
-                scene.illumination,
-                |i, light, j, l| {
-                    // A point source of an area light drawn as points: its own hard shadow.
-                    if light.drawn_as_points() {
-                        let at = Light { position: area_emitter(light, j).position, area_points: 0, ..light.clone() };
-                        let blocked = light.shadow.casts && rays.hidden(&at, p, hit.geometric_normal, l);
-                        dimmed |= blocked;
-                        return if blocked { 0.0 } else { 1.0 };
-                    }
-                    // An area light's soft shadow: the share of its cells a ray reaches; the
-                    // pixel counts as hidden from it when more than half of its light is blocked.
-                    let soft = light
-                        .shadow
-                        .casts
-                        .then(|| rays.area_visibility(light, p, n, hit.geometric_normal, REFERENCE_AREA_CELLS))
-                        .flatten();
-                    if let Some(v) = soft {
-                        if v < 0.5 {
-                            hidden |= 1 << i;
-                        }
-                        dimmed |= v < 1.0;
-                        return v;
-                    }
-                    if light.shadow.casts && rays.hidden(light, p, hit.geometric_normal, l) {
-                        hidden |= 1 << i;
-                        0.0
-                    } else {
-                        1.0
-                    }
-                },
-            );
-            img.pixels.push(emit(lit));
-            img.unshadowed.push(emit(if hidden == 0 && !dimmed {
-                lit
-            } else {
-                shade(p, n, eye, mat, &scene.lights, scene.ambient, specular, scene.illumination)
-            }));
+            let shaded = ctx.shade_hit(&hit, eye, &mut tinted, footprint.as_ref(), None);
+            img.pixels.push(shaded.lit);
+            img.unshadowed.push(shaded.unshadowed);
             img.object.push(Some(hit.object));
-            img.hidden.push(hidden);
+            img.hidden.push(shaded.hidden);
         }
     }
     img
+}
+
+/// What the reference needs to shade any point: the scene, its inverse transforms, its shadow
+/// rays and the specular model.
+struct Context<'a> {
+    pub scene: &'a Scene,
+    pub inverses: &'a [DMat4],
+    pub rays: &'a ShadowRays<'a>,
+    pub specular: SpecularModel,
+}
+
+/// A point shaded with and without cast shadows, and the lights hidden from it.
+#[derive(Clone, Copy, Debug, Default)]
+struct Shaded {
+    pub lit: [f64; 3],
+    pub unshadowed: [f64; 3],
+    pub hidden: u8,
+}
+
+impl Context<'_> {
+    /// The model at `hit` seen from `eye` (homogeneous), with exact cast shadows: the point's
+    /// parameters in a copy of its material (`tinted`, made once per image, not per pixel), or
+    /// `material` when given (the glass surface's own); its emission added.
+    pub fn shade_hit(
+        &self,
+        hit: &intersect::SurfaceHit,
+        eye: glam::DVec4,
+        tinted: &mut [Material],
+        footprint: Option<&UvFootprint>,
+        material: Option<&Material>,
+    ) -> Shaded {
+        let scene = self.scene;
+        let mi = scene.objects[hit.object].material;
+        let base = material.unwrap_or(&scene.materials[mi]);
+        // The shading normal, perturbed by the material's normal texture where it has one.
+        let n = base.normal_at(&scene.textures, hit.uv, footprint, hit.normal, hit.tangent);
+        let p = hit.point;
+        let (mat, emission) = if base.varies(hit.vertex_color) {
+            let at = base.surface_at(&scene.textures, hit.uv, footprint, hit.vertex_color);
+            let m = &mut tinted[mi];
+            if material.is_some() {
+                *m = base.clone();
+            }
+            (m.color, m.mu, m.m, m.h, m.r_a) = (at.color, at.mu, at.m, at.h, at.r_a);
+            (&*m, at.emission)
+        } else {
+            (base, base.emission)
+        };
+        let emit = |c: [f64; 3]| -> [f64; 3] { std::array::from_fn(|i| c[i] + emission[i]) };
+        let (rays, specular) = (self.rays, self.specular);
+        let mut hidden = 0u8;
+        let mut dimmed = false;
+        let lit = shade_with_visibility(
+            p,
+            n,
+            eye,
+            mat,
+            &scene.lights,
+            scene.ambient,
+            specular,
+            scene.illumination,
+            |i, light, j, l| {
+                // A point source of an area light drawn as points: its own hard shadow.
+                if light.drawn_as_points() {
+                    let at = Light { position: area_emitter(light, j).position, area_points: 0, ..light.clone() };
+                    let blocked = light.shadow.casts && rays.hidden(&at, p, hit.geometric_normal, l);
+                    dimmed |= blocked;
+                    return if blocked { 0.0 } else { 1.0 };
+                }
+                // An area light's soft shadow: the share of its cells a ray reaches; the
+                // pixel counts as hidden from it when more than half of its light is blocked.
+                let soft = light
+                    .shadow
+                    .casts
+                    .then(|| rays.area_visibility(light, p, n, hit.geometric_normal, REFERENCE_AREA_CELLS))
+                    .flatten();
+                if let Some(v) = soft {
+                    if v < 0.5 {
+                        hidden |= 1 << i;
+                    }
+                    dimmed |= v < 1.0;
+                    return v;
+                }
+                if light.shadow.casts && rays.hidden(light, p, hit.geometric_normal, l) {
+                    hidden |= 1 << i;
+                    0.0
+                } else {
+                    1.0
+                }
+            },
+        );
+        let unshadowed = if hidden == 0 && !dimmed {
+            lit
+        } else {
+            shade(p, n, eye, mat, &scene.lights, scene.ambient, specular, scene.illumination)
+        };
+        Shaded { lit: emit(lit), unshadowed: emit(unshadowed), hidden }
+    }
 }

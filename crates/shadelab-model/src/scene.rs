@@ -46,6 +46,19 @@ pub enum Shape {
 }
 
 impl Shape {
+    /// The shape's code in the analytic exit (`lighting::transmission::SHAPE_…`).
+    pub fn exit_code(self) -> u32 {
+        use crate::lighting::transmission::*;
+        match self {
+            Shape::Sphere => SHAPE_SPHERE,
+            Shape::Cylinder => SHAPE_CYLINDER,
+            Shape::Cube => SHAPE_CUBE,
+            Shape::Plane => SHAPE_PLANE,
+            Shape::Pyramid => SHAPE_PYRAMID,
+            Shape::Mesh(_) => SHAPE_MESH,
+        }
+    }
+
     pub const ALL: [Shape; 5] = [Shape::Sphere, Shape::Cylinder, Shape::Cube, Shape::Plane, Shape::Pyramid];
     pub fn name(self) -> &'static str {
         match self {
@@ -111,6 +124,9 @@ pub struct Scene {
     pub illumination: crate::params::IlluminationModel,
     /// The materials' textures, indexed by `TextureRef::texture`.
     pub textures: Vec<Texture>,
+    /// How transparent objects absorb: exactly, or by the chapter's rule per object
+    /// (docs/transparency.md).
+    pub absorption: crate::lighting::transmission::AbsorptionChoice,
 }
 
 /// Background colour (linear RGB): dark enough for highlights to stand out, not black, so a blank
@@ -125,6 +141,12 @@ pub struct Overrides {
     pub mu: Option<[f64; 3]>,
     /// Every material's transmission share `1 − t` (docs/model.md §2).
     pub transmission: Option<f64>,
+    /// Every material's refractive index per channel, within `params::IOR`.
+    pub ior: Option<[f64; 3]>,
+    /// Every material's absorption coefficient per channel, within `params::ABSORPTION`.
+    pub absorption_coef: Option<[f64; 3]>,
+    /// How transparent objects absorb (`--absorption`).
+    pub absorption: Option<crate::lighting::transmission::AbsorptionChoice>,
     pub falloff_alpha: Option<f64>,
     pub falloff_form: Option<FalloffForm>,
     pub d0: Option<f64>,
@@ -162,6 +184,13 @@ impl Overrides {
 }
 
 impl Scene {
+    /// Whether object `i` is drawn by the glass pass: its material transmits, and the model is
+    /// not the four-term sum (which draws transmission as its own `I_t` term).
+    pub fn drawn_as_glass(&self, i: usize) -> bool {
+        self.illumination != crate::params::IlluminationModel::Sum
+            && self.objects.get(i).and_then(|o| self.materials.get(o.material)).is_some_and(|m| m.transmits())
+    }
+
     /// Turn every light's cast shadows on or off (tests that compare the lighting terms alone
     /// switch them off; `render --shadows`).
     pub fn set_shadows(&mut self, on: bool) {
@@ -175,6 +204,9 @@ impl Scene {
         if let Some(model) = o.illumination {
             self.illumination = model;
         }
+        if let Some(a) = o.absorption {
+            self.absorption = a;
+        }
         for mat in &mut self.materials {
             if let Some(m) = o.m {
                 mat.m = m;
@@ -187,6 +219,12 @@ impl Scene {
             }
             if let Some(t) = o.transmission {
                 mat.transmission = t;
+            }
+            if let Some(v) = o.ior {
+                mat.ior = Some(v);
+            }
+            if let Some(a) = o.absorption_coef {
+                mat.absorption = a;
             }
         }
         for light in &mut self.lights {

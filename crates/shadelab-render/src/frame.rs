@@ -23,16 +23,24 @@ impl Renderer {
     /// Write a scene's parameters (materials, lights, camera) into its uniforms. Cheap: the
     /// viewer calls it whenever a parameter changes; geometry stays.
     pub fn write_uniforms(&self, gpu_scene: &SceneGpu, scene: &Scene, target: &Target, settings: &RenderSettings) {
-        let flags = if settings.debug_nonfinite { crate::uniforms::FLAG_DEBUG_NONFINITE } else { 0 };
+        let flags = if settings.debug_nonfinite { crate::uniforms::FLAG_DEBUG_NONFINITE } else { 0 }
+            | settings.glass_view.code() << crate::uniforms::GLASS_VIEW_SHIFT;
         let g = GlobalsUniform::new(scene, target.width, target.height, flags, settings.specular);
         self.queue.write_buffer(&gpu_scene.globals, 0, bytemuck::bytes_of(&g));
         let mut bytes = vec![0u8; (gpu_scene.object_stride as usize) * scene.objects.len()];
+        let mut exits = Vec::with_capacity(scene.objects.len());
         for (i, o) in scene.objects.iter().enumerate() {
-            let u = ObjectUniform::new(scene, o);
+            let mut u = ObjectUniform::new(scene, i, o);
+            if settings.glass_exit == shadelab_model::lighting::transmission::GlassExit::BackFaces {
+                u.exit_shape = shadelab_model::lighting::transmission::SHAPE_MESH;
+            }
+            exits.push(u.exit_shape);
             let at = i * gpu_scene.object_stride as usize;
             bytes[at..at + size_of::<ObjectUniform>()].copy_from_slice(bytemuck::bytes_of(&u));
         }
         self.queue.write_buffer(&gpu_scene.objects_buf, 0, &bytes);
+        *gpu_scene.glass_exits.lock().expect("not poisoned") = exits;
+        *gpu_scene.glass_order.lock().expect("not poisoned") = crate::glass_pass::glass_order(scene);
         let shadows = Program::for_scene(scene, settings).effects().has(Effect::CastShadows);
         self.write_shadows(gpu_scene, scene, shadows, target.width as f64 / target.height.max(1) as f64);
     }
@@ -75,6 +83,12 @@ impl Renderer {
             self.encode_lighting_pass(encoder, gpu_scene, key.program, entry, colors, maps, start);
             begun |= start.is_some();
         }
+        // Transparent objects are drawn after the scene pass, over it (glass_pass.rs).
+        let glass: Vec<usize> = if fx.has(Effect::Transmission) {
+            gpu_scene.glass_order.lock().expect("not poisoned").clone()
+        } else {
+            Vec::new()
+        };
         let pipeline = self.pipelines.pipeline(key);
         let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
             label: Some("shadelab scene"),
@@ -92,7 +106,7 @@ impl Renderer {
             timestamp_writes: timestamps.map(|(qs, i)| wgpu::RenderPassTimestampWrites {
                 query_set: qs,
                 beginning_of_pass_write_index: (!begun).then_some(i),
-                end_of_pass_write_index: Some(i + 1),
+                end_of_pass_write_index: glass.is_empty().then_some(i + 1),
             }),
             occlusion_query_set: None,
             multiview_mask: None,
@@ -103,6 +117,9 @@ impl Renderer {
             pass.set_bind_group(2, maps, &[]);
         }
         for (i, k) in gpu_scene.objects.iter().enumerate() {
+            if glass.contains(&i) {
+                continue;
+            }
             let mesh = &gpu_scene.meshes[k];
             pass.set_bind_group(1, gpu_scene.object_bind(i), &[(i as u64 * gpu_scene.object_stride) as u32]);
             if let Some(colors) = lit_colors {
@@ -124,6 +141,12 @@ impl Renderer {
                 pass.set_index_buffer(mesh.indices.slice(..), wgpu::IndexFormat::Uint32);
                 pass.draw_indexed(0..mesh.index_count, 0, 0..1);
             }
+        }
+        drop(pass);
+        if !glass.is_empty() {
+            let maps = shadows.as_ref().map(|s| &s.0);
+            let end = timestamps.map(|(qs, i)| (qs, i + 1));
+            self.encode_glass(encoder, gpu_scene, target, key.program, &glass, maps, end);
         }
     }
 

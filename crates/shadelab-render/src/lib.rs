@@ -3,6 +3,7 @@
 //! of egui.
 
 pub mod frame;
+pub mod glass_pass;
 pub mod gpu;
 pub mod image_error;
 pub mod light_loop;

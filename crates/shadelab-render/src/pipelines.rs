@@ -37,6 +37,9 @@ pub struct Layouts {
     pub lighting_pass_shadows: wgpu::PipelineLayout,
     /// The shadow pass: object (group 1) and the layers' matrices (group 3).
     pub shadow_pass: wgpu::PipelineLayout,
+    pub glass: wgpu::PipelineLayout,
+    pub glass_shadows: wgpu::PipelineLayout,
+    pub glass_back: wgpu::PipelineLayout,
 }
 
 impl Layouts {
@@ -70,6 +73,8 @@ pub struct PipelineCache {
     /// The lighting passes' compute pipelines, by effect set, light loop and entry point, built
     /// on first use.
     lighting_pipelines: HashMap<(EffectKey, LightLoop, &'static str), wgpu::ComputePipeline>,
+    /// The glass pass's pipelines by effects, light loop, colour format and back faces or not.
+    glass_pipelines: HashMap<(EffectKey, LightLoop, wgpu::TextureFormat, bool), wgpu::RenderPipeline>,
     pipelines: HashMap<PipelineKey, wgpu::RenderPipeline>,
     pending: HashMap<PipelineKey, PendingBuild>,
     /// Build missing pipelines on a worker thread and draw with the uber pipeline meanwhile
@@ -91,6 +96,7 @@ impl PipelineCache {
             layouts,
             shadow_pipeline: None,
             lighting_pipelines: HashMap::new(),
+            glass_pipelines: HashMap::new(),
             pipelines: HashMap::new(),
             pending: HashMap::new(),
             build_in_background: false,
@@ -109,6 +115,7 @@ impl PipelineCache {
         self.pipelines.clear();
         self.shadow_pipeline = None;
         self.lighting_pipelines.clear();
+        self.glass_pipelines.clear();
         self.pending.clear();
         Ok(())
     }
@@ -175,6 +182,29 @@ impl PipelineCache {
     }
 
     /// Move pipelines finished on worker threads into the cache.
+    /// The glass pass's pipeline of `program` (`back`: a mesh's back faces), built on first use.
+    pub fn glass_pipeline(
+        &mut self,
+        program: Program,
+        format: wgpu::TextureFormat,
+        back: bool,
+    ) -> &wgpu::RenderPipeline {
+        let (effects, lights) = (program.effects(), program.light_loop());
+        let key = (effects, lights, format, back);
+        if !self.glass_pipelines.contains_key(&key) {
+            let module = self.module(effects);
+            let layout = match (back, effects.has(Effect::CastShadows)) {
+                (true, _) => &self.layouts.glass_back,
+                (false, false) => &self.layouts.glass,
+                (false, true) => &self.layouts.glass_shadows,
+            };
+            let constants = lights.constants();
+            let p = crate::glass_pass::build_pipeline(&self.device, layout, &module, effects, &constants, format, back);
+            self.glass_pipelines.insert(key, p);
+        }
+        &self.glass_pipelines[&key]
+    }
+
     pub fn poll_builds(&mut self) {
         let done: Vec<(PipelineKey, wgpu::RenderPipeline, Duration)> = self
             .pending

@@ -32,6 +32,10 @@ pub struct RenderSettings {
     /// Paint pixels whose colour is NaN or infinite magenta.
     pub debug_nonfinite: bool,
     pub specialization: Specialization,
+    /// Where the glass pass finds a path's exit.
+    pub glass_exit: shadelab_model::lighting::transmission::GlassExit,
+    /// What transparent objects' pixels show.
+    pub glass_view: shadelab_model::lighting::transmission::GlassView,
 }
 
 impl RenderSettings {
@@ -48,6 +52,8 @@ impl Default for RenderSettings {
             interpolation: Interpolation::Perspective,
             debug_nonfinite: false,
             specialization: Specialization::Specialized,
+            glass_exit: Default::default(),
+            glass_view: Default::default(),
         }
     }
 }

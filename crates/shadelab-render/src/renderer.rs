@@ -20,6 +20,10 @@ pub struct Renderer {
     pub(crate) flat_colors_layout: wgpu::BindGroupLayout,
     /// Comparison samplers of the maps: bilinear 2×2 (Pcf, Poisson) and nearest (Hard).
     pub(crate) shadow_samplers: [wgpu::Sampler; 2],
+    /// @group(3) of the glass pass (`glass_pass.rs`).
+    pub(crate) glass_layout: wgpu::BindGroupLayout,
+    /// The glass pass's textures, made for the last target it drew into.
+    pub(crate) glass: Option<crate::glass_pass::GlassTextures>,
     /// The shader modules and pipelines, by program and colour format.
     pub pipelines: PipelineCache,
 }
@@ -53,6 +57,7 @@ impl Renderer {
         let casters_layout = crate::shadow_pass::casters_layout(device);
         let flat_compute_layout = crate::lighting_pass::compute_layout(device);
         let flat_colors_layout = crate::lighting_pass::colors_layout(device);
+        let glass_layout = crate::glass_pass::layout(device);
         let layout = |label: &str, groups: &[Option<&wgpu::BindGroupLayout>]| {
             device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
                 label: Some(label),
@@ -84,6 +89,12 @@ impl Renderer {
             ),
             // The shadow pass reads only the object (group 1) and its layer's matrix (group 3).
             shadow_pass: layout("shadelab shadow pass", &[None, Some(&object_layout), None, Some(&casters_layout)]),
+            glass: layout("shadelab glass", &[Some(&globals_layout), Some(&object_layout), None, Some(&glass_layout)]),
+            glass_shadows: layout(
+                "shadelab glass shadows",
+                &[Some(&globals_layout), Some(&object_layout), Some(&shadow_layout), Some(&glass_layout)],
+            ),
+            glass_back: layout("shadelab glass back faces", &[Some(&globals_layout), Some(&object_layout)]),
         };
         Renderer {
             device: device.clone(),
@@ -94,6 +105,8 @@ impl Renderer {
             casters_layout,
             flat_compute_layout,
             flat_colors_layout,
+            glass_layout,
+            glass: None,
             shadow_samplers: crate::shadow_pass::samplers(device),
             pipelines: PipelineCache::new(device, layouts),
         }

@@ -8,7 +8,7 @@
 use shadelab_model::effects::EffectKey;
 
 /// `(file name, source)` in the order they are concatenated.
-pub const FILES: [(&str, &str); 11] = [
+pub const FILES: [(&str, &str); 13] = [
     ("common.wgsl", include_str!("../../../shaders/common.wgsl")),
     ("brdf.wgsl", include_str!("../../../shaders/brdf.wgsl")),
     ("models.wgsl", include_str!("../../../shaders/models.wgsl")),
@@ -21,11 +21,15 @@ pub const FILES: [(&str, &str); 11] = [
     ("shadow_math.wgsl", include_str!("../../../shaders/shadow_math.wgsl")),
     // C and μ at a point: the material tinted by vertex colours and textures.
     ("surface.wgsl", include_str!("../../../shaders/surface.wgsl")),
+    // Light through a surface: only in permutations with transparent objects (and the sweep).
+    ("transmission.wgsl", include_str!("../../../shaders/transmission.wgsl")),
     // Only in permutations with cast shadows (the whole file is one `#if EFFECT_CAST_SHADOWS`).
     ("shadows.wgsl", include_str!("../../../shaders/shadows.wgsl")),
     ("shading.wgsl", include_str!("../../../shaders/shading.wgsl")),
     // Gouraud's and Phong shading's stages with screen-space interpolation.
     ("screen_space.wgsl", include_str!("../../../shaders/screen_space.wgsl")),
+    // The glass pass's entry points: only in permutations with transparent objects.
+    ("glass.wgsl", include_str!("../../../shaders/glass.wgsl")),
 ];
 
 /// Keep or cut the `#if NAME` / `#else` / `#endif` blocks of a WGSL source: a block is kept when
@@ -76,9 +80,10 @@ fn uber_defines() -> Vec<&'static str> {
 
 /// Constants, guards and the lighting terms with every effect, without entry points (for compute
 /// passes that evaluate the terms directly; the one texture binding of `surface` goes unused):
-/// `common`, `brdf`, `models`, `lights`, `area_lights`, `area_points`, `shadow_math` and `surface`.
+/// `common`, `brdf`, `models`, `lights`, `area_lights`, `area_points`, `shadow_math`, `surface` and
+/// `transmission`.
 pub fn terms_source() -> String {
-    let raw = FILES[..8].iter().map(|(_, s)| *s).collect::<Vec<_>>().join("\n");
+    let raw = FILES[..9].iter().map(|(_, s)| *s).collect::<Vec<_>>().join("\n");
     preprocess(&raw, &uber_defines()).expect("the shipped WGSL preprocesses")
 }
 

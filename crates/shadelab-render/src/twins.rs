@@ -9,7 +9,7 @@ use shadelab_model::params::NamedValue;
 use shadelab_model::{FalloffForm, IlluminationModel, LightKind, SpecularModel};
 
 /// Each WGSL file and the source of its f64 twin.
-const TWINS: [(&str, &str); 11] = [
+const TWINS: [(&str, &str); 13] = [
     ("common.wgsl", include_str!("../../shadelab-model/src/lighting/common.rs")),
     ("brdf.wgsl", include_str!("../../shadelab-model/src/lighting/brdf.rs")),
     ("models.wgsl", include_str!("../../shadelab-model/src/lighting/models.rs")),
@@ -32,6 +32,7 @@ const TWINS: [(&str, &str); 11] = [
             include_str!("../../shadelab-model/src/scene/texture.rs")
         ),
     ),
+    ("transmission.wgsl", include_str!("../../shadelab-model/src/lighting/transmission.rs")),
     (
         "shadows.wgsl",
         concat!(
@@ -42,11 +43,24 @@ const TWINS: [(&str, &str); 11] = [
     ("shading.wgsl", include_str!("../../shadelab-model/src/lighting/shading.rs")),
     // Stages only: their counterpart is the reference's exact per-pixel image.
     ("screen_space.wgsl", include_str!("../../shadelab-model/src/lighting/shading.rs")),
+    // The glass pass: its counterpart is the reference's tracer, which follows every branch.
+    (
+        "glass.wgsl",
+        concat!(
+            include_str!("../../shadelab-model/src/reference/glass.rs"),
+            include_str!("../../shadelab-model/src/reference/intersect.rs")
+        ),
+    ),
 ];
 
 /// WGSL functions with no f64 twin, by file, and why. (Entry points are left out by naga's list:
 /// they are the GPU's stages, whose f64 counterpart is `reference::render_reference`.)
-const NO_TWIN: [(&str, &str, &str); 35] = [
+const NO_TWIN: [(&str, &str, &str); 40] = [
+    ("glass.wgsl", "project_to_pixel", "a point on the target; the reference traces rays, it has no target"),
+    ("glass.wgsl", "texel", "a pixel of the target; the reference traces rays, it has no target"),
+    ("glass.wgsl", "scene_behind", "the target behind the pixel; the reference traces the ray on"),
+    ("glass.wgsl", "scene_along", "the march through the opaque depth; the reference traces the ray exactly"),
+    ("glass.wgsl", "back_face_exit", "a mesh's exit from its back faces; the reference meets its triangles"),
     ("common.wgsl", "is_nonfinite", "the NaN/∞ test on f32 bits; f64 code uses f64::is_finite"),
     ("common.wgsl", "any_nonfinite", "the debug view's test of a colour, built on is_nonfinite"),
     ("surface.wgsl", "sample_slot", "samples a GPU texture; its f64 side is scene::Texture::sample_as"),
@@ -89,12 +103,12 @@ const NO_TWIN: [(&str, &str, &str); 35] = [
 ];
 
 /// Names of the functions a WGSL (or Rust) source declares: `fn name(` at the start of a line,
-/// after any `pub`, `pub(crate)` or attribute-free indentation.
+/// after any `pub`, `pub(crate)`, `pub(super)` or attribute-free indentation.
 fn declared(src: &str) -> Vec<String> {
     src.lines()
         .filter_map(|line| {
             let t = line.trim_start();
-            let t = t.strip_prefix("pub(crate) ").or_else(|| t.strip_prefix("pub ")).unwrap_or(t);
+            let t = ["pub(crate) ", "pub(super) ", "pub "].iter().find_map(|p| t.strip_prefix(p)).unwrap_or(t);
             let rest = t.strip_prefix("fn ")?;
             let name: String = rest.chars().take_while(|c| c.is_alphanumeric() || *c == '_').collect();
             (!name.is_empty()).then_some(name)
@@ -264,9 +278,9 @@ fn a_light_is_packed_from_the_models_derived_values() {
     assert_eq!((u.kind, u.falloff_form), (LightKind::Spot.code(), FalloffForm::Quadratic.code()));
 }
 
-/// The transmission terms (`shaders/transmission.wgsl`), which only the sweep compiles until the
-/// renderer draws transparent materials, have their f64 twins too, and the rule's thresholds and
-/// regime codes equal the model's.
+/// The transmission terms (`shaders/transmission.wgsl`) have their f64 twins, and the rule's
+/// thresholds, the regime codes, the shape codes, the glass views and the background equal the
+/// model's.
 #[test]
 fn the_transmission_terms_have_rust_twins() {
     use shadelab_model::lighting::transmission::{
@@ -285,5 +299,34 @@ fn the_transmission_terms_have_rust_twins() {
         [("ABSORPTION_EXACT", F::Exact), ("ABSORPTION_LINEAR", F::Linear), ("ABSORPTION_NEGLECTED", F::Neglected)]
     {
         assert_eq!(wgsl_constant(&module, name), Some(form as u32 as f64), "{name}: AbsorptionForm's code");
+        assert_eq!(form.code(), form as u32);
     }
+    use shadelab_model::scene::Shape;
+    for (name, shape) in [
+        ("SHAPE_SPHERE", Shape::Sphere),
+        ("SHAPE_CYLINDER", Shape::Cylinder),
+        ("SHAPE_CUBE", Shape::Cube),
+        ("SHAPE_PLANE", Shape::Plane),
+        ("SHAPE_PYRAMID", Shape::Pyramid),
+        ("SHAPE_MESH", Shape::Mesh(0)),
+    ] {
+        assert_eq!(wgsl_constant(&module, name), Some(shape.exit_code() as f64), "{name}: Shape::exit_code");
+    }
+    use shadelab_model::lighting::transmission::GlassView;
+    let lit = parse(&lighting_source());
+    for (name, view) in [
+        ("GLASS_VIEW_TIR", GlassView::Tir),
+        ("GLASS_VIEW_PATH", GlassView::Path),
+        ("GLASS_VIEW_REGIME", GlassView::Regime),
+    ] {
+        assert_eq!(wgsl_constant(&lit, name), Some(view.code() as f64), "{name}: GlassView::code");
+    }
+    assert_eq!(wgsl_constant(&lit, "GLASS_VIEW_SHIFT"), Some(crate::uniforms::GLASS_VIEW_SHIFT as f64));
+    let glass = wgsl_file("glass.wgsl");
+    let background = shadelab_model::scene::BACKGROUND.map(|c| c as f32);
+    let line = format!(
+        "const GLASS_BACKGROUND: vec3<f32> = vec3({:?}, {:?}, {:?});",
+        background[0], background[1], background[2]
+    );
+    assert!(glass.contains(&line), "glass.wgsl's background is scene::BACKGROUND: {line}");
 }

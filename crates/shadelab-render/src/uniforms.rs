@@ -92,6 +92,19 @@ pub struct ObjectUniform {
     pub _pad: f32,
     /// The normal texture's transform: offset (xy) and scale (zw); its rotation is `uv_rotations.w`.
     pub normal_uv: [f32; 4],
+    /// World to object space (the glass pass's analytic exit).
+    pub inverse_model: [[f32; 4]; 4],
+    /// The refractive index v per channel (rgb); w: 1 where the channels differ (disperse).
+    pub ior: [f32; 4],
+    /// The absorption coefficient a per channel per world unit (rgb).
+    pub absorption: [f32; 4],
+    /// `Shape::exit_code`; `SHAPE_MESH` reads the back faces.
+    pub exit_shape: u32,
+    /// `AbsorptionForm::code` of the form the object absorbs in (`effects::absorption_form`).
+    pub absorption_form: u32,
+    /// `effects::longest_chord`: the path-length view's white.
+    pub longest_chord: f32,
+    pub _pad2: f32,
 }
 
 /// One light's shadow map as `shadows.wgsl`'s `ShadowLight` reads it (zeroed: no shadow).
@@ -131,6 +144,8 @@ pub struct ShadowsUniform {
 
 /// `flags` bit: paint non-finite pixels magenta.
 pub const FLAG_DEBUG_NONFINITE: u32 = 1;
+/// `flags` bits 1–2: the glass view (`GlassView::code`, glass.wgsl's `GLASS_VIEW_SHIFT`).
+pub const GLASS_VIEW_SHIFT: u32 = 1;
 
 fn rgb(c: [f64; 3], w: f32) -> [f32; 4] {
     [c[0] as f32, c[1] as f32, c[2] as f32, w]
@@ -189,8 +204,8 @@ impl GlobalsUniform {
 }
 
 impl ObjectUniform {
-    /// Object `object` of `scene` with its material's parameters and textures.
-    pub fn new(scene: &Scene, object: &Object) -> Self {
+    /// Object `object` (number `index`) of `scene` with its material's parameters and textures.
+    pub fn new(scene: &Scene, index: usize, object: &Object) -> Self {
         let material = &scene.materials[object.material];
         let nm = glam::DMat4::from_mat3(object.transform.normal_matrix());
         let t = material.base_color_texture.map(|r| r.transform).unwrap_or_default();
@@ -231,6 +246,13 @@ impl ObjectUniform {
             normal_scale: maps.normal.map_or(1.0, |n| n.scale) as f32,
             _pad: 0.0,
             normal_uv: offset_scale(&transforms[3]),
+            inverse_model: object.transform.matrix().inverse().as_mat4().to_cols_array_2d(),
+            ior: rgb(material.refractive_index(), if material.disperses() { 1.0 } else { 0.0 }),
+            absorption: rgb(material.absorption, 0.0),
+            exit_shape: object.shape.exit_code(),
+            absorption_form: shadelab_model::effects::absorption_form(scene, index).code(),
+            longest_chord: shadelab_model::effects::longest_chord(scene, index) as f32,
+            _pad2: 0.0,
         }
     }
 }

@@ -51,6 +51,10 @@ pub struct SceneGpu {
     /// The shadow maps, made by the first frame whose program has cast shadows
     /// (`shadow_pass.rs`); behind a lock because frames are written through `&SceneGpu`.
     pub(crate) shadows: std::sync::Mutex<Option<crate::shadow_pass::ShadowMaps>>,
+    /// The transparent objects far to near, and each object's exit shape as last written
+    /// (`write_uniforms`): what the glass pass draws and how.
+    pub(crate) glass_order: std::sync::Mutex<Vec<usize>>,
+    pub(crate) glass_exits: std::sync::Mutex<Vec<u32>>,
 }
 
 impl SceneGpu {
@@ -281,6 +285,8 @@ impl Uploader {
             object_stride,
             triangle_count,
             shadows: std::sync::Mutex::new(None),
+            glass_order: Default::default(),
+            glass_exits: Default::default(),
         })
     }
 }

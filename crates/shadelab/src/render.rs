@@ -87,7 +87,12 @@ pub fn run(args: &cli::RenderArgs) -> Result<(), Failure> {
     // the whole scene).
     let whole = scene;
     let mut scene = args.term.scene(&whole);
-    let settings = RenderSettings { debug_nonfinite: args.debug_nonfinite, ..mode };
+    let settings = RenderSettings {
+        debug_nonfinite: args.debug_nonfinite,
+        glass_exit: args.glass_exit,
+        glass_view: args.glass_view,
+        ..mode
+    };
     let (width, height) = args.size.pixels();
     // An area light too small on screen for its area to show is drawn as a point light, saying why.
     if args.small_area_lights == SmallAreaLights::Point {

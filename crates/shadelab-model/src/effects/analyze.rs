@@ -35,16 +35,11 @@ impl Analysis {
     }
 
     /// Put a simulated effect in or leave it out; its state is "on" or "off".
-    fn decide(&mut self, effect: Effect, on: bool, reason: String) {
+    pub(super) fn decide(&mut self, effect: Effect, on: bool, reason: String) {
         if on {
             self.key = self.key.with(effect);
         }
-        self.note(effect, if on { "on" } else { "off" }, reason);
-    }
-
-    /// Record the state of an effect without touching the key (effects not simulated yet).
-    fn note(&mut self, effect: Effect, state: impl Into<String>, reason: impl Into<String>) {
-        self.decisions.push(Decision { effect, state: state.into(), reason: reason.into() });
+        self.decisions.push(Decision { effect, state: (if on { "on" } else { "off" }).into(), reason });
     }
 }
 
@@ -244,35 +239,7 @@ pub fn analyze(scene: &Scene, specular: SpecularModel) -> Analysis {
     a.decide(Effect::Emission, on, why);
     let (on, why) = emissive_texture(scene);
     a.decide(Effect::EmissiveTexture, on, why);
-    let transmitting: Vec<_> = used.iter().filter(|m| m.transmission > 0.0).collect();
-    a.note(
-        Effect::Transmission,
-        if transmitting.is_empty() { "off" } else { "needed, not simulated yet" },
-        if transmitting.is_empty() {
-            "every material is opaque (transparency t = 1 in the chapter's terms)".into()
-        } else {
-            format!("{} material(s) transmit light; the renderer draws them opaque", transmitting.len())
-        },
-    );
-    let ad = transmitting
-        .iter()
-        .map(|m| m.absorption.iter().cloned().fold(0.0, f64::max) * m.thickness)
-        .fold(0.0f64, f64::max);
-    // The reasons name the chapter's section 7.5 (docs/model.md §7).
-    use crate::lighting::transmission::{AbsorptionForm, absorption_regime};
-    let (state, reason) = match absorption_regime(ad) {
-        _ if transmitting.is_empty() => ("off", "nothing transmits".to_string()),
-        AbsorptionForm::Neglected => {
-            ("neglected", format!("a·d = {ad:.3} < {ABSORPTION_NEGLECT_BELOW} (docs/model.md §7)"))
-        }
-        AbsorptionForm::Linear => {
-            ("linear 1 − a·d", format!("a·d = {ad:.3} < {ABSORPTION_LINEAR_BELOW} (docs/model.md §7)"))
-        }
-        AbsorptionForm::Exact => {
-            ("exact e^(−a·d)", format!("a·d = {ad:.3} ≥ {ABSORPTION_LINEAR_BELOW} (docs/model.md §7)"))
-        }
-    };
-    a.note(Effect::Absorption, state, reason);
+    super::transparency::decide(&mut a, scene);
     a
 }
 
@@ -549,24 +516,6 @@ mod tests {
         assert!(on(&s), "a file mesh may be concave");
         s.set_shadows(false);
         assert!(!on(&s));
-    }
-
-    #[test]
-    fn absorption_follows_the_chapter_rule() {
-        let mut s = Scene::builtin("sphere").unwrap();
-        let state = |s: &Scene| {
-            analyze(s, SpecularModel::Phong).decisions.iter().find(|d| d.effect == Effect::Absorption).unwrap().clone()
-        };
-        assert_eq!(state(&s).state, "off");
-        let m = &mut s.materials[1];
-        m.transmission = 0.5;
-        m.thickness = 1.0;
-        for (a, expect) in [(0.12, "neglected"), (0.3, "linear 1 − a·d"), (0.9, "exact e^(−a·d)")] {
-            s.materials[1].absorption = [a, 0.0, 0.0];
-            let d = state(&s);
-            assert_eq!(d.state, expect, "{d:?}");
-            assert!(d.reason.contains(&format!("{a:.3}")), "{d:?}");
-        }
     }
 
     /// Every declared effect has exactly one decision, and the key is the simulated effects that

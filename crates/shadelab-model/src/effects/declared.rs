@@ -139,7 +139,8 @@ declare_effects! {
         label: "it",
         define: Some("EFFECT_TRANSMITTED_TERM"),
         functions: &["transmitted_term"],
-        members: &[("Object", "transmission")],
+        // The glass pass reads Object.transmission too: the function is the proof.
+        members: &[],
     },
     /// Directional lights (docs/model.md §6).
     DirectionalLights {
@@ -377,24 +378,45 @@ declare_effects! {
         functions: &["normal_texel", "normal_mapped"],
         members: &[("Object", "normal_scale"), ("Object", "normal_uv")],
     },
-    /// Light transmitted through a material: analysed, not simulated yet (docs/model.md §7).
+    /// Transparent objects (docs/transparency.md): drawn after the opaque scene, far to near,
+    /// each over a copy of what is behind it; their surface's own light with C·(1 − τ) and τ of
+    /// what comes through; the exit from the analytic shapes or a mesh's back faces.
     Transmission {
         explain: "transmission",
         name: "transmission",
-        label: "transmission",
-        define: None,
-        functions: &[],
-        members: &[],
+        label: "glass",
+        define: Some("EFFECT_TRANSMISSION"),
+        functions: &[
+            "glass_color",
+            "glass_path",
+            "glass_exit",
+            "back_face_exit",
+            "shape_exit",
+            "quadric_exit",
+            "planes_exit",
+            "project_to_pixel",
+        ],
+        members: &[("Object", "inverse_model"), ("Object", "exit_shape")],
     },
-    /// Absorption inside a transmitting material, by the chapter's `a·d` rule (docs/model.md §7):
-    /// analysed, not simulated yet.
+    /// Snell's law and the exact Fresnel factor at both interfaces, total internal reflection, and
+    /// the scene found along the bent and mirrored rays (docs/transparency.md).
+    Refraction {
+        explain: "refraction",
+        name: "refraction",
+        label: "refract",
+        define: Some("EFFECT_REFRACTION"),
+        functions: &["refract_snell", "fresnel_dielectric", "reflect_about", "scene_along"],
+        members: &[("Object", "ior")],
+    },
+    /// Absorption inside a transparent object over the path measured from its geometry, in the
+    /// form the chapter's rule (or `--absorption exact`) picks per object (docs/transparency.md).
     Absorption {
         explain: "absorption",
         name: "absorption",
-        label: "absorption",
-        define: None,
-        functions: &[],
-        members: &[],
+        label: "absorb",
+        define: Some("EFFECT_ABSORPTION"),
+        functions: &["absorption_in_form", "absorption_exact"],
+        members: &[("Object", "absorption")],
     },
 }
 

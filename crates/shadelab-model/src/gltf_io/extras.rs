@@ -71,6 +71,8 @@ ranges! {
     Absorption = super::materials::ABSORPTION;
     /// Thickness d.
     Thickness = super::materials::THICKNESS;
+    /// Refractive index v given directly.
+    Ior = crate::params::IOR;
     /// Light intensity I_L.
     Intensity = params::INTENSITY;
     /// Falloff α.

@@ -2,7 +2,7 @@
 //! `_transmission` and `_volume` extensions mapped to the chapter's material (the table in the
 //! module's parent), and back; the exact parameters travel in `extras.shadelab`.
 
-use super::extras::{self, Absorption, Mu, Num, Phong, Rgb, Roughness, Thickness, Unit};
+use super::extras::{self, Absorption, Ior, Mu, Num, Phong, Rgb, Roughness, Thickness, Unit};
 use super::scene_file::{Reader, num, rgb};
 use super::{ATTENUATION_COLOR_MIN, DEFAULT_IOR, DIELECTRIC_MU_MAX, GltfError, dielectric_f0, m_from_roughness};
 use crate::params::{ParamRange, PhongExponent};
@@ -54,6 +54,9 @@ struct MaterialExtras {
     /// `M·F0` of a metallic–roughness texture (`MetalRoughnessMap::metallic_f0`).
     #[serde(skip_serializing_if = "Option::is_none")]
     mf0: Option<Rgb<Mu>>,
+    /// The refractive index v given directly (`Material::ior`); absent: from μ.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    ior: Option<Rgb<Ior>>,
 }
 
 impl Reader<'_> {
@@ -182,8 +185,10 @@ impl Reader<'_> {
         }
         if let Some(v) = ex.mu {
             mat.mu = v.0;
-            // A file with the exact μ states its tinted part too (none when it does not say).
+            // A file with the exact μ states its tinted part too (none when it does not say), and
+            // its refractive index when it is not μ's.
             mat.mu_tinted = ex.mu_t.map_or([0.0; 3], |t| t.0);
+            mat.ior = ex.ior.map(|v| v.0);
         }
         set(&mut mat.r_s, ex.r_s);
         set(&mut mat.r_d, ex.r_d);
@@ -264,6 +269,11 @@ pub(super) fn pbr_material(m: &json::Material) -> Material {
         h: PhongExponent::from_m(m_rough),
         mu,
         transmission,
+        // A transmitting material refracts with glTF's index as given (KHR_materials_ior).
+        ior: (transmission > 0.0).then(|| ext.and_then(|e| e.ior.as_ref())).flatten().map(|i| {
+            let v = i.ior.0 as f64;
+            [if v.is_finite() { v.clamp(crate::params::IOR.min, crate::params::IOR.max) } else { DEFAULT_IOR }; 3]
+        }),
         absorption,
         thickness,
         base_color_texture: None,
@@ -329,6 +339,7 @@ pub(super) fn write_material(m: &Material, extensions_used: &mut Vec<&'static st
         mu_t: Some(m.mu_tinted.into()),
         emission: (m.emission != [0.0; 3]).then(|| m.emission.into()),
         mf0: m.maps.metal_roughness.map(|mr| mr.metallic_f0.into()),
+        ior: m.ior.map(Into::into),
     };
     let mut out = json!({
         "name": m.name,

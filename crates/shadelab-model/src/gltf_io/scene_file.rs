@@ -183,6 +183,7 @@ impl Reader<'_> {
         let instances = self.walk(&roots)?;
 
         let mut scene = Scene {
+            absorption: Default::default(),
             name: scene_json.and_then(|s| s.name.clone()).unwrap_or_else(|| "glTF scene".into()),
             objects: Vec::new(),
             materials: Vec::new(),

@@ -1,11 +1,12 @@
 //! Light through a surface in f64 (docs/transparency.md, the chapter's 7.5): Snell's law with
 //! total internal reflection, the chapter's exact Fresnel factor at an interface met from either
 //! side, absorption by Beer–Lambert and by the chapter's rule (linear below a·d = 0.5, neglected
-//! below 0.2), and the exact chord through a sphere. The effect analysis reads the rule's
-//! thresholds; the renderer does not draw transparent materials yet. The WGSL twin is
-//! `shaders/transmission.wgsl`, which only the stability sweep compiles so far.
+//! below 0.2), the exact chord through a sphere and the exact exit from each analytic shape. The
+//! effect analysis reads the rule's thresholds; the glass pass (`shaders/glass.wgsl`) and the
+//! reference's tracer (`reference/glass.rs`) use the rest. The WGSL twin is
+//! `shaders/transmission.wgsl`.
 
-use crate::guards::FRESNEL_G_PLUS_C_MIN;
+use crate::guards::{FRESNEL_G_PLUS_C_MIN, QUADRIC_A_MIN};
 use glam::DVec3;
 
 /// Below this a·d the chapter neglects absorption (7.5): the light it drops is under
@@ -23,6 +24,92 @@ pub enum AbsorptionForm {
     Linear,
     /// 1: nothing absorbed.
     Neglected,
+}
+
+/// How the glass pass absorbs (`--absorption`, docs/transparency.md).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum AbsorptionChoice {
+    /// e^(−a·d) everywhere.
+    Exact,
+    /// The chapter's rule picks each object's form from its largest a·d (its longest chord).
+    #[default]
+    Rule,
+}
+
+impl crate::params::NamedValue for AbsorptionChoice {
+    const FLAG: &'static str = "--absorption";
+    const ALL: &'static [(&'static str, Self)] =
+        &[("exact", AbsorptionChoice::Exact), ("rule", AbsorptionChoice::Rule)];
+}
+
+/// Where the glass pass finds a path's exit (`--glass-exit`, docs/transparency.md).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum GlassExit {
+    /// Exactly, for the analytic shapes; a mesh's from its back faces.
+    #[default]
+    Analytic,
+    /// From the back faces for every object (to compare the two).
+    BackFaces,
+}
+
+impl crate::params::NamedValue for GlassExit {
+    const FLAG: &'static str = "--glass-exit";
+    const ALL: &'static [(&'static str, Self)] =
+        &[("analytic", GlassExit::Analytic), ("back-faces", GlassExit::BackFaces)];
+}
+
+/// What a transparent object's pixels show (`--glass-view`, docs/transparency.md).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum GlassView {
+    /// Its colour.
+    #[default]
+    Color,
+    /// Red where an exit reflected the path back inside (total internal reflection).
+    Tir,
+    /// The path length inside, white at the object's longest chord.
+    Path,
+    /// The form the chapter's rule takes for the pixel's a·d: green neglected, yellow linear, red
+    /// exact.
+    Regime,
+}
+
+impl crate::params::NamedValue for GlassView {
+    const FLAG: &'static str = "--glass-view";
+    const ALL: &'static [(&'static str, Self)] = &[
+        ("color", GlassView::Color),
+        ("tir", GlassView::Tir),
+        ("path", GlassView::Path),
+        ("regime", GlassView::Regime),
+    ];
+}
+
+impl GlassView {
+    /// The view's code in the WGSL (`GLASS_VIEW_…`).
+    pub fn code(self) -> u32 {
+        self as u32
+    }
+}
+
+impl AbsorptionForm {
+    /// The form's code in the WGSL (`ABSORPTION_…`).
+    pub fn code(self) -> u32 {
+        match self {
+            AbsorptionForm::Exact => 0,
+            AbsorptionForm::Linear => 1,
+            AbsorptionForm::Neglected => 2,
+        }
+    }
+}
+
+/// The share of light left after optical depth `ad` in `form`: 1 − a·d held at 0 or above (a
+/// path longer than the one the form was picked for cannot go negative).
+pub fn absorption_in_form(ad_in: f64, form: u32) -> f64 {
+    let ad = ad_in.max(0.0);
+    match form {
+        2 => 1.0,
+        1 => (1.0 - ad).max(0.0),
+        _ => absorption_exact(ad),
+    }
 }
 
 /// The form the chapter's rule picks for the optical depth `ad` = a·d.
@@ -118,6 +205,87 @@ pub fn sphere_chord(o: DVec3, d: DVec3, centre: DVec3, radius: f64) -> f64 {
     } else {
         2.0 * root
     }
+}
+
+/// An analytic shape's code in the exit functions (the WGSL's `SHAPE_…`; `Shape::exit_code`).
+pub const SHAPE_SPHERE: u32 = 0;
+pub const SHAPE_CYLINDER: u32 = 1;
+pub const SHAPE_CUBE: u32 = 2;
+pub const SHAPE_PLANE: u32 = 3;
+pub const SHAPE_PYRAMID: u32 = 4;
+/// A file's mesh: no analytic exit; the glass pass reads its back faces.
+pub const SHAPE_MESH: u32 = 5;
+
+/// Where the ray from `o` inside unit shape `shape` (object space, `SHAPE_…`) along `d` (any
+/// length) leaves it: `(t, n)`, the exit at `o + t·d` and the outward normal `n` there (not
+/// unit). A point a rounding outside counts as on the surface (t = 0: the exit touches the
+/// entry). The plane has no inside: t = 0, the normal facing along `d`. `None` for a mesh or a
+/// zero direction.
+pub fn shape_exit(shape: u32, o: DVec3, d: DVec3) -> Option<(f64, DVec3)> {
+    if d == DVec3::ZERO {
+        return None;
+    }
+    match shape {
+        SHAPE_SPHERE => {
+            let t = quadric_exit(d.dot(d), o.dot(d), o.dot(o) - 1.0);
+            Some((t, o + d * t))
+        }
+        SHAPE_CYLINDER => {
+            let (a, b, c) = (d.x * d.x + d.z * d.z, o.x * d.x + o.z * d.z, o.x * o.x + o.z * o.z - 1.0);
+            let side = if a > 0.0 { quadric_exit(a, b, c) } else { f64::INFINITY };
+            let cap = if d.y != 0.0 { ((d.y.signum() - o.y) / d.y).max(0.0) } else { f64::INFINITY };
+            if cap < side {
+                Some((cap, DVec3::new(0.0, d.y.signum(), 0.0)))
+            } else {
+                let p = o + d * side;
+                Some((side, DVec3::new(p.x, 0.0, p.z)))
+            }
+        }
+        SHAPE_CUBE => planes_exit(o, d, &[DVec3::X, DVec3::NEG_X, DVec3::Y, DVec3::NEG_Y, DVec3::Z, DVec3::NEG_Z]),
+        SHAPE_PLANE => Some((0.0, if d.y < 0.0 { DVec3::NEG_Y } else { DVec3::Y })),
+        SHAPE_PYRAMID => planes_exit(
+            o,
+            d,
+            &[
+                DVec3::new(2.0, 1.0, 0.0),
+                DVec3::new(-2.0, 1.0, 0.0),
+                DVec3::new(0.0, 1.0, 2.0),
+                DVec3::new(0.0, 1.0, -2.0),
+                DVec3::NEG_Y,
+            ],
+        ),
+        _ => None,
+    }
+}
+
+/// The far root of `a·t² + 2b·t + c = 0` for a point inside (`c ≤ 0`, held there), in the form
+/// that does not cancel: `−c/(b + √disc)` for `b > 0`, else `(√disc − b)/a`; at least 0.
+pub fn quadric_exit(a: f64, b: f64, c_in: f64) -> f64 {
+    let c = c_in.min(0.0);
+    let root = (b * b - a * c).max(0.0).sqrt();
+    if b > 0.0 { -c / (b + root) } else { (root - b) / a.max(QUADRIC_A_MIN) }
+}
+
+/// The exit through convex planes `n·p ≤ 1`: the nearest plane the ray runs towards (n·d > 0),
+/// at least 0.
+pub fn planes_exit(o: DVec3, d: DVec3, planes: &[DVec3]) -> Option<(f64, DVec3)> {
+    let mut best: Option<(f64, DVec3)> = None;
+    for &n in planes {
+        let towards = n.dot(d);
+        if towards <= 0.0 {
+            continue;
+        }
+        let t = ((1.0 - n.dot(o)) / towards).max(0.0);
+        if best.is_none_or(|b| t < b.0) {
+            best = Some((t, n));
+        }
+    }
+    best
+}
+
+/// The mirror direction of `i` about unit normal `n`.
+pub fn reflect_about(i: DVec3, n: DVec3) -> DVec3 {
+    i - n * (2.0 * i.dot(n))
 }
 
 #[cfg(test)]

@@ -264,6 +264,23 @@ pub(super) fn trace(scene: &Scene, inverses: &[DMat4], o: DVec3, dir: DVec3) -> 
     })
 }
 
+/// Where a world ray from `o` inside object `i` along `dir` leaves it: the point and the outward
+/// world unit normal there. An analytic shape's exit is exact (`shape_exit`); a mesh's is its
+/// nearest triangle ahead, its face normal turned along the ray. `None` when nothing is ahead.
+pub(super) fn glass_exit(scene: &Scene, inverses: &[DMat4], i: usize, o: DVec3, dir: DVec3) -> Option<(DVec3, DVec3)> {
+    let obj = &scene.objects[i];
+    let (lo, ld) = (inverses[i].transform_point3(o), inverses[i].transform_vector3(dir));
+    let (t, n) = match obj.shape {
+        Shape::Mesh(m) => {
+            let (t, _, face, ..) = intersect_mesh(scene.meshes.get(m)?, lo, ld)?;
+            (t, if face.dot(ld) < 0.0 { -face } else { face })
+        }
+        shape => crate::lighting::transmission::shape_exit(shape.exit_code(), lo, ld)?,
+    };
+    let normal = safe_normalize(obj.transform.normal_matrix() * n, dir);
+    Some((o + dir * t, normal))
+}
+
 /// The texture coordinates where the world ray `o + t·dir` meets the plane of triangle `k` of
 /// object `object`'s mesh, its barycentric weights extended past the edges: a neighbouring
 /// pixel's coordinates on the same surface, as the GPU's derivatives difference them. `None`

@@ -30,6 +30,7 @@ fn stage(objects: Vec<Object>, lights: Vec<Light>) -> Scene {
     let mut all = vec![object("ground", Shape::Plane, DVec3::ZERO, DVec3::new(4.0, 1.0, 4.0))];
     all.extend(objects);
     Scene {
+        absorption: Default::default(),
         name: "stage".into(),
         objects: all,
         materials: vec![Material::default()],

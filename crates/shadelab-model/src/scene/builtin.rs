@@ -6,7 +6,7 @@ use crate::params::PhongExponent;
 use glam::DVec3;
 
 /// Names of the scenes compiled into the binary.
-pub const BUILTIN_SCENES: &[&str] = &["default", "sphere", "cylinder", "pyramid", "cube", "field", "penumbra"];
+pub const BUILTIN_SCENES: &[&str] = &["default", "sphere", "cylinder", "pyramid", "cube", "field", "penumbra", "glass"];
 
 impl Scene {
     /// A built-in scene by name (see [`BUILTIN_SCENES`]).
@@ -19,6 +19,7 @@ impl Scene {
             "cube" => Some(single_shape_scene("cube", Shape::Cube, 1)),
             "field" => Some(field_scene()),
             "penumbra" => Some(penumbra_scene(PENUMBRA_PLATE_HEIGHT)),
+            "glass" => Some(glass_scene()),
             _ => None,
         }
     }
@@ -53,6 +54,7 @@ pub fn penumbra_scene(plate_height: f64) -> Scene {
     );
     light.tangent = DVec3::X;
     Scene {
+        absorption: Default::default(),
         name: "penumbra".into(),
         objects: vec![
             ground_obj,
@@ -68,6 +70,86 @@ pub fn penumbra_scene(plate_height: f64) -> Scene {
         lights: vec![light],
         ambient: [0.08; 3],
         camera: Camera { eye: DVec3::new(1.3, 2.1, 2.6), target: DVec3::new(0.2, 0.15, 0.0), ..default_camera() },
+        ..default_scene()
+    }
+}
+
+/// The `glass` scene (docs/transparency.md): three transparent solids in front of a wall of
+/// coloured stripes, so that refraction shows as the stripes bent and flipped. A clear glass
+/// sphere (v = 1.5); a slab turned 50° about y, through which a view entering its face meets a
+/// side beyond the critical angle (total internal reflection); and an absorbing cylinder that
+/// takes blue and green more than red, with a·d near 1 across it (the rule's exact regime). One
+/// point light; no cast shadows (glass casts a full shadow, which would hide the stripes).
+pub fn glass_scene() -> Scene {
+    let (ground_obj, ground_mat) = ground();
+    let mut objects = vec![ground_obj];
+    let mut materials = vec![ground_mat];
+    let stripe = |name: &str, color: [f64; 3]| Material {
+        name: name.into(),
+        color,
+        r_s: 0.2,
+        r_d: 0.9,
+        r_a: 0.9,
+        m: 0.6,
+        h: h_like_m(0.6),
+        ..Material::default()
+    };
+    materials.push(stripe("stripe light", [0.85, 0.82, 0.72]));
+    materials.push(stripe("stripe dark", [0.12, 0.22, 0.55]));
+    // Twelve stripes 0.3 m wide, 1.6 m tall, on a wall 1.2 m behind the solids.
+    for i in 0..12 {
+        objects.push(Object {
+            name: format!("stripe {}", i + 1),
+            shape: Shape::Cube,
+            tessellation: 1,
+            transform: Transform::new(DVec3::new(-1.65 + 0.3 * i as f64, 0.8, -1.3), DVec3::new(0.15, 0.8, 0.05)),
+            material: 1 + i % 2,
+        });
+    }
+    let glass = |name: &str, color: [f64; 3], absorption: [f64; 3]| Material {
+        name: name.into(),
+        color,
+        r_s: 1.0,
+        r_d: 0.8,
+        r_a: 0.8,
+        m: 0.08,
+        h: h_like_m(0.08),
+        mu: [0.04; 3],
+        transmission: 0.95,
+        absorption,
+        ..Material::default()
+    };
+    let solids = [
+        ("glass sphere", Shape::Sphere, DVec3::new(-1.1, 0.5, 0.0), DVec3::splat(0.5), 0.0, [0.0; 3]),
+        ("slab", Shape::Cube, DVec3::new(0.15, 0.55, 0.1), DVec3::new(0.4, 0.55, 0.12), 50f64.to_radians(), [0.0; 3]),
+        (
+            "absorbing cylinder",
+            Shape::Cylinder,
+            DVec3::new(1.2, 0.5, 0.0),
+            DVec3::new(0.35, 0.5, 0.35),
+            0.0,
+            [0.4, 1.2, 2.0],
+        ),
+    ];
+    for (name, shape, at, size, turn, absorption) in solids {
+        materials.push(glass(name, [0.9; 3], absorption));
+        objects.push(Object {
+            name: name.into(),
+            shape,
+            tessellation: 32,
+            transform: Transform { translation: at, rotation_y: turn, scale: size },
+            material: materials.len() - 1,
+        });
+    }
+    let mut light = Light::point(DVec3::new(-1.5, 3.0, 2.5), [1.0, 0.98, 0.95], 1.3, 0.04);
+    light.shadow.casts = false;
+    Scene {
+        name: "glass".into(),
+        objects,
+        materials,
+        lights: vec![light],
+        ambient: [0.25; 3],
+        camera: Camera { eye: DVec3::new(0.0, 1.3, 4.2), target: DVec3::new(0.0, 0.55, 0.0), ..default_camera() },
         ..default_scene()
     }
 }
@@ -189,6 +271,7 @@ pub fn default_scene() -> Scene {
         material: materials.len() - 1,
     });
     Scene {
+        absorption: Default::default(),
         name: "default".into(),
         objects,
         materials,
@@ -242,6 +325,7 @@ pub fn single_shape_scene(name: &str, shape: Shape, tessellation: u32) -> Scene 
         _ => (DVec3::new(0.0, 1.0, 0.0), DVec3::splat(1.0), 0.0),
     };
     Scene {
+        absorption: Default::default(),
         name: name.into(),
         objects: vec![
             ground_obj,

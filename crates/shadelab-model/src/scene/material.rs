@@ -25,13 +25,18 @@ pub struct Material {
     pub h: PhongExponent,
     /// Normal-incidence reflectance `μ` per channel (Cook–Torrance Fresnel).
     pub mu: [f64; 3],
-    /// Transparency `t` in [0, 1] (docs/model.md §2, glTF `KHR_materials_transmission`). Stored, not
-    /// rendered yet.
+    /// The transmitted share τ = 1 − t of the chapter's transparency t (docs/model.md §2, glTF
+    /// `KHR_materials_transmission`): 0 opaque. Above 0 the glass pass draws the material
+    /// (docs/transparency.md).
     pub transmission: f64,
+    /// The refractive index `v` per channel given directly (`--ior`); `None`: from μ,
+    /// `v = (1 + √μ)/(1 − √μ)`. Channels that differ disperse.
+    pub ior: Option<[f64; 3]>,
     /// Absorption coefficient `a` per channel, per unit length, of `I_Td = I_T0·e^(−a·d)` (docs/model.md §7,
-    /// from glTF `KHR_materials_volume`). Stored, not rendered yet.
+    /// from glTF `KHR_materials_volume`). The glass pass takes `d` from the geometry.
     pub absorption: [f64; 3],
-    /// Thickness `d` of the material for that absorption (docs/model.md §7). Stored, not rendered yet.
+    /// glTF's authored thickness (`thicknessFactor`), kept for the round trip: shadelab measures
+    /// `d` from the geometry instead (docs/transparency.md).
     pub thickness: f64,
     /// Base colour texture: `C` is multiplied by its linear RGB per point (glTF
     /// `baseColorTexture`, docs/textures.md).
@@ -109,6 +114,7 @@ impl Default for Material {
             h: PhongExponent::Finite(20.0),
             mu: [0.04; 3],
             transmission: 0.0,
+            ior: None,
             absorption: [0.0; 3],
             thickness: 0.0,
             base_color_texture: None,
@@ -120,6 +126,22 @@ impl Default for Material {
 }
 
 impl Material {
+    /// Whether the glass pass draws the material: some light passes through it.
+    pub fn transmits(&self) -> bool {
+        self.transmission > 0.0
+    }
+
+    /// The refractive index `v` per channel: given, or from μ (docs/model.md §5).
+    pub fn refractive_index(&self) -> [f64; 3] {
+        self.ior.unwrap_or(self.mu.map(crate::lighting::brdf::fresnel_v_from_mu))
+    }
+
+    /// Whether the channels' indices differ, so each channel takes its own path.
+    pub fn disperses(&self) -> bool {
+        let v = self.refractive_index();
+        v[0] != v[1] || v[1] != v[2]
+    }
+
     /// Whether a point's parameters can differ from the material's (a texture, or vertex colours
     /// `vertex_color` other than white).
     pub fn varies(&self, vertex_color: [f64; 3]) -> bool {

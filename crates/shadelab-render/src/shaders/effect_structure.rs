@@ -52,6 +52,10 @@ const SURFACE: [Effect; 7] = [
     Effect::EmissiveTexture,
 ];
 
+/// The transparent objects' effects (transmission.wgsl, glass.wgsl): only the glass pass's entry
+/// points reach them, so their subsets are validated on a few bases.
+const GLASS: [Effect; 3] = [Effect::Transmission, Effect::Refraction, Effect::Absorption];
+
 /// The keys of every subset of `effects`.
 fn subsets(effects: &[Effect]) -> Vec<EffectKey> {
     (0..1u32 << effects.len())
@@ -72,7 +76,7 @@ fn every_permutation_validates_in_naga() {
     let raw = raw_lighting_source();
     let outside: Vec<Effect> = Effect::ALL
         .into_iter()
-        .filter(|e| !INSIDE_SHADOWS.contains(e) && !SURFACE.contains(e) && !AREA.contains(e))
+        .filter(|e| !INSIDE_SHADOWS.contains(e) && !SURFACE.contains(e) && !AREA.contains(e) && !GLASS.contains(e))
         .collect();
     let all_inside: EffectKey = INSIDE_SHADOWS.into_iter().collect();
     let mut keys: Vec<EffectKey> = subsets(&outside).into_iter().map(|k| union(k, all_inside)).collect();
@@ -105,6 +109,19 @@ fn every_permutation_validates_in_naga() {
         let base = SURFACE.into_iter().fold(base, |k, e| k.without(e));
         keys.extend(subsets(&SURFACE).into_iter().map(|k| union(k, base)));
     }
+    // The glass effects on every other effect, none, shadows with a point light, the surface
+    // effects, and an area light (the glass pass shades its surface with the whole light loop).
+    let glass_bases: [EffectKey; 5] = [
+        EffectKey::UBER,
+        EffectKey::NONE,
+        [Effect::PointLights, Effect::CastShadows, Effect::ShadowFilterPcf].into_iter().collect(),
+        SURFACE.into_iter().collect(),
+        [Effect::PointLights, Effect::AreaLights, Effect::SpecularCookTorrance].into_iter().collect(),
+    ];
+    for base in glass_bases {
+        let base = GLASS.into_iter().fold(base, |k, e| k.without(e));
+        keys.extend(subsets(&GLASS).into_iter().map(|k| union(k, base)));
+    }
     for key in keys {
         let src = lighting_source_for(&raw, key).unwrap();
         let module = naga::front::wgsl::parse_str(&src)
@@ -112,6 +129,11 @@ fn every_permutation_validates_in_naga() {
         validate(&module);
         let mut eps: Vec<(&str, &str)> = ShadingMode::ALL_MODES.into_iter().map(entry_points).collect();
         eps.push(BASELINE_ENTRY_POINTS);
+        if key.has(Effect::Transmission) {
+            eps.extend([crate::glass_pass::GLASS_ENTRY_POINTS, crate::glass_pass::BACK_ENTRY_POINTS]);
+        }
+        let glass = module.entry_points.iter().any(|e| e.name == crate::glass_pass::GLASS_ENTRY_POINTS.1);
+        assert_eq!(glass, key.has(Effect::Transmission), "{}: the glass pass's entry point", key.label());
         for (vs, fs) in eps {
             assert!(
                 module.entry_points.iter().any(|e| e.name == vs) && module.entry_points.iter().any(|e| e.name == fs)
@@ -207,8 +229,16 @@ fn a_permutation_without_an_effect_has_no_code_for_it() {
                     ShadingMode::Gouraud => crate::lighting_pass::GOURAUD_ENTRY_POINT,
                     ShadingMode::Phong => fs,
                 };
-                // A per-vertex mode tints C in its fragment stage: both stages count.
-                let eps = if ep == fs { vec![ep] } else { vec![ep, fs] };
+                // A per-vertex mode tints C in its fragment stage: both stages count. The glass
+                // pass shades per pixel in every mode: its stage counts for Phong shading and, in
+                // the other modes, for the glass effects.
+                let mut eps = if ep == fs { vec![ep] } else { vec![ep, fs] };
+                let glass_ep = crate::glass_pass::GLASS_ENTRY_POINTS.1;
+                if module.entry_points.iter().any(|x| x.name == glass_ep)
+                    && (shading == ShadingMode::Phong || GLASS.contains(&e))
+                {
+                    eps.push(glass_ep);
+                }
                 let called: Vec<String> = eps
                     .iter()
                     .flat_map(|ep| reachable(&module, ep))
@@ -241,12 +271,13 @@ fn a_permutation_without_cast_shadows_has_no_shadow_bindings() {
         [(EffectKey::UBER, true), (EffectKey::UBER.without(Effect::CastShadows), false), (EffectKey::NONE, false)]
     {
         let module = parse(&lighting_source_for(&raw, key).unwrap());
-        // Flat shading's per-face bindings (@group(3), 1–3) are in every permutation.
+        // Flat shading's per-face bindings (@group(3), 1–3) are in every permutation, the glass
+        // pass's (8–11) in every permutation with transparent objects.
         let groups: Vec<u32> = module
             .global_variables
             .iter()
             .filter_map(|(_, g)| g.binding.as_ref())
-            .filter(|b| !(b.group == 3 && (1..=3).contains(&b.binding)))
+            .filter(|b| !(b.group == 3 && ((1..=3).contains(&b.binding) || (8..=11).contains(&b.binding))))
             .map(|b| b.group)
             .collect();
         assert_eq!(groups.iter().any(|g| *g >= 2), present, "{}: groups {groups:?}", key.label());

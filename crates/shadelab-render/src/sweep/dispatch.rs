@@ -14,10 +14,10 @@ pub const SWEEP_KERNEL: &str = include_str!("../../../../shaders/sweep.wgsl");
 /// compiles them.
 pub const TRANSMISSION: &str = include_str!("../../../../shaders/transmission.wgsl");
 
-/// The sweep's compute module: the shipped terms, the transmission terms, the generated columns,
-/// then the kernel.
+/// The sweep's compute module: the shipped terms (the transmission terms among them), the
+/// generated columns, then the kernel.
 pub fn sweep_source() -> String {
-    format!("{}\n{}\n{}\n{}", shaders::terms_source(), TRANSMISSION, wgsl_columns(), SWEEP_KERNEL)
+    format!("{}\n{}\n{}", shaders::terms_source(), wgsl_columns(), SWEEP_KERNEL)
 }
 
 /// Run the kernel over every combination and read its outputs back (`OUTPUTS` floats each).

@@ -252,6 +252,17 @@ pub struct SceneArgs {
     #[arg(long, value_name = "SHARE", value_parser = values::real(params::TRANSMISSION),
           help = within("Transmission share 1 − t of every material, the four-term sum's I_t (0 opaque)", params::TRANSMISSION))]
     pub transmission: Option<f64>,
+    #[arg(long, value_name = "R,G,B", value_parser = values::rgb(params::IOR),
+          help = format!("Refractive index v of every material, given directly (else from μ): R,G,B (channels that differ disperse) or one value, each in [{}, {}]", params::IOR.min, params::IOR.max))]
+    pub ior: Option<[f64; 3]>,
+    #[arg(long, value_name = "R,G,B", value_parser = values::rgb(params::ABSORPTION),
+          help = format!("Absorption coefficient a of every material, per metre: R,G,B or one value, each in [{}, {}]", params::ABSORPTION.min, params::ABSORPTION.max))]
+    pub absorption_coef: Option<[f64; 3]>,
+    /// How transparent objects absorb: exact (e^(−a·d) everywhere) or rule (the chapter's rule
+    /// picks each object's form from its largest a·d: neglected below 0.2, 1 − a·d below 0.5)
+    /// [default: rule].
+    #[arg(long, value_name = "exact|rule", value_parser = values::named::<shadelab_model::lighting::transmission::AbsorptionChoice>())]
+    pub absorption: Option<shadelab_model::lighting::transmission::AbsorptionChoice>,
     #[arg(long, value_name = "ALPHA", value_parser = values::real(params::FALLOFF),
           help = within("Falloff factor α of every point and spot light, I0/(1 + α d²)", params::FALLOFF))]
     pub falloff: Option<f64>,
@@ -337,6 +348,18 @@ pub struct RenderArgs {
     /// the camera: as a point light, printing why (point), or with its area all the same (area).
     #[arg(long, value_name = "point|area", default_value = "point", value_parser = values::named::<SmallAreaLights>())]
     pub small_area_lights: SmallAreaLights,
+    /// Where the glass pass finds a path's exit from a transparent object: analytic (exact for
+    /// the built-in shapes, a mesh's back faces) or back-faces (for every object, to compare).
+    #[arg(long, value_name = "analytic|back-faces", default_value = "analytic",
+          value_parser = values::named::<shadelab_model::lighting::transmission::GlassExit>())]
+    pub glass_exit: shadelab_model::lighting::transmission::GlassExit,
+    /// What transparent objects show: color, tir (red where total internal reflection turned the
+    /// path back inside), path (the length inside, white at the object's longest chord) or
+    /// regime (the chapter's rule for the pixel's a·d: green neglected, yellow 1 − a·d, red
+    /// exact).
+    #[arg(long, value_name = "VIEW", default_value = "color",
+          value_parser = values::named::<shadelab_model::lighting::transmission::GlassView>())]
+    pub glass_view: shadelab_model::lighting::transmission::GlassView,
     /// Draw one term of the model alone: all (the default), ambient (I_amb·r_a·C), diffuse
     /// (Σ I_L·r_d·C·(N·L), cast shadows included) or specular (Σ I_L·r_s·S), which add up to the
     /// whole image; or shadow, the cast-shadow factor as grey.

@@ -89,6 +89,11 @@ pub fn reflectance() -> ModelValue<[f64; 3]> {
     rule(params::parse_mu)
 }
 
+/// A per-channel value `R,G,B` (or one for all three), each in `range`.
+pub fn rgb(range: ParamRange) -> ModelValue<[f64; 3]> {
+    rule(move |t| range.parse_rgb(t))
+}
+
 /// One of a named parameter's values (shading mode, specular model, light kind, falloff form).
 pub fn named<T: NamedValue + PartialEq + Send + Sync>() -> ModelValue<T> {
     ModelValue { parse: Arc::new(T::parse_named), possible: T::ALL.iter().map(|(n, _)| *n).collect() }

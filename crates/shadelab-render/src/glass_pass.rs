@@ -1,0 +1,268 @@
+//! The glass pass on the GPU (docs/transparency.md; only in programs with transparent objects):
+//! after the opaque scene, each transparent object far to near, over a copy of the target as it
+//! stands (what is behind it, the farther glass included), reading the opaque depth; a mesh's
+//! back faces drawn just before it give its exit (`shaders/glass.wgsl`).
+
+use crate::pipelines::DEPTH_FORMAT;
+use crate::renderer::Renderer;
+use crate::target::Target;
+use crate::upload::SceneGpu;
+use crate::vertex::{SmoothVertex, SurfaceVertex};
+use shadelab_model::Scene;
+use shadelab_model::effects::{Effect, EffectKey};
+
+/// The back faces' world position (w = 1 where covered) and outward normal.
+pub const BACK_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba32Float;
+/// The glass pipelines' entry points: the object over what is behind it, and a mesh's back faces.
+pub const GLASS_ENTRY_POINTS: (&str, &str) = ("vs_phong", "fs_glass");
+pub const BACK_ENTRY_POINTS: (&str, &str) = ("vs_phong", "fs_glass_back");
+
+/// The glass bindings (@group(3), bindings 8–11 of `glass.wgsl`): four unfilterable textures read
+/// with `textureLoad`.
+pub(crate) fn layout(device: &wgpu::Device) -> wgpu::BindGroupLayout {
+    let entry = |binding| wgpu::BindGroupLayoutEntry {
+        binding,
+        visibility: wgpu::ShaderStages::FRAGMENT,
+        ty: wgpu::BindingType::Texture {
+            sample_type: wgpu::TextureSampleType::Float { filterable: false },
+            view_dimension: wgpu::TextureViewDimension::D2,
+            multisampled: false,
+        },
+        count: None,
+    };
+    device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+        label: Some("shadelab glass"),
+        entries: &[entry(8), entry(9), entry(10), entry(11)],
+    })
+}
+
+/// The textures the glass pass reads beside the target: the copy of its colour, and a mesh's
+/// back faces with their own depth. Made for one size and colour format.
+pub(crate) struct GlassTextures {
+    size: (u32, u32, wgpu::TextureFormat),
+    behind: wgpu::Texture,
+    behind_view: wgpu::TextureView,
+    back_position: wgpu::TextureView,
+    back_normal: wgpu::TextureView,
+    back_depth: wgpu::TextureView,
+}
+
+impl GlassTextures {
+    fn new(device: &wgpu::Device, target: &Target) -> GlassTextures {
+        let size = wgpu::Extent3d { width: target.width, height: target.height, depth_or_array_layers: 1 };
+        let texture = |label, format, usage| {
+            device.create_texture(&wgpu::TextureDescriptor {
+                label: Some(label),
+                size,
+                mip_level_count: 1,
+                sample_count: 1,
+                dimension: wgpu::TextureDimension::D2,
+                format,
+                usage,
+                view_formats: &[],
+            })
+        };
+        use wgpu::TextureUsages as U;
+        let behind = texture("shadelab glass behind", target.format, U::COPY_DST | U::TEXTURE_BINDING);
+        let view = |t: wgpu::Texture| t.create_view(&Default::default());
+        GlassTextures {
+            size: (target.width, target.height, target.format),
+            behind_view: behind.create_view(&Default::default()),
+            behind,
+            back_position: view(texture(
+                "shadelab back position",
+                BACK_FORMAT,
+                U::RENDER_ATTACHMENT | U::TEXTURE_BINDING,
+            )),
+            back_normal: view(texture("shadelab back normal", BACK_FORMAT, U::RENDER_ATTACHMENT | U::TEXTURE_BINDING)),
+            back_depth: view(texture("shadelab back depth", DEPTH_FORMAT, U::RENDER_ATTACHMENT)),
+        }
+    }
+}
+
+/// The transparent objects of `scene` the glass pass draws, far to near by the distance from the
+/// eye to each object's centre (a later one is drawn over the copy that holds the earlier ones).
+pub fn glass_order(scene: &Scene) -> Vec<usize> {
+    let eye = scene.camera.eye_h();
+    let mut order: Vec<(f64, usize)> = (0..scene.objects.len())
+        .filter(|&i| scene.drawn_as_glass(i))
+        .map(|i| {
+            let c = scene.objects[i].transform.translation;
+            // An orthographic view (w = 0) sorts along its direction.
+            let key = if eye.w == 0.0 { -c.dot(eye.truncate()) } else { c.distance(eye.truncate()) };
+            (key, i)
+        })
+        .collect();
+    order.sort_by(|a, b| b.0.total_cmp(&a.0));
+    order.into_iter().map(|(_, i)| i).collect()
+}
+
+/// Build one of the glass pipelines: `back` draws a mesh's back faces into the two back targets,
+/// otherwise the object's front faces over the target, depth-tested against the opaque scene
+/// without writing it.
+pub(crate) fn build_pipeline(
+    device: &wgpu::Device,
+    layout: &wgpu::PipelineLayout,
+    module: &wgpu::ShaderModule,
+    effects: EffectKey,
+    constants: &[(&str, f64)],
+    color_format: wgpu::TextureFormat,
+    back: bool,
+) -> wgpu::RenderPipeline {
+    let (vs, fs) = if back { BACK_ENTRY_POINTS } else { GLASS_ENTRY_POINTS };
+    let options = wgpu::PipelineCompilationOptions { constants, ..Default::default() };
+    let surface = SurfaceVertex::layout(
+        effects.samples_textures(),
+        effects.has(Effect::VertexColors),
+        effects.has(Effect::NormalTexture),
+    );
+    let buffers = [Some(SmoothVertex::LAYOUT), surface];
+    let buffers = if buffers[1].is_some() { &buffers[..] } else { &buffers[..1] };
+    let target = |format| Some(wgpu::ColorTargetState { format, blend: None, write_mask: wgpu::ColorWrites::ALL });
+    let targets = if back { vec![target(BACK_FORMAT), target(BACK_FORMAT)] } else { vec![target(color_format)] };
+    device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+        label: Some(if back { "shadelab glass back faces" } else { "shadelab glass" }),
+        layout: Some(layout),
+        vertex: wgpu::VertexState { module, entry_point: Some(vs), compilation_options: options.clone(), buffers },
+        primitive: wgpu::PrimitiveState {
+            topology: wgpu::PrimitiveTopology::TriangleList,
+            // Meshes wind their triangles counter-clockwise seen from outside.
+            cull_mode: Some(if back { wgpu::Face::Front } else { wgpu::Face::Back }),
+            ..Default::default()
+        },
+        depth_stencil: Some(wgpu::DepthStencilState {
+            format: DEPTH_FORMAT,
+            depth_write_enabled: Some(back),
+            depth_compare: Some(wgpu::CompareFunction::Less),
+            stencil: Default::default(),
+            bias: Default::default(),
+        }),
+        multisample: Default::default(),
+        fragment: Some(wgpu::FragmentState {
+            module,
+            entry_point: Some(fs),
+            compilation_options: options,
+            targets: &targets,
+        }),
+        multiview_mask: None,
+        cache: None,
+    })
+}
+
+impl Renderer {
+    /// Record the glass pass of `program` after its scene pass: each transparent object in
+    /// `order` over a copy of the target, a mesh's back faces first. `shadows`: the maps' bind
+    /// group when the program has cast shadows; `end`: the timestamp slot the last pass writes.
+    #[allow(clippy::too_many_arguments)]
+    pub(crate) fn encode_glass(
+        &mut self,
+        encoder: &mut wgpu::CommandEncoder,
+        gpu_scene: &SceneGpu,
+        target: &Target,
+        program: crate::program::Program,
+        order: &[usize],
+        shadows: Option<&wgpu::BindGroup>,
+        end: Option<(&wgpu::QuerySet, u32)>,
+    ) {
+        let fits = self.glass.as_ref().is_some_and(|g| g.size == (target.width, target.height, target.format));
+        if !fits {
+            self.glass = Some(GlassTextures::new(&self.device, target));
+        }
+        let g = self.glass.as_ref().expect("made above");
+        let bind = self.device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some("shadelab glass"),
+            layout: &self.glass_layout,
+            entries: &[
+                wgpu::BindGroupEntry { binding: 8, resource: wgpu::BindingResource::TextureView(&g.behind_view) },
+                wgpu::BindGroupEntry { binding: 9, resource: wgpu::BindingResource::TextureView(&target.depth_view) },
+                wgpu::BindGroupEntry { binding: 10, resource: wgpu::BindingResource::TextureView(&g.back_position) },
+                wgpu::BindGroupEntry { binding: 11, resource: wgpu::BindingResource::TextureView(&g.back_normal) },
+            ],
+        });
+        let exits = gpu_scene.glass_exits.lock().expect("not poisoned").clone();
+        let fx = program.effects();
+        let surfaces = fx.samples_textures() || fx.has(Effect::VertexColors);
+        let front = self.pipelines.glass_pipeline(program, target.format, false).clone();
+        let back = self.pipelines.glass_pipeline(program, target.format, true).clone();
+        let g = self.glass.as_ref().expect("made above");
+        for (n, &i) in order.iter().enumerate() {
+            let Some(mesh) = gpu_scene.objects.get(i).and_then(|k| gpu_scene.meshes.get(k)) else { continue };
+            let draw = |pass: &mut wgpu::RenderPass| {
+                pass.set_bind_group(0, &gpu_scene.globals_bind, &[]);
+                pass.set_bind_group(1, gpu_scene.object_bind(i), &[(i as u64 * gpu_scene.object_stride) as u32]);
+                pass.set_vertex_buffer(0, mesh.smooth.slice(..));
+                if surfaces && let Some(s) = &mesh.surface {
+                    pass.set_vertex_buffer(1, s.slice(..));
+                }
+                pass.set_index_buffer(mesh.indices.slice(..), wgpu::IndexFormat::Uint32);
+            };
+            // What is behind the object, the farther glass included.
+            encoder.copy_texture_to_texture(
+                target.color.as_image_copy(),
+                g.behind.as_image_copy(),
+                wgpu::Extent3d { width: target.width, height: target.height, depth_or_array_layers: 1 },
+            );
+            if exits.get(i).copied() == Some(shadelab_model::lighting::transmission::SHAPE_MESH) {
+                let clear = |view| {
+                    Some(wgpu::RenderPassColorAttachment {
+                        view,
+                        depth_slice: None,
+                        resolve_target: None,
+                        ops: wgpu::Operations {
+                            load: wgpu::LoadOp::Clear(wgpu::Color::TRANSPARENT),
+                            store: wgpu::StoreOp::Store,
+                        },
+                    })
+                };
+                let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+                    label: Some("shadelab glass back faces"),
+                    color_attachments: &[clear(&g.back_position), clear(&g.back_normal)],
+                    depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
+                        view: &g.back_depth,
+                        depth_ops: Some(wgpu::Operations {
+                            load: wgpu::LoadOp::Clear(1.0),
+                            store: wgpu::StoreOp::Store,
+                        }),
+                        stencil_ops: None,
+                    }),
+                    timestamp_writes: None,
+                    occlusion_query_set: None,
+                    multiview_mask: None,
+                });
+                pass.set_pipeline(&back);
+                draw(&mut pass);
+                pass.draw_indexed(0..mesh.index_count, 0, 0..1);
+            }
+            let last = n + 1 == order.len();
+            let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+                label: Some("shadelab glass"),
+                color_attachments: &[Some(wgpu::RenderPassColorAttachment {
+                    view: &target.color_view,
+                    depth_slice: None,
+                    resolve_target: None,
+                    ops: wgpu::Operations { load: wgpu::LoadOp::Load, store: wgpu::StoreOp::Store },
+                })],
+                // Read-only: the pass tests against the opaque depth and samples it.
+                depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
+                    view: &target.depth_view,
+                    depth_ops: None,
+                    stencil_ops: None,
+                }),
+                timestamp_writes: end.filter(|_| last).map(|(qs, i)| wgpu::RenderPassTimestampWrites {
+                    query_set: qs,
+                    beginning_of_pass_write_index: None,
+                    end_of_pass_write_index: Some(i),
+                }),
+                occlusion_query_set: None,
+                multiview_mask: None,
+            });
+            pass.set_pipeline(&front);
+            if let Some(maps) = shadows {
+                pass.set_bind_group(2, maps, &[]);
+            }
+            pass.set_bind_group(3, &bind, &[]);
+            draw(&mut pass);
+            pass.draw_indexed(0..mesh.index_count, 0, 0..1);
+        }
+    }
+}

@@ -24,6 +24,8 @@ const GLASS_TIR_BOUNCES: u32 = 4u;
 const GLASS_MARCH_STEPS: u32 = 64u;
 const GLASS_MARCH_GROWTH: f32 = 1.1;
 const GLASS_MARCH_FIRST: f32 = 0.001;
+// Lookups that walk a mesh's exit along its back faces (back_face_exit).
+const BACK_FACE_STEPS: u32 = 4u;
 // Halvings that narrow a hit of the march down between its last two steps.
 const GLASS_MARCH_REFINE: u32 = 8u;
 // The scene's background (scene::BACKGROUND): what a ray that meets nothing sees.
@@ -110,8 +112,9 @@ fn scene_along(p: vec3<f32>, dir: vec3<f32>) -> vec3<f32> {
 }
 #endif
 
-// A mesh's exit, from its back faces: the back face behind the pixel gives the distance through
-// the object along the view; the point that far along the path is looked up there in turn.
+// A mesh's exit, from its back faces: the path runs as far as the back face behind `pixel` is
+// from `p`; the back face seen where that puts the exit gives the next distance, BACK_FACE_STEPS
+// times (the path meeting the back faces as a height field); its normal is the one seen there.
 fn back_face_exit(p: vec3<f32>, t: vec3<f32>, pixel: vec2<f32>) -> Exit {
     var out = Exit(p, t, false);
     let here = textureLoad(back_position, vec2<i32>(pixel), 0);
@@ -119,11 +122,20 @@ fn back_face_exit(p: vec3<f32>, t: vec3<f32>, pixel: vec2<f32>) -> Exit {
         return out;
     }
     var at = vec2<i32>(pixel);
-    let guess = project_to_pixel(p + t * distance(here.xyz, p));
-    if (guess.z >= 0.0 && textureLoad(back_position, texel(guess), 0).w != 0.0) {
+    var d = distance(here.xyz, p);
+    for (var k = 0u; k < BACK_FACE_STEPS; k++) {
+        let guess = project_to_pixel(p + t * d);
+        if (guess.z < 0.0) {
+            break;
+        }
+        let seen = textureLoad(back_position, texel(guess), 0);
+        if (seen.w == 0.0) {
+            break;
+        }
         at = texel(guess);
+        d = distance(seen.xyz, p);
     }
-    out.point = textureLoad(back_position, at, 0).xyz;
+    out.point = p + t * d;
     out.normal = safe_normalize(textureLoad(back_normal, at, 0).xyz, t);
     out.found = true;
     return out;

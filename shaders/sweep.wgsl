@@ -189,6 +189,14 @@ fn sweep(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workgroups)
     outputs[base + COL_ABSORPTION] = absorption_exact(a_row.x * d);
     outputs[base + COL_ABSORPTION + 1u] = absorption_rule(a_row.x * d);
     outputs[base + COL_SPHERE_CHORD] = sphere_chord(l * (d * m), v, vec3(0.0), a_row.x);
+    for (var form = 0u; form < 3u; form++) {
+        outputs[base + COL_ABSORPTION_IN_FORM + form] = absorption_in_form(a_row.x * d, form);
+    }
+    // The exit from m·N inside each unit shape along V (m = 1: on the surface).
+    let shapes = array(SHAPE_SPHERE, SHAPE_CYLINDER, SHAPE_CUBE, SHAPE_PYRAMID);
+    for (var k = 0u; k < 4u; k++) {
+        outputs[base + COL_SHAPE_EXIT + k] = shape_exit(shapes[k], n * m, v).w;
+    }
     outputs[base + COL_PENUMBRA_WIDTH] = penumbra_width(a_row.x, d, a_row.y);
     outputs[base + COL_PCSS_SEARCH_RADIUS] = pcss_search_radius(a_row.x, d, a_row.y);
     outputs[base + COL_SHADOW_LINEAR_DEPTH] = shadow_linear_depth(m, a_row.y, a_row.y + d);

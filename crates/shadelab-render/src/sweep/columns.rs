@@ -32,7 +32,7 @@ pub struct Column {
 const D_MAX: f64 = 1.0 / (4.0 * M_MIN * M_MIN);
 
 /// Every column in the order the kernel writes them (and the report lists them).
-pub const COLUMNS: [Column; 44] = [
+pub const COLUMNS: [Column; 46] = [
     col("diffuse_lambert", "DIFFUSE_LAMBERT", 1, 1.0, "N·L of unit vectors"),
     col("specular_phong", "SPECULAR_PHONG", 1, 1.0, "(V·R)^h with V·R clamped to [0, 1]"),
     col("d_beckmann", "D_BECKMANN", 1, D_MAX, "peak 1/(4 m²) at m = M_MIN"),
@@ -105,6 +105,20 @@ pub const COLUMNS: [Column; 44] = [
     },
     col("absorption_exact, absorption_rule (a·d = α·d)", "ABSORPTION", 2, 1.0, "a share in [0, 1], underflowing to 0"),
     col("sphere_chord", "SPHERE_CHORD", 1, f64::INFINITY, "finite: at most the diameter 2α"),
+    col(
+        "absorption_in_form (exact, linear, neglected; a·d = α·d)",
+        "ABSORPTION_IN_FORM",
+        3,
+        1.0,
+        "a share in [0, 1]: 1 − a·d held at 0",
+    ),
+    col(
+        "shape_exit t from m·N along V (sphere, cylinder, cube, pyramid)",
+        "SHAPE_EXIT",
+        4,
+        3.5,
+        "0 (on the surface, leaving) to the longest chord, 2√3",
+    ),
     col("penumbra_width", "PENUMBRA_WIDTH", 1, f64::INFINITY, "finite: w·d_r/BLOCKER_DIST_MIN"),
     col("pcss_search_radius", "PCSS_SEARCH_RADIUS", 1, f64::INFINITY, "finite: ½w/BLOCKER_DIST_MIN"),
     col("shadow_linear_depth", "SHADOW_LINEAR_DEPTH", 1, f64::INFINITY, "between near and far"),
@@ -233,6 +247,8 @@ const FRESNEL_DIELECTRIC: usize = offset("FRESNEL_DIELECTRIC");
 const REFRACT_SNELL: usize = offset("REFRACT_SNELL");
 const ABSORPTION: usize = offset("ABSORPTION");
 const SPHERE_CHORD: usize = offset("SPHERE_CHORD");
+const ABSORPTION_IN_FORM: usize = offset("ABSORPTION_IN_FORM");
+const SHAPE_EXIT: usize = offset("SHAPE_EXIT");
 const PENUMBRA_WIDTH: usize = offset("PENUMBRA_WIDTH");
 const PCSS_SEARCH_RADIUS: usize = offset("PCSS_SEARCH_RADIUS");
 const SHADOW_LINEAR_DEPTH: usize = offset("SHADOW_LINEAR_DEPTH");
@@ -393,6 +409,15 @@ pub(super) fn reference(
     out[ABSORPTION] = transmission::absorption_exact(alpha * d);
     out[ABSORPTION + 1] = transmission::absorption_rule(alpha * d);
     out[SPHERE_CHORD] = transmission::sphere_chord(l * (d * m), v, DVec3::ZERO, alpha);
+    for form in 0..3 {
+        out[ABSORPTION_IN_FORM + form] = transmission::absorption_in_form(alpha * d, form as u32);
+    }
+    // The exit from m·N inside each unit shape along V: on the surface (m = 1) and leaving, the
+    // exit touches the entry; grazing views run along it.
+    use transmission::{SHAPE_CUBE, SHAPE_CYLINDER, SHAPE_PYRAMID, SHAPE_SPHERE};
+    for (k, shape) in [SHAPE_SPHERE, SHAPE_CYLINDER, SHAPE_CUBE, SHAPE_PYRAMID].into_iter().enumerate() {
+        out[SHAPE_EXIT + k] = transmission::shape_exit(shape, n * m, v).map_or(-1.0, |e| e.0);
+    }
     // PCSS with a light α wide, the receiver at d and the blocker at d0 (d = d0 among them: a
     // receiver touching its blocker); m as a stored depth between near d0 and far d0 + d.
     out[PENUMBRA_WIDTH] = shadows::penumbra_width(alpha, d, d0);

@@ -250,7 +250,7 @@ pub struct SceneArgs {
           help = format!("Normal-incidence reflectance μ of every material: R,G,B or one value, each in [{}, {}]", params::MU.min, params::MU.max))]
     pub mu: Option<[f64; 3]>,
     #[arg(long, value_name = "SHARE", value_parser = values::real(params::TRANSMISSION),
-          help = within("Transmission share 1 − t of every material, the four-term sum's I_t (0 opaque)", params::TRANSMISSION))]
+          help = within("Transmission share τ = 1 − t of every material (0 opaque): drawn as glass, or in the four-term sum as its I_t", params::TRANSMISSION))]
     pub transmission: Option<f64>,
     #[arg(long, value_name = "R,G,B", value_parser = values::rgb(params::IOR),
           help = format!("Refractive index v of every material, given directly (else from μ): R,G,B (channels that differ disperse) or one value, each in [{}, {}]", params::IOR.min, params::IOR.max))]

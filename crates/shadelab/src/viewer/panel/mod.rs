@@ -1,9 +1,10 @@
 //! The parameter panel at the side, section by section (scene and modes, files, material,
-//! lights, live numbers, the effects called for). It edits the model and the render settings,
+//! transparency, lights, live numbers, the effects called for). It edits the model and the render settings,
 //! never wgpu objects; every slider takes its range from the parameter's declared range.
 
 mod effects;
 mod files_row;
+mod glass;
 mod lights;
 mod live;
 mod material;
@@ -33,6 +34,9 @@ impl Viewer {
         self.modes_ui(ui);
         ui.separator();
         self.material_ui(ui);
+        egui::CollapsingHeader::new("transparency")
+            .default_open(self.scene.materials.iter().any(|m| m.transmits()))
+            .show(ui, |ui| self.glass_ui(ui));
         ui.separator();
         self.lights_ui(ui);
         ui.separator();

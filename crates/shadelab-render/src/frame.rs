@@ -103,10 +103,13 @@ impl Renderer {
                 depth_ops: Some(wgpu::Operations { load: wgpu::LoadOp::Clear(1.0), store: wgpu::StoreOp::Store }),
                 stencil_ops: None,
             }),
-            timestamp_writes: timestamps.map(|(qs, i)| wgpu::RenderPassTimestampWrites {
-                query_set: qs,
-                beginning_of_pass_write_index: (!begun).then_some(i),
-                end_of_pass_write_index: glass.is_empty().then_some(i + 1),
+            // Opened here unless an earlier pass opened it; closed here unless the glass pass follows.
+            timestamp_writes: timestamps.filter(|_| !begun || glass.is_empty()).map(|(qs, i)| {
+                wgpu::RenderPassTimestampWrites {
+                    query_set: qs,
+                    beginning_of_pass_write_index: (!begun).then_some(i),
+                    end_of_pass_write_index: glass.is_empty().then_some(i + 1),
+                }
             }),
             occlusion_query_set: None,
             multiview_mask: None,

@@ -51,6 +51,7 @@ fn main() -> ExitCode {
         Some(cli::Command::Bench(cli::BenchCommand::Mesh(args))) => bench::mesh::run(&args),
         Some(cli::Command::Bench(cli::BenchCommand::Shadows(args))) => bench::shadows::run(&args),
         Some(cli::Command::Bench(cli::BenchCommand::Penumbra(args))) => bench::penumbra::run(&args),
+        Some(cli::Command::Bench(cli::BenchCommand::Glass(args))) => bench::glass::run(&args),
         Some(cli::Command::Sweep) => sweep::run(),
         Some(cli::Command::Figures(args)) => figures::run(&args),
         Some(cli::Command::Lobe(args)) => lobe::run(&args),

@@ -3,6 +3,7 @@
 
 pub mod accuracy;
 pub mod effects;
+pub mod glass;
 pub mod load;
 pub mod mesh;
 pub mod penumbra;

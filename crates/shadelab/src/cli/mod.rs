@@ -124,6 +124,30 @@ pub enum BenchCommand {
     /// similar-triangles prediction: the f64 reference, PCSS, 16 point sources and PCF. Writes a
     /// CSV, a Markdown table and a plot.
     Penumbra(BenchPenumbraArgs),
+    /// What transparency costs against its accuracy: the `glass` scene opaque, straight through,
+    /// with the analytic and the back-face exit, timed side by side and compared with the f64
+    /// Whitted reference; the chapter's absorption rule against the exact form at a range of a·d,
+    /// its error beside the time it saves. Writes a Markdown report, CSVs and error maps.
+    Glass(BenchGlassArgs),
+}
+
+#[derive(Args, Debug)]
+pub struct BenchGlassArgs {
+    #[arg(long, default_value = "640", value_parser = values::count(params::WIDTH),
+          help = within("Width in pixels", params::WIDTH))]
+    pub width: u32,
+    #[arg(long, default_value = "360", value_parser = values::count(params::HEIGHT),
+          help = within("Height in pixels", params::HEIGHT))]
+    pub height: u32,
+    #[arg(long, default_value = "20", value_parser = values::count(FRAMES),
+          help = within("Measured frames per row (after warm-up)", FRAMES))]
+    pub frames: u32,
+    #[arg(long, default_value = "2", value_parser = values::count(WARMUP),
+          help = within("Warm-up frames per row (not measured)", WARMUP))]
+    pub warmup: u32,
+    /// Folder for glass.md, glass-methods.csv, glass-rule.csv and the rule's error maps.
+    #[arg(long, default_value = "bench-glass", value_name = "DIR")]
+    pub output: PathBuf,
 }
 
 #[derive(Args, Debug)]

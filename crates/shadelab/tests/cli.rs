@@ -41,6 +41,12 @@ fn bad_values_exit_2_with_one_line_naming_flag_and_range() {
         (&["--term", "emission"], &["--term", "all, ambient, diffuse, specular"]),
         (&["--scene", "nowhere.gltf"], &["--scene", "default"]),
         (&["--output", "x.bmp"], &["--output", ".png, .exr"]),
+        (&["--ior", "0.5"], &["--ior", "[1, 3]"]),
+        (&["--ior", "1.5,1.6"], &["--ior", "R,G,B"]),
+        (&["--absorption-coef", "-1"], &["--absorption-coef", "[0, 100]"]),
+        (&["--absorption", "approximate"], &["--absorption", "exact, rule"]),
+        (&["--glass-exit", "rays"], &["--glass-exit", "analytic, back-faces"]),
+        (&["--glass-view", "depth"], &["--glass-view", "color, tir, path, regime"]),
         (&["--bogus"], &["--bogus"]),
     ];
     for (args, needles) in cases {
@@ -393,6 +399,30 @@ fn explain_and_bench_effects() {
         "area lights: on — disk light L1",
         "shadow filter pcss: on — 1 casting light(s) filter with pcss",
         "light loop: 1 light (disk)",
+    ] {
+        assert!(text.contains(needle), "missing '{needle}' in:\n{text}");
+    }
+    // The glass scene calls for the glass effects, each with its reason.
+    let o = shadelab(&[
+        "render",
+        "--explain",
+        "--scene",
+        "glass",
+        "--width",
+        "32",
+        "--height",
+        "18",
+        "--output",
+        png.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let text = String::from_utf8_lossy(&o.stdout);
+    for needle in [
+        "+glass+refract+absorb]",
+        "transmission: on — 3 object(s) let light through (glass sphere, slab, absorbing cylinder)",
+        "refraction: on — 3 transparent object(s) with index v ≠ 1 bend rays by Snell's law (7.5)",
+        "absorption: on — glass sphere neglected",
+        "absorbing cylinder exact e^(−a·d) (a·d up to 2.441 ≥ 0.5)",
     ] {
         assert!(text.contains(needle), "missing '{needle}' in:\n{text}");
     }

@@ -44,6 +44,9 @@ struct SceneExtras {
     /// The illumination model; absent is the Phong model.
     #[serde(skip_serializing_if = "Option::is_none")]
     illumination: Option<Named<IlluminationModel>>,
+    /// How transparent objects absorb; absent is the chapter's rule.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    absorption: Option<Named<crate::lighting::transmission::AbsorptionChoice>>,
 }
 
 /// Read a scene file (`.gltf` or `.glb`; external buffers relative to the file's folder).
@@ -215,6 +218,9 @@ impl Reader<'_> {
             if let Some(m) = ex.illumination {
                 scene.illumination = m.0;
             }
+            if let Some(a) = ex.absorption {
+                scene.absorption = a.0;
+            }
         }
 
         let mut camera_nodes = Vec::new();
@@ -313,6 +319,7 @@ fn document(scene: &Scene, settings: &SceneSettings) -> (Value, Vec<u8>) {
         shading: settings.shading.map(Named),
         specular: settings.specular.map(Named),
         illumination: (scene.illumination != IlluminationModel::Phong).then_some(Named(scene.illumination)),
+        absorption: (scene.absorption != Default::default()).then_some(Named(scene.absorption)),
     };
     let mut root = json!({
         "asset": { "version": "2.0", "generator": concat!("shadelab ", env!("CARGO_PKG_VERSION")) },

@@ -25,6 +25,19 @@ fn every_builtin_scene_round_trips_through_gltf_and_glb() {
     }
 }
 
+/// A transparent material's given index per channel and the scene's absorption choice come back
+/// exactly; without a given index none comes back (it follows μ).
+#[test]
+fn glass_parameters_round_trip() {
+    let mut scene = Scene::builtin("glass").unwrap();
+    scene.absorption = crate::lighting::transmission::AbsorptionChoice::Exact;
+    scene.materials[3].ior = Some([1.45, 1.5, 1.6]);
+    let settings = SceneSettings::default();
+    let back = load(scene_to_gltf_json(&scene, &settings).as_bytes()).scene;
+    assert_eq!(back, scene);
+    assert_eq!(back.materials[4].ior, None);
+}
+
 #[test]
 fn save_scene_writes_gltf_or_glb_by_extension() {
     let dir = std::env::temp_dir().join(format!("shadelab-gltf-save-{}", std::process::id()));

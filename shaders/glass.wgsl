@@ -201,15 +201,17 @@ fn glass_path(p: vec3<f32>, n: vec3<f32>, dir: vec3<f32>, v: f32, pixel: vec2<f3
         weight = vec3(0.0);
     }
 #endif
-    var behind = vec3(0.0);
-    var mirror = vec3(0.0);
 #if EFFECT_REFRACTION
-    behind = scene_along(pos, t);
-    mirror = scene_along(p, reflect_about(dir, n));
+    // The ray out of the body and the mirrored one, marched in one loop (its code compiled once).
+    let starts = array(pos, p);
+    let towards = array(t, reflect_about(dir, n));
+    let share = array((1.0 - f1) * weight, vec3(f1));
+    for (var r = 0u; r < 2u; r++) {
+        out.light += share[r] * scene_along(starts[r], towards[r]);
+    }
 #else
-    behind = scene_behind(pixel);
+    out.light = weight * scene_behind(pixel);
 #endif
-    out.light = (1.0 - f1) * weight * behind + f1 * mirror;
     return out;
 }
 
@@ -228,13 +230,20 @@ fn glass_color(p: vec3<f32>, n_in: vec3<f32>, surface: Surface, pixel: vec2<f32>
     v_index = object.ior.rgb;
     disperses = object.ior.w != 0.0;
 #endif
-    var path = glass_path(p, n, -v, v_index.r, pixel);
-    var light = path.light;
-    if (disperses) {
-        let g = glass_path(p, n, -v, v_index.g, pixel);
-        let b = glass_path(p, n, -v, v_index.b, pixel);
-        light = vec3(path.light.r, g.light.g, b.light.b);
-        path.tir = path.tir || g.tir || b.tir;
+    // One path for all channels; one per channel where they disperse (a loop, so that the path's
+    // code is compiled once).
+    var light = vec3(0.0);
+    var path = GlassPath(vec3(0.0), false, 0.0);
+    let channels = select(1u, 3u, disperses);
+    for (var c = 0u; c < channels; c++) {
+        let one = glass_path(p, n, -v, v_index[c], pixel);
+        if (disperses) {
+            light[c] = one.light[c];
+        } else {
+            light = one.light;
+        }
+        path.tir = path.tir || one.tir;
+        path.length = max(path.length, one.length);
     }
     let color = lit + tau * light;
     switch (globals.flags >> GLASS_VIEW_SHIFT) & GLASS_VIEW_MASK {

@@ -45,6 +45,8 @@ pub(crate) struct GlassTextures {
     back_position: wgpu::TextureView,
     back_normal: wgpu::TextureView,
     back_depth: wgpu::TextureView,
+    /// The bind group, made for the target whose depth view it holds.
+    bind: Option<(wgpu::TextureView, wgpu::BindGroup)>,
 }
 
 impl GlassTextures {
@@ -76,6 +78,7 @@ impl GlassTextures {
             )),
             back_normal: view(texture("shadelab back normal", BACK_FORMAT, U::RENDER_ATTACHMENT | U::TEXTURE_BINDING)),
             back_depth: view(texture("shadelab back depth", DEPTH_FORMAT, U::RENDER_ATTACHMENT)),
+            bind: None,
         }
     }
 }
@@ -168,17 +171,28 @@ impl Renderer {
         if !fits {
             self.glass = Some(GlassTextures::new(&self.device, target));
         }
-        let g = self.glass.as_ref().expect("made above");
-        let bind = self.device.create_bind_group(&wgpu::BindGroupDescriptor {
-            label: Some("shadelab glass"),
-            layout: &self.glass_layout,
-            entries: &[
-                wgpu::BindGroupEntry { binding: 8, resource: wgpu::BindingResource::TextureView(&g.behind_view) },
-                wgpu::BindGroupEntry { binding: 9, resource: wgpu::BindingResource::TextureView(&target.depth_view) },
-                wgpu::BindGroupEntry { binding: 10, resource: wgpu::BindingResource::TextureView(&g.back_position) },
-                wgpu::BindGroupEntry { binding: 11, resource: wgpu::BindingResource::TextureView(&g.back_normal) },
-            ],
-        });
+        let g = self.glass.as_mut().expect("made above");
+        // Made once per target: the views it holds stay.
+        if g.bind.as_ref().is_none_or(|(depth, _)| *depth != target.depth_view) {
+            let bind = self.device.create_bind_group(&wgpu::BindGroupDescriptor {
+                label: Some("shadelab glass"),
+                layout: &self.glass_layout,
+                entries: &[
+                    wgpu::BindGroupEntry { binding: 8, resource: wgpu::BindingResource::TextureView(&g.behind_view) },
+                    wgpu::BindGroupEntry {
+                        binding: 9,
+                        resource: wgpu::BindingResource::TextureView(&target.depth_view),
+                    },
+                    wgpu::BindGroupEntry {
+                        binding: 10,
+                        resource: wgpu::BindingResource::TextureView(&g.back_position),
+                    },
+                    wgpu::BindGroupEntry { binding: 11, resource: wgpu::BindingResource::TextureView(&g.back_normal) },
+                ],
+            });
+            g.bind = Some((target.depth_view.clone(), bind));
+        }
+        let bind = g.bind.as_ref().expect("made above").1.clone();
         let exits = gpu_scene.glass_exits.lock().expect("not poisoned").clone();
         let fx = program.effects();
         let surfaces = fx.samples_textures() || fx.has(Effect::VertexColors);

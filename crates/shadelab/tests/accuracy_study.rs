@@ -19,6 +19,7 @@ fn each_light_count_is_measured_against_its_own_reference() {
         study_resolutions: vec![],
         model_study: ("sphere", 16, (96, 54)),
         texture_study: ("sphere", 8, (48, 27)),
+        glass_study: None,
         frames: 1,
         warmup: 0,
     };
@@ -96,7 +97,31 @@ fn studies_only() -> Plan {
         study_resolutions: vec![],
         model_study: ("sphere", 8, (48, 27)),
         texture_study: ("sphere", 8, (48, 27)),
+        glass_study: None,
         frames: 1,
         warmup: 0,
     }
+}
+
+/// The glass study measures each mode and the glass pass's cheaper ways against the Whitted
+/// reference: straight through is further from it than refracting, the back-face exit further
+/// than the analytic one, and refraction costs more than going straight.
+#[test]
+fn the_glass_study_measures_the_glass_pass_against_the_tracer() {
+    let gpu = shadelab_render::Gpu::lavapipe().unwrap_or_else(|e| panic!("{e}"));
+    let plan = Plan { glass_study: Some(("glass", 16, (160, 90))), frames: 2, ..studies_only() };
+    let report = run_plan(&gpu, &plan, "test", |_| {});
+    let rows: Vec<_> = report.rows.iter().filter(|r| r.study == shadelab::bench::accuracy::Study::Glass).collect();
+    assert_eq!(rows.len(), 1 + 3 + 2, "baseline, three shading modes, straight through and back faces");
+    let row = |program: &str| rows.iter().find(|r| r.program() == program).unwrap_or_else(|| panic!("{program}"));
+    let rmse = |program: &str| row(program).error.unwrap().rmse;
+    let (exact, straight, back) = (
+        rmse("phong/cook-torrance"),
+        rmse("phong/cook-torrance, straight through"),
+        rmse("phong/cook-torrance, back-face exit"),
+    );
+    eprintln!("glass RMSE: analytic {exact:.2e}, back faces {back:.2e}, straight {straight:.2e}");
+    assert!(exact < back && back < straight, "{exact} {back} {straight}");
+    let md = shadelab::bench::accuracy::markdown(&report);
+    assert!(md.contains("## Transparent objects (glass level 16, 160×90)"), "{md}");
 }

@@ -15,7 +15,7 @@ use shadelab_model::scene_variants::{self, ANALYTIC_SCENES};
 use shadelab_model::{ModelChoice, Scene, ShadingMode, SpecularModel};
 use shadelab_render::image_error::{self, ErrorStats};
 use shadelab_render::timing::{FrameTimer, TimeSource, median, quantile_sorted};
-use shadelab_render::{Gpu, Program, RenderSettings, Renderer, Target, target};
+use shadelab_render::{Gpu, Program, RenderSettings, Renderer, Specialization, Target, target};
 use std::collections::HashMap;
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
@@ -39,6 +39,9 @@ pub struct Plan {
     /// A base colour texture: this scene with its floor a textured mesh
     /// (`scene_variants::with_textured_floor`) at this level and resolution, each shading mode.
     pub texture_study: (&'static str, u32, (u32, u32)),
+    /// Transparent objects: this scene at this level and resolution, each shading mode, and Phong
+    /// shading straight through and with the back-face exit (`None`: not measured).
+    pub glass_study: Option<(&'static str, u32, (u32, u32))>,
     pub frames: usize,
     pub warmup: usize,
 }
@@ -56,6 +59,7 @@ impl Plan {
             study_resolutions: vec![(160, 90), (320, 180), (640, 360), (1280, 720), (1920, 1080)],
             model_study: ("default", 64, (640, 360)),
             texture_study: ("default", 64, (640, 360)),
+            glass_study: Some(("glass", 32, (640, 360))),
             frames: 50,
             warmup: 5,
         }
@@ -73,6 +77,7 @@ impl Plan {
             study_resolutions: vec![(160, 90), (320, 180), (640, 360)],
             model_study: ("default", 32, (160, 90)),
             texture_study: ("default", 32, (160, 90)),
+            glass_study: Some(("glass", 32, (160, 90))),
             frames: 10,
             warmup: 2,
         }
@@ -92,6 +97,8 @@ pub enum Study {
     Models,
     /// A textured floor, each shading mode.
     Textures,
+    /// Transparent objects: each shading mode, and the glass pass's cheaper ways.
+    Glass,
 }
 
 impl Study {
@@ -102,6 +109,7 @@ impl Study {
             Study::Resolution => "resolution",
             Study::Models => "models",
             Study::Textures => "textures",
+            Study::Glass => "glass",
         }
     }
 }
@@ -130,12 +138,15 @@ pub struct Row {
     pub error: Option<ErrorStats>,
     /// On the Pareto front of (time, RMSE) among the shaded rows of its scene and resolution.
     pub pareto: bool,
+    /// How the glass study's row draws its glass, beside its program ("" elsewhere).
+    pub variant: &'static str,
 }
 
 impl Row {
     pub fn program(&self) -> String {
         match (self.shading, self.specular, self.model) {
             (Some(s), _, Some(m @ (ModelChoice::Lambert | ModelChoice::Sum))) => format!("{s}/{m}"),
+            (Some(s), Some(p), _) if !self.variant.is_empty() => format!("{s}/{p}, {}", self.variant),
             (Some(s), Some(p), _) => format!("{s}/{p}"),
             _ => "baseline".into(),
         }
@@ -170,6 +181,19 @@ impl Group {
         if self.study == Study::Textures {
             let modes = ShadingMode::ALL_MODES.map(|s| Some(RenderSettings::new(s, SpecularModel::CookTorrance)));
             return std::iter::once(None).chain(modes).collect();
+        }
+        if self.study == Study::Glass {
+            use shadelab_model::effects::Effect;
+            let phong = RenderSettings::new(ShadingMode::Phong, SpecularModel::CookTorrance);
+            let key = Program::for_scene(&self.scene, &phong).effects();
+            let straight = Specialization::Fixed(key.without(Effect::Refraction));
+            let back = shadelab_model::lighting::transmission::GlassExit::BackFaces;
+            let modes = ShadingMode::ALL_MODES.map(|s| Some(RenderSettings::new(s, SpecularModel::CookTorrance)));
+            let cheaper = [
+                Some(RenderSettings { specialization: straight, ..phong }),
+                Some(RenderSettings { glass_exit: back, ..phong }),
+            ];
+            return std::iter::once(None).chain(modes).chain(cheaper).collect();
         }
         match self.model {
             None => programs(),
@@ -239,6 +263,10 @@ fn groups(plan: &Plan) -> Vec<Group> {
     out.push(Group { study: Study::Textures, name: TEXTURED_FLOOR, scene, level, size, model: None });
     let scene = scene_variants::with_material_maps(&scene_variants::at_level(&base(name), level), level);
     out.push(Group { study: Study::Textures, name: MAPPED_FLOOR, scene, level, size, model: None });
+    if let Some((name, level, size)) = plan.glass_study {
+        let scene = scene_variants::at_level(&base(name), level);
+        out.push(Group { study: Study::Glass, name, scene, level, size, model: None });
+    }
     out
 }
 
@@ -299,6 +327,7 @@ pub fn run_plan(gpu: &Gpu, plan: &Plan, command: &str, mut progress: impl FnMut(
                 ratio_to_baseline: m / baseline_ms,
                 error,
                 pareto: false,
+                variant: s.map_or("", glass_variant),
             });
         }
         progress(&format!("{} {} L{} {}×{}", g.study.name(), g.name, g.level, w, h));
@@ -311,6 +340,17 @@ pub fn run_plan(gpu: &Gpu, plan: &Plan, command: &str, mut progress: impl FnMut(
         plan: plan.clone(),
         command: command.to_string(),
         seconds: start.elapsed().as_secs_f64(),
+    }
+}
+
+/// How a glass study's settings draw the glass: straight through (its key without refraction),
+/// with the back-face exit, or as the scene calls for ("").
+fn glass_variant(s: RenderSettings) -> &'static str {
+    use shadelab_model::lighting::transmission::GlassExit;
+    match (s.specialization, s.glass_exit) {
+        (Specialization::Fixed(_), _) => "straight through",
+        (_, GlassExit::BackFaces) => "back-face exit",
+        _ => "",
     }
 }
 

@@ -70,6 +70,13 @@ pub fn markdown(report: &Report) -> String {
         r = scene_variants::CHECKER_REPEATS,
     );
     table(&mut s, report.rows.iter().filter(|r| r.study == Study::Textures));
+    if let Some((name, level, (w, h))) = report.plan.glass_study {
+        let _ = writeln!(
+            s,
+            "\n## Transparent objects ({name} level {level}, {w}×{h})\n\nThe glass scene against the reference's Whitted tracer (docs/transparency.md): every mode draws the glass per pixel; Phong shading also straight through (no refraction) and with the back-face exit instead of the analytic one.\n"
+        );
+        table(&mut s, report.rows.iter().filter(|r| r.study == Study::Glass));
+    }
     s
 }
 

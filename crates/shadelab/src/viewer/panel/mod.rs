@@ -34,12 +34,13 @@ impl Viewer {
         self.modes_ui(ui);
         ui.separator();
         self.material_ui(ui);
-        egui::CollapsingHeader::new("transparency")
-            .default_open(self.scene.materials.iter().any(|m| m.transmits()))
-            .show(ui, |ui| self.glass_ui(ui));
         ui.separator();
         self.lights_ui(ui);
         ui.separator();
+        // The selected material's transparency: open where some material lets light through.
+        egui::CollapsingHeader::new("transparency")
+            .default_open(self.scene.materials.iter().any(|m| m.transmits()))
+            .show(ui, |ui| self.glass_ui(ui));
         self.live_numbers_ui(ui);
         self.effects_ui(ui);
         self.view_actions_ui(ui);

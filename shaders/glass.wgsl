@@ -269,25 +269,13 @@ fn glass_color(p: vec3<f32>, n_in: vec3<f32>, surface: Surface, pixel: vec2<f32>
 
 @fragment
 fn fs_glass(in: PhongOut) -> @location(0) vec4<f32> {
-    var uv = vec2(0.0);
-    var tint = vec3(1.0);
-#if TEXTURE_COORDS
-    uv = in.uv;
-#endif
-#if EFFECT_VERTEX_COLORS
-    tint = in.tint;
-#endif
-    var tangent = vec4(0.0);
-#if EFFECT_NORMAL_TEXTURE
-    tangent = in.world_tangent;
-#endif
-    let n = pixel_normal(uv, in.world_normal, tangent);
-    let c = glass_color(in.world_pos, n, pixel_surface(uv, tint), in.clip.xy);
+    let px = pixel_inputs(in);
+    let c = glass_color(in.world_pos, px.normal, pixel_surface(px.texcoord, px.tint), in.clip.xy);
     // The debug views show their own colours, without the emission.
     if (((globals.flags >> GLASS_VIEW_SHIFT) & GLASS_VIEW_MASK) != 0u) {
         return c;
     }
-    return finish(c.rgb + pixel_emission(uv));
+    return finish(c.rgb + pixel_emission(px.texcoord));
 }
 
 // The back-face pass of a mesh: each pixel's nearest back face, its world position and outward

@@ -541,22 +541,34 @@ fn vs_phong(in: SmoothIn) -> PhongOut {
     return phong_vertex(in);
 }
 
-@fragment
-fn fs_phong(in: PhongOut) -> @location(0) vec4<f32> {
-    var uv = vec2(0.0);
-    var tint = vec3(1.0);
+// Phong shading's interpolants at a pixel: texture coordinates, tint and the shading normal.
+struct PixelInputs {
+    texcoord: vec2<f32>,
+    tint: vec3<f32>,
+    normal: vec3<f32>,
+}
+
+fn pixel_inputs(in: PhongOut) -> PixelInputs {
+    var out = PixelInputs(vec2(0.0), vec3(1.0), vec3(0.0));
 #if TEXTURE_COORDS
-    uv = in.uv;
+    out.texcoord = in.uv;
 #endif
 #if EFFECT_VERTEX_COLORS
-    tint = in.tint;
+    out.tint = in.tint;
 #endif
     var tangent = vec4(0.0);
 #if EFFECT_NORMAL_TEXTURE
     tangent = in.world_tangent;
 #endif
-    let n = pixel_normal(uv, in.world_normal, tangent);
-    return finish(shade(in.world_pos, n, pixel_surface(uv, tint), in.clip.xy) + pixel_emission(uv));
+    out.normal = pixel_normal(out.texcoord, in.world_normal, tangent);
+    return out;
+}
+
+@fragment
+fn fs_phong(in: PhongOut) -> @location(0) vec4<f32> {
+    let px = pixel_inputs(in);
+    let lit = shade(in.world_pos, px.normal, pixel_surface(px.texcoord, px.tint), in.clip.xy);
+    return finish(lit + pixel_emission(px.texcoord));
 }
 
 // The null-shader baseline of the cost study: the same geometry, vertex fetch, transform and

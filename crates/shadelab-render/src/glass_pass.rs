@@ -7,7 +7,7 @@ use crate::pipelines::DEPTH_FORMAT;
 use crate::renderer::Renderer;
 use crate::target::Target;
 use crate::upload::SceneGpu;
-use crate::vertex::{SmoothVertex, SurfaceVertex};
+use crate::vertex::SmoothVertex;
 use shadelab_model::Scene;
 use shadelab_model::effects::{Effect, EffectKey};
 
@@ -114,13 +114,7 @@ pub(crate) fn build_pipeline(
 ) -> wgpu::RenderPipeline {
     let (vs, fs) = if back { BACK_ENTRY_POINTS } else { GLASS_ENTRY_POINTS };
     let options = wgpu::PipelineCompilationOptions { constants, ..Default::default() };
-    let surface = SurfaceVertex::layout(
-        effects.samples_textures(),
-        effects.has(Effect::VertexColors),
-        effects.has(Effect::NormalTexture),
-    );
-    let buffers = [Some(SmoothVertex::LAYOUT), surface];
-    let buffers = if buffers[1].is_some() { &buffers[..] } else { &buffers[..1] };
+    let buffers = &crate::vertex::buffers(SmoothVertex::LAYOUT, effects);
     let target = |format| Some(wgpu::ColorTargetState { format, blend: None, write_mask: wgpu::ColorWrites::ALL });
     let targets = if back { vec![target(BACK_FORMAT), target(BACK_FORMAT)] } else { vec![target(color_format)] };
     device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {

@@ -7,7 +7,7 @@
 use crate::light_loop::LightLoop;
 use crate::program::Program;
 use crate::shaders;
-use crate::vertex::{FlatVertex, SmoothVertex, SurfaceVertex};
+use crate::vertex::{FlatVertex, SmoothVertex};
 use shadelab_model::effects::{Effect, EffectKey};
 use std::collections::HashMap;
 use std::time::{Duration, Instant};
@@ -257,15 +257,8 @@ fn build_pipeline(
     };
     let constants = key.program.light_loop().constants();
     let options = wgpu::PipelineCompilationOptions { constants: &constants, ..Default::default() };
-    let effects = key.program.effects();
-    let surface = SurfaceVertex::layout(
-        effects.samples_textures(),
-        effects.has(Effect::VertexColors),
-        effects.has(Effect::NormalTexture),
-    );
     let first = if key.program.draws_flat_mesh() { FlatVertex::LAYOUT } else { SmoothVertex::LAYOUT };
-    let buffers = [Some(first), surface];
-    let buffers = if buffers[1].is_some() { &buffers[..] } else { &buffers[..1] };
+    let buffers = &crate::vertex::buffers(first, key.program.effects());
     device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
         label: Some(&key.program.label()),
         layout: Some(layout),

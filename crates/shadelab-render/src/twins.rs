@@ -55,7 +55,8 @@ const TWINS: [(&str, &str); 13] = [
 
 /// WGSL functions with no f64 twin, by file, and why. (Entry points are left out by naga's list:
 /// they are the GPU's stages, whose f64 counterpart is `reference::render_reference`.)
-const NO_TWIN: [(&str, &str, &str); 40] = [
+const NO_TWIN: [(&str, &str, &str); 41] = [
+    ("shading.wgsl", "pixel_inputs", "the interpolants at a pixel; the reference has the exact hit"),
     ("glass.wgsl", "project_to_pixel", "a point on the target; the reference traces rays, it has no target"),
     ("glass.wgsl", "texel", "a pixel of the target; the reference traces rays, it has no target"),
     ("glass.wgsl", "scene_behind", "the target behind the pixel; the reference traces the ray on"),

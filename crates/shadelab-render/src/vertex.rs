@@ -71,6 +71,21 @@ impl SurfaceVertex {
     }
 }
 
+/// The vertex buffers a pipeline of `effects` reads: `first` (the smooth or flat mesh), then the
+/// surface buffer where the permutation reads one.
+pub fn buffers(
+    first: wgpu::VertexBufferLayout<'static>,
+    effects: shadelab_model::effects::EffectKey,
+) -> Vec<Option<wgpu::VertexBufferLayout<'static>>> {
+    use shadelab_model::effects::Effect;
+    let surface = SurfaceVertex::layout(
+        effects.samples_textures(),
+        effects.has(Effect::VertexColors),
+        effects.has(Effect::NormalTexture),
+    );
+    std::iter::once(Some(first)).chain(surface.map(Some)).collect()
+}
+
 const SMOOTH_ATTRS: [wgpu::VertexAttribute; 2] = wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3];
 const FLAT_ATTRS: [wgpu::VertexAttribute; 1] = wgpu::vertex_attr_array![0 => Float32x3];
 

@@ -295,8 +295,9 @@ fn bench_accuracy_quick_is_well_formed_and_orders_the_modes() {
     let col = |name: &str| header.iter().position(|h| *h == name).unwrap_or_else(|| panic!("no column {name}"));
     let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
     // 2 scenes × 3 levels × 2 sizes + 4 light counts + 3 sizes, 7 programs each; then the four
-    // models and the two textured floors with a baseline and three shading modes each.
-    assert_eq!(rows.len(), (2 * 3 * 2 + 4 + 3) * 7 + 4 * 4 + 2 * 4);
+    // models and the two textured floors with a baseline and three shading modes each; then the
+    // glass scene's baseline, three shading modes and two cheaper ways.
+    assert_eq!(rows.len(), (2 * 3 * 2 + 4 + 3) * 7 + 4 * 4 + 2 * 4 + 6);
     for r in &rows {
         assert_eq!(r.len(), header.len(), "{r:?}");
         let num = |c: &str| r[col(c)].parse::<f64>().unwrap_or_else(|_| panic!("{c} of {r:?}"));

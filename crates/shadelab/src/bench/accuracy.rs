@@ -384,7 +384,7 @@ fn rmse(r: &Row) -> f64 {
 }
 
 /// The CSV header; one line per row follows.
-pub const CSV_HEADER: &str = "study,scene,level,triangles,width,height,lights,shading,specular,frames,median_ms,p10_ms,p90_ms,ratio_to_baseline,rmse,max_abs,flip_mean,share_off_1_255,pareto,model";
+pub const CSV_HEADER: &str = "study,scene,level,triangles,width,height,lights,shading,specular,frames,median_ms,p10_ms,p90_ms,ratio_to_baseline,rmse,max_abs,flip_mean,share_off_1_255,pareto,model,variant";
 
 pub fn csv(report: &Report) -> String {
     let mut s = String::from(CSV_HEADER);
@@ -397,7 +397,7 @@ pub fn csv(report: &Report) -> String {
         let e = |f: fn(&ErrorStats) -> f64| r.error.as_ref().map_or(String::new(), |x| format!("{:.6e}", f(x)));
         let _ = writeln!(
             s,
-            "{},{},{},{},{},{},{},{},{},{},{:.4},{:.4},{:.4},{:.4},{},{},{},{},{},{}",
+            "{},{},{},{},{},{},{},{},{},{},{:.4},{:.4},{:.4},{:.4},{},{},{},{},{},{},{}",
             r.study.name(),
             r.scene,
             r.level,
@@ -417,7 +417,8 @@ pub fn csv(report: &Report) -> String {
             e(|x| x.flip_mean),
             e(|x| x.share_off),
             r.pareto,
-            r.model.map_or("none".to_string(), |m| m.to_string())
+            r.model.map_or("none".to_string(), |m| m.to_string()),
+            r.variant
         );
     }
     s

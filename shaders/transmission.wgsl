@@ -30,16 +30,8 @@ fn absorption_exact(ad: f32) -> f32 {
 }
 
 // The chapter's share: 1, 1 − a·d or e^(−a·d) by absorption_regime.
-fn absorption_rule(ad_in: f32) -> f32 {
-    let ad = max(ad_in, 0.0);
-    let form = absorption_regime(ad);
-    if (form == ABSORPTION_NEGLECTED) {
-        return 1.0;
-    }
-    if (form == ABSORPTION_LINEAR) {
-        return 1.0 - ad;
-    }
-    return absorption_exact(ad);
+fn absorption_rule(ad: f32) -> f32 {
+    return absorption_in_form(ad, absorption_regime(max(ad, 0.0)));
 }
 
 // Snell's law: xyz the unit direction refracted from incident `i` at normal `n` (facing the

@@ -140,34 +140,7 @@ pub fn sphere_disc(
 
 /// Pixels where the reference sees object `object` and so do all 8 neighbours (no silhouette).
 pub fn interior(r: &shadelab_model::reference::ReferenceImage, object: usize) -> Vec<(u32, u32)> {
-    let mut out = Vec::new();
-    for y in 1..r.height - 1 {
-        for x in 1..r.width - 1 {
-            let all = (0..9).all(|k| r.object_at(x + k % 3 - 1, y + k / 3 - 1) == Some(object));
-            if all {
-                out.push((x, y));
-            }
-        }
-    }
-    out
+    r.interior(object)
 }
 
-/// Mean and largest |GPU − reference| over the channels of `pixels`, and where the largest is.
-pub fn error(
-    gpu_img: &shadelab_render::LinearImage,
-    reference: &shadelab_model::reference::ReferenceImage,
-    pixels: &[(u32, u32)],
-) -> (f64, f64, (u32, u32)) {
-    let (mut sum, mut max, mut worst) = (0.0f64, 0.0f64, (0, 0));
-    for &(x, y) in pixels {
-        let (g, r) = (gpu_img.get(x, y), reference.get(x, y));
-        for c in 0..3 {
-            let e = (g[c] as f64 - r[c]).abs();
-            sum += e;
-            if e > max {
-                (max, worst) = (e, (x, y));
-            }
-        }
-    }
-    (sum / (3 * pixels.len().max(1)) as f64, max, worst)
-}
+pub use shadelab_render::image_error::error_over as error;

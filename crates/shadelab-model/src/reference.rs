@@ -56,6 +56,20 @@ impl ReferenceImage {
     pub fn hidden_at(&self, x: u32, y: u32) -> u8 {
         self.hidden[(y * self.width + x) as usize]
     }
+    /// Pixels where the reference sees `object` and so do all 8 neighbours (no silhouette): where
+    /// an image is compared with the reference without the edges' coverage.
+    pub fn interior(&self, object: usize) -> Vec<(u32, u32)> {
+        let mut out = Vec::new();
+        for y in 1..self.height.saturating_sub(1) {
+            for x in 1..self.width.saturating_sub(1) {
+                if (0..9).all(|k| self.object_at(x + k % 3 - 1, y + k / 3 - 1) == Some(object)) {
+                    out.push((x, y));
+                }
+            }
+        }
+        out
+    }
+
     /// A reference image of one colour with nothing in it (for tests of the metrics).
     pub fn uniform(width: u32, height: u32, color: [f64; 3]) -> ReferenceImage {
         let n = (width * height) as usize;

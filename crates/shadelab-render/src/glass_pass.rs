@@ -191,7 +191,10 @@ impl Renderer {
         let fx = program.effects();
         let surfaces = fx.samples_textures() || fx.has(Effect::VertexColors);
         let front = self.pipelines.glass_pipeline(program, target.format, false).clone();
-        let back = self.pipelines.glass_pipeline(program, target.format, true).clone();
+        // The back-face pipeline only where some object in the pass is a mesh.
+        let needs_back = |i: &usize| exits.get(*i).copied() == Some(shadelab_model::lighting::transmission::SHAPE_MESH);
+        let back =
+            order.iter().any(needs_back).then(|| self.pipelines.glass_pipeline(program, target.format, true).clone());
         let g = self.glass.as_ref().expect("made above");
         for (n, &i) in order.iter().enumerate() {
             let Some(mesh) = gpu_scene.objects.get(i).and_then(|k| gpu_scene.meshes.get(k)) else { continue };
@@ -210,7 +213,7 @@ impl Renderer {
                 g.behind.as_image_copy(),
                 wgpu::Extent3d { width: target.width, height: target.height, depth_or_array_layers: 1 },
             );
-            if exits.get(i).copied() == Some(shadelab_model::lighting::transmission::SHAPE_MESH) {
+            if let Some(back) = back.as_ref().filter(|_| needs_back(&i)) {
                 let clear = |view| {
                     Some(wgpu::RenderPassColorAttachment {
                         view,
@@ -237,7 +240,7 @@ impl Renderer {
                     occlusion_query_set: None,
                     multiview_mask: None,
                 });
-                pass.set_pipeline(&back);
+                pass.set_pipeline(back);
                 draw(&mut pass);
                 pass.draw_indexed(0..mesh.index_count, 0, 0..1);
             }

@@ -37,6 +37,22 @@ fn srgb8(x: f64) -> u8 {
     (linear_to_srgb(x as f32) * 255.0 + 0.5) as u8
 }
 
+/// Mean and largest |image − reference| over the channels of `pixels`, and where the largest is.
+pub fn error_over(image: &LinearImage, reference: &ReferenceImage, pixels: &[(u32, u32)]) -> (f64, f64, (u32, u32)) {
+    let (mut sum, mut max, mut worst) = (0.0f64, 0.0f64, (0, 0));
+    for &(x, y) in pixels {
+        let (g, r) = (image.get(x, y), reference.get(x, y));
+        for c in 0..3 {
+            let e = (g[c] as f64 - r[c]).abs();
+            sum += e;
+            if e > max {
+                (max, worst) = (e, (x, y));
+            }
+        }
+    }
+    (sum / (3 * pixels.len().max(1)) as f64, max, worst)
+}
+
 /// Compare a rendered image with the reference of the same size.
 ///
 /// Non-finite rendered values count as an error of `f64::INFINITY` in RMSE and max (a NaN must

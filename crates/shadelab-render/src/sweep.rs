@@ -15,7 +15,7 @@ mod inputs;
 mod report;
 
 pub use columns::{COLUMNS, Column, OUTPUTS, wgsl_columns};
-pub use dispatch::{SWEEP_KERNEL, TRANSMISSION, sweep_source};
+pub use dispatch::{SWEEP_KERNEL, sweep_source};
 pub use inputs::{Geometry, ShadowCase, SweepInputs};
 pub use report::{SweepReport, TermReport};
 

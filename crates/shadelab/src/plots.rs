@@ -92,6 +92,23 @@ pub(crate) fn plot_err(e: impl std::fmt::Display) -> anyhow::Error {
     anyhow::anyhow!("drawing the plot: {e}")
 }
 
+/// A chart's legend in the plots' frame (a light box, a black border) at `position`, its labels
+/// `font_px` high.
+pub(crate) fn draw_legend<'a, DB: DrawingBackend + 'a, CT: plotters::coord::CoordTranslate>(
+    chart: &mut ChartContext<'a, DB, CT>,
+    position: SeriesLabelPosition,
+    font_px: u32,
+) -> anyhow::Result<()> {
+    chart
+        .configure_series_labels()
+        .position(position)
+        .background_style(WHITE.mix(0.85))
+        .border_style(BLACK)
+        .label_font(("sans-serif", font_px))
+        .draw()
+        .map_err(plot_err)
+}
+
 /// Error (RMSE) against GPU time, log–log, one panel per scene at the plan's largest size; a
 /// line per program through its levels of detail; the Pareto front in black.
 pub fn error_vs_time(report: &Report, path: &Path) -> anyhow::Result<()> {
@@ -182,14 +199,7 @@ pub fn error_vs_time(report: &Report, path: &Path) -> anyhow::Result<()> {
                     .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], style));
                 chart.draw_series(front.iter().map(|p| Cross::new(*p, 6, style.stroke_width(2)))).map_err(plot_err)?;
             }
-            chart
-                .configure_series_labels()
-                .position(SeriesLabelPosition::LowerLeft)
-                .background_style(WHITE.mix(0.85))
-                .border_style(BLACK)
-                .label_font(("sans-serif", 13))
-                .draw()
-                .map_err(plot_err)?;
+            draw_legend(&mut chart, SeriesLabelPosition::LowerLeft, 13)?;
         }
         root.present().map_err(plot_err)?;
     }
@@ -237,14 +247,7 @@ pub fn scaling(report: &Report, path: &Path) -> anyhow::Result<()> {
                 .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], color.stroke_width(3)));
             chart.draw_series(pts.iter().map(|p| Circle::new(*p, 4, color.filled()))).map_err(plot_err)?;
         }
-        chart
-            .configure_series_labels()
-            .position(SeriesLabelPosition::UpperLeft)
-            .background_style(WHITE.mix(0.85))
-            .border_style(BLACK)
-            .label_font(("sans-serif", 13))
-            .draw()
-            .map_err(plot_err)?;
+        draw_legend(&mut chart, SeriesLabelPosition::UpperLeft, 13)?;
 
         let res: Vec<&Row> = report.rows.iter().filter(|r| r.study == Study::Resolution).collect();
         let mpx = |r: &Row| (r.width * r.height) as f64 / 1e6;

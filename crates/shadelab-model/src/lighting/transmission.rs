@@ -132,12 +132,7 @@ pub fn absorption_exact(ad: f64) -> f64 {
 /// The chapter's share after optical depth `ad`: 1 (neglected), 1 − a·d (linear) or e^(−a·d), by
 /// [`absorption_regime`].
 pub fn absorption_rule(ad: f64) -> f64 {
-    let ad = ad.max(0.0);
-    match absorption_regime(ad) {
-        AbsorptionForm::Neglected => 1.0,
-        AbsorptionForm::Linear => 1.0 - ad,
-        AbsorptionForm::Exact => absorption_exact(ad),
-    }
+    absorption_in_form(ad, absorption_regime(ad.max(0.0)).code())
 }
 
 /// Snell's law (7.5): the unit direction refracted from unit incident direction `i` (travelling
@@ -216,6 +211,18 @@ pub const SHAPE_PYRAMID: u32 = 4;
 /// A file's mesh: no analytic exit; the glass pass reads its back faces.
 pub const SHAPE_MESH: u32 = 5;
 
+/// The unit cube's faces as `n·p ≤ 1`.
+pub const CUBE_PLANES: [DVec3; 6] = [DVec3::X, DVec3::NEG_X, DVec3::Y, DVec3::NEG_Y, DVec3::Z, DVec3::NEG_Z];
+/// The unit pyramid's faces as `n·p ≤ 1`: the sides through the apex (0, 1, 0) and a base edge at
+/// e·x = 1, y = −1 (2 e·x + y ≤ 1); the base −y ≤ 1.
+pub const PYRAMID_PLANES: [DVec3; 5] = [
+    DVec3::new(2.0, 1.0, 0.0),
+    DVec3::new(-2.0, 1.0, 0.0),
+    DVec3::new(0.0, 1.0, 2.0),
+    DVec3::new(0.0, 1.0, -2.0),
+    DVec3::NEG_Y,
+];
+
 /// Where the ray from `o` inside unit shape `shape` (object space, `SHAPE_…`) along `d` (any
 /// length) leaves it: `(t, n)`, the exit at `o + t·d` and the outward normal `n` there (not
 /// unit). A point a rounding outside counts as on the surface (t = 0: the exit touches the
@@ -241,19 +248,9 @@ pub fn shape_exit(shape: u32, o: DVec3, d: DVec3) -> Option<(f64, DVec3)> {
                 Some((side, DVec3::new(p.x, 0.0, p.z)))
             }
         }
-        SHAPE_CUBE => planes_exit(o, d, &[DVec3::X, DVec3::NEG_X, DVec3::Y, DVec3::NEG_Y, DVec3::Z, DVec3::NEG_Z]),
+        SHAPE_CUBE => planes_exit(o, d, &CUBE_PLANES),
         SHAPE_PLANE => Some((0.0, if d.y < 0.0 { DVec3::NEG_Y } else { DVec3::Y })),
-        SHAPE_PYRAMID => planes_exit(
-            o,
-            d,
-            &[
-                DVec3::new(2.0, 1.0, 0.0),
-                DVec3::new(-2.0, 1.0, 0.0),
-                DVec3::new(0.0, 1.0, 2.0),
-                DVec3::new(0.0, 1.0, -2.0),
-                DVec3::NEG_Y,
-            ],
-        ),
+        SHAPE_PYRAMID => planes_exit(o, d, &PYRAMID_PLANES),
         _ => None,
     }
 }

@@ -3,6 +3,7 @@
 //! segment.
 
 use crate::lighting::common::safe_normalize;
+use crate::lighting::transmission::{CUBE_PLANES, PYRAMID_PLANES};
 use crate::mesh::{TriangleMesh, face_normal};
 use crate::scene::{Scene, Shape};
 use glam::{DMat4, DVec3};
@@ -92,16 +93,10 @@ fn solve_quadratic(a: f64, b: f64, c: f64) -> Option<(f64, f64)> {
     Some((t0.min(t1), t0.max(t1)))
 }
 
-/// The bounding planes of the unit cube.
-const CUBE_PLANES: [(DVec3, f64); 6] =
-    [(DVec3::X, 1.0), (DVec3::NEG_X, 1.0), (DVec3::Y, 1.0), (DVec3::NEG_Y, 1.0), (DVec3::Z, 1.0), (DVec3::NEG_Z, 1.0)];
-
-/// The bounding planes of the unit pyramid: sides through the apex (0, 1, 0) and a base edge at
-/// e·x = 1, y = −1 (2 e·x + y ≤ 1); the base −y ≤ 1.
-fn pyramid_planes() -> [(DVec3, f64); 5] {
-    let k = 5f64.sqrt();
-    let side = |e: DVec3| ((e * 2.0 + DVec3::Y) / k, 1.0 / k);
-    [side(DVec3::X), side(DVec3::NEG_X), side(DVec3::Z), side(DVec3::NEG_Z), (DVec3::NEG_Y, 1.0)]
+/// A unit shape's faces `n·p ≤ 1` (`transmission::CUBE_PLANES`, `PYRAMID_PLANES`) as the
+/// `(n, d)` pairs of `convex_span`.
+fn faces<const N: usize>(planes: [DVec3; N]) -> [(DVec3, f64); N] {
+    planes.map(|n| (n, 1.0))
 }
 
 /// Intersect a ray (object space, `dir` not necessarily unit) with a unit shape. A
@@ -142,7 +137,7 @@ pub(super) fn intersect_shape(shape: Shape, o: DVec3, dir: DVec3) -> Option<Hit>
             }
             best
         }
-        Shape::Cube => convex(o, dir, &CUBE_PLANES),
+        Shape::Cube => convex(o, dir, &faces(CUBE_PLANES)),
         Shape::Plane => {
             if dir.y == 0.0 {
                 return None;
@@ -151,7 +146,7 @@ pub(super) fn intersect_shape(shape: Shape, o: DVec3, dir: DVec3) -> Option<Hit>
             let p = o + dir * t;
             (t > RAY_T_MIN && p.x.abs() <= 1.0 && p.z.abs() <= 1.0).then_some((t, DVec3::Y))
         }
-        Shape::Pyramid => convex(o, dir, &pyramid_planes()),
+        Shape::Pyramid => convex(o, dir, &faces(PYRAMID_PLANES)),
     }
 }
 
@@ -163,8 +158,8 @@ fn first_crossing(shape: Shape, o: DVec3, dir: DVec3) -> Option<f64> {
         [t_in, t_out].into_iter().find(|&t| t > RAY_T_MIN)
     };
     match shape {
-        Shape::Cube => convex_crossing(&CUBE_PLANES),
-        Shape::Pyramid => convex_crossing(&pyramid_planes()),
+        Shape::Cube => convex_crossing(&faces(CUBE_PLANES)),
+        Shape::Pyramid => convex_crossing(&faces(PYRAMID_PLANES)),
         // The sphere and cylinder tests take the exit when the entry is behind; the plane and
         // meshes have one crossing per surface.
         shape => intersect_shape(shape, o, dir).map(|h| h.0),

@@ -10,10 +10,6 @@ use wgpu::util::DeviceExt;
 /// The stability sweep's kernel (`shaders/sweep.wgsl`).
 pub const SWEEP_KERNEL: &str = include_str!("../../../../shaders/sweep.wgsl");
 
-/// The transmission terms (`shaders/transmission.wgsl`): not drawn yet, so only the sweep
-/// compiles them.
-pub const TRANSMISSION: &str = include_str!("../../../../shaders/transmission.wgsl");
-
 /// The sweep's compute module: the shipped terms (the transmission terms among them), the
 /// generated columns, then the kernel.
 pub fn sweep_source() -> String {

@@ -9,10 +9,11 @@ use crate::{Failure, cli};
 use anyhow::Context;
 use shadelab_model::effects::Effect;
 use shadelab_model::lighting::transmission::{AbsorptionChoice, GlassExit};
-use shadelab_model::reference::{ReferenceImage, render_reference};
+use shadelab_model::reference::render_reference;
 use shadelab_model::{Scene, ShadingMode, SpecularModel};
+use shadelab_render::image_error::error_over;
 use shadelab_render::timing::{FrameTimer, TimedDraw, median};
-use shadelab_render::{Gpu, LinearImage, Program, RenderSettings, Renderer, Specialization, Target, render_image};
+use shadelab_render::{Gpu, LinearImage, Program, RenderSettings, Renderer, SceneGpu, Specialization, Target};
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
@@ -50,29 +51,17 @@ pub struct RuleRow {
     pub rule_ms: f64,
 }
 
-fn pixels_of(reference: &ReferenceImage, objects: &[usize]) -> Vec<(u32, u32)> {
-    objects.iter().flat_map(|&i| inside_pixels(reference, i)).collect()
-}
-
-/// Pixels where the reference sees `object` and so do all 8 neighbours (no silhouette).
-fn inside_pixels(r: &ReferenceImage, object: usize) -> Vec<(u32, u32)> {
-    let mut out = Vec::new();
-    for y in 1..r.height.saturating_sub(1) {
-        for x in 1..r.width.saturating_sub(1) {
-            if (0..9).all(|k| r.object_at(x + k % 3 - 1, y + k / 3 - 1) == Some(object)) {
-                out.push((x, y));
-            }
-        }
-    }
-    out
-}
-
-fn mean_abs(img: &LinearImage, reference: &ReferenceImage, pixels: &[(u32, u32)]) -> f64 {
-    let sum: f64 = pixels
-        .iter()
-        .map(|&(x, y)| (0..3).map(|c| (img.get(x, y)[c] as f64 - reference.get(x, y)[c]).abs()).sum::<f64>())
-        .sum();
-    sum / (3 * pixels.len().max(1)) as f64
+/// `scene` drawn with `settings` by `r` into `target`, read back.
+fn draw(
+    r: &mut Renderer,
+    gpu: &Gpu,
+    gs: &SceneGpu,
+    scene: &Scene,
+    target: &Target,
+    settings: &RenderSettings,
+) -> LinearImage {
+    r.render(gs, scene, target, settings);
+    shadelab_render::target::read_back(&gpu.device, &gpu.queue, target)
 }
 
 /// Time `draws` side by side: (median, p10, p90) ms each.
@@ -131,17 +120,17 @@ pub fn methods(gpu: &Gpu, (w, h): (u32, u32), frames: usize, warmup: usize) -> a
     let reference = render_reference(&scene, SpecularModel::CookTorrance, w, h);
     let reference_ms = started.elapsed().as_secs_f64() * 1e3;
     let glass: Vec<usize> = (0..scene.objects.len()).filter(|&i| scene.drawn_as_glass(i)).collect();
-    let pixels = pixels_of(&reference, &glass);
+    let pixels: Vec<(u32, u32)> = glass.iter().flat_map(|&i| reference.interior(i)).collect();
     let mut out = Vec::new();
     for ((method, s, settings), (median_ms, p10_ms, p90_ms)) in rows.iter().zip(times) {
-        let img = render_image(gpu, s, w, h, settings)?;
+        let img = draw(&mut r, gpu, &gs, s, &target, settings);
         let flip = shadelab_render::image_error::compare(&img, &reference).stats.flip_mean;
         out.push(MethodRow {
             method,
             median_ms,
             p10_ms,
             p90_ms,
-            mean_error: mean_abs(&img, &reference, &pixels),
+            mean_error: error_over(&img, &reference, &pixels).0,
             flip,
         });
     }
@@ -169,7 +158,7 @@ pub fn rule(
     let cyl = scene.objects.iter().position(|o| o.name == "absorbing cylinder").expect("in the glass scene");
     let chord = shadelab_model::effects::longest_chord(&scene, cyl);
     let mi = scene.objects[cyl].material;
-    let pixels = inside_pixels(&render_reference(&scene, SpecularModel::CookTorrance, w, h), cyl);
+    let pixels = render_reference(&scene, SpecularModel::CookTorrance, w, h).interior(cyl);
     let base = RenderSettings::new(ShadingMode::Phong, SpecularModel::CookTorrance);
     let mut r = Renderer::new(&gpu.device, &gpu.queue);
     let gs = r.upload(&scene)?;
@@ -185,7 +174,7 @@ pub fn rule(
             .map(|s| TimedDraw { gpu_scene: &gs, scene: s, program: Program::for_scene(s, &base), settings: base })
             .collect();
         let times = time(&mut r, gpu, &target, &draws, frames, warmup);
-        let (a, b) = (render_image(gpu, &exact, w, h, &base)?, render_image(gpu, &by_rule, w, h, &base)?);
+        let (a, b) = (draw(&mut r, gpu, &gs, &exact, &target, &base), draw(&mut r, gpu, &gs, &by_rule, &target, &base));
         let (mut sum, mut max) = (0.0f64, 0.0f64);
         for &(x, y) in &pixels {
             for c in 0..3 {

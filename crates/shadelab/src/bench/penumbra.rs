@@ -162,7 +162,7 @@ pub fn markdown(rows: &[WidthRow], device: &str, command: &str) -> String {
 
 /// Width against height: the prediction's 0.8·w as a dashed line, each method's points joined.
 pub fn plot(rows: &[WidthRow], device: &str, path: &Path) -> anyhow::Result<()> {
-    use crate::plots::{plot_err, register_font, save};
+    use crate::plots::{draw_legend, plot_err, register_font, save};
     register_font();
     let size = (1000u32, 700u32);
     let mut buf = vec![0u8; (size.0 * size.1 * 3) as usize];
@@ -214,14 +214,7 @@ pub fn plot(rows: &[WidthRow], device: &str, path: &Path) -> anyhow::Result<()> 
                 .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], color.stroke_width(3)));
             chart.draw_series(pts.iter().map(|p| Circle::new(*p, 4, color.filled()))).map_err(plot_err)?;
         }
-        chart
-            .configure_series_labels()
-            .position(SeriesLabelPosition::UpperLeft)
-            .background_style(WHITE.mix(0.85))
-            .border_style(BLACK)
-            .label_font(("sans-serif", 14))
-            .draw()
-            .map_err(plot_err)?;
+        draw_legend(&mut chart, SeriesLabelPosition::UpperLeft, 14)?;
         root.present().map_err(plot_err)?;
     }
     save(buf, size, path)

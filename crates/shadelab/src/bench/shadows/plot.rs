@@ -4,7 +4,7 @@
 //! lines.
 
 use super::{Config, FILTERS, Report, Row, filter_name};
-use crate::plots::{log_axis, log_range, plot_err, register_font, save};
+use crate::plots::{draw_legend, log_axis, log_range, plot_err, register_font, save};
 use plotters::prelude::*;
 use shadelab_model::shadows::ShadowFilter;
 use std::path::Path;
@@ -166,14 +166,7 @@ pub fn plot(report: &Report, path: &Path) -> anyhow::Result<()> {
                 }))
                 .map_err(plot_err)?;
         }
-        chart
-            .configure_series_labels()
-            .position(SeriesLabelPosition::LowerLeft)
-            .background_style(WHITE.mix(0.85))
-            .border_style(BLACK)
-            .label_font(("sans-serif", 13))
-            .draw()
-            .map_err(plot_err)?;
+        draw_legend(&mut chart, SeriesLabelPosition::LowerLeft, 13)?;
         root.present().map_err(plot_err)?;
     }
     save(buf, size, path)

@@ -125,7 +125,7 @@ pub(super) fn load_buffers<'a>(
     cx: &Cx,
     root: &json::Root,
     bin: Option<&'a [u8]>,
-    base_dir: Option<&Path>,
+    externals: Externals,
 ) -> Result<Vec<Cow<'a, [u8]>>, GltfError> {
     let mut out = Vec::with_capacity(root.buffers.len());
     for (i, b) in root.buffers.iter().enumerate() {
@@ -159,7 +159,7 @@ pub(super) fn load_buffers<'a>(
                 data.truncate(declared as usize);
                 Cow::Owned(data)
             }
-            Some(uri) => Cow::Owned(read_external(cx, &format!("buffer {i}"), uri, declared, base_dir)?),
+            Some(uri) => Cow::Owned(read_external(cx, &format!("buffer {i}"), uri, declared, externals)?),
         };
         out.push(data);
     }
@@ -180,6 +180,18 @@ pub(super) fn data_uri(cx: &Cx, what: &str, uri: &str) -> Result<Vec<u8>, GltfEr
     engine.decode(payload).map_err(|e| cx.invalid(format!("{what}: bad base64 data: {e}")))
 }
 
+/// Where a scene's external buffers and images are read from.
+#[derive(Clone, Copy, Debug)]
+pub enum Externals<'a> {
+    /// Nowhere: a scene read from memory alone refuses them.
+    None,
+    /// The folder the scene file is in.
+    Dir(&'a Path),
+    /// Files handed in with the scene, by name (the browser's picked or dropped files, which
+    /// carry no folder): a URI is matched by its last path segment.
+    Files(&'a [(String, Vec<u8>)]),
+}
+
 /// A whole external file named by a relative URI (an image), refused when it is longer than
 /// `limit` bytes.
 pub(super) fn read_external_whole(
@@ -187,23 +199,46 @@ pub(super) fn read_external_whole(
     what: &str,
     uri: &str,
     limit: u64,
-    base_dir: Option<&Path>,
+    externals: Externals,
 ) -> Result<Vec<u8>, GltfError> {
-    let len = base_dir.and_then(|d| std::fs::metadata(d.join(percent_decode(uri))).ok()).map_or(0, |m| m.len());
+    let len = match externals {
+        Externals::Dir(d) => std::fs::metadata(d.join(percent_decode(uri))).map_or(0, |m| m.len()),
+        Externals::Files(files) => given_file(files, uri).map_or(0, |b| b.len() as u64),
+        Externals::None => 0,
+    };
     if len > limit {
         return Err(cx.too_large(format!("{what}: '{uri}' has {len} bytes, more than the limit of {limit}")));
     }
-    read_external(cx, what, uri, len, base_dir)
+    read_external(cx, what, uri, len, externals)
+}
+
+/// The file handed in under a URI's last path segment (percent-decoded).
+fn given_file<'f>(files: &'f [(String, Vec<u8>)], uri: &str) -> Option<&'f [u8]> {
+    let decoded = percent_decode(uri);
+    let name = decoded.rsplit(['/', '\\']).next().unwrap_or(&decoded);
+    files.iter().find(|(n, _)| n == name).map(|(_, b)| b.as_slice())
 }
 
 /// An external buffer file: a relative path (percent-decoded), at least `declared` bytes long;
 /// only `declared` bytes are read.
-fn read_external(cx: &Cx, what: &str, uri: &str, declared: u64, base_dir: Option<&Path>) -> Result<Vec<u8>, GltfError> {
+fn read_external(cx: &Cx, what: &str, uri: &str, declared: u64, externals: Externals) -> Result<Vec<u8>, GltfError> {
     if uri.split(['/', '\\']).next().is_some_and(|first| first.contains(':')) {
         return Err(cx.invalid(format!("{what}: '{uri}' is neither a data: URI nor a relative file path")));
     }
-    let Some(dir) = base_dir else {
-        return Err(cx.invalid(format!("{what}: external file '{uri}' cannot be read from memory")));
+    let dir = match externals {
+        Externals::Dir(dir) => dir,
+        Externals::Files(files) => {
+            let data = given_file(files, uri).ok_or_else(|| {
+                cx.invalid(format!("{what}: external file '{uri}' was not given with the scene (pick or drop it too)"))
+            })?;
+            if (data.len() as u64) < declared {
+                return Err(cx.invalid(format!("{what}: '{uri}' has {} bytes, byteLength says {declared}", data.len())));
+            }
+            return Ok(data[..declared as usize].to_vec());
+        }
+        Externals::None => {
+            return Err(cx.invalid(format!("{what}: external file '{uri}' cannot be read from memory")));
+        }
     };
     let path = dir.join(percent_decode(uri));
     let file = std::fs::File::open(&path).map_err(|e| cx.invalid(format!("{what}: cannot read '{uri}': {e}")))?;

@@ -3,7 +3,7 @@
 //! file asks for), and the order in which the concepts' readers and writers run.
 
 use super::cameras::FALLBACK_FOV_Y_DEG;
-use super::container::{Writer, embedded_buffer, glb_container, load_buffers, split_container};
+use super::container::{Externals, Writer, embedded_buffer, glb_container, load_buffers, split_container};
 use super::extras::{self, Named, Rgb, Unit};
 use super::meshes::Prim;
 use super::{DEFAULT_AMBIENT, GltfError, LoadedScene, MAX_FILE_BYTES, SceneSettings};
@@ -63,17 +63,30 @@ pub fn load_scene(path: &Path) -> Result<LoadedScene, GltfError> {
     }
     let mut bytes = Vec::with_capacity(len as usize);
     f.take(MAX_FILE_BYTES).read_to_end(&mut bytes).map_err(read)?;
-    load_scene_from_bytes(&bytes, &file, Some(path.parent().unwrap_or(Path::new("."))))
+    load_scene_from_bytes(&bytes, &file, Externals::Dir(path.parent().unwrap_or(Path::new("."))))
 }
 
 /// Read a scene from memory: the fuzzing entry. External buffers are refused (no folder).
 pub fn load_scene_from_slice(bytes: &[u8]) -> Result<LoadedScene, GltfError> {
-    load_scene_from_bytes(bytes, "<memory>", None)
+    load_scene_from_bytes(bytes, "<memory>", Externals::None)
 }
 
-/// Read a scene from memory; `name` starts every error line; external buffer files are read from
-/// `base_dir` when given.
-pub fn load_scene_from_bytes(bytes: &[u8], name: &str, base_dir: Option<&Path>) -> Result<LoadedScene, GltfError> {
+/// Read the scene file `main` from files handed in together (the browser's file picker or a
+/// drop): its external buffers and images are the others, found by name.
+pub fn load_scene_from_files(main: &str, files: &[(String, Vec<u8>)]) -> Result<LoadedScene, GltfError> {
+    let bytes = files.iter().find(|(n, _)| n == main).map(|(_, b)| b.as_slice()).unwrap_or_default();
+    if bytes.len() as u64 > MAX_FILE_BYTES {
+        return Err(GltfError::TooLarge {
+            file: main.to_string(),
+            detail: format!("{} bytes are more than the limit of {MAX_FILE_BYTES} (MAX_FILE_BYTES)", bytes.len()),
+        });
+    }
+    load_scene_from_bytes(bytes, main, Externals::Files(files))
+}
+
+/// Read a scene from memory; `name` starts every error line; external buffers and images come
+/// from `externals`.
+pub fn load_scene_from_bytes(bytes: &[u8], name: &str, externals: Externals) -> Result<LoadedScene, GltfError> {
     let mut cx = Cx { file: name.to_string(), warnings: Vec::new(), triangles: 0 };
     let (json_bytes, bin) = split_container(&cx, bytes)?;
     let root: json::Root =
@@ -96,12 +109,12 @@ pub fn load_scene_from_bytes(bytes: &[u8], name: &str, base_dir: Option<&Path>) 
             cx.warn(format!("{n} {what}(s) ignored"));
         }
     }
-    let buffers = load_buffers(&cx, &root, bin, base_dir)?;
+    let buffers = load_buffers(&cx, &root, bin, externals)?;
     Reader {
         cx,
         root: &root,
         buffers,
-        base_dir,
+        externals,
         prims: HashMap::new(),
         file_meshes: Vec::new(),
         textures: HashMap::new(),
@@ -144,8 +157,8 @@ pub(super) struct Reader<'a> {
     pub(super) prims: HashMap<(usize, usize), Option<Prim>>,
     /// Meshes read, with the index each got in `Scene::meshes` once an object uses it untransformed.
     pub(super) file_meshes: Vec<(TriangleMesh, Option<usize>)>,
-    /// Where external buffer and image files are read from (`None`: from memory, refused).
-    pub(super) base_dir: Option<&'a Path>,
+    /// Where external buffer and image files are read from.
+    pub(super) externals: Externals<'a>,
     /// glTF texture → its index in `Scene::textures` (`None`: not usable, warned about).
     pub(super) textures: HashMap<usize, Option<usize>>,
     /// Decoded texture bytes so far, against `MAX_TEXTURE_BYTES`.

@@ -78,7 +78,7 @@ impl Reader<'_> {
         let bytes: Vec<u8> = match (&image.buffer_view, &image.uri) {
             (Some(v), _) => self.buffer_view(v.value(), &format!("{what}: "))?.bytes.to_vec(),
             (None, Some(uri)) if uri.starts_with("data:") => data_uri(&self.cx, &what, uri)?,
-            (None, Some(uri)) => read_external_whole(&self.cx, &what, uri, MAX_IMAGE_FILE_BYTES, self.base_dir)?,
+            (None, Some(uri)) => read_external_whole(&self.cx, &what, uri, MAX_IMAGE_FILE_BYTES, self.externals)?,
             (None, None) => return Err(self.cx.invalid(format!("{what} has neither a bufferView nor a uri"))),
         };
         let format = match image::guess_format(&bytes) {

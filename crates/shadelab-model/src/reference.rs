@@ -94,28 +94,82 @@ pub const REFERENCE_AREA_CELLS: usize = 16;
 /// An area light drawn as k point sources is integrated exactly here: the reference is what the
 /// approximation is measured against ([`render_drawn`] draws the approximation in f64).
 pub fn render_reference(scene: &Scene, specular: SpecularModel, width: u32, height: u32) -> ReferenceImage {
-    let exact: Vec<Light> = scene.lights.iter().map(|l| Light { area_points: 0, ..l.clone() }).collect();
-    render_drawn(&Scene { lights: exact, ..scene.clone() }, specular, width, height)
+    let mut job = ReferenceJob::new(scene, specular, width, height);
+    job.step(height);
+    job.finish()
 }
 
 /// The scene as the GPU draws it, in f64: an area light drawn as k point sources is k point
 /// sources with a hard shadow ray each (the f64 twin of that approximation); otherwise
 /// [`render_reference`].
 pub fn render_drawn(scene: &Scene, specular: SpecularModel, width: u32, height: u32) -> ReferenceImage {
+    let mut img = ReferenceImage::empty(width, height);
+    trace_rows(scene, specular, &mut img, 0..height);
+    img
+}
+
+/// [`render_reference`] a few rows at a time, for a caller without threads (the browser, which
+/// spreads it over frames so the page keeps drawing). The image is the same, row for row.
+pub struct ReferenceJob {
+    scene: Scene,
+    specular: SpecularModel,
+    img: ReferenceImage,
+    next_row: u32,
+}
+
+impl ReferenceJob {
+    pub fn new(scene: &Scene, specular: SpecularModel, width: u32, height: u32) -> ReferenceJob {
+        let exact: Vec<Light> = scene.lights.iter().map(|l| Light { area_points: 0, ..l.clone() }).collect();
+        let scene = Scene { lights: exact, ..scene.clone() };
+        ReferenceJob { scene, specular, img: ReferenceImage::empty(width, height), next_row: 0 }
+    }
+
+    /// Trace up to `rows` more rows; true once every row is traced.
+    pub fn step(&mut self, rows: u32) -> bool {
+        let end = self.next_row.saturating_add(rows).min(self.img.height);
+        trace_rows(&self.scene, self.specular, &mut self.img, self.next_row..end);
+        self.next_row = end;
+        self.done()
+    }
+
+    pub fn done(&self) -> bool {
+        self.next_row >= self.img.height
+    }
+
+    /// The share of rows traced, 0 to 1.
+    pub fn progress(&self) -> f32 {
+        self.next_row as f32 / self.img.height.max(1) as f32
+    }
+
+    /// The image; rows not traced yet are missing, so call it once [`Self::done`].
+    pub fn finish(self) -> ReferenceImage {
+        self.img
+    }
+}
+
+impl ReferenceImage {
+    /// No pixels yet, room for `width × height`.
+    fn empty(width: u32, height: u32) -> ReferenceImage {
+        let n = (width as usize) * (height as usize);
+        ReferenceImage {
+            width,
+            height,
+            pixels: Vec::with_capacity(n),
+            object: Vec::with_capacity(n),
+            hidden: Vec::with_capacity(n),
+            unshadowed: Vec::with_capacity(n),
+        }
+    }
+}
+
+/// Trace the rows `rows` of `img`'s size, appending their pixels (rows come in order).
+fn trace_rows(scene: &Scene, specular: SpecularModel, img: &mut ReferenceImage, rows: std::ops::Range<u32>) {
+    let (width, height) = (img.width, img.height);
     let inverses: Vec<DMat4> = scene.objects.iter().map(|o| o.transform.matrix().inverse()).collect();
     let rays = ShadowRays::new(scene, &inverses);
     let ctx = Context { scene, inverses: &inverses, rays: &rays, specular };
-    let n = (width * height) as usize;
-    let mut img = ReferenceImage {
-        width,
-        height,
-        pixels: Vec::with_capacity(n),
-        object: Vec::with_capacity(n),
-        hidden: Vec::with_capacity(n),
-        unshadowed: Vec::with_capacity(n),
-    };
     let mut tinted: Vec<Material> = scene.materials.clone();
-    for y in 0..height {
+    for y in rows {
         for x in 0..width {
             let (o, dir) = scene.camera.ray(x, y, width, height);
             let Some(hit) = trace(scene, &inverses, o, dir) else {
@@ -155,7 +209,6 @@ pub fn render_drawn(scene: &Scene, specular: SpecularModel, width: u32, height: 
             img.hidden.push(shaded.hidden);
         }
     }
-    img
 }
 
 /// What the reference needs to shade any point: the scene, its inverse transforms, its shadow

@@ -263,3 +263,23 @@ fn the_hidden_bits_are_per_light() {
     assert!(img.hidden.iter().all(|&b| b & 1 == 0));
     assert!(img.hidden.iter().filter(|&&b| b == 2).count() > 100);
 }
+
+#[test]
+fn a_reference_traced_in_steps_is_the_same_image() {
+    let scene = Scene::builtin("default").unwrap();
+    // The default scene has no area light, so the scene as drawn is the reference.
+    let whole = render_drawn(&scene, SpecularModel::CookTorrance, 48, 27);
+    let mut job = ReferenceJob::new(&scene, SpecularModel::CookTorrance, 48, 27);
+    let mut steps = 0;
+    while !job.step(4) {
+        steps += 1;
+        assert!(job.progress() < 1.0);
+    }
+    assert_eq!(steps, 6, "27 rows in steps of 4: 6 steps before the last");
+    assert_eq!(job.progress(), 1.0);
+    let stepped = job.finish();
+    assert_eq!(stepped.pixels, whole.pixels);
+    assert_eq!(stepped.object, whole.object);
+    assert_eq!(stepped.hidden, whole.hidden);
+    assert_eq!(stepped.unshadowed, whole.unshadowed);
+}

@@ -78,12 +78,7 @@ pub fn compare(image: &LinearImage, reference: &ReferenceImage) -> Comparison {
         off += pixel_off as usize;
     }
     let (w, h) = (image.width, image.height);
-    let err = nv_flip::flip(
-        nv_flip::FlipImageRgb8::with_data(w, h, &ref8),
-        nv_flip::FlipImageRgb8::with_data(w, h, &test8),
-        nv_flip::DEFAULT_PIXELS_PER_DEGREE,
-    );
-    let flip_mean = nv_flip::FlipPool::from_image(&err).mean() as f64;
+    let (flip_mean, flip_map_rgb8) = flip_rgb8(&ref8, &test8, w, h);
     Comparison {
         stats: ErrorStats {
             rmse: (sum_sq / (n * 3).max(1) as f64).sqrt(),
@@ -91,8 +86,29 @@ pub fn compare(image: &LinearImage, reference: &ReferenceImage) -> Comparison {
             flip_mean,
             share_off: off as f64 / n.max(1) as f64,
         },
-        flip_map_rgb8: err.apply_color_lut(&nv_flip::magma_lut()).to_vec(),
+        flip_map_rgb8,
     }
+}
+
+/// FLIP's mean and its map in magma colours: nv-flip's C++ on native targets, the same algorithm
+/// in Rust ([`crate::flip`], held equal to nv-flip by its tests) on wasm32.
+#[cfg(not(target_arch = "wasm32"))]
+fn flip_rgb8(reference: &[u8], test: &[u8], w: u32, h: u32) -> (f64, Vec<u8>) {
+    let err = nv_flip::flip(
+        nv_flip::FlipImageRgb8::with_data(w, h, reference),
+        nv_flip::FlipImageRgb8::with_data(w, h, test),
+        nv_flip::DEFAULT_PIXELS_PER_DEGREE,
+    );
+    let mean = nv_flip::FlipPool::from_image(&err).mean() as f64;
+    (mean, err.apply_color_lut(&nv_flip::magma_lut()).to_vec())
+}
+
+#[cfg(target_arch = "wasm32")]
+fn flip_rgb8(reference: &[u8], test: &[u8], w: u32, h: u32) -> (f64, Vec<u8>) {
+    let map = crate::flip::flip_map(reference, test, w as usize, h as usize, crate::flip::DEFAULT_PIXELS_PER_DEGREE);
+    // nv-flip's pool sums in f32 in pixel order; the same sum keeps the two means equal.
+    let mean = if map.is_empty() { 0.0 } else { map.iter().fold(0f32, |s, &e| s + e) / map.len() as f32 };
+    (mean as f64, crate::flip::apply_magma(&map))
 }
 
 /// Compare two renders of the same size, `image` against `against` (as [`compare`] does against
@@ -115,7 +131,7 @@ pub fn compare_images(image: &LinearImage, against: &LinearImage) -> Comparison 
 /// nv-flip's magma colour scale, 256 RGB8 entries from FLIP error 0 to 1 (the colours of
 /// [`Comparison::flip_map_rgb8`]), for drawing a legend.
 pub fn magma_scale() -> Vec<[u8; 3]> {
-    nv_flip::magma_lut().to_vec().chunks_exact(3).map(|c| [c[0], c[1], c[2]]).collect()
+    crate::flip::magma_lut().to_vec()
 }
 
 /// The reference as a linear image (to show it or save it like a render).

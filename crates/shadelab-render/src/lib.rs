@@ -2,6 +2,7 @@
 //! pipeline per permutation (cached), capture to a linear float image, GPU timing. Knows nothing
 //! of egui.
 
+pub mod flip;
 pub mod frame;
 pub mod glass_pass;
 pub mod gpu;

@@ -10,7 +10,8 @@ use crate::shaders;
 use crate::vertex::{FlatVertex, SmoothVertex};
 use shadelab_model::effects::{Effect, EffectKey};
 use std::collections::HashMap;
-use std::time::{Duration, Instant};
+use std::time::Duration;
+use web_time::Instant;
 
 pub const DEPTH_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Depth32Float;
 

@@ -2,6 +2,7 @@
 //! float image read back from it (rows padded to 256 bytes on the GPU side).
 
 use crate::pipelines::DEPTH_FORMAT;
+use std::sync::{Arc, OnceLock};
 
 /// A colour texture with its depth buffer: what the renderer draws into. The viewer and
 /// `shadelab render` both draw into one of these.
@@ -158,6 +159,76 @@ pub fn read_back(device: &wgpu::Device, queue: &wgpu::Queue, target: &Target) ->
         y0 += rows;
     }
     LinearImage { width: w, height: h, pixels }
+}
+
+/// A readback in flight: the copy is submitted and the map requested, and
+/// [`PendingReadBack::try_take`] returns the image once the map has completed, without waiting.
+/// The browser must work this way: a map completes only between frames, never inside a wait.
+pub struct PendingReadBack {
+    staging: wgpu::Buffer,
+    width: u32,
+    height: u32,
+    bytes_per_row: u32,
+    mapped: Arc<OnceLock<Result<(), wgpu::BufferAsyncError>>>,
+}
+
+/// Start reading an `Rgba32Float` target back in one buffer (a view-sized image: 1920×1080 is
+/// 33 MB; [`read_back`] reads larger ones in bands).
+pub fn start_read_back(device: &wgpu::Device, queue: &wgpu::Queue, target: &Target) -> PendingReadBack {
+    assert_eq!(target.format, HDR_FORMAT, "read_back reads Rgba32Float targets");
+    let (width, height) = (target.width, target.height);
+    let bytes_per_row = padded_bytes_per_row(width, 16);
+    let staging = device.create_buffer(&wgpu::BufferDescriptor {
+        label: Some("shadelab readback (pending)"),
+        size: bytes_per_row as u64 * height as u64,
+        usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
+        mapped_at_creation: false,
+    });
+    let mut enc = device.create_command_encoder(&Default::default());
+    enc.copy_texture_to_buffer(
+        target.color.as_image_copy(),
+        wgpu::TexelCopyBufferInfo {
+            buffer: &staging,
+            layout: wgpu::TexelCopyBufferLayout {
+                offset: 0,
+                bytes_per_row: Some(bytes_per_row),
+                rows_per_image: Some(height),
+            },
+        },
+        wgpu::Extent3d { width, height, depth_or_array_layers: 1 },
+    );
+    queue.submit([enc.finish()]);
+    let mapped = Arc::new(OnceLock::new());
+    let done = mapped.clone();
+    staging.slice(..).map_async(wgpu::MapMode::Read, move |r| {
+        let _ = done.set(r);
+    });
+    PendingReadBack { staging, width, height, bytes_per_row, mapped }
+}
+
+impl PendingReadBack {
+    /// The image once mapped (`None`: not yet), or why the map failed (a lost device).
+    pub fn try_take(&self, device: &wgpu::Device) -> Option<Result<LinearImage, String>> {
+        let _ = device.poll(wgpu::PollType::Poll);
+        match self.mapped.get()? {
+            Err(e) => Some(Err(format!("reading the image back failed: {e}"))),
+            Ok(()) => Some(self.read()),
+        }
+    }
+
+    fn read(&self) -> Result<LinearImage, String> {
+        let (w, h) = (self.width as usize, self.height as usize);
+        let mut pixels = Vec::with_capacity(w * h);
+        {
+            let data = self.staging.slice(..).get_mapped_range().map_err(|e| format!("mapped range: {e}"))?;
+            for row in 0..h {
+                let bytes = &data[row * self.bytes_per_row as usize..][..w * 16];
+                pixels.extend(bytes.chunks_exact(16).map(|t| bytemuck::pod_read_unaligned::<[f32; 4]>(t)));
+            }
+        }
+        self.staging.unmap();
+        Ok(LinearImage { width: self.width, height: self.height, pixels })
+    }
 }
 
 #[cfg(test)]

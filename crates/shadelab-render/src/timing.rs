@@ -5,7 +5,7 @@ use crate::program::{Program, RenderSettings};
 use crate::renderer::Renderer;
 use crate::target::Target;
 use crate::upload::SceneGpu;
-use std::time::Instant;
+use web_time::Instant;
 
 /// Where a frame time came from.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

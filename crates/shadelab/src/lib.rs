@@ -1,13 +1,19 @@
 //! The `shadelab` application: the viewer (eframe), `render`, `bench` and `sweep`. The binary
 //! is a thin `main`; the modules live here so that tests can drive the viewer.
 
+// The command-line tools write files and plots; the browser build (`shadelab-web`) is the viewer.
+#[cfg(not(target_arch = "wasm32"))]
 pub mod bench;
 pub mod cli;
+#[cfg(not(target_arch = "wasm32"))]
 pub mod figures;
+#[cfg(not(target_arch = "wasm32"))]
 pub mod lobe;
+#[cfg(not(target_arch = "wasm32"))]
 pub mod plots;
 pub mod reference_views;
 pub mod render;
+#[cfg(not(target_arch = "wasm32"))]
 pub mod sweep;
 pub mod viewer;
 

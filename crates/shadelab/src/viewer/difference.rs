@@ -8,12 +8,13 @@
 //! with the reference's cast shadows, with the shares of false and missed shadow.
 
 use eframe::egui;
-use shadelab_model::reference::{ReferenceImage, render_reference};
+use shadelab_model::reference::{ReferenceImage, ReferenceJob};
 use shadelab_model::{Scene, ShadingMode, SpecularModel};
 use shadelab_render::image_error::{self, ErrorStats, ShadowStats};
 use shadelab_render::{RenderSettings, Renderer, SceneGpu, Target, target};
 use std::sync::Arc;
 use std::sync::mpsc::{Receiver, channel};
+use target::PendingReadBack;
 
 /// The comparison is made at most this wide (the view's aspect kept): the f64 ray cast of a
 /// full window would take seconds on two cores, and the error map is smooth enough to be shown
@@ -49,12 +50,35 @@ struct Shown {
     shadow: Option<ShadowStats>,
 }
 
+/// A reference being traced: on a worker thread, or in the browser (no threads) a few rows a
+/// frame ([`ROW_BUDGET_MS`]).
+enum Tracing {
+    Worker(Receiver<ReferenceImage>),
+    #[cfg_attr(not(target_arch = "wasm32"), allow(dead_code))]
+    Steps(Box<ReferenceJob>),
+}
+
+/// In the browser, the f64 reference traces rows for at most this long a frame, so the page keeps
+/// drawing at about 20 frames a second while it runs.
+pub const ROW_BUDGET_MS: f64 = 40.0;
+
+/// The GPU's images of a comparison, read back without waiting (the browser's maps complete
+/// between frames): the render, and with the shadow error map the render without shadows.
+struct Reading {
+    key: ReferenceKey,
+    shading: ShadingMode,
+    kind: DifferenceKind,
+    lit: PendingReadBack,
+    unshadowed: Option<PendingReadBack>,
+}
+
 #[derive(Default)]
 pub struct DifferenceView {
     pub enabled: bool,
     pub kind: DifferenceKind,
     reference: Option<(ReferenceKey, Arc<ReferenceImage>)>,
-    pending: Option<(ReferenceKey, Receiver<ReferenceImage>)>,
+    pending: Option<(ReferenceKey, Tracing)>,
+    reading: Option<Reading>,
     shown: Option<Shown>,
     /// Whether `shown` matches the state of the last update.
     current: bool,
@@ -85,6 +109,14 @@ impl DifferenceView {
         self.pending.is_some()
     }
 
+    /// The share of the reference traced so far, where it is traced in steps (the browser).
+    pub fn progress(&self) -> Option<f32> {
+        match &self.pending {
+            Some((_, Tracing::Steps(job))) => Some(job.progress()),
+            _ => None,
+        }
+    }
+
     /// Bring the map up to date with the scene and settings; returns the texture to show, if
     /// the map matches them.
     pub fn update(
@@ -107,57 +139,125 @@ impl DifferenceView {
             self.current = true;
             return Some(s.texture.id());
         }
-        // One worker at a time: a finished one hands its image over (even if the view has moved
-        // on since; it is then replaced), and a new one starts only for the latest key.
-        if let Some((k, rx)) = &self.pending
-            && let Ok(img) = rx.try_recv()
-        {
-            self.reference = Some((k.clone(), Arc::new(img)));
-            self.pending = None;
-        }
-        if self.pending.is_none() && self.reference.as_ref().is_none_or(|(k, _)| *k != key) {
-            let (tx, rx) = channel();
-            let (s, spec, (w, h)) = (scene.clone(), settings.specular, size);
-            let repaint = ctx.clone();
-            std::thread::spawn(move || {
-                // A send fails only when the viewer has been closed: nothing to do.
-                let _ = tx.send(render_reference(&s, spec, w, h));
-                repaint.request_repaint();
-            });
-            self.pending = Some((key.clone(), rx));
-        }
-        if self.pending.is_some() {
-            // Look again soon: the worker's repaint request may come before this frame ends.
-            ctx.request_repaint_after(std::time::Duration::from_millis(100));
-        }
+        self.trace(ctx, scene, settings.specular, &key);
         let reference = match &self.reference {
             Some((k, r)) if *k == key => r.clone(),
             _ => return None,
         };
-        let target = Target::new(&renderer.device, size.0, size.1, target::HDR_FORMAT);
-        renderer.render(gpu_scene, scene, &target, settings);
-        let image = target::read_back(&renderer.device, &renderer.queue, &target);
+        let fresh = |r: &Reading| r.key == key && r.shading == settings.shading && r.kind == self.kind;
+        if !self.reading.as_ref().is_some_and(fresh) {
+            self.reading = Some(self.start_reading(renderer, gpu_scene, scene, settings, key));
+        }
+        let reading = self.reading.as_ref()?;
+        let device = &renderer.device;
+        let (Some(lit), unshadowed) =
+            (reading.lit.try_take(device), reading.unshadowed.as_ref().map(|u| u.try_take(device)))
+        else {
+            ctx.request_repaint();
+            return None;
+        };
+        if matches!(unshadowed, Some(None)) {
+            ctx.request_repaint();
+            return None;
+        }
+        let reading = self.reading.take()?;
+        let image = lit.ok()?;
         let cmp = image_error::compare(&image, &reference);
-        let (rgb, shadow) = match self.kind {
-            DifferenceKind::Flip => (cmp.flip_map_rgb8, None),
-            DifferenceKind::Shadow => {
-                // The same frame with every light's shadows off (its permutation may draw with
-                // the uber pipeline meanwhile, whose shadow uniform is then zeroed: no shadows).
-                let mut unshadowed_scene = scene.clone();
-                unshadowed_scene.set_shadows(false);
-                renderer.render(gpu_scene, &unshadowed_scene, &target, settings);
-                let unshadowed = target::read_back(&renderer.device, &renderer.queue, &target);
-                let s = image_error::shadow_disagreement(&image, &unshadowed, &reference);
+        let (rgb, shadow) = match unshadowed.flatten() {
+            None => (cmp.flip_map_rgb8, None),
+            Some(unshadowed) => {
+                let s = image_error::shadow_disagreement(&image, &unshadowed.ok()?, &reference);
                 (s.map_rgb8(), Some(s.stats))
             }
         };
+        let size = (image.width, image.height);
         let color = egui::ColorImage::from_rgb([size.0 as usize, size.1 as usize], &rgb);
         let texture = ctx.load_texture("difference from reference", color, egui::TextureOptions::LINEAR);
         let id = texture.id();
-        let (shading, kind, stats) = (settings.shading, self.kind, cmp.stats);
-        self.shown = Some(Shown { key, shading, kind, texture, stats, shadow });
+        let Reading { key, shading, kind, .. } = reading;
+        self.shown = Some(Shown { key, shading, kind, texture, stats: cmp.stats, shadow });
         self.current = true;
         Some(id)
+    }
+
+    /// Bring the reference up to `key`: take a finished one, and start one for the latest key when
+    /// none runs. One at a time: a finished one hands its image over even if the view has moved
+    /// on since (it is then replaced).
+    fn trace(&mut self, ctx: &egui::Context, scene: &Scene, specular: SpecularModel, key: &ReferenceKey) {
+        if let Some((k, tracing)) = self.pending.take() {
+            match tracing {
+                Tracing::Worker(rx) => match rx.try_recv() {
+                    Ok(img) => self.reference = Some((k, Arc::new(img))),
+                    Err(std::sync::mpsc::TryRecvError::Empty) => self.pending = Some((k, Tracing::Worker(rx))),
+                    // The worker is gone without an image: trace again below.
+                    Err(std::sync::mpsc::TryRecvError::Disconnected) => {}
+                },
+                Tracing::Steps(mut job) => {
+                    let start = web_time::Instant::now();
+                    while !job.step(1) && start.elapsed().as_secs_f64() * 1e3 < ROW_BUDGET_MS {}
+                    if job.done() {
+                        self.reference = Some((k, Arc::new(job.finish())));
+                    } else {
+                        self.pending = Some((k, Tracing::Steps(job)));
+                    }
+                }
+            }
+        }
+        if self.pending.is_none() && self.reference.as_ref().is_none_or(|(k, _)| k != key) {
+            let (w, h) = key.size;
+            let job = ReferenceJob::new(scene, specular, w, h);
+            let tracing = if cfg!(target_arch = "wasm32") {
+                Tracing::Steps(Box::new(job))
+            } else {
+                let (tx, rx) = channel();
+                let repaint = ctx.clone();
+                std::thread::spawn(move || {
+                    let mut job = job;
+                    job.step(h);
+                    // A send fails only when the viewer has been closed: nothing to do.
+                    let _ = tx.send(job.finish());
+                    repaint.request_repaint();
+                });
+                Tracing::Worker(rx)
+            };
+            self.pending = Some((key.clone(), tracing));
+        }
+        if self.pending.is_some() {
+            // Look again soon: the worker's repaint request may come before this frame ends.
+            ctx.request_repaint_after(std::time::Duration::from_millis(if cfg!(target_arch = "wasm32") {
+                0
+            } else {
+                100
+            }));
+        }
+    }
+
+    /// Render the comparison's images and start reading them back. Natively the read is waited
+    /// for here (the image is ready in this frame); the browser takes it in a later frame.
+    fn start_reading(
+        &self,
+        renderer: &mut Renderer,
+        gpu_scene: &SceneGpu,
+        scene: &Scene,
+        settings: &RenderSettings,
+        key: ReferenceKey,
+    ) -> Reading {
+        let size = key.size;
+        let target = Target::new(&renderer.device, size.0, size.1, target::HDR_FORMAT);
+        renderer.render(gpu_scene, scene, &target, settings);
+        let lit = target::start_read_back(&renderer.device, &renderer.queue, &target);
+        let unshadowed = (self.kind == DifferenceKind::Shadow).then(|| {
+            // The same frame with every light's shadows off (its permutation may draw with
+            // the uber pipeline meanwhile, whose shadow uniform is then zeroed: no shadows).
+            let mut unshadowed_scene = scene.clone();
+            unshadowed_scene.set_shadows(false);
+            let target = Target::new(&renderer.device, size.0, size.1, target::HDR_FORMAT);
+            renderer.render(gpu_scene, &unshadowed_scene, &target, settings);
+            target::start_read_back(&renderer.device, &renderer.queue, &target)
+        });
+        #[cfg(not(target_arch = "wasm32"))]
+        let _ = renderer.device.poll(wgpu::PollType::wait_indefinitely());
+        Reading { key, shading: settings.shading, kind: self.kind, lit, unshadowed }
     }
 }
 

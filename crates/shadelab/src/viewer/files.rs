@@ -2,6 +2,7 @@
 //! thread, files dropped on the window) and save the view as a PNG.
 
 use super::Viewer;
+#[cfg(not(target_arch = "wasm32"))]
 use crate::render;
 use eframe::egui;
 use shadelab_render::Target;
@@ -23,6 +24,7 @@ pub type FilePicker = Arc<dyn Fn(FileRequest) -> Option<PathBuf> + Send + Sync>;
 
 /// The desktop's file dialog (rfd: the XDG desktop portal, else zenity; GTK is not needed),
 /// filtered to glTF files.
+#[cfg(not(target_arch = "wasm32"))]
 pub fn native_file_picker() -> FilePicker {
     Arc::new(|request| {
         let dialog = rfd::FileDialog::new().add_filter("glTF 2.0 scene", &["gltf", "glb"]);
@@ -33,15 +35,39 @@ pub fn native_file_picker() -> FilePicker {
     })
 }
 
+/// In the browser the page's file input and downloads take the dialog's place (`web.rs`), so
+/// this picker is never asked.
+#[cfg(target_arch = "wasm32")]
+pub fn native_file_picker() -> FilePicker {
+    Arc::new(|_| None)
+}
+
 impl Viewer {
-    /// Write the scene as shown (parameters, camera, shading mode, specular model) to a glTF file.
-    pub fn save_scene(&mut self, path: &std::path::Path) {
+    /// The scene as shown (parameters, camera), with the modes the file records.
+    fn scene_to_save(&self) -> (shadelab_model::Scene, shadelab_model::gltf_io::SceneSettings) {
         let settings = shadelab_model::gltf_io::SceneSettings {
             shading: Some(self.settings.shading),
             specular: Some(self.settings.specular),
         };
         let mut scene = self.scene.clone();
         scene.camera = self.orbit.camera(&self.base_camera);
+        (scene, settings)
+    }
+
+    /// Download the scene as shown as one `.glb` (the browser's "save scene").
+    #[cfg(target_arch = "wasm32")]
+    pub(super) fn download_scene(&mut self) {
+        let (scene, settings) = self.scene_to_save();
+        let bytes = shadelab_model::gltf_io::scene_to_glb(&scene, &settings);
+        self.message = Some(match super::web::download("shadelab-scene.glb", &bytes, "model/gltf-binary") {
+            Ok(()) => ("downloaded shadelab-scene.glb".into(), false),
+            Err(e) => (format!("save scene: {e}"), true),
+        });
+    }
+
+    /// Write the scene as shown (parameters, camera, shading mode, specular model) to a glTF file.
+    pub fn save_scene(&mut self, path: &std::path::Path) {
+        let (scene, settings) = self.scene_to_save();
         self.message = Some(match shadelab_model::gltf_io::save_scene(&scene, &settings, path) {
             Ok(()) => (format!("saved {}", path.display()), false),
             Err(e) => (e.to_string(), true),
@@ -51,6 +77,16 @@ impl Viewer {
     /// Show a file dialog on a worker thread (one at a time); its answer is taken by
     /// [`Self::poll_file_dialog`].
     pub(super) fn ask_for_file(&mut self, request: FileRequest) {
+        #[cfg(target_arch = "wasm32")]
+        {
+            // The page's file input (its files arrive in `poll_file_dialog`), or a download.
+            match request {
+                FileRequest::Open => super::web::choose_files(),
+                FileRequest::Save => self.download_scene(),
+            }
+            return;
+        }
+        #[cfg_attr(target_arch = "wasm32", allow(unreachable_code))]
         if self.picking.is_some() {
             return;
         }
@@ -65,6 +101,10 @@ impl Viewer {
 
     /// Act on a file dialog's answer when it has come: open or save the chosen file.
     pub(super) fn poll_file_dialog(&mut self, ctx: &egui::Context) {
+        #[cfg(target_arch = "wasm32")]
+        if let Some(files) = super::web::take_chosen_files() {
+            self.open_files(files);
+        }
         let Some((request, rx)) = &self.picking else { return };
         let answer = match rx.try_recv() {
             Ok(answer) => answer,
@@ -96,17 +136,61 @@ impl Viewer {
         }
     }
 
-    /// Files dropped on the window are opened (the last one, if several).
+    /// Files dropped on the window are opened (the last one, if several). In the browser they
+    /// are read as bytes (asynchronously, `web.rs`) and a `.gltf` opens with the `.bin` and
+    /// images dropped with it.
     pub(super) fn dropped_files(&mut self, ctx: &egui::Context) {
-        let dropped: Vec<PathBuf> = ctx.input(|i| {
-            i.raw.dropped_files.iter().map(|f| f.path().to_path_buf()).filter(|p| !p.as_os_str().is_empty()).collect()
-        });
-        if let Some(p) = dropped.last() {
-            self.open_file(p);
+        let dropped: Vec<egui::DroppedFileHandle> = ctx.input(|i| i.raw.dropped_files.clone());
+        if dropped.is_empty() {
+            return;
+        }
+        #[cfg(target_arch = "wasm32")]
+        super::web::read_dropped(dropped, ctx.clone());
+        #[cfg(not(target_arch = "wasm32"))]
+        if let Some(p) = dropped.iter().map(|f| f.path().to_path_buf()).filter(|p| !p.as_os_str().is_empty()).last() {
+            self.open_file(&p);
         }
     }
 
+    /// Render the current view again at its resolution and download it as PNG once read back
+    /// (the browser's maps complete between frames: `poll_screenshot` takes it).
+    #[cfg(target_arch = "wasm32")]
+    pub(super) fn save_view_png(&mut self) {
+        let Some(view) = &self.view else { return };
+        let (w, h) = (view.target.width, view.target.height);
+        let target = Target::new(&self.renderer.device, w, h, shadelab_render::target::HDR_FORMAT);
+        self.renderer.render(&self.gpu_scene, &self.scene, &target, &self.settings);
+        self.screenshot_reading =
+            Some(shadelab_render::target::start_read_back(&self.renderer.device, &self.renderer.queue, &target));
+    }
+
+    /// Download the screenshot once its image has been read back.
+    #[cfg(target_arch = "wasm32")]
+    pub(super) fn poll_screenshot(&mut self, ctx: &egui::Context) {
+        let Some(reading) = &self.screenshot_reading else { return };
+        let Some(image) = reading.try_take(&self.renderer.device) else {
+            ctx.request_repaint();
+            return;
+        };
+        self.screenshot_reading = None;
+        self.saved_count += 1;
+        let name = format!("shadelab-screenshot-{}.png", self.saved_count);
+        let png = image.and_then(|image| {
+            let mut bytes = std::io::Cursor::new(Vec::new());
+            image::RgbImage::from_raw(image.width, image.height, image.to_srgb8())
+                .ok_or_else(|| "image buffer size".to_string())?
+                .write_to(&mut bytes, image::ImageFormat::Png)
+                .map_err(|e| e.to_string())?;
+            Ok(bytes.into_inner())
+        });
+        self.message = Some(match png.and_then(|png| super::web::download(&name, &png, "image/png")) {
+            Ok(()) => (format!("downloaded {name}"), false),
+            Err(e) => (format!("screenshot failed: {e}"), true),
+        });
+    }
+
     /// Render the current view again into a float target at the view's resolution and save it.
+    #[cfg(not(target_arch = "wasm32"))]
     pub(super) fn save_view_png(&mut self) {
         let Some(view) = &self.view else { return };
         let (w, h) = (view.target.width, view.target.height);

@@ -9,6 +9,7 @@
 mod blit;
 mod difference;
 mod files;
+mod link;
 mod loading;
 mod lobe;
 mod orbit;
@@ -18,10 +19,15 @@ mod scripting;
 mod shadow_factor;
 mod shadow_maps;
 mod view;
+#[cfg(target_arch = "wasm32")]
+pub mod web;
 
 pub use files::{FilePicker, FileRequest, native_file_picker};
+pub use link::{Link, parse_query};
 
-use crate::{Failure, cli, render};
+use crate::cli;
+#[cfg(not(target_arch = "wasm32"))]
+use crate::{Failure, render};
 use difference::DifferenceView;
 use eframe::egui::{self, Key};
 use eframe::egui_wgpu;
@@ -46,6 +52,7 @@ pub struct Options {
     pub difference: bool,
 }
 
+#[cfg(not(target_arch = "wasm32"))]
 pub fn run(options: Options) -> Result<(), Failure> {
     let Options { screenshot, exit_after_frames, shaders, scene, mode, difference } = options;
     // A bad scene file, camera or flag is one line and exit 2, before any window opens.
@@ -141,6 +148,20 @@ pub struct Viewer {
     picking: Option<(FileRequest, std::sync::mpsc::Receiver<Option<PathBuf>>)>,
     /// A file being opened on a worker thread (`loading.rs`).
     loading: Option<loading::Loading>,
+    /// The adapter drawn with: its backend and name (the panel and the page's state show it).
+    adapter: String,
+    /// Where this frame put the panel's main switches, by name (`shading:flat`, `term:diffuse`):
+    /// the page's state publishes them so that browser tests click them as a person would.
+    marks: std::collections::BTreeMap<String, egui::Rect>,
+    /// Where the view was drawn this frame, in points.
+    view_rect: Option<egui::Rect>,
+    /// Frames drawn so far.
+    frames: u64,
+    /// The link "copy link" wrote last, shown under the button.
+    copied_link: Option<(String, Option<String>)>,
+    /// In the browser: the screenshot being read back, downloaded once it is.
+    #[cfg(target_arch = "wasm32")]
+    screenshot_reading: Option<shadelab_render::target::PendingReadBack>,
 }
 
 impl Viewer {
@@ -153,12 +174,16 @@ impl Viewer {
     ) -> Result<Viewer, String> {
         let rs = cc.wgpu_render_state.as_ref().ok_or("the viewer needs eframe's wgpu renderer")?;
         let mut renderer = Renderer::new(&rs.device, &rs.queue);
-        // A new effect set compiles on a worker thread; the uber pipeline draws meanwhile.
-        renderer.pipelines.build_in_background = true;
+        // A new effect set compiles on a worker thread; the uber pipeline draws meanwhile. The
+        // browser has no threads, but its createRenderPipeline returns at once and compiles in
+        // the GPU process, so there the build is asked for directly.
+        renderer.pipelines.build_in_background = cfg!(not(target_arch = "wasm32"));
         let scene = Scene::builtin("default").expect("built-in default scene");
         let scene_camera = scene.camera;
         let gpu_scene = renderer.upload(&scene).map_err(|e| e.to_string())?;
-        log::info!("viewer adapter: {:?}", rs.adapter.get_info());
+        let info = rs.adapter.get_info();
+        log::info!("viewer adapter: {info:?}");
+        let adapter = format!("{:?}: {}", info.backend, info.name);
         // The view is drawn into the window by a paint callback (blit.rs), which finds its
         // pipeline in egui's callback resources.
         rs.renderer.write().callback_resources.insert(blit::BlitResources::new(&rs.device, rs.target_format));
@@ -199,7 +224,19 @@ impl Viewer {
             camera_choice: 0,
             picking: None,
             loading: None,
+            adapter,
+            marks: Default::default(),
+            view_rect: None,
+            frames: 0,
+            copied_link: None,
+            #[cfg(target_arch = "wasm32")]
+            screenshot_reading: None,
         })
+    }
+
+    /// Remember where a switch of the panel was drawn this frame (see `marks`).
+    pub(super) fn mark(&mut self, name: impl Into<String>, response: &egui::Response) {
+        self.marks.insert(name.into(), response.rect);
     }
 
     /// The point of the pixel picked last (a click on the view), from the f64 model.
@@ -386,16 +423,22 @@ impl eframe::App for Viewer {
             self.poll_shaders();
             ctx.request_repaint_after(std::time::Duration::from_millis(500));
         }
+        self.marks.clear();
         self.keyboard(&ctx);
         self.dropped_files(&ctx);
         self.poll_file_dialog(&ctx);
         self.poll_loading(&ctx);
+        #[cfg(target_arch = "wasm32")]
+        self.poll_screenshot(&ctx);
         egui::Panel::right("parameters").resizable(true).default_size(340.0).show(ui, |ui| {
             egui::ScrollArea::vertical().show(ui, |ui| self.panel(ui));
         });
         egui::CentralPanel::default().frame(egui::Frame::NONE).show(ui, |ui| self.viewport(ui));
         self.lobe.show(&ctx, &self.scene);
         self.script.after_frame(&ctx, self.frame_ms);
+        self.frames += 1;
+        #[cfg(target_arch = "wasm32")]
+        web::publish_state(self);
         if self.continuous {
             ctx.request_repaint();
         }

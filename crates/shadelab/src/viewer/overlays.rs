@@ -115,7 +115,13 @@ pub(super) fn difference_legend(
                 s.share_off * 100.0
             )
         }
-        (None, true) => "computing the f64 reference…".into(),
+        (None, true) => match difference.progress() {
+            // In the browser it is traced a few rows a frame, on the page's one thread.
+            Some(p) => {
+                format!("computing the f64 reference… {:.0} % (in this page's thread, a few rows a frame)", p * 100.0)
+            }
+            None => "computing the f64 reference…".into(),
+        },
         (None, false) => String::new(),
     };
     painter.text(rect.left_top() + vec2(10.0, 8.0), egui::Align2::LEFT_TOP, text, font, Color32::WHITE);

@@ -20,7 +20,7 @@ pub(super) struct Script {
     screenshot_slot: Arc<Mutex<Option<Arc<egui::ColorImage>>>>,
     screenshot_requested: bool,
     /// When the last frame ended, and each measured frame's interval and scene pass, ms.
-    last_frame: Option<std::time::Instant>,
+    last_frame: Option<web_time::Instant>,
     intervals_ms: Vec<f64>,
     scene_pass_ms: Vec<f64>,
 }
@@ -42,7 +42,7 @@ impl Script {
     /// Record a frame's wall-clock interval since the previous one and the scene pass's time the
     /// panel shows (`None` until the ring reads one back).
     fn time_frame(&mut self, scene_pass_ms: Option<f64>) {
-        let now = std::time::Instant::now();
+        let now = web_time::Instant::now();
         if let Some(last) = self.last_frame.replace(now)
             && self.frames > SUMMARY_WARMUP_FRAMES
         {

@@ -48,6 +48,7 @@ impl Viewer {
     pub(super) fn viewport(&mut self, ui: &mut egui::Ui) {
         let avail = ui.available_size();
         let (rect, response) = ui.allocate_exact_size(avail, egui::Sense::click_and_drag());
+        self.view_rect = Some(rect);
         let ppp = ui.ctx().pixels_per_point();
         let w = ((avail.x * ppp).round().max(0.0) as u32).min(params::WIDTH.max as u32);
         let h = ((avail.y * ppp).round().max(0.0) as u32).min(params::HEIGHT.max as u32);

@@ -2,10 +2,13 @@
 
 use crate::viewer::{FileRequest, Viewer};
 use eframe::egui;
+#[cfg(not(target_arch = "wasm32"))]
 use std::path::PathBuf;
 
 impl Viewer {
     pub(super) fn files_row_ui(&mut self, ui: &mut egui::Ui) {
+        // A page cannot read or write paths: its picker and downloads are the buttons below.
+        #[cfg(not(target_arch = "wasm32"))]
         ui.horizontal(|ui| {
             ui.add(
                 egui::TextEdit::singleline(&mut self.file_field).desired_width(170.0).hint_text("scene.gltf / .glb"),
@@ -23,18 +26,20 @@ impl Viewer {
         });
         ui.horizontal(|ui| {
             let idle = self.picking.is_none();
-            if ui
-                .add_enabled(idle, egui::Button::new("open…"))
-                .on_hover_text("choose a glTF file in a dialog")
-                .clicked()
-            {
+            let (open_tip, save_tip) = if cfg!(target_arch = "wasm32") {
+                (
+                    "choose a .glb, or a .gltf with its .bin and images, all at once (or drop them on the page)",
+                    "download the scene as shown as shadelab-scene.glb",
+                )
+            } else {
+                ("choose a glTF file in a dialog", "choose where to save the scene as shown (.gltf or .glb)")
+            };
+            let open = ui.add_enabled(idle, egui::Button::new("open…")).on_hover_text(open_tip);
+            self.mark("open", &open);
+            if open.clicked() {
                 self.ask_for_file(FileRequest::Open);
             }
-            if ui
-                .add_enabled(idle, egui::Button::new("save as…"))
-                .on_hover_text("choose where to save the scene as shown (.gltf or .glb)")
-                .clicked()
-            {
+            if ui.add_enabled(idle, egui::Button::new("save as…")).on_hover_text(save_tip).clicked() {
                 self.ask_for_file(FileRequest::Save);
             }
             if !idle {

@@ -12,6 +12,10 @@ impl Viewer {
     pub(super) fn live_numbers_ui(&mut self, ui: &mut egui::Ui) {
         let source = match self.timer.source() {
             TimeSource::GpuTimestamps => "GPU, timestamps",
+            // The browser cannot wait for the GPU: its CPU figure is the submit alone.
+            TimeSource::CpuSubmitWait if cfg!(target_arch = "wasm32") => {
+                "CPU, submit only: a page cannot wait for the GPU"
+            }
             TimeSource::CpuSubmitWait => "CPU, submit+wait",
         };
         if self.show_live_numbers {
@@ -23,6 +27,7 @@ impl Viewer {
         } else {
             ui.label(format!("scene pass: — ms ({source})"));
         }
+        ui.label(format!("adapter: {}", self.adapter));
         ui.label(format!(
             "{} triangles, {} lights, {} pipelines built",
             self.gpu_scene.triangle_count,

@@ -46,6 +46,24 @@ impl Viewer {
         self.view_actions_ui(ui);
     }
 
+    /// "copy link": the view on show as a link to the web page (`viewer/link.rs`), to the
+    /// clipboard and under the button. On the desktop the link's query is for the web build.
+    fn copy_link_ui(&mut self, ui: &mut egui::Ui) {
+        let r = ui
+            .button("copy link")
+            .on_hover_text("copy a link that opens this scene, mode, model, term and switches in shadelab's web page");
+        self.mark("copy link", &r);
+        if r.clicked() {
+            #[cfg(target_arch = "wasm32")]
+            let base = super::web::page_address();
+            #[cfg(not(target_arch = "wasm32"))]
+            let base = String::new();
+            let (link, note) = self.link(&base);
+            ui.ctx().copy_text(link.clone());
+            self.copied_link = Some((link, note));
+        }
+    }
+
     /// The view's buttons (screenshot, camera reset) and the keys and pointer gestures.
     fn view_actions_ui(&mut self, ui: &mut egui::Ui) {
         ui.horizontal(|ui| {
@@ -55,7 +73,19 @@ impl Viewer {
             if ui.button("reset camera").on_hover_text("or double-click the view").clicked() {
                 self.orbit = super::orbit::Orbit::from_camera(&self.base_camera);
             }
+            self.copy_link_ui(ui);
         });
+        if let Some((link, note)) = &self.copied_link {
+            ui.add(egui::Label::new(egui::RichText::new(link).small().monospace()).wrap());
+            if let Some(note) = note {
+                ui.small(note);
+            }
+        }
+        #[cfg(target_arch = "wasm32")]
+        ui.small(
+            "in the browser: the reference is traced a few rows a frame on the page's one thread; a file \
+             opens a stage a frame; the shadow-map views are not read back",
+        );
         ui.small("drag: orbit · right/middle drag: pan · wheel: zoom · 1/2/3: shading · S: specular · F12: screenshot");
     }
 }

@@ -56,20 +56,24 @@ impl Viewer {
         ui.horizontal(|ui| {
             ui.label("shading");
             for (i, (name, mode)) in ShadingMode::ALL.iter().enumerate() {
-                ui.selectable_value(&mut self.settings.shading, *mode, *name).on_hover_text(format!(
+                let r = ui.selectable_value(&mut self.settings.shading, *mode, *name).on_hover_text(format!(
                     "{} (key {})",
                     shading_meaning(*mode),
                     i + 1
                 ));
+                self.mark(format!("shading:{name}"), &r);
             }
         });
         let current = ModelChoice::of(self.scene.illumination, self.settings.specular);
         let mut choice = current;
-        egui::ComboBox::from_label("model").selected_text(current.label()).show_ui(ui, |ui| {
+        let marks = &mut self.marks;
+        let menu = egui::ComboBox::from_label("model").selected_text(current.label()).show_ui(ui, |ui| {
             for c in ModelChoice::ALL_CHOICES {
-                ui.selectable_value(&mut choice, c, c.label()).on_hover_text(c.title());
+                let r = ui.selectable_value(&mut choice, c, c.label()).on_hover_text(c.title());
+                marks.insert(format!("model:{}", c.name()), r.rect);
             }
         });
+        self.mark("model", &menu.response);
         if choice != current {
             self.choose_model(choice);
         }
@@ -90,8 +94,9 @@ impl Viewer {
         ui.horizontal(|ui| {
             ui.label("term");
             let model = self.scene.illumination;
-            for (_, term) in Term::ALL.iter().filter(|(_, t)| t.in_model(model)) {
-                ui.selectable_value(&mut self.term, *term, term.symbol_in(model)).on_hover_text(term.meaning());
+            for (name, term) in Term::ALL.iter().filter(|(_, t)| t.in_model(model)) {
+                let r = ui.selectable_value(&mut self.term, *term, term.symbol_in(model)).on_hover_text(term.meaning());
+                self.mark(format!("term:{name}"), &r);
             }
         });
         let mut screen = self.settings.interpolation == Interpolation::Screen;
@@ -118,15 +123,15 @@ impl Viewer {
                 .on_hover_text("the edges the crease-angle rule keeps sharp (faces more than 60° apart), orange");
         });
         let analytic = shadelab_model::scene_variants::is_analytic(&self.scene);
-        ui.add_enabled(analytic, egui::Checkbox::new(&mut self.difference.enabled, "difference from reference"))
-            .on_hover_text(format!(
-                "FLIP error map of this mode against the f64 ray-cast reference of the exact surface \
+        let r =
+            ui.add_enabled(analytic, egui::Checkbox::new(&mut self.difference.enabled, "difference from reference"));
+        self.mark("difference", &r);
+        r.on_hover_text(format!(
+            "FLIP error map of this mode against the f64 ray-cast reference of the exact surface \
                  (at most {} px wide), with RMSE and the GPU time; only for scenes of analytic shapes",
-                crate::viewer::difference::DIFFERENCE_MAX_WIDTH
-            ))
-            .on_disabled_hover_text(
-                "only for scenes made of analytic shapes (the reference knows their exact surface)",
-            );
+            crate::viewer::difference::DIFFERENCE_MAX_WIDTH
+        ))
+        .on_disabled_hover_text("only for scenes made of analytic shapes (the reference knows their exact surface)");
         if self.difference.enabled && analytic {
             ui.horizontal(|ui| {
                 ui.label("error map");

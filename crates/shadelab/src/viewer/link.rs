@@ -1,0 +1,279 @@
+//! A link that opens a view: the page's query (`?scene=glass&shading=gouraud`) holds the viewer's
+//! command-line options, each checked by the same parsers as the flag, so a bad one is named in
+//! the panel with the flag's own one line and the others still apply. The panel's switches that
+//! have no flag (the term, the error map, the overlays) have keys of their own.
+
+use super::Viewer;
+use super::difference::DifferenceKind;
+use crate::cli;
+use clap::Parser;
+use shadelab_model::params::NamedValue;
+use shadelab_model::terms::Term;
+use shadelab_model::{ModelChoice, SpecularModel};
+
+/// Options a link may not carry: they name files or end the program, which a page cannot.
+const REFUSED: &[&str] = &["screenshot", "exit-after-frames", "shaders"];
+
+/// The panel's switches that have no flag: key, and what it turns on.
+const SWITCHES: &[(&str, &str)] = &[
+    ("nonfinite", "paint non-finite pixels magenta"),
+    ("boundary", "the self-shadow boundary"),
+    ("normals", "the vertex normals"),
+    ("creases", "the creases"),
+];
+
+/// A link's query, checked.
+#[derive(Debug, Default, Clone, PartialEq)]
+pub struct Link {
+    /// The command-line options it gives, as arguments (`--shading`, `gouraud`, …).
+    pub args: Vec<String>,
+    pub term: Option<Term>,
+    pub error_map: Option<DifferenceKind>,
+    /// The switches given, by key, on or off.
+    pub switches: Vec<(&'static str, bool)>,
+    /// One line per bad parameter.
+    pub errors: Vec<String>,
+}
+
+/// `on`/`off` and their usual spellings.
+fn on_off(value: &str) -> Option<bool> {
+    match value.to_ascii_lowercase().as_str() {
+        "on" | "true" | "1" | "yes" | "" => Some(true),
+        "off" | "false" | "0" | "no" => Some(false),
+        _ => None,
+    }
+}
+
+/// `%41` → `A`, `+` → space (the form a browser writes a query in); a bad escape stays as it is.
+fn decode(text: &str) -> String {
+    let b = text.as_bytes();
+    let mut out = Vec::with_capacity(b.len());
+    let mut i = 0;
+    while i < b.len() {
+        let hex = |c: u8| (c as char).to_digit(16);
+        match b[i] {
+            b'+' => out.push(b' '),
+            b'%' => match (b.get(i + 1).and_then(|&c| hex(c)), b.get(i + 2).and_then(|&c| hex(c))) {
+                (Some(h), Some(l)) => {
+                    out.push((h * 16 + l) as u8);
+                    i += 3;
+                    continue;
+                }
+                _ => out.push(b'%'),
+            },
+            c => out.push(c),
+        }
+        i += 1;
+    }
+    String::from_utf8_lossy(&out).into_owned()
+}
+
+/// `A` stays, a space → `%20`, and so on: the characters a query value may hold as they are.
+fn encode(text: &str) -> String {
+    let mut out = String::with_capacity(text.len());
+    for b in text.bytes() {
+        if b.is_ascii_alphanumeric() || matches!(b, b'-' | b'_' | b'.' | b'~' | b',') {
+            out.push(b as char);
+        } else {
+            out.push_str(&format!("%{b:02X}"));
+        }
+    }
+    out
+}
+
+/// Check one key and value; a flag's value goes through the command line's own parser.
+fn take(link: &mut Link, key: &str, value: &str) -> Result<(), String> {
+    let named = |e: shadelab_model::params::ParamError| e.to_string();
+    match key {
+        "term" => link.term = Some(Term::parse_named(value).map_err(named)?),
+        "error-map" => {
+            link.error_map = Some(match value {
+                "flip" => DifferenceKind::Flip,
+                "shadow" => DifferenceKind::Shadow,
+                _ => return Err(format!("error-map: '{value}' is not one of flip, shadow")),
+            })
+        }
+        "difference" => match on_off(value) {
+            Some(true) => link.args.push("--difference".into()),
+            Some(false) => {}
+            None => return Err(format!("difference: '{value}' is not on or off")),
+        },
+        k if REFUSED.contains(&k) => {
+            return Err(format!("{k}: a link cannot carry --{k} (it names a file or ends the viewer)"));
+        }
+        k if SWITCHES.iter().any(|(s, _)| *s == k) => {
+            let on = on_off(value).ok_or_else(|| format!("{k}: '{value}' is not on or off"))?;
+            let key = SWITCHES.iter().find(|(s, _)| *s == k).map(|(s, _)| *s).unwrap_or_default();
+            link.switches.push((key, on));
+        }
+        k => {
+            let flag = format!("--{k}");
+            cli::Cli::try_parse_from(["shadelab", flag.as_str(), value]).map_err(|e| cli::one_line(&e))?;
+            link.args.extend([flag, value.to_string()]);
+        }
+    }
+    Ok(())
+}
+
+/// Read a page's query (with or without its `?`). Each bad parameter is one line in `errors`,
+/// prefixed with the parameter as written; the others are kept.
+pub fn parse_query(query: &str) -> Link {
+    let mut link = Link::default();
+    for pair in query.trim_start_matches('?').split('&').filter(|p| !p.is_empty()) {
+        let (k, v) = pair.split_once('=').unwrap_or((pair, ""));
+        let (key, value) = (decode(k), decode(v));
+        if let Err(e) = take(&mut link, key.trim(), value.trim()) {
+            let e = e.strip_prefix("error: ").unwrap_or(&e).to_string();
+            link.errors.push(format!("link parameter {key}={value}: {e}"));
+        }
+    }
+    link
+}
+
+impl Viewer {
+    /// Open the view a link describes: its scene and modes as the command line would, then the
+    /// switches. Every bad parameter is named in the panel; the rest apply.
+    pub fn open_link(&mut self, link: &Link) {
+        let mut errors = link.errors.clone();
+        let args = std::iter::once("shadelab".to_string()).chain(link.args.iter().cloned());
+        match cli::Cli::try_parse_from(args) {
+            Ok(c) => {
+                if let Err(e) = self.open_scene_args(&c.scene, &c.mode) {
+                    errors.push(format!("link: {e}"));
+                }
+                self.set_difference_view(c.difference);
+            }
+            Err(e) => errors.push(format!("link: {}", cli::one_line(&e))),
+        }
+        if let Some(term) = link.term {
+            if term.in_model(self.scene.illumination) {
+                self.term = term;
+            } else {
+                errors.push(format!("link parameter term={}: not a term of this model", term.name()));
+            }
+        }
+        if let Some(kind) = link.error_map {
+            self.difference.kind = kind;
+        }
+        for &(key, on) in &link.switches {
+            match key {
+                "nonfinite" => self.settings.debug_nonfinite = on,
+                "boundary" => self.boundary.enabled = on,
+                "normals" => self.normals.enabled = on,
+                "creases" => self.creases.enabled = on,
+                _ => {}
+            }
+        }
+        if !errors.is_empty() {
+            self.message = Some((errors.join("\n"), true));
+        }
+    }
+
+    /// Load a scene and settle its modes as the command line does; on failure the scene on show
+    /// stays.
+    fn open_scene_args(&mut self, scene: &cli::SceneArgs, mode: &cli::ModeArgs) -> Result<(), String> {
+        let usage = |f: crate::Failure| match f {
+            crate::Failure::Usage(m) => m,
+            crate::Failure::Run(e) => format!("{e:#}"),
+        };
+        let mut loaded = cli::load(scene).map_err(usage)?;
+        let settings = mode.settle(&mut loaded, scene).map_err(usage)?;
+        self.show_loaded(loaded, &scene.scene)?;
+        self.settings = settings;
+        Ok(())
+    }
+
+    /// The link to the view on show: `base` (the page's address) with the scene, the modes, the
+    /// term and the switches. A scene opened from a file cannot travel in a link: it is left out
+    /// (the link opens the default scene) and `note` says so.
+    pub fn link(&self, base: &str) -> (String, Option<String>) {
+        let mut q: Vec<(String, String)> = Vec::new();
+        let builtin = shadelab_model::scene::BUILTIN_SCENES.contains(&self.scene_name.as_str());
+        if builtin {
+            q.push(("scene".into(), self.scene_name.clone()));
+        }
+        q.push(("shading".into(), self.settings.shading.name().into()));
+        let model = ModelChoice::of(self.scene.illumination, self.settings.specular);
+        q.push(("model".into(), model.name().into()));
+        if model.split().1.is_none() && self.settings.specular != SpecularModel::CookTorrance {
+            q.push(("specular".into(), self.settings.specular.name().into()));
+        }
+        if self.settings.interpolation != shadelab_model::Interpolation::Perspective {
+            q.push(("interpolation".into(), self.settings.interpolation.name().into()));
+        }
+        if self.term != Term::All {
+            q.push(("term".into(), self.term.name().into()));
+        }
+        if self.difference.enabled {
+            q.push(("difference".into(), "on".into()));
+            if self.difference.kind == DifferenceKind::Shadow {
+                q.push(("error-map".into(), "shadow".into()));
+            }
+        }
+        let on = [
+            ("nonfinite", self.settings.debug_nonfinite),
+            ("boundary", self.boundary.enabled),
+            ("normals", self.normals.enabled),
+            ("creases", self.creases.enabled),
+        ];
+        q.extend(on.iter().filter(|(_, v)| *v).map(|(k, _)| (k.to_string(), "on".to_string())));
+        let query: Vec<String> = q.iter().map(|(k, v)| format!("{k}={}", encode(v))).collect();
+        let note = (!builtin).then(|| {
+            format!("{} is a file, which a link cannot carry: save the scene and share the file", self.scene_name)
+        });
+        (format!("{base}?{}", query.join("&")), note)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn flags_and_switches_are_read() {
+        let l = parse_query("?scene=glass&shading=gouraud&term=diffuse&boundary=on&difference=1&error-map=shadow");
+        assert_eq!(l.errors, Vec::<String>::new());
+        assert_eq!(l.args, ["--scene", "glass", "--shading", "gouraud", "--difference"]);
+        assert_eq!(l.term, Some(Term::Diffuse));
+        assert_eq!(l.error_map, Some(DifferenceKind::Shadow));
+        assert_eq!(l.switches, [("boundary", true)]);
+    }
+
+    #[test]
+    fn a_bad_parameter_is_named_and_the_rest_apply() {
+        let l = parse_query("shading=wobbly&m=-1&specular=phong&term=nope&screenshot=x.png&creases=maybe&zzz=1");
+        assert_eq!(l.args, ["--specular", "phong"]);
+        assert_eq!(l.errors.len(), 6, "{:#?}", l.errors);
+        assert!(
+            l.errors[0].starts_with("link parameter shading=wobbly: ") && l.errors[0].contains("flat"),
+            "{}",
+            l.errors[0]
+        );
+        assert!(l.errors[1].contains("[0, 1]"), "the range is named: {}", l.errors[1]);
+        assert!(l.errors[2].contains("term=nope"), "{}", l.errors[2]);
+        assert!(l.errors[3].contains("cannot carry --screenshot"), "{}", l.errors[3]);
+        assert!(l.errors[4].contains("creases=maybe"), "{}", l.errors[4]);
+        assert!(l.errors[5].contains("zzz"), "{}", l.errors[5]);
+        for e in &l.errors {
+            assert!(!e.contains('\n'), "one line each: {e}");
+        }
+    }
+
+    #[test]
+    fn values_are_percent_decoded_and_encoded() {
+        assert_eq!(decode("a%20b+c%2C%zz%4"), "a b c,%zz%4");
+        assert_eq!(encode("a b/c,d"), "a%20b%2Fc,d");
+        let l = parse_query("mu=0.9%2C0.6%2C0.2");
+        assert_eq!(l.args, ["--mu", "0.9,0.6,0.2"]);
+        assert!(l.errors.is_empty(), "{:?}", l.errors);
+    }
+
+    #[test]
+    fn hostile_queries_do_not_panic() {
+        for q in
+            ["?", "&&&", "=", "%", "%%", "?=x", "?scene", "?scene=", "?m=%FF%FE", "?term=%E2%88%9E", "?shading=\u{0}"]
+        {
+            let _ = parse_query(q);
+        }
+    }
+}

@@ -4,6 +4,8 @@
 //! On Debian/Ubuntu as root, a missing lavapipe is installed (`mesa-vulkan-drivers`); otherwise
 //! the one command to install it is printed. `.ci/run` calls this same command.
 
+mod web;
+
 use std::path::{Path, PathBuf};
 use std::process::{Command, ExitCode};
 
@@ -15,8 +17,15 @@ fn main() -> ExitCode {
     let args: Vec<String> = std::env::args().skip(1).collect();
     match args.first().map(String::as_str) {
         Some("test") => test(&args[1..]),
+        Some("web") => match web::main(&args[1..]) {
+            Ok(()) => ExitCode::SUCCESS,
+            Err(e) => {
+                eprintln!("xtask: {e}");
+                ExitCode::FAILURE
+            }
+        },
         _ => {
-            eprintln!("usage: cargo xtask test [-- <cargo test args>]");
+            eprintln!("usage: cargo xtask test [-- <cargo test args>]\n       cargo xtask web [--out DIR] [--port N]");
             ExitCode::from(2)
         }
     }

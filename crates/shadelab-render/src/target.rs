@@ -83,7 +83,19 @@ pub fn linear_to_srgb(x: f32) -> f32 {
     if x <= 0.003_130_8 { 12.92 * x } else { 1.055 * x.powf(1.0 / 2.4) - 0.055 }
 }
 
+/// sRGB → linear transfer function (IEC 61966-2-1), the inverse of [`linear_to_srgb`].
+pub fn srgb_to_linear(x: f32) -> f32 {
+    if x <= 0.040_45 { x / 12.92 } else { ((x + 0.055) / 1.055).powf(2.4) }
+}
+
 impl LinearImage {
+    /// An 8-bit sRGB RGB image as linear values (alpha 1); [`Self::to_srgb8`] gives its bytes back.
+    pub fn from_srgb8(width: u32, height: u32, rgb: &[u8]) -> LinearImage {
+        let lin = |b: u8| srgb_to_linear(b as f32 / 255.0);
+        let pixels = rgb.chunks_exact(3).map(|p| [lin(p[0]), lin(p[1]), lin(p[2]), 1.0]).collect();
+        LinearImage { width, height, pixels }
+    }
+
     pub fn get(&self, x: u32, y: u32) -> [f32; 4] {
         self.pixels[(y * self.width + x) as usize]
     }
@@ -234,6 +246,12 @@ impl PendingReadBack {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn srgb_bytes_round_trip() {
+        let bytes: Vec<u8> = (0..=255u8).flat_map(|b| [b, 255 - b, b / 2]).collect();
+        assert_eq!(LinearImage::from_srgb8(256, 1, &bytes).to_srgb8(), bytes);
+    }
 
     #[test]
     fn rows_are_padded_to_256_bytes() {

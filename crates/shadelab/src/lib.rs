@@ -6,6 +6,8 @@
 pub mod bench;
 pub mod cli;
 #[cfg(not(target_arch = "wasm32"))]
+pub mod compare;
+#[cfg(not(target_arch = "wasm32"))]
 pub mod figures;
 #[cfg(not(target_arch = "wasm32"))]
 pub mod lobe;

@@ -1,7 +1,7 @@
 //! `shadelab`: the viewer (no subcommand), `render`, `bench`, `sweep`, `figures` and `lobe`.
 
 use clap::Parser;
-use shadelab::{EXIT_USAGE, Failure, bench, cli, figures, lobe, render, sweep, viewer};
+use shadelab::{EXIT_USAGE, Failure, bench, cli, compare, figures, lobe, render, sweep, viewer};
 use std::process::ExitCode;
 
 /// Give Mesa a private `XDG_RUNTIME_DIR` when the environment has none: without one its window-system
@@ -55,6 +55,7 @@ fn main() -> ExitCode {
         Some(cli::Command::Sweep) => sweep::run(),
         Some(cli::Command::Figures(args)) => figures::run(&args),
         Some(cli::Command::Lobe(args)) => lobe::run(&args),
+        Some(cli::Command::Compare(args)) => compare::run(&args),
         None => viewer::run(viewer::Options {
             screenshot: cli.screenshot,
             exit_after_frames: cli.exit_after_frames,

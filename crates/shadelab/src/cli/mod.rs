@@ -70,7 +70,35 @@ pub enum Command {
     /// The lobe of one pixel of a render (the viewer's click): print its point's N, V and each
     /// light's angles, from the f64 model, and write the polar plot and the θh/θd slice as PNG.
     Lobe(LobeArgs),
+    /// Compare two PNG images of the same size (a screenshot against a render, two renders):
+    /// print the FLIP mean, RMSE, max error and the share of pixels off by more than 1/255.
+    Compare(CompareArgs),
 }
+
+#[derive(Args, Debug)]
+pub struct CompareArgs {
+    /// The image taken as right (PNG, 8-bit sRGB).
+    #[arg(value_name = "REFERENCE")]
+    pub reference: PathBuf,
+    /// The image compared with it.
+    #[arg(value_name = "TEST")]
+    pub test: PathBuf,
+    /// Write the FLIP error map (magma scale) to this PNG.
+    #[arg(long, value_name = "PATH")]
+    pub map: Option<PathBuf>,
+    /// Exit 1 when the FLIP mean is above this.
+    #[arg(long, value_name = "FLIP", value_parser = values::real(FLIP_MEAN))]
+    pub max_flip: Option<f64>,
+}
+
+/// `compare --max-flip`: a FLIP error lies in [0, 1].
+pub const FLIP_MEAN: shadelab_model::params::ParamRange = shadelab_model::params::ParamRange {
+    flag: "--max-flip",
+    symbol: "FLIP",
+    meaning: "largest FLIP mean accepted",
+    min: 0.0,
+    max: 1.0,
+};
 
 #[derive(Args, Debug)]
 pub struct LobeArgs {

@@ -2,9 +2,12 @@
 //! the only Vulkan driver, and run every test of the workspace on it.
 //!
 //! On Debian/Ubuntu as root, a missing lavapipe is installed (`mesa-vulkan-drivers`); otherwise
-//! the one command to install it is printed. `.ci/run` calls this same command.
+//! the one command to install it is printed. `.ci/run` calls this same command. It then builds
+//! the web version and tests it in headless Chromium (`web_test.rs`); `cargo xtask web` builds
+//! and serves that site (`web.rs`).
 
 mod web;
+mod web_test;
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, ExitCode};
@@ -88,6 +91,7 @@ fn test(extra: &[String]) -> ExitCode {
     cmd.env("XDG_RUNTIME_DIR", &xdg);
     let (tests_ok, mut count) = run_counting(&mut cmd);
     count.check("viewer smoke test under Xvfb", viewer_smoke_test(&icd, &xdg));
+    web_test::browser_tests(&icd, &mut count);
     count.check("`cargo run --release` reuses the test build", viewer_build_is_fresh());
     // The last line: every test binary's results, the smoke test and the build check, together.
     println!("xtask: {} passed, {} failed", count.passed, count.failed);

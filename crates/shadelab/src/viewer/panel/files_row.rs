@@ -39,13 +39,17 @@ impl Viewer {
             if open.clicked() {
                 self.ask_for_file(FileRequest::Open);
             }
-            if ui.add_enabled(idle, egui::Button::new("save as…")).on_hover_text(save_tip).clicked() {
+            let save = ui.add_enabled(idle, egui::Button::new("save as…")).on_hover_text(save_tip);
+            self.mark("save", &save);
+            if save.clicked() {
                 self.ask_for_file(FileRequest::Save);
             }
+            self.copy_link_ui(ui);
             if !idle {
                 ui.spinner();
             }
         });
+        self.copied_link_ui(ui);
         self.loading_ui(ui);
     }
 }

@@ -48,7 +48,7 @@ impl Viewer {
 
     /// "copy link": the view on show as a link to the web page (`viewer/link.rs`), to the
     /// clipboard and under the button. On the desktop the link's query is for the web build.
-    fn copy_link_ui(&mut self, ui: &mut egui::Ui) {
+    pub(super) fn copy_link_ui(&mut self, ui: &mut egui::Ui) {
         let r = ui
             .button("copy link")
             .on_hover_text("copy a link that opens this scene, mode, model, term and switches in shadelab's web page");
@@ -64,6 +64,16 @@ impl Viewer {
         }
     }
 
+    /// The link "copy link" wrote last, under the files row.
+    pub(super) fn copied_link_ui(&self, ui: &mut egui::Ui) {
+        if let Some((link, note)) = &self.copied_link {
+            ui.add(egui::Label::new(egui::RichText::new(link).small().monospace()).wrap());
+            if let Some(note) = note {
+                ui.small(note);
+            }
+        }
+    }
+
     /// The view's buttons (screenshot, camera reset) and the keys and pointer gestures.
     fn view_actions_ui(&mut self, ui: &mut egui::Ui) {
         ui.horizontal(|ui| {
@@ -73,14 +83,7 @@ impl Viewer {
             if ui.button("reset camera").on_hover_text("or double-click the view").clicked() {
                 self.orbit = super::orbit::Orbit::from_camera(&self.base_camera);
             }
-            self.copy_link_ui(ui);
         });
-        if let Some((link, note)) = &self.copied_link {
-            ui.add(egui::Label::new(egui::RichText::new(link).small().monospace()).wrap());
-            if let Some(note) = note {
-                ui.small(note);
-            }
-        }
         #[cfg(target_arch = "wasm32")]
         ui.small(
             "in the browser: the reference is traced a few rows a frame on the page's one thread; a file \

@@ -28,7 +28,9 @@ fn main() -> ExitCode {
             }
         },
         _ => {
-            eprintln!("usage: cargo xtask test [-- <cargo test args>]\n       cargo xtask web [--out DIR] [--port N]");
+            eprintln!(
+                "usage: cargo xtask test [-- <cargo test args>]\n       cargo xtask web [--out DIR] [--port N] | --bench"
+            );
             ExitCode::from(2)
         }
     }
@@ -64,7 +66,7 @@ fn apt_install(what: &str, packages: &[&str]) -> Result<(), String> {
     if ok { Ok(()) } else { Err(format!("installing {what} failed; install it with:\n    {command}")) }
 }
 
-fn ensure_lavapipe() -> Result<PathBuf, String> {
+pub(crate) fn ensure_lavapipe() -> Result<PathBuf, String> {
     if let Some(icd) = lavapipe_icd() {
         return Ok(icd);
     }
@@ -154,7 +156,7 @@ fn run_counting(cmd: &mut Command) -> (bool, Count) {
 
 /// `XDG_RUNTIME_DIR` for the tests: the caller's, or a private one (Mesa's window-system code
 /// complains on every device open without one).
-fn runtime_dir() -> PathBuf {
+pub(crate) fn runtime_dir() -> PathBuf {
     if let Some(d) = std::env::var_os("XDG_RUNTIME_DIR") {
         return d.into();
     }
@@ -218,9 +220,9 @@ fn has_xvfb() -> bool {
     Command::new("sh").args(["-c", "command -v Xvfb"]).output().is_ok_and(|o| o.status.success())
 }
 
-/// Start the real `shadelab` viewer in an Xvfb window, let it render a few frames, save the
-/// window (panel included) and check the picture is not blank.
-fn viewer_smoke_test(icd: &Path, xdg: &Path) -> Result<(), String> {
+/// Run the real `shadelab` viewer with `args` in an Xvfb window (installed when missing), on
+/// lavapipe; its output once it has exited.
+pub(crate) fn viewer_in_xvfb(icd: &Path, xdg: &Path, args: &[&str]) -> Result<std::process::Output, String> {
     if !has_xvfb() {
         apt_install("Xvfb", X_PACKAGES)?;
         if !has_xvfb() {
@@ -228,8 +230,6 @@ fn viewer_smoke_test(icd: &Path, xdg: &Path) -> Result<(), String> {
         }
     }
     let root = Path::new(env!("CARGO_MANIFEST_DIR")).parent().unwrap().to_path_buf();
-    let shot = root.join("target").join("xvfb-smoke.png");
-    let _ = std::fs::remove_file(&shot);
     let display = format!(":{}", 90 + std::process::id() % 100);
     let mut xvfb = Command::new("Xvfb")
         .args([display.as_str(), "-screen", "0", "1280x800x24", "-nolisten", "tcp"])
@@ -238,23 +238,33 @@ fn viewer_smoke_test(icd: &Path, xdg: &Path) -> Result<(), String> {
         .spawn()
         .map_err(|e| format!("starting Xvfb: {e}"))?;
     std::thread::sleep(std::time::Duration::from_millis(1500));
-    let status = Command::new("timeout")
+    let out = Command::new("timeout")
         .arg("300")
         .arg(root.join("target/release/shadelab"))
-        .args(["--screenshot", shot.to_str().unwrap(), "--exit-after-frames", "5"])
+        .args(args)
         .env("DISPLAY", &display)
         .env("VK_DRIVER_FILES", icd)
         .env("VK_ICD_FILENAMES", icd)
         .env("XDG_RUNTIME_DIR", xdg)
         .env_remove("WAYLAND_DISPLAY")
-        .status();
+        .stderr(std::process::Stdio::inherit())
+        .output();
     let _ = xvfb.kill();
     let _ = xvfb.wait();
-    match status {
-        Ok(s) if s.success() => {}
-        Ok(s) => return Err(format!("the viewer exited with {s}")),
-        Err(e) => return Err(format!("running the viewer: {e}")),
+    match out {
+        Ok(o) if o.status.success() => Ok(o),
+        Ok(o) => Err(format!("the viewer exited with {}", o.status)),
+        Err(e) => Err(format!("running the viewer: {e}")),
     }
+}
+
+/// Start the real `shadelab` viewer in an Xvfb window, let it render a few frames, save the
+/// window (panel included) and check the picture is not blank.
+fn viewer_smoke_test(icd: &Path, xdg: &Path) -> Result<(), String> {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).parent().unwrap().to_path_buf();
+    let shot = root.join("target").join("xvfb-smoke.png");
+    let _ = std::fs::remove_file(&shot);
+    viewer_in_xvfb(icd, xdg, &["--screenshot", shot.to_str().unwrap(), "--exit-after-frames", "5"])?;
     let img = image::open(&shot).map_err(|e| format!("reading {}: {e}", shot.display()))?.to_rgb8();
     let distinct: std::collections::HashSet<[u8; 3]> = img.pixels().map(|p| p.0).collect();
     // The panel's text and the shaded scene give thousands of colours; a blank or one-colour

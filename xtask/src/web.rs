@@ -166,10 +166,13 @@ fn answer(mut stream: std::net::TcpStream, dir: &Path) -> std::io::Result<()> {
     }
 }
 
-/// `cargo xtask web [--out DIR] [--port N]`.
+/// `cargo xtask web [--out DIR] [--port N]`, or `--bench` (`web_test::bench`).
 pub fn main(args: &[String]) -> Result<(), String> {
     let mut out = None;
     let mut port = 8000u16;
+    if args.first().map(String::as_str) == Some("--bench") {
+        return crate::web_test::bench();
+    }
     let mut it = args.iter();
     while let Some(a) = it.next() {
         match a.as_str() {
@@ -178,7 +181,9 @@ pub fn main(args: &[String]) -> Result<(), String> {
                 let v = it.next().ok_or("--port needs a number")?;
                 port = v.parse().map_err(|_| format!("--port: '{v}' is not a port number in [0, 65535]"))?;
             }
-            other => return Err(format!("unknown option '{other}' (cargo xtask web [--out DIR] [--port N])")),
+            other => {
+                return Err(format!("unknown option '{other}' (cargo xtask web [--out DIR] [--port N] | --bench)"));
+            }
         }
     }
     if let Some(dir) = out {

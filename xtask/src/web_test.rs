@@ -66,3 +66,61 @@ pub fn browser_tests(icd: &Path, count: &mut Count) {
         count.check("browser tests", Err("tests/web/browser_tests.mjs failed before its tests ran".into()));
     }
 }
+
+/// The median frame interval and scene pass the native viewer prints after a scripted run.
+fn native_viewer_timing(summary: &str) -> Option<(f64, f64)> {
+    let number_after = |key: &str| -> Option<f64> {
+        let rest = &summary[summary.find(key)? + key.len()..];
+        rest.split_whitespace().next()?.parse().ok()
+    };
+    Some((number_after("median frame interval ")?, number_after("median scene pass ")?))
+}
+
+/// `cargo xtask web --bench`: the web build's size, start and frame time, and its f64 reference,
+/// against the native viewer (under Xvfb, lavapipe) on the same machine, in one run.
+pub fn bench() -> Result<(), String> {
+    let root = root();
+    let icd = crate::ensure_lavapipe()?;
+    let xdg = crate::runtime_dir();
+    let node_dir = root.join("target/web-node");
+    ensure_browser_tools(&node_dir)?;
+    let site = root.join("target/web-site");
+    build_site(&site)?;
+    let native_build = Command::new(std::env::var("CARGO").unwrap_or_else(|_| "cargo".into()))
+        .current_dir(&root)
+        .args(["build", "--release"])
+        .status();
+    if !native_build.is_ok_and(|s| s.success()) {
+        return Err("cargo build --release failed".into());
+    }
+    // The viewer's default window is 1280×760, as the page's viewport in the bench.
+    let out = crate::viewer_in_xvfb(&icd, &xdg, &["--exit-after-frames", "65"])?;
+    let text = String::from_utf8_lossy(&out.stdout);
+    let (frame, pass) = native_viewer_timing(&text).ok_or_else(|| format!("no timing summary in: {text}"))?;
+    let address = serve(&site, 0)?;
+    let ok = run(Command::new("node")
+        .arg(root.join("tests/web/browser_bench.mjs"))
+        .env("SHADELAB_URL", &address)
+        .env("SHADELAB_BIN", root.join("target/release/shadelab"))
+        .env("SHADELAB_SITE", &site)
+        .env("SHADELAB_OUT", root.join("target/web-bench"))
+        .env("PLAYWRIGHT", &node_dir)
+        .env("CHROMIUM", CHROMIUM)
+        .env("NATIVE_VIEWER", format!("{{\"frame\":{frame},\"pass\":{pass}}}"))
+        .env("VK_DRIVER_FILES", &icd)
+        .env("VK_ICD_FILENAMES", &icd)
+        .env("SHADELAB_ADAPTER", "lavapipe"));
+    if ok { Ok(()) } else { Err("tests/web/browser_bench.mjs failed".into()) }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_native_summary_is_read() {
+        let line = "viewer: 60 frames after 5: median frame interval 39.12 ms, median scene pass 13.50 ms, frame / scene pass 2.90";
+        assert_eq!(native_viewer_timing(line), Some((39.12, 13.5)));
+        assert_eq!(native_viewer_timing("nothing"), None);
+    }
+}

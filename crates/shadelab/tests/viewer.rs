@@ -491,3 +491,32 @@ fn the_panel_names_a_materials_textures() {
     let line = "textures: base colour, metallic–roughness, occlusion, emissive, normal; emits I_e = (0.30, 0.15, 0.05)";
     h.get_by_label(line).scroll_to_me();
 }
+
+#[test]
+fn a_link_written_by_the_viewer_opens_the_same_view() {
+    let mut h = harness();
+    h.get_by_label("gouraud").click();
+    h.run_steps(2);
+    h.state_mut().set_term(shadelab_model::terms::Term::Diffuse);
+    h.state_mut().set_difference_view(true);
+    h.run_steps(1);
+    let (link, note) = h.state().link("http://127.0.0.1:8000/");
+    assert!(note.is_none(), "a built-in scene travels in the link");
+    assert!(link.starts_with("http://127.0.0.1:8000/?scene=default&shading=gouraud"), "{link}");
+    let query = link.split_once('?').unwrap().1;
+    let parsed = shadelab::viewer::parse_query(query);
+    assert!(parsed.errors.is_empty(), "{:?}", parsed.errors);
+    let mut fresh = harness();
+    fresh.state_mut().open_link(&parsed);
+    fresh.run_steps(1);
+    assert_eq!(fresh.state().settings().shading, ShadingMode::Gouraud);
+    assert_eq!(fresh.state().link("http://127.0.0.1:8000/").0, link, "the same view, so the same link");
+    assert!(fresh.state().message().is_none());
+    // A bad parameter is named and the others still apply.
+    let mut bad = harness();
+    bad.state_mut().open_link(&shadelab::viewer::parse_query("scene=glass&shading=toon&term=shadow"));
+    bad.run_steps(1);
+    let (msg, is_error) = bad.state().message().cloned().expect("a message");
+    assert!(is_error && msg.contains("shading=toon") && msg.contains("flat, gouraud, phong"), "{msg}");
+    assert_eq!(bad.state().link("").0, "?scene=glass&shading=phong&model=cook-torrance&term=shadow");
+}

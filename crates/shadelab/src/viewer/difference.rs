@@ -53,9 +53,11 @@ struct Shown {
 /// A reference being traced: on a worker thread, or in the browser (no threads) a few rows a
 /// frame ([`ROW_BUDGET_MS`]).
 enum Tracing {
-    Worker(Receiver<ReferenceImage>),
+    /// The image and the time its tracing took, ms.
+    Worker(Receiver<(ReferenceImage, f64)>),
+    /// The job and the time its steps have taken so far, ms.
     #[cfg_attr(not(target_arch = "wasm32"), allow(dead_code))]
-    Steps(Box<ReferenceJob>),
+    Steps(Box<ReferenceJob>, f64),
 }
 
 /// In the browser, the f64 reference traces rows for at most this long a frame, so the page keeps
@@ -77,6 +79,8 @@ pub struct DifferenceView {
     pub enabled: bool,
     pub kind: DifferenceKind,
     reference: Option<(ReferenceKey, Arc<ReferenceImage>)>,
+    /// How long the last reference took to trace, ms (on one thread, the page's or a worker).
+    pub traced_ms: Option<f64>,
     pending: Option<(ReferenceKey, Tracing)>,
     reading: Option<Reading>,
     shown: Option<Shown>,
@@ -104,6 +108,12 @@ impl DifferenceView {
         self.shown.as_ref().filter(|_| self.current).and_then(|s| s.shadow)
     }
 
+    /// The size of the reference on hand, if any (the page's state publishes it).
+    #[cfg_attr(not(target_arch = "wasm32"), allow(dead_code))]
+    pub fn reference_size(&self) -> Option<(u32, u32)> {
+        self.reference.as_ref().map(|(k, _)| k.size)
+    }
+
     /// Whether a reference is being computed.
     pub fn computing(&self) -> bool {
         self.pending.is_some()
@@ -112,7 +122,7 @@ impl DifferenceView {
     /// The share of the reference traced so far, where it is traced in steps (the browser).
     pub fn progress(&self) -> Option<f32> {
         match &self.pending {
-            Some((_, Tracing::Steps(job))) => Some(job.progress()),
+            Some((_, Tracing::Steps(job, _))) => Some(job.progress()),
             _ => None,
         }
     }
@@ -187,18 +197,23 @@ impl DifferenceView {
         if let Some((k, tracing)) = self.pending.take() {
             match tracing {
                 Tracing::Worker(rx) => match rx.try_recv() {
-                    Ok(img) => self.reference = Some((k, Arc::new(img))),
+                    Ok((img, ms)) => {
+                        self.reference = Some((k, Arc::new(img)));
+                        self.traced_ms = Some(ms);
+                    }
                     Err(std::sync::mpsc::TryRecvError::Empty) => self.pending = Some((k, Tracing::Worker(rx))),
                     // The worker is gone without an image: trace again below.
                     Err(std::sync::mpsc::TryRecvError::Disconnected) => {}
                 },
-                Tracing::Steps(mut job) => {
+                Tracing::Steps(mut job, ms) => {
                     let start = web_time::Instant::now();
                     while !job.step(1) && start.elapsed().as_secs_f64() * 1e3 < ROW_BUDGET_MS {}
+                    let ms = ms + start.elapsed().as_secs_f64() * 1e3;
                     if job.done() {
                         self.reference = Some((k, Arc::new(job.finish())));
+                        self.traced_ms = Some(ms);
                     } else {
-                        self.pending = Some((k, Tracing::Steps(job)));
+                        self.pending = Some((k, Tracing::Steps(job, ms)));
                     }
                 }
             }
@@ -207,15 +222,15 @@ impl DifferenceView {
             let (w, h) = key.size;
             let job = ReferenceJob::new(scene, specular, w, h);
             let tracing = if cfg!(target_arch = "wasm32") {
-                Tracing::Steps(Box::new(job))
+                Tracing::Steps(Box::new(job), 0.0)
             } else {
                 let (tx, rx) = channel();
                 let repaint = ctx.clone();
                 std::thread::spawn(move || {
-                    let mut job = job;
+                    let (mut job, start) = (job, web_time::Instant::now());
                     job.step(h);
                     // A send fails only when the viewer has been closed: nothing to do.
-                    let _ = tx.send(job.finish());
+                    let _ = tx.send((job.finish(), start.elapsed().as_secs_f64() * 1e3));
                     repaint.request_repaint();
                 });
                 Tracing::Worker(rx)

@@ -20,6 +20,7 @@ const SWITCHES: &[(&str, &str)] = &[
     ("boundary", "the self-shadow boundary"),
     ("normals", "the vertex normals"),
     ("creases", "the creases"),
+    ("continuous", "render continuously (for live timing)"),
 ];
 
 /// A link's query, checked.
@@ -161,6 +162,7 @@ impl Viewer {
                 "boundary" => self.boundary.enabled = on,
                 "normals" => self.normals.enabled = on,
                 "creases" => self.creases.enabled = on,
+                "continuous" => self.continuous = on,
                 _ => {}
             }
         }
@@ -215,6 +217,7 @@ impl Viewer {
             ("boundary", self.boundary.enabled),
             ("normals", self.normals.enabled),
             ("creases", self.creases.enabled),
+            ("continuous", self.continuous),
         ];
         q.extend(on.iter().filter(|(_, v)| *v).map(|(k, _)| (k.to_string(), "on".to_string())));
         let query: Vec<String> = q.iter().map(|(k, v)| format!("{k}={}", encode(v))).collect();

@@ -44,6 +44,8 @@ impl Viewer {
             if save.clicked() {
                 self.ask_for_file(FileRequest::Save);
             }
+            // A link needs the page's address: the desktop has none to give.
+            #[cfg(target_arch = "wasm32")]
             self.copy_link_ui(ui);
             if !idle {
                 ui.spinner();

@@ -46,19 +46,16 @@ impl Viewer {
         self.view_actions_ui(ui);
     }
 
-    /// "copy link": the view on show as a link to the web page (`viewer/link.rs`), to the
-    /// clipboard and under the button. On the desktop the link's query is for the web build.
+    /// "copy link" (in the browser): the view on show as a link to the page (`viewer/link.rs`),
+    /// to the clipboard and under the button.
+    #[cfg(target_arch = "wasm32")]
     pub(super) fn copy_link_ui(&mut self, ui: &mut egui::Ui) {
         let r = ui
             .button("copy link")
             .on_hover_text("copy a link that opens this scene, mode, model, term and switches in shadelab's web page");
         self.mark("copy link", &r);
         if r.clicked() {
-            #[cfg(target_arch = "wasm32")]
-            let base = super::web::page_address();
-            #[cfg(not(target_arch = "wasm32"))]
-            let base = String::new();
-            let (link, note) = self.link(&base);
+            let (link, note) = self.link(&super::web::page_address());
             ui.ctx().copy_text(link.clone());
             self.copied_link = Some((link, note));
         }

@@ -183,7 +183,11 @@ impl Viewer {
         let gpu_scene = renderer.upload(&scene).map_err(|e| e.to_string())?;
         let info = rs.adapter.get_info();
         log::info!("viewer adapter: {info:?}");
-        let adapter = format!("{:?}: {}", info.backend, info.name);
+        // A browser does not name its adapter: the backend alone then.
+        let adapter = match info.name.as_str() {
+            "" => format!("{:?}", info.backend),
+            name => format!("{:?}: {name}", info.backend),
+        };
         // The view is drawn into the window by a paint callback (blit.rs), which finds its
         // pipeline in egui's callback resources.
         rs.renderer.write().callback_resources.insert(blit::BlitResources::new(&rs.device, rs.target_format));

@@ -188,6 +188,32 @@ const tests = {
     await page.close();
   },
 
+  async files_dropped_on_the_page_open_together() {
+    // A .gltf with its buffer in a file of its own, dropped with it: the page matches them by name.
+    const gltf = JSON.parse(fs.readFileSync(path.join(SAMPLES, "BoxTextured.gltf"), "utf8"));
+    const bin = Buffer.from(gltf.buffers[0].uri.split(",")[1], "base64");
+    gltf.buffers[0].uri = "box.bin";
+    const files = [
+      { name: "dropped.gltf", b64: Buffer.from(JSON.stringify(gltf)).toString("base64") },
+      { name: "box.bin", b64: bin.toString("base64") },
+    ];
+    const page = await open();
+    const data = await page.evaluateHandle((files) => {
+      const dt = new DataTransfer();
+      for (const f of files) {
+        dt.items.add(new File([Uint8Array.from(atob(f.b64), (c) => c.charCodeAt(0))], f.name));
+      }
+      return dt;
+    }, files);
+    for (const type of ["dragenter", "dragover", "drop"]) {
+      await page.dispatchEvent("#shadelab", type, { dataTransfer: data });
+    }
+    const s = await waitFor(page, "the dropped scene", (s) => s.scene === "dropped.gltf" && !s.loading, 60);
+    check(s.textures === 1 && !s.message_is_error, `textures ${s.textures}, message ${s.message}`);
+    noConsoleErrors(page);
+    await page.close();
+  },
+
   async a_hostile_file_is_one_line_and_the_next_file_opens() {
     const page = await open();
     await page.setInputFiles("#shadelab-file-input", path.join(ROOT, "tests/gltf-corpus/index-past-vertex-count.gltf"));

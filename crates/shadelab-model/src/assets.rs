@@ -114,7 +114,7 @@ pub fn figure_7_3_pyramid() -> Scene {
         lights: vec![Light::directional(DVec3::new(-0.75, -0.8, 0.45), [1.0, 0.98, 0.94], 1.0)],
         ambient: [0.1; 3],
         camera: camera(DVec3::new(0.6, 2.4, 4.6), DVec3::new(0.0, 0.7, 0.0)),
-        meshes: Vec::new(),
+        meshes: Default::default(),
         illumination: Default::default(),
         textures: Vec::new(),
     }
@@ -166,7 +166,7 @@ pub fn gouraud_vs_phong() -> Scene {
         ],
         ambient: [0.12; 3],
         camera: camera(DVec3::new(0.0, 2.2, 4.6), DVec3::new(0.0, 0.8, 0.0)),
-        meshes: Vec::new(),
+        meshes: Default::default(),
         illumination: Default::default(),
         textures: Vec::new(),
     }
@@ -260,7 +260,7 @@ pub fn material_board() -> Scene {
         ],
         ambient: [0.1; 3],
         camera: camera(DVec3::new(0.0, 3.6, 4.4), DVec3::new(0.0, 0.2, 0.1)),
-        meshes: Vec::new(),
+        meshes: Default::default(),
         illumination: Default::default(),
         textures: Vec::new(),
     }

@@ -118,8 +118,9 @@ pub struct Scene {
     /// Scene-wide ambient intensity `I_amb` per channel (docs/model.md §3).
     pub ambient: [f64; 3],
     pub camera: Camera,
-    /// Triangle meshes from a scene file, indexed by `Shape::Mesh(i)`.
-    pub meshes: Vec<crate::mesh::TriangleMesh>,
+    /// Triangle meshes from a scene file, indexed by `Shape::Mesh(i)`; shared by the scene's
+    /// copies (`mesh::Meshes`).
+    pub meshes: crate::mesh::Meshes,
     /// The illumination model the scene is lit with (docs/model.md §3a).
     pub illumination: crate::params::IlluminationModel,
     /// The materials' textures, indexed by `TextureRef::texture`.

@@ -264,7 +264,7 @@ pub fn object_boxes(scene: &Scene) -> Vec<(DVec3, DVec3)> {
     let mut out = Vec::new();
     for o in &scene.objects {
         let (a, b) = match o.shape {
-            Shape::Mesh(i) => match scene.meshes.get(i).and_then(|m| m.bounds()) {
+            Shape::Mesh(i) => match scene.meshes.bounds(i) {
                 Some(b) => b,
                 None => continue,
             },

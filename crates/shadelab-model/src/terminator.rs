@@ -240,7 +240,7 @@ mod tests {
         assert_eq!(sorted(&got), expected);
         // The same with split vertices (a flat-shaded file mesh: each triangle its own corners).
         let mut scene = single_shape_scene("pyramid", Shape::Pyramid, 1);
-        scene.meshes = vec![TriangleMesh::from_soup("pyramid", &triangles(Shape::Pyramid, 1), None)];
+        scene.meshes = vec![TriangleMesh::from_soup("pyramid", &triangles(Shape::Pyramid, 1), None)].into();
         let k = pyramid_index(&scene);
         scene.objects[k].shape = Shape::Mesh(0);
         scene.objects[k].transform = Transform::new(DVec3::ZERO, DVec3::ONE);

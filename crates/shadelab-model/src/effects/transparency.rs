@@ -20,9 +20,7 @@ pub fn longest_chord(scene: &Scene, i: usize) -> f64 {
         Shape::Sphere => 2.0 * s.max_element(),
         Shape::Cylinder => (2.0 * s.x.max(s.z)).hypot(2.0 * s.y),
         Shape::Cube | Shape::Pyramid => 2.0 * s.length(),
-        Shape::Mesh(m) => {
-            scene.meshes.get(m).and_then(|mesh| mesh.bounds()).map_or(0.0, |(lo, hi)| ((hi - lo) * s).length())
-        }
+        Shape::Mesh(m) => scene.meshes.bounds(m).map_or(0.0, |(lo, hi)| ((hi - lo) * s).length()),
     }
 }
 

@@ -233,7 +233,7 @@ pub(super) fn bounds(scene: &Scene) -> (DVec3, f64) {
     let (mut lo, mut hi) = (DVec3::splat(f64::INFINITY), DVec3::splat(f64::NEG_INFINITY));
     for o in &scene.objects {
         let (a, b) = match o.shape {
-            Shape::Mesh(i) => scene.meshes[i].bounds().unwrap_or((DVec3::ZERO, DVec3::ZERO)),
+            Shape::Mesh(i) => scene.meshes.bounds(i).unwrap_or((DVec3::ZERO, DVec3::ZERO)),
             _ => (DVec3::NEG_ONE, DVec3::ONE),
         };
         let m = o.transform.matrix();

@@ -214,7 +214,7 @@ impl Reader<'_> {
                 far: 100.0,
                 orthographic: None,
             },
-            meshes: Vec::new(),
+            meshes: Default::default(),
             illumination: Default::default(),
             textures: Vec::new(),
         };

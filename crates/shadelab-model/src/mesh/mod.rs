@@ -5,11 +5,13 @@
 
 mod crease;
 mod procedural;
+mod shared;
 mod tangents;
 mod triangle_mesh;
 
 pub use crease::{CREASE_ANGLE_DEG, CREASE_VALENCE_MAX, build_mesh, build_mesh_with_normals};
 pub use procedural::{segments, sphere_rings, tessellate, triangle_count, triangles};
+pub use shared::Meshes;
 pub use triangle_mesh::TriangleMesh;
 
 use crate::guards::NORMALIZE_MIN_LEN2;

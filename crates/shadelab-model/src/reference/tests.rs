@@ -45,7 +45,7 @@ fn stage(objects: Vec<Object>, lights: Vec<Light>) -> Scene {
             far: 50.0,
             orthographic: None,
         },
-        meshes: Vec::new(),
+        meshes: Default::default(),
         illumination: Default::default(),
         textures: Vec::new(),
     }
@@ -153,7 +153,7 @@ fn a_light_inside_a_closed_shape_shadows_everything_outside_it() {
         let shell = object("shell", shape, centre, DVec3::new(0.6, 0.5, 0.7));
         let other = object("box", Shape::Cube, DVec3::new(-1.6, 0.4, -0.5), DVec3::splat(0.4));
         let mut scene = stage(vec![shell, other], vec![Light::point(centre, WHITE, 2.0, 0.1)]);
-        scene.meshes = meshes;
+        scene.meshes = meshes.into();
         let img = render_reference(&scene, SpecularModel::CookTorrance, 320, 180);
         assert!(all_finite(&img), "{shape:?}");
         let mut dark = scene.clone();
@@ -224,7 +224,7 @@ fn degenerate_shadow_setups_stay_finite() {
             object("flat", Shape::Mesh(0), DVec3::ZERO, DVec3::ONE),
         ];
         let mut scene = stage(coplanar, vec![light.clone()]);
-        scene.meshes = vec![flat.clone()];
+        scene.meshes = vec![flat.clone()].into();
         for casts in [true, false] {
             scene.set_shadows(casts);
             let img = render_reference(&scene, SpecularModel::CookTorrance, 160, 90);

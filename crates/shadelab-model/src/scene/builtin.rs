@@ -278,7 +278,7 @@ pub fn default_scene() -> Scene {
         lights: default_lights(),
         ambient: [0.12; 3],
         camera: default_camera(),
-        meshes: Vec::new(),
+        meshes: Default::default(),
         illumination: Default::default(),
         textures: Vec::new(),
     }
@@ -341,7 +341,7 @@ pub fn single_shape_scene(name: &str, shape: Shape, tessellation: u32) -> Scene 
         lights: default_lights(),
         ambient: [0.12; 3],
         camera: Camera { eye: DVec3::new(0.0, 2.2, 4.6), target: DVec3::new(0.0, 0.8, 0.0), ..default_camera() },
-        meshes: Vec::new(),
+        meshes: Default::default(),
         illumination: Default::default(),
         textures: Vec::new(),
     }

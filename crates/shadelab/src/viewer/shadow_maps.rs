@@ -21,7 +21,7 @@ const FARTHEST_GREY: f32 = 220.0;
 /// to the scene's bounds).
 struct MapKey {
     objects: Vec<shadelab_model::Object>,
-    meshes: Vec<shadelab_model::mesh::TriangleMesh>,
+    meshes: shadelab_model::mesh::Meshes,
     lights: Vec<shadelab_model::Light>,
     face: u32,
     camera: Option<shadelab_model::Camera>,

@@ -9,7 +9,8 @@ fn mesh_objects_round_trip_with_and_without_normals() {
     let tris = crate::mesh::triangles(Shape::Cube, 2);
     let normals: Vec<[DVec3; 3]> = tris.iter().map(|t| [crate::mesh::face_normal(t).unwrap(); 3]).collect();
     scene.meshes =
-        vec![TriangleMesh::from_soup("soup", &tris, None), TriangleMesh::from_soup("faceted", &tris, Some(&normals))];
+        vec![TriangleMesh::from_soup("soup", &tris, None), TriangleMesh::from_soup("faceted", &tris, Some(&normals))]
+            .into();
     for (i, x) in [-2.0, 2.0].into_iter().enumerate() {
         scene.objects.push(Object {
             name: format!("mesh {i}"),

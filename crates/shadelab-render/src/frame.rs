@@ -23,6 +23,20 @@ impl Renderer {
     /// Write a scene's parameters (materials, lights, camera) into its uniforms. Cheap: the
     /// viewer calls it whenever a parameter changes; geometry stays.
     pub fn write_uniforms(&self, gpu_scene: &SceneGpu, scene: &Scene, target: &Target, settings: &RenderSettings) {
+        self.write_uniforms_for(gpu_scene, scene, target, settings, Program::for_scene(scene, settings));
+    }
+
+    /// [`Self::write_uniforms`] for the program already derived for this scene and these settings
+    /// (the viewer derives it once per change). Counts the write in `gpu_scene.uniform_writes`.
+    pub fn write_uniforms_for(
+        &self,
+        gpu_scene: &SceneGpu,
+        scene: &Scene,
+        target: &Target,
+        settings: &RenderSettings,
+        program: Program,
+    ) {
+        gpu_scene.uniform_writes.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
         let flags = if settings.debug_nonfinite { crate::uniforms::FLAG_DEBUG_NONFINITE } else { 0 }
             | settings.glass_view.code() << crate::uniforms::GLASS_VIEW_SHIFT;
         let g = GlobalsUniform::new(scene, target.width, target.height, flags, settings.specular);
@@ -41,7 +55,7 @@ impl Renderer {
         self.queue.write_buffer(&gpu_scene.objects_buf, 0, &bytes);
         *gpu_scene.glass_exits.lock().expect("not poisoned") = exits;
         *gpu_scene.glass_order.lock().expect("not poisoned") = crate::glass_pass::glass_order(scene);
-        let shadows = Program::for_scene(scene, settings).effects().has(Effect::CastShadows);
+        let shadows = program.effects().has(Effect::CastShadows);
         self.write_shadows(gpu_scene, scene, shadows, target.width as f64 / target.height.max(1) as f64);
     }
 

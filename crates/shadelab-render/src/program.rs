@@ -74,18 +74,27 @@ impl Program {
     /// The program that draws `scene` with `settings`: the shading mode, and the effects that
     /// `settings.specialization` picks (the scene's analysis, all of them, or a given set).
     pub fn for_scene(scene: &Scene, settings: &RenderSettings) -> Program {
+        let analyzed = match settings.specialization {
+            Specialization::Specialized => effects::analyze(scene, settings.specular).key,
+            _ => EffectKey::NONE,
+        };
+        Program::for_analysis(scene, settings, analyzed)
+    }
+
+    /// [`Self::for_scene`] with the scene's effect analysis already made (`analyzed`, its key;
+    /// used only when `settings` ask for the specialized program): the viewer analyzes a scene
+    /// once per change and derives everything from that.
+    pub fn for_analysis(scene: &Scene, settings: &RenderSettings, analyzed: EffectKey) -> Program {
         // The uber pipeline draws any scene: its loop reads the lights from the uniforms.
         let lights = match settings.specialization {
             Specialization::Uber => LightLoop::Dynamic,
             _ => LightLoop::for_scene(scene),
         };
         let effects = match settings.specialization {
-            Specialization::Specialized => {
-                let key = effects::analyze(scene, settings.specular).key;
-                // The lighting maps vary the lighting per pixel, which flat and Gouraud shading
-                // compute per face or vertex: Phong shading draws them.
-                if settings.shading == ShadingMode::Phong { key } else { key.without_all(&PER_PIXEL_LIGHTING) }
-            }
+            // The lighting maps vary the lighting per pixel, which flat and Gouraud shading
+            // compute per face or vertex: Phong shading draws them.
+            Specialization::Specialized if settings.shading == ShadingMode::Phong => analyzed,
+            Specialization::Specialized => analyzed.without_all(&PER_PIXEL_LIGHTING),
             Specialization::Uber => EffectKey::UBER,
             Specialization::Fixed(k) => k,
         };

@@ -55,6 +55,9 @@ pub struct SceneGpu {
     /// (`write_uniforms`): what the glass pass draws and how.
     pub(crate) glass_order: std::sync::Mutex<Vec<usize>>,
     pub(crate) glass_exits: std::sync::Mutex<Vec<u32>>,
+    /// How many times the uniforms were written: a caller that keeps them between frames sees
+    /// here whether another draw (another target, another scene's parameters) wrote over them.
+    pub uniform_writes: std::sync::atomic::AtomicU64,
 }
 
 impl SceneGpu {
@@ -287,6 +290,7 @@ impl Uploader {
             shadows: std::sync::Mutex::new(None),
             glass_order: Default::default(),
             glass_exits: Default::default(),
+            uniform_writes: Default::default(),
         })
     }
 }

@@ -520,3 +520,20 @@ fn a_link_written_by_the_viewer_opens_the_same_view() {
     assert!(is_error && msg.contains("shading=toon") && msg.contains("flat, gouraud, phong"), "{msg}");
     assert_eq!(bad.state().link("").0, "?scene=glass&shading=phong&model=cook-torrance&term=shadow");
 }
+
+#[test]
+fn the_frame_is_derived_once_per_change() {
+    let mut h = harness();
+    h.run_steps(3);
+    let before = h.state().derivations();
+    assert!(before >= 1, "the first frame derives");
+    h.run_steps(10);
+    assert_eq!(h.state().derivations(), before, "frames that change nothing derive nothing");
+    h.state_mut().scene_mut().materials[1].m = 0.3;
+    h.run_steps(3);
+    assert_eq!(h.state().derivations(), before + 1, "one change: one derivation, whatever the frames after it");
+    h.state_mut().set_term(shadelab_model::terms::Term::Diffuse);
+    h.run_steps(3);
+    assert_eq!(h.state().derivations(), before + 2, "a term is a change");
+    assert!(h.state_mut().scene_mut().ambient.iter().all(|&a| a > 0.0), "the term view leaves the scene as it is");
+}

@@ -7,6 +7,7 @@
 //! difference view (`difference`) and the lights' shadow maps (`shadow_maps`).
 
 mod blit;
+mod derive;
 mod difference;
 mod files;
 mod link;
@@ -157,6 +158,11 @@ pub struct Viewer {
     view_rect: Option<egui::Rect>,
     /// Frames drawn so far.
     frames: u64,
+    /// The frame as drawn, derived once per change (`derive.rs`).
+    derived: derive::Derived,
+    /// The derivation the view's uniforms were written from, and `SceneGpu::uniform_writes`
+    /// after that write: another count means another draw wrote over them.
+    uniforms_written: Option<(u64, u64)>,
     /// The link "copy link" wrote last, shown under the button.
     copied_link: Option<(String, Option<String>)>,
     /// In the browser: the screenshot being read back, downloaded once it is.
@@ -232,6 +238,8 @@ impl Viewer {
             marks: Default::default(),
             view_rect: None,
             frames: 0,
+            derived: Default::default(),
+            uniforms_written: None,
             copied_link: None,
             #[cfg(target_arch = "wasm32")]
             screenshot_reading: None,
@@ -297,6 +305,12 @@ impl Viewer {
     /// The shadow error map's numbers, once the shadow error map on show is current.
     pub fn shadow_difference(&self) -> Option<shadelab_render::image_error::ShadowStats> {
         self.difference.shadow_stats()
+    }
+
+    /// How many times the frame as drawn was derived (the effect analysis, the program, the
+    /// uniforms): once per change of the scene, the settings, the term or the view's size.
+    pub fn derivations(&self) -> u64 {
+        self.derived.count()
     }
 
     /// How many pipelines have been built so far (must not grow per frame).

@@ -6,7 +6,7 @@
 use super::{Viewer, overlays};
 use eframe::egui::{self, Color32, Rect, pos2};
 use shadelab_model::params;
-use shadelab_render::{Program, Target};
+use shadelab_render::Target;
 
 /// Format of the view's target: sRGB-encoded bytes, as the window and egui's textures hold them.
 const VIEW_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba8UnormSrgb;
@@ -67,13 +67,18 @@ impl Viewer {
         }
         self.ensure_view(w, h);
         let view = self.view.as_ref().expect("view just made");
-        // One term alone: the other terms' coefficients at 0 for this frame (and the reference).
-        let whole = (self.scene.ambient, self.scene.materials.clone(), self.scene.lights.clone());
-        self.term.apply(&mut self.scene);
-        // An area light too small on screen to show its area: a point light this frame, and why.
-        self.small_area_lights = shadelab_model::effects::draw_small_area_lights_as_points(&mut self.scene, h);
-        self.renderer.write_uniforms(&self.gpu_scene, &self.scene, &view.target, &self.settings);
-        let program = Program::for_scene(&self.scene, &self.settings);
+        // The frame as drawn, derived once per change (derive.rs); the uniforms written when it
+        // changed or when another draw (the difference view's, a screenshot's) wrote over them.
+        let drawn = self.derived.get(&self.scene, &self.settings, self.term, (w, h));
+        // Which derivation the uniforms hold, and the write count after writing them (the panel
+        // may have made this frame's derivation already).
+        let now = (drawn.derivation, self.gpu_scene.uniform_writes.load(std::sync::atomic::Ordering::Relaxed));
+        if self.uniforms_written != Some(now) {
+            self.renderer.write_uniforms_for(&self.gpu_scene, &drawn.scene, &view.target, &self.settings, drawn.program);
+            self.small_area_lights = drawn.small_area_lights.clone();
+            self.uniforms_written = Some((now.0, now.1 + 1));
+        }
+        let program = drawn.program;
         // With timestamps the frame is timed in the ring and never waited for (the panel shows
         // the newest time read back); without them the CPU's submit + wait is the only clock.
         self.frame_ms = if self.ring.timed() {
@@ -81,11 +86,11 @@ impl Viewer {
         } else {
             Some(self.timer.frame(&mut self.renderer, &self.gpu_scene, &view.target, program))
         };
-        self.boundary.draw(&self.renderer, &view.target, &self.scene);
-        self.creases.draw(&self.renderer, &view.target, &self.scene);
-        self.normals.draw(&self.renderer, &view.target, &self.scene);
+        self.boundary.draw(&self.renderer, &view.target, &drawn.scene);
+        self.creases.draw(&self.renderer, &view.target, &drawn.scene);
+        self.normals.draw(&self.renderer, &view.target, &drawn.scene);
         // The lights' maps this frame drew, for their panel sections (read back only on a change).
-        self.shadow_maps.update(ui.ctx(), &self.renderer, &self.gpu_scene, &self.scene);
+        self.shadow_maps.update(ui.ctx(), &self.renderer, &self.gpu_scene, &drawn.scene);
         // Another picture in the view's place (an egui texture), or the scene itself.
         let mut shown = None;
         let analytic = shadelab_model::scene_variants::is_analytic(&self.scene);
@@ -96,16 +101,15 @@ impl Viewer {
                 &ctx,
                 &mut self.renderer,
                 &self.gpu_scene,
-                &self.scene,
+                &drawn.scene,
                 &self.settings,
                 (w, h),
             ));
         } else if self.difference.enabled && analytic {
             let ctx = ui.ctx().clone();
             shown =
-                self.difference.update(&ctx, &mut self.renderer, &self.gpu_scene, &self.scene, &self.settings, (w, h));
+                self.difference.update(&ctx, &mut self.renderer, &self.gpu_scene, &drawn.scene, &self.settings, (w, h));
         }
-        (self.scene.ambient, self.scene.materials, self.scene.lights) = whole;
         let painter = ui.painter_at(rect);
         match shown {
             Some(t) => {

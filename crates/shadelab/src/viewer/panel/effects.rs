@@ -4,21 +4,16 @@
 use super::shading_meaning;
 use crate::viewer::Viewer;
 use eframe::egui::{self, Color32};
-use shadelab_render::Program;
 
 /// How often the panel looks again while a pipeline compiles on its worker thread.
 const BUILD_POLL: std::time::Duration = std::time::Duration::from_millis(50);
 
 impl Viewer {
     pub(super) fn effects_ui(&mut self, ui: &mut egui::Ui) {
-        // The lights as the last frame drew them: small area lights as point lights.
-        let lights = self.scene.lights.clone();
-        if let Some(view) = &self.view {
-            shadelab_model::effects::draw_small_area_lights_as_points(&mut self.scene, view.target.height);
-        }
-        let analysis = shadelab_model::effects::analyze(&self.scene, self.settings.specular);
-        let drawn = Program::for_scene(&self.scene, &self.settings).effects();
-        self.scene.lights = lights;
+        // The frame as the view draws it (derive.rs): its analysis and program, derived once.
+        let Some(size) = self.view.as_ref().map(|v| (v.target.width, v.target.height)) else { return };
+        let frame = self.derived.get(&self.scene, &self.settings, self.term, size);
+        let (analysis, drawn) = (frame.analysis.clone(), frame.program.effects());
         if self.renderer.pipelines.building() {
             ui.label(
                 egui::RichText::new(format!("compiling pipeline [{}]… drawn with the uber pipeline", drawn.label()))

@@ -28,6 +28,9 @@ impl Viewer {
             ui.label(format!("scene pass: — ms ({source})"));
         }
         ui.label(format!("adapter: {}", self.adapter));
+        let per_second = self.derived.per_second();
+        ui.label(format!("frame derived {} times ({per_second} in the last second)", self.derived.count()))
+            .on_hover_text("the effect analysis, the program and the uniforms: derived again only when the scene, the settings, the term or the view's size change");
         ui.label(format!(
             "{} triangles, {} lights, {} pipelines built",
             self.gpu_scene.triangle_count,

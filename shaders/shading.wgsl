@@ -158,34 +158,44 @@ fn shade(p: vec3<f32>, n_in: vec3<f32>, surface: Surface, pixel: vec2<f32>) -> v
             }
 #endif
 #endif
-            var visibility = 1.0;
-#if EFFECT_CAST_SHADOWS
-            visibility = shadow_visibility(i, light, origin, j, p, n, pixel);
-#endif
+            // The chosen model's term of this light (or point source), before its shadow.
+            var lit = vec3(0.0);
+            var modelled = false;
 #if EFFECT_LAMBERT_RULE
             if (globals.illumination == ILLUMINATION_LAMBERT) {
                 let li = clamp(s.radiance, vec3(0.0), vec3(1.0));
                 i_max = max(i_max, li);
-                total += visibility * lambert_rule_lit(object.r_d * c, li, s.form);
-                continue;
+                lit = lambert_rule_lit(object.r_d * c, li, s.form);
+                modelled = true;
             }
 #endif
 #if EFFECT_FOUR_TERM_SUM
-            if (globals.illumination == ILLUMINATION_SUM) {
+            if (!modelled && globals.illumination == ILLUMINATION_SUM) {
 #if EFFECT_TRANSMITTED_TERM
-                // The transmitted term is the light's, once (not per point source).
+                // The transmitted term is the light's, once (not per point source), unshadowed.
                 if (j == 0u) {
                     total += transmitted_term(s.radiance, c, object.transmission);
                 }
 #endif
-                total += visibility * sum_contribution(s.radiance, s.form, dot(n, v), c, object.r_d, object.r_s);
-                continue;
+                lit = sum_contribution(s.radiance, s.form, dot(n, v), c, object.r_d, object.r_s);
+                modelled = true;
             }
 #endif
-            total += visibility * light_contribution(
-                s, n, v, c, object.r_s, object.r_d, surface.m, surface.h, surface.mirror,
-                v_index, globals.specular_model,
-            );
+            if (!modelled) {
+                lit = light_contribution(
+                    s, n, v, c, object.r_s, object.r_d, surface.m, surface.h, surface.mirror,
+                    v_index, globals.specular_model,
+                );
+            }
+            // A term that adds nothing here (the point faces away from the light) needs no
+            // shadow query: its map lookups are skipped, as the f64 twin skips its shadow ray.
+            if (any(lit != vec3(0.0))) {
+                var visibility = 1.0;
+#if EFFECT_CAST_SHADOWS
+                visibility = shadow_visibility(i, light, origin, j, p, n, pixel);
+#endif
+                total += visibility * lit;
+            }
         }
     }
 #if EFFECT_LAMBERT_RULE

@@ -96,7 +96,7 @@ pub const BLOCKER_DIST_MIN: f64 = 1e-4;
 pub const QUADRIC_A_MIN: f64 = 1e-30;
 
 /// All guards by name, in the order they are declared (used by the WGSL ↔ Rust equality test and
-/// by the README table).
+/// by the table of guards in docs/model.md §9).
 pub const ALL: &[(&str, f64)] = &[
     ("NORMALIZE_MIN_LEN2", NORMALIZE_MIN_LEN2),
     ("N_DOT_V_MIN", N_DOT_V_MIN),

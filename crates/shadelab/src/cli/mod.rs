@@ -347,7 +347,8 @@ pub struct SceneArgs {
           help = within("Shadow map side in texels of every light", SHADOW_RESOLUTION))]
     pub shadow_resolution: Option<u32>,
     /// Shadow map filter of every light: hard (one comparison), pcf (the hardware 2×2
-    /// comparison) or poisson (rotated Poisson-disk taps).
+    /// comparison), poisson (rotated Poisson-disk taps) or pcss (a penumbra as wide as an area
+    /// light's similar triangles give, --pcss-taps taps).
     #[arg(long, value_name = "FILTER", value_parser = values::named::<ShadowFilter>())]
     pub shadow_filter: Option<ShadowFilter>,
     #[arg(long, value_name = "N", value_parser = values::count(PCSS_TAPS),

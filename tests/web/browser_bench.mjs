@@ -3,26 +3,16 @@
 // browser_tests.mjs and prints a Markdown table. Medians of RUNS page loads, and of the frame
 // intervals over FRAME_SECONDS of continuous rendering.
 
-import { createRequire } from "module";
+import { env, launch } from "./browser.mjs";
 import { execFileSync } from "child_process";
 import fs from "fs";
 import path from "path";
 import zlib from "zlib";
 
-const env = (k) => {
-  const v = process.env[k];
-  if (!v) throw new Error(`${k} is not set (run through cargo xtask web --bench)`);
-  return v;
-};
 const URL_BASE = env("SHADELAB_URL");
 const BIN = env("SHADELAB_BIN");
 const SITE = env("SHADELAB_SITE");
 const OUT = env("SHADELAB_OUT");
-const { chromium } = createRequire(path.join(env("PLAYWRIGHT"), "/"))("playwright-core");
-const CHROMIUM_ARGS = [
-  "--no-sandbox", "--disable-background-networking", "--disable-component-update", "--disable-sync",
-  "--enable-unsafe-webgpu", "--enable-features=Vulkan", "--use-vulkan=swiftshader", "--use-angle=swiftshader",
-];
 // The native viewer's default window, so both draw a view of the same size.
 const VIEWPORT = { width: 1280, height: 760 };
 const RUNS = 5;
@@ -39,7 +29,7 @@ const wasm = fs.readFileSync(path.join(SITE, "shadelab_web_bg.wasm"));
 const js = fs.readFileSync(path.join(SITE, "shadelab_web.js"));
 const gz = (b) => zlib.gzipSync(b, { level: 9 }).length;
 
-const browser = await chromium.launch({ executablePath: process.env.CHROMIUM || "/usr/bin/chromium", args: CHROMIUM_ARGS });
+const browser = await launch();
 const version = browser.version();
 
 async function waitFor(page, pred, seconds) {

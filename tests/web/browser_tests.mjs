@@ -5,21 +5,15 @@
 // holding node_modules/playwright-core), SHADELAB_ROOT and SHADELAB_OUT (where images go).
 // It prints cargo's "test … ok" lines and one "test result:" line, which xtask counts.
 
-import { createRequire } from "module";
+import { env, launch } from "./browser.mjs";
 import { execFileSync } from "child_process";
 import fs from "fs";
 import path from "path";
 
-const env = (k) => {
-  const v = process.env[k];
-  if (!v) throw new Error(`${k} is not set (run through cargo xtask test)`);
-  return v;
-};
 const URL_BASE = env("SHADELAB_URL");
 const BIN = env("SHADELAB_BIN");
 const ROOT = env("SHADELAB_ROOT");
 const OUT = env("SHADELAB_OUT");
-const { chromium } = createRequire(path.join(env("PLAYWRIGHT"), "/"))("playwright-core");
 const SAMPLES = path.join(ROOT, "../shared/gltf-samples");
 
 // The web page against the native render of the same view: FLIP mean at most this. Measured at
@@ -28,12 +22,6 @@ const SAMPLES = path.join(ROOT, "../shared/gltf-samples");
 // llvmpipe rasterize differently. The nearest wrong picture, Gouraud for Phong shading, gives
 // 0.056; the diffuse term alone for the whole model 0.139.
 const MAX_FLIP_AGAINST_NATIVE = 0.02;
-// Chromium's WebGPU runs on SwiftShader only when headless; these flags select it (without the
-// last three, presenting to a canvas loses the device).
-const CHROMIUM_ARGS = [
-  "--no-sandbox", "--disable-background-networking", "--disable-component-update", "--disable-sync",
-  "--enable-unsafe-webgpu", "--enable-features=Vulkan", "--use-vulkan=swiftshader", "--use-angle=swiftshader",
-];
 // The view (the page less the panel, 940×520) is wider than 16:9, so the viewer draws the scene's
 // camera as it is, as `shadelab render` does (narrower views widen the field of view to keep the
 // scene's width: `Camera::fitted`).
@@ -44,10 +32,7 @@ const START_S = 120;
 const REFERENCE_S = 300;
 
 fs.mkdirSync(OUT, { recursive: true });
-const browser = await chromium.launch({
-  executablePath: process.env.CHROMIUM || "/usr/bin/chromium",
-  args: CHROMIUM_ARGS,
-});
+const browser = await launch();
 
 function check(cond, what) {
   if (!cond) throw new Error(what);

@@ -35,6 +35,25 @@ fn ensure_browser_tools(node_dir: &Path) -> Result<(), String> {
     if ok { Ok(()) } else { Err(format!("npm install {PLAYWRIGHT_CORE} failed")) }
 }
 
+/// `node tests/web/SCRIPT` on the site served at `address`, with what every script reads: the
+/// native binary, the driver, the browser, where its images go (`out`, under the repository).
+fn node_script(script: &str, address: &str, out: &str, icd: &Path) -> Command {
+    let root = root();
+    let mut cmd = Command::new("node");
+    cmd.arg(root.join("tests/web").join(script))
+        .current_dir(&root)
+        .env("SHADELAB_URL", address)
+        .env("SHADELAB_BIN", root.join("target/release/shadelab"))
+        .env("SHADELAB_OUT", root.join(out))
+        .env("PLAYWRIGHT", root.join("target/web-node"))
+        .env("CHROMIUM", CHROMIUM)
+        // The native renders the page is held to run on lavapipe, like every other test.
+        .env("VK_DRIVER_FILES", icd)
+        .env("VK_ICD_FILENAMES", icd)
+        .env("SHADELAB_ADAPTER", "lavapipe");
+    cmd
+}
+
 /// Build, serve and test the web build; each browser test counts as one test.
 pub fn browser_tests(icd: &Path, count: &mut Count) {
     let root = root();
@@ -46,19 +65,8 @@ pub fn browser_tests(icd: &Path, count: &mut Count) {
         Err(e) => return count.check("web build and browser tools", Err(e)),
     };
     eprintln!("xtask: the web build is served on {address}");
-    let mut cmd = Command::new("node");
-    cmd.arg(root.join("tests/web/browser_tests.mjs"))
-        .current_dir(&root)
-        .env("SHADELAB_URL", &address)
-        .env("SHADELAB_BIN", root.join("target/release/shadelab"))
-        .env("SHADELAB_ROOT", &root)
-        .env("SHADELAB_OUT", root.join("target/web-test"))
-        .env("PLAYWRIGHT", &node_dir)
-        .env("CHROMIUM", CHROMIUM)
-        // The native renders the page is held to run on lavapipe, like every other test.
-        .env("VK_DRIVER_FILES", icd)
-        .env("VK_ICD_FILENAMES", icd)
-        .env("SHADELAB_ADAPTER", "lavapipe");
+    let mut cmd = node_script("browser_tests.mjs", &address, "target/web-test", icd);
+    cmd.env("SHADELAB_ROOT", &root);
     let (ok, c) = run_counting(&mut cmd);
     count.passed += c.passed;
     count.failed += c.failed;
@@ -98,18 +106,9 @@ pub fn bench() -> Result<(), String> {
     let text = String::from_utf8_lossy(&out.stdout);
     let (frame, pass) = native_viewer_timing(&text).ok_or_else(|| format!("no timing summary in: {text}"))?;
     let address = serve(&site, 0)?;
-    let ok = run(Command::new("node")
-        .arg(root.join("tests/web/browser_bench.mjs"))
-        .env("SHADELAB_URL", &address)
-        .env("SHADELAB_BIN", root.join("target/release/shadelab"))
+    let ok = run(node_script("browser_bench.mjs", &address, "target/web-bench", &icd)
         .env("SHADELAB_SITE", &site)
-        .env("SHADELAB_OUT", root.join("target/web-bench"))
-        .env("PLAYWRIGHT", &node_dir)
-        .env("CHROMIUM", CHROMIUM)
-        .env("NATIVE_VIEWER", format!("{{\"frame\":{frame},\"pass\":{pass}}}"))
-        .env("VK_DRIVER_FILES", &icd)
-        .env("VK_ICD_FILENAMES", &icd)
-        .env("SHADELAB_ADAPTER", "lavapipe"));
+        .env("NATIVE_VIEWER", format!("{{\"frame\":{frame},\"pass\":{pass}}}")));
     if ok { Ok(()) } else { Err("tests/web/browser_bench.mjs failed".into()) }
 }
 

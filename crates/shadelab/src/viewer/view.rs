@@ -74,7 +74,13 @@ impl Viewer {
         // may have made this frame's derivation already).
         let now = (drawn.derivation, self.gpu_scene.uniform_writes.load(std::sync::atomic::Ordering::Relaxed));
         if self.uniforms_written != Some(now) {
-            self.renderer.write_uniforms_for(&self.gpu_scene, &drawn.scene, &view.target, &self.settings, drawn.program);
+            self.renderer.write_uniforms_for(
+                &self.gpu_scene,
+                &drawn.scene,
+                &view.target,
+                &self.settings,
+                drawn.program,
+            );
             self.small_area_lights = drawn.small_area_lights.clone();
             self.uniforms_written = Some((now.0, now.1 + 1));
         }

@@ -255,7 +255,7 @@ fn read_external(cx: &Cx, what: &str, uri: &str, declared: u64, externals: Exter
 }
 
 /// `%20` → space, and so on (URIs in glTF are percent-encoded, RFC 3986); a bad escape stays.
-fn percent_decode(s: &str) -> String {
+pub fn percent_decode(s: &str) -> String {
     let b = s.as_bytes();
     let mut out = Vec::with_capacity(b.len());
     let mut i = 0;

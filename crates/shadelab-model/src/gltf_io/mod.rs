@@ -76,8 +76,8 @@ mod scene_file;
 pub mod synthetic;
 mod textures;
 
-pub use container::Externals;
 pub(crate) use container::glb_container;
+pub use container::{Externals, percent_decode};
 pub use scene_file::{
     load_scene, load_scene_from_bytes, load_scene_from_files, load_scene_from_slice, save_scene, scene_to_glb,
     scene_to_gltf_json,

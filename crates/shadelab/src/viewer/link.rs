@@ -47,26 +47,8 @@ fn on_off(value: &str) -> Option<bool> {
 
 /// `%41` → `A`, `+` → space (the form a browser writes a query in); a bad escape stays as it is.
 fn decode(text: &str) -> String {
-    let b = text.as_bytes();
-    let mut out = Vec::with_capacity(b.len());
-    let mut i = 0;
-    while i < b.len() {
-        let hex = |c: u8| (c as char).to_digit(16);
-        match b[i] {
-            b'+' => out.push(b' '),
-            b'%' => match (b.get(i + 1).and_then(|&c| hex(c)), b.get(i + 2).and_then(|&c| hex(c))) {
-                (Some(h), Some(l)) => {
-                    out.push((h * 16 + l) as u8);
-                    i += 3;
-                    continue;
-                }
-                _ => out.push(b'%'),
-            },
-            c => out.push(c),
-        }
-        i += 1;
-    }
-    String::from_utf8_lossy(&out).into_owned()
+    // `+` first: an encoded plus (`%2B`) stays a plus.
+    shadelab_model::gltf_io::percent_decode(&text.replace('+', " "))
 }
 
 /// `A` stays, a space → `%20`, and so on: the characters a query value may hold as they are.

@@ -8,14 +8,6 @@
 // (crates/shadelab-model/src/reference/glass.rs), which follows every branch exactly.
 #if EFFECT_TRANSMISSION
 
-// What is behind the object: the target's colour before the object was drawn, the opaque
-// scene's depth, and the object's back faces (world position, w = 1 where covered; outward
-// normal), drawn just before it for a mesh.
-@group(3) @binding(8) var behind_color: texture_2d<f32>;
-@group(3) @binding(9) var behind_depth: texture_2d<f32>;
-@group(3) @binding(10) var back_position: texture_2d<f32>;
-@group(3) @binding(11) var back_normal: texture_2d<f32>;
-
 // Exits the path tries inside an object before it gives up: each total internal reflection
 // takes one more. The light of a path still inside after them is lost (the TIR view shows where).
 const GLASS_TIR_BOUNCES: u32 = 4u;

@@ -1,112 +1,14 @@
-// The three shading modes (docs/model.md §8) over the chosen illumination model (docs/model.md
-// §3a): the Phong model I = I_a + Σ_lights I_L · (r_d·C·(N·L) + r_s·S), S = Phong or Cook–Torrance
-// specular, the Lambert rule or the four-term sum (models.wgsl); the f64 twin of `shade` is
-// crates/shadelab-model/src/lighting/shading.rs.
-// Flat: lit once per face at its centroid (cs_flat), the face's colour read by each of its
-// corners. Gouraud: lit once per vertex (cs_gouraud), the colour read by the vertex stage and
-// interpolated.
-// Phong: normals interpolated, renormalized, lit per pixel.
+// The chosen illumination model at one point (docs/model.md §3a) and the material and normal at
+// a pixel: the Phong model I = I_a + Σ_lights I_L · (r_d·C·(N·L) + r_s·S), S = Phong or
+// Cook–Torrance specular, the Lambert rule or the four-term sum (models.wgsl). The f64 twin of
+// `shade` is crates/shadelab-model/src/lighting/shading.rs. The shading modes' stages that call
+// these are in entry_points.wgsl, the uniforms in types.wgsl and bindings.wgsl.
 
 // Each pipeline's module holds only the effects its scene calls for: the `#if EFFECT_…` blocks
-// (see crates/shadelab-model/src/effects/declared.rs). The "uber" permutation keeps them all and leaves
-// the choice to the uniforms (globals.specular_model, r_s, α, …).
+// (see crates/shadelab-model/src/effects/declared.rs). The "uber" permutation keeps them all and
+// leaves the choice to the uniforms (globals.specular_model, r_s, α, …).
 
-struct Globals {
-    view_proj: mat4x4<f32>,
-    // The eye, homogeneous: (position, 1) for a perspective camera, (−forward, 0) for an
-    // orthographic one; the view vector is camera_pos.xyz − p·camera_pos.w.
-    camera_pos: vec4<f32>,
-    // rgb: ambient intensity I_amb.
-    ambient: vec4<f32>,
-    light_count: u32,
-    // bit 0: paint non-finite pixels magenta.
-    flags: u32,
-    // Which specular term S is: SPECULAR_PHONG or SPECULAR_COOK_TORRANCE.
-    specular_model: u32,
-    // Which illumination model: ILLUMINATION_PHONG, _LAMBERT or _SUM (models.wgsl).
-    illumination: u32,
-    lights: array<Light, MAX_LIGHTS>,
-}
-
-struct Object {
-    model: mat4x4<f32>,
-    // Upper 3×3: carries object-space normals to world space ((R S)^-T).
-    normal_matrix: mat4x4<f32>,
-    // rgb: surface colour C.
-    color: vec4<f32>,
-    // rgb: normal-incidence reflectance μ.
-    mu: vec4<f32>,
-    r_s: f32,
-    r_d: f32,
-    r_a: f32,
-    m: f32,
-    h: f32,
-    // 1: the Phong "mirror" setting (h = ∞).
-    mirror: u32,
-    // The four-term sum's 1 − t (glTF's transmission factor; 0 is opaque).
-    transmission: f32,
-    // KHR_texture_transform of the base colour texture: rotation, and offset.xy, scale.zw.
-    uv_rotation: f32,
-    // rgb: the part of μ the base colour sets (surface.wgsl).
-    mu_tinted: vec4<f32>,
-    uv_offset_scale: vec4<f32>,
-    // rgb: M·F0, the dielectric share of μ the metallic factor replaced (surface.wgsl).
-    metallic_f0: vec4<f32>,
-    // rgb: emission I_e.
-    emission: vec4<f32>,
-    // The metallic–roughness, occlusion and emissive textures' transforms: offset.xy, scale.zw;
-    // their rotations in uv_rotations.xyz.
-    metal_roughness_uv: vec4<f32>,
-    occlusion_uv: vec4<f32>,
-    emissive_uv: vec4<f32>,
-    uv_rotations: vec4<f32>,
-    // Which of the material's texture slots hold a texture (MAP_… in surface.wgsl).
-    maps: u32,
-    occlusion_strength: f32,
-    normal_scale: f32,
-    // The normal texture's transform (its rotation: uv_rotations.w).
-    normal_uv: vec4<f32>,
-    // World to object space (the glass pass's analytic exit, glass.wgsl).
-    inverse_model: mat4x4<f32>,
-    // rgb: the refractive index v per channel; w: 1 where the channels differ.
-    ior: vec4<f32>,
-    // rgb: the absorption coefficient a per channel per world unit.
-    absorption: vec4<f32>,
-    // Shape::exit_code (SHAPE_MESH: the back faces).
-    exit_shape: u32,
-    // The absorption form picked for the object (ABSORPTION_…).
-    absorption_form: u32,
-    // The longest path inside: the path-length view's white.
-    longest_chord: f32,
-}
-
-const FLAG_DEBUG_NONFINITE: u32 = 1u;
 const NONFINITE_COLOR: vec3<f32> = vec3(1.0, 0.0, 1.0);
-
-@group(0) @binding(0) var<uniform> globals: Globals;
-@group(1) @binding(0) var<uniform> object: Object;
-
-// The per-vertex modes' lighting passes (@group(3); binding 0 is the shadow pass's): a compute
-// pass lights each point once into `lit_colors_out` and the vertex stage reads `lit_colors`.
-// cs_flat reads the flat mesh's corners (FLAT_CORNER_FLOATS floats each, three per face) and
-// writes one colour per face; cs_gouraud reads the smooth vertices (SMOOTH_VERTEX_FLOATS floats
-// each) and writes one colour per vertex. Each dispatch binds one chunk of input and output.
-const FLAT_CORNER_FLOATS: u32 = 9u;
-const SMOOTH_VERTEX_FLOATS: u32 = 6u;
-@group(3) @binding(1) var<storage, read> lit_points: array<f32>;
-@group(3) @binding(2) var<storage, read_write> lit_colors_out: array<vec4<f32>>;
-@group(3) @binding(3) var<storage, read> lit_colors: array<vec4<f32>>;
-
-// The light loop of a pipeline built for its scene's lights (LightLoop in
-// crates/shadelab-render/src/light_loop.rs): LOOP_LIGHTS lights whose kinds are LOOP_KINDS,
-// LOOP_KIND_BITS a slot. Both are known when the pipeline is built, so the compiler unrolls the
-// loop, reads each light's uniforms at a fixed offset and keeps only its kind's code. The default,
-// LOOP_DYNAMIC, reads the count and the kinds from the uniforms (the uber pipeline).
-const LOOP_DYNAMIC: u32 = 0xffffffffu;
-const LOOP_KIND_BITS: u32 = 3u;
-const LOOP_KIND_MASK: u32 = 7u;
-override LOOP_LIGHTS: u32 = LOOP_DYNAMIC;
-override LOOP_KINDS: u32 = 0u;
 
 // The illumination model at world point `p` with (not necessarily unit) normal `n_in`; `pixel`
 // seeds the shadow filter's per-pixel rotation (read only with cast shadows). The Lambert rule's
@@ -116,10 +18,12 @@ fn shade(p: vec3<f32>, n_in: vec3<f32>, surface: Surface, pixel: vec2<f32>) -> v
     // A zero normal (e.g. interpolated between opposite vertex normals) faces the viewer.
     let n = safe_normalize(n_in, v);
     let c = surface.c;
-    // The Fresnel index is used by Cook–Torrance only.
+    // The Fresnel index and the microfacet terms are Cook–Torrance's only.
     var v_index = vec3(1.0);
+    var terms = MICROFACET_CHAPTER;
 #if EFFECT_SPECULAR_COOK_TORRANCE
     v_index = fresnel_v_from_mu(surface.mu);
+    terms = object.microfacet;
 #endif
     var total = vec3(0.0);
 #if EFFECT_AMBIENT
@@ -184,7 +88,7 @@ fn shade(p: vec3<f32>, n_in: vec3<f32>, surface: Surface, pixel: vec2<f32>) -> v
             if (!modelled) {
                 lit = light_contribution(
                     s, n, v, c, object.r_s, object.r_d, surface.m, surface.h, surface.mirror,
-                    v_index, globals.specular_model,
+                    v_index, globals.specular_model, terms,
                 );
             }
             // A term that adds nothing here (the point faces away from the light) needs no
@@ -345,252 +249,4 @@ fn normal_to_world(n: vec3<f32>) -> vec3<f32> {
 // vary from vertex to vertex.
 fn vertex_seed(p: vec3<f32>) -> vec2<f32> {
     return (p.xz + p.yy) * 1024.0;
-}
-
-struct SmoothIn {
-    @location(0) position: vec3<f32>,
-    @location(1) normal: vec3<f32>,
-#if TEXTURE_COORDS
-    @location(2) uv: vec2<f32>,
-#endif
-#if EFFECT_VERTEX_COLORS
-    @location(3) tint: vec3<f32>,
-#endif
-#if EFFECT_NORMAL_TEXTURE
-    @location(4) tangent: vec4<f32>,
-#endif
-}
-
-struct FlatIn {
-    @location(0) position: vec3<f32>,
-#if TEXTURE_COORDS
-    @location(2) uv: vec2<f32>,
-#endif
-#if EFFECT_VERTEX_COLORS
-    @location(3) tint: vec3<f32>,
-#endif
-}
-
-// The per-vertex modes' outputs: the colour (with a split, C ⊙ A), its rest B, and what tints C.
-struct ColorOut {
-    @builtin(position) clip: vec4<f32>,
-    @location(0) color: vec3<f32>,
-#if EFFECT_BASE_COLOR_TEXTURE||EFFECT_VERTEX_COLORS
-    @location(1) rest: vec3<f32>,
-#endif
-#if TEXTURE_COORDS
-    @location(2) uv: vec2<f32>,
-#endif
-#if EFFECT_VERTEX_COLORS
-    @location(3) tint: vec3<f32>,
-#endif
-}
-
-struct FlatOut {
-    @builtin(position) clip: vec4<f32>,
-    @location(0) @interpolate(flat) color: vec3<f32>,
-#if EFFECT_BASE_COLOR_TEXTURE||EFFECT_VERTEX_COLORS
-    @location(1) @interpolate(flat) rest: vec3<f32>,
-#endif
-#if TEXTURE_COORDS
-    @location(2) uv: vec2<f32>,
-#endif
-#if EFFECT_VERTEX_COLORS
-    @location(3) tint: vec3<f32>,
-#endif
-}
-
-struct PhongOut {
-    @builtin(position) clip: vec4<f32>,
-    @location(0) world_pos: vec3<f32>,
-    @location(1) world_normal: vec3<f32>,
-#if TEXTURE_COORDS
-    @location(2) uv: vec2<f32>,
-#endif
-#if EFFECT_VERTEX_COLORS
-    @location(3) tint: vec3<f32>,
-#endif
-#if EFFECT_NORMAL_TEXTURE
-    // World tangent (xyz, by the model matrix) and bitangent sign (w).
-    @location(4) world_tangent: vec4<f32>,
-#endif
-}
-
-// One invocation per face: the model at the face's centroid with its normal (its first corner
-// holds both), the only evaluation flat shading makes.
-@compute @workgroup_size(64)
-fn cs_flat(@builtin(global_invocation_id) gid: vec3<u32>) {
-    let face = gid.x;
-    if (face >= lit_count()) {
-        return;
-    }
-    let at = face * 3u * FLAT_CORNER_FLOATS;
-    let normal = vec3(lit_points[at + 3u], lit_points[at + 4u], lit_points[at + 5u]);
-    let centroid = vec3(lit_points[at + 6u], lit_points[at + 7u], lit_points[at + 8u]);
-    let c = to_world(centroid);
-    write_lit(face, c, normal_to_world(normal), vertex_seed(c));
-}
-
-@vertex
-fn vs_flat(in: FlatIn, @builtin(vertex_index) corner: u32) -> FlatOut {
-    var out: FlatOut;
-    out.clip = globals.view_proj * vec4(to_world(in.position), 1.0);
-    let lit = read_lit(corner / 3u);
-    out.color = lit[0];
-#if EFFECT_BASE_COLOR_TEXTURE||EFFECT_VERTEX_COLORS
-    out.rest = lit[1];
-#endif
-#if TEXTURE_COORDS
-    out.uv = in.uv;
-#endif
-#if EFFECT_VERTEX_COLORS
-    out.tint = in.tint;
-#endif
-    return out;
-}
-
-@fragment
-fn fs_flat(in: FlatOut) -> @location(0) vec4<f32> {
-    var g: ColorOut;
-    g.clip = in.clip;
-    g.color = in.color;
-#if EFFECT_BASE_COLOR_TEXTURE||EFFECT_VERTEX_COLORS
-    g.rest = in.rest;
-#endif
-#if TEXTURE_COORDS
-    g.uv = in.uv;
-#endif
-#if EFFECT_VERTEX_COLORS
-    g.tint = in.tint;
-#endif
-    return finish(per_vertex_pixel(g));
-}
-
-// One invocation per smooth vertex: the model at the vertex, the only evaluation Gouraud shading
-// makes. (A compute pass, not the vertex stage: llvmpipe runs vertex stages on one thread and
-// compute on all of its threads.)
-@compute @workgroup_size(64)
-fn cs_gouraud(@builtin(global_invocation_id) gid: vec3<u32>) {
-    let v = gid.x;
-    if (v >= lit_count()) {
-        return;
-    }
-    let at = v * SMOOTH_VERTEX_FLOATS;
-    let position = vec3(lit_points[at], lit_points[at + 1u], lit_points[at + 2u]);
-    let normal = vec3(lit_points[at + 3u], lit_points[at + 4u], lit_points[at + 5u]);
-    let p = to_world(position);
-    write_lit(v, p, normal_to_world(normal), vertex_seed(p));
-}
-
-// Gouraud's vertex stage, shared by its two interpolations: the vertex's colour from cs_gouraud.
-fn gouraud_vertex(in: SmoothIn, vertex: u32) -> ColorOut {
-    var out: ColorOut;
-    out.clip = globals.view_proj * vec4(to_world(in.position), 1.0);
-    let lit = read_lit(vertex);
-    out.color = lit[0];
-#if EFFECT_BASE_COLOR_TEXTURE||EFFECT_VERTEX_COLORS
-    out.rest = lit[1];
-#endif
-#if TEXTURE_COORDS
-    out.uv = in.uv;
-#endif
-#if EFFECT_VERTEX_COLORS
-    out.tint = in.tint;
-#endif
-    return out;
-}
-
-// The per-vertex modes' colour at a pixel: the face's or interpolated colour, tinted where it is
-// split (t ⊙ (C ⊙ A) + B).
-fn per_vertex_pixel(in: ColorOut) -> vec3<f32> {
-    var color = in.color;
-    var uv = vec2(0.0);
-#if TEXTURE_COORDS
-    uv = in.uv;
-#endif
-#if EFFECT_BASE_COLOR_TEXTURE||EFFECT_VERTEX_COLORS
-    var tint = vec3(1.0);
-#if EFFECT_VERTEX_COLORS
-    tint = in.tint;
-#endif
-    color = pixel_tint(uv, tint) * in.color + in.rest;
-#endif
-    return color + pixel_emission(uv);
-}
-
-@vertex
-fn vs_gouraud(in: SmoothIn, @builtin(vertex_index) vertex: u32) -> ColorOut {
-    return gouraud_vertex(in, vertex);
-}
-
-@fragment
-fn fs_gouraud(in: ColorOut) -> @location(0) vec4<f32> {
-    return finish(per_vertex_pixel(in));
-}
-
-// Phong shading's vertex stage, shared by its two interpolations.
-fn phong_vertex(in: SmoothIn) -> PhongOut {
-    var out: PhongOut;
-    out.world_pos = to_world(in.position);
-    out.clip = globals.view_proj * vec4(out.world_pos, 1.0);
-    out.world_normal = normal_to_world(in.normal);
-#if TEXTURE_COORDS
-    out.uv = in.uv;
-#endif
-#if EFFECT_VERTEX_COLORS
-    out.tint = in.tint;
-#endif
-#if EFFECT_NORMAL_TEXTURE
-    out.world_tangent = vec4((object.model * vec4(in.tangent.xyz, 0.0)).xyz, in.tangent.w);
-#endif
-    return out;
-}
-
-@vertex
-fn vs_phong(in: SmoothIn) -> PhongOut {
-    return phong_vertex(in);
-}
-
-// Phong shading's interpolants at a pixel: texture coordinates, tint and the shading normal.
-struct PixelInputs {
-    texcoord: vec2<f32>,
-    tint: vec3<f32>,
-    normal: vec3<f32>,
-}
-
-fn pixel_inputs(in: PhongOut) -> PixelInputs {
-    var out = PixelInputs(vec2(0.0), vec3(1.0), vec3(0.0));
-#if TEXTURE_COORDS
-    out.texcoord = in.uv;
-#endif
-#if EFFECT_VERTEX_COLORS
-    out.tint = in.tint;
-#endif
-    var tangent = vec4(0.0);
-#if EFFECT_NORMAL_TEXTURE
-    tangent = in.world_tangent;
-#endif
-    out.normal = pixel_normal(out.texcoord, in.world_normal, tangent);
-    return out;
-}
-
-@fragment
-fn fs_phong(in: PhongOut) -> @location(0) vec4<f32> {
-    let px = pixel_inputs(in);
-    let lit = shade(in.world_pos, px.normal, pixel_surface(px.texcoord, px.tint), in.clip.xy);
-    return finish(lit + pixel_emission(px.texcoord));
-}
-
-// The null-shader baseline of the cost study: the same geometry, vertex fetch, transform and
-// depth test, but no lighting at all (a constant colour). What rasterizing the scene costs.
-const BASELINE_COLOR: vec3<f32> = vec3(0.5, 0.5, 0.5);
-
-@vertex
-fn vs_baseline(in: SmoothIn) -> @builtin(position) vec4<f32> {
-    return globals.view_proj * vec4(to_world(in.position), 1.0);
-}
-
-@fragment
-fn fs_baseline() -> @location(0) vec4<f32> {
-    return vec4(BASELINE_COLOR, 1.0);
 }

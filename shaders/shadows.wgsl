@@ -1,8 +1,9 @@
 // Cast shadows from shadow maps (docs/model.md §0, §6): the visibility of a light from a surface
 // point, by comparing the point's depth seen from the light with the depth the light's shadow
 // pass stored (crates/shadelab-render/src/shadow_pass.rs). The projection math is in
-// shadow_math.wgsl; the f64 reference traces exact shadow rays instead of sampling maps. Everything here exists only in the permutations
-// with EFFECT_CAST_SHADOWS, the bind group @group(2) included.
+// shadow_math.wgsl, the uniform structs in types.wgsl and the maps' bindings in bindings.wgsl; the
+// f64 reference traces exact shadow rays instead of sampling maps. Everything here exists only in
+// the permutations with EFFECT_CAST_SHADOWS.
 
 #if EFFECT_CAST_SHADOWS
 // Codes Rust writes into `ShadowLight.shadow_filter` (ShadowFilter::code in
@@ -18,54 +19,6 @@ const SHADOW_POISSON_TAPS: u32 = 16u;
 const SHADOW_POISSON_RADIUS_TEXELS: f32 = 2.0;
 const SHADOW_CASCADE_MARGIN_TEXELS: f32 = 3.0;
 const SHADOW_PCSS_NEAREST_BLOCKER: f32 = 0.1;
-
-// One light's shadow map in the frame's array of maps.
-struct ShadowLight {
-    first_layer: u32,
-    // 0: the light casts no shadow; 1: a spot light or a directional light's one map; 2…4: a
-    // directional light's cascades, finest first; 6 per cube: a point or area light's faces.
-    layers: u32,
-    // SHADOW_FILTER_HARD, _PCF or _POISSON.
-    shadow_filter: u32,
-    // 1: perspective (point, spot), texel_world grows with the distance along the view axis.
-    perspective: u32,
-    // World size of one texel (per unit of distance along the view axis when perspective).
-    texel_world: f32,
-    // Share of the layer's side the light's map uses (its resolution / the array's side).
-    uv_scale: f32,
-    // 1 / the array's side: one texel in layer coordinates.
-    texel_uv: f32,
-    // The light's size for its penumbra (0: no area); the map's depth range along its axis.
-    light_size: f32,
-    near: f32,
-    far: f32,
-    // Cube lights: how many cubes follow first_layer (one per point source of an area light
-    // drawn as points, as many as fit); 1 otherwise.
-    cubes: u32,
-    // Taps of each of PCSS's two passes (ShadowSettings::pcss_taps, 4 to 64).
-    pcss_taps: u32,
-}
-
-struct Shadows {
-    // Each layer's light view-projection.
-    matrices: array<mat4x4<f32>, MAX_SHADOW_LAYERS>,
-    lights: array<ShadowLight, MAX_LIGHTS>,
-}
-
-// The shadow pass's view of the same buffer: only the matrices.
-struct ShadowCasters {
-    matrices: array<mat4x4<f32>, MAX_SHADOW_LAYERS>,
-}
-
-@group(2) @binding(0) var<uniform> shadows: Shadows;
-@group(2) @binding(1) var shadow_maps: texture_depth_2d_array;
-// Bilinear 2×2 compare (Pcf, Poisson) and one nearest compare (Hard; its binding exists in the
-// layout whether or not the permutation samples it).
-@group(2) @binding(2) var shadow_linear: sampler_comparison;
-#if EFFECT_SHADOW_HARD
-@group(2) @binding(3) var shadow_nearest: sampler_comparison;
-#endif
-@group(3) @binding(0) var<uniform> shadow_casters: ShadowCasters;
 
 #if EFFECT_SHADOW_POISSON||EFFECT_SHADOW_PCSS
 // A per-pixel angle in [0, 2π) (interleaved gradient noise of the screen position): rotates the
@@ -300,10 +253,4 @@ fn shadow_visibility(i: u32, light: Light, origin: vec3<f32>, j: u32, p: vec3<f3
     return shadow_compare(sl, layer, t, n_dot_l, pixel);
 }
 
-// The shadow pass: an object's smooth mesh drawn into one layer of the light's maps, the layer
-// being the instance index (crates/shadelab-render/src/shadow_pass.rs draws one instance).
-@vertex
-fn vs_shadow(@location(0) position: vec3<f32>, @builtin(instance_index) layer: u32) -> @builtin(position) vec4<f32> {
-    return shadow_casters.matrices[min(layer, MAX_SHADOW_LAYERS - 1u)] * vec4(to_world(position), 1.0);
-}
 #endif

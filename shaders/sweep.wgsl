@@ -82,14 +82,14 @@ fn sweep(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workgroups)
     light.falloff_form = FALLOFF_LINEAR;
     let linear = light_sample(light, vec3(0.0), n, v, m);
 
-    let f = f_fresnel_exact(dot(v, half), v_index);
+    let f = microfacet_f(MICROFACET_CHAPTER, dot(v, half), v_index);
     let ct = specular_cook_torrance(n, v, l, m, v_index);
     let c_phong = light_contribution(
-        quadratic, n, v, SWEEP_COLOR, 1.0, 1.0, m, h_row.x, mirror, v_index, SPECULAR_PHONG,
+        quadratic, n, v, SWEEP_COLOR, 1.0, 1.0, m, h_row.x, mirror, v_index, SPECULAR_PHONG, MICROFACET_CHAPTER,
     );
     let c_ct = light_contribution(
         linear, n, v, SWEEP_COLOR, 1.0, 1.0, m, h_row.x, mirror, v_index,
-        SPECULAR_COOK_TORRANCE,
+        SPECULAR_COOK_TORRANCE, MICROFACET_CHAPTER,
     );
 
     let base = local * SWEEP_OUTPUTS;
@@ -98,7 +98,7 @@ fn sweep(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workgroups)
     let n_x_h = cross(n, half);
     outputs[base + COL_D_BECKMANN] = d_beckmann(dot(n, half), dot(n_x_h, n_x_h), m);
     outputs[base + COL_G_COOK_TORRANCE] = g_cook_torrance(dot(n, half), dot(n, v), dot(n, l), dot(v, half));
-    put_rgb(base + COL_F_FRESNEL_EXACT, f);
+    put_rgb(base + COL_MICROFACET_F, f);
     put_rgb(base + COL_SPECULAR_COOK_TORRANCE, ct);
     outputs[base + COL_FALLOFF_QUADRATIC] = falloff_quadratic(d, a_row.x);
     outputs[base + COL_FALLOFF_LINEAR] = falloff_linear(d, a_row.y);

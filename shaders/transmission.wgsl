@@ -1,6 +1,6 @@
 // Light through a surface (docs/model.md §7, the chapter's 7.5): Snell's law with total internal
-// reflection, the exact Fresnel factor met from either side, absorption by Beer–Lambert and by
-// the chapter's rule, the chord through a sphere. The f64 twin is
+// reflection, absorption by Beer–Lambert and by the chapter's rule, the chord through a sphere
+// (the Fresnel factor from either side is microfacet.wgsl's fresnel_dielectric). The f64 twin is
 // crates/shadelab-model/src/lighting/transmission.rs, with the same names. Only in permutations
 // with transparent objects (the glass pass, glass.wgsl) and in the stability sweep.
 #if EFFECT_TRANSMISSION
@@ -45,24 +45,6 @@ fn refract_snell(i: vec3<f32>, n: vec3<f32>, eta: f32) -> vec4<f32> {
         return vec4(0.0);
     }
     return vec4(i * eta + n * (eta * cos_i - sqrt(cos2_t)), 1.0);
-}
-
-// The exact unpolarized Fresnel factor met at cos θ_i = c, v = n_t/n_i from either side; 1 under
-// total internal reflection.
-fn fresnel_dielectric(c_in: f32, v_in: f32) -> f32 {
-    let c = clamp(c_in, 0.0, 1.0);
-    let v = max(v_in, 0.0);
-    // g² = v² − 1 + c², grouped as the twin says: exact at grazing for v = 1 and at c = 1.
-    let sin2 = (1.0 - c) * (1.0 + c);
-    let g2 = select(v * v - sin2, (v - 1.0) * (v + 1.0) + c * c, c < 0.5);
-    if (g2 < 0.0) {
-        return 1.0;
-    }
-    let g = sqrt(g2);
-    let a = (g - c) / max(g + c, FRESNEL_G_PLUS_C_MIN);
-    // c(g + c) − 1 and c(g − c) + 1 without the cancelling 1s.
-    let b = (c * g - sin2) / max(c * g + sin2, FRESNEL_G_PLUS_C_MIN);
-    return clamp(0.5 * a * a * (1.0 + b * b), 0.0, 1.0);
 }
 
 // How long the part of the ray from `o` along unit `d` inside a sphere is: the chord ahead, from

@@ -231,6 +231,7 @@ pub fn material_board() -> Scene {
             mu_tinted: [0.0; 3],
             emission: [0.0; 3],
             maps: Default::default(),
+            microfacet: Default::default(),
         };
         sphere(p.name.into(), mat, row_x(i, dielectrics.len()), 0.0);
     }

@@ -16,23 +16,23 @@ fn fresnel_is_mu_at_normal_incidence_and_one_at_grazing() {
     for i in 0..=1000 {
         let mu = 0.9998 * i as f64 / 1000.0; // below the √μ cap (FRESNEL_SQRT_MU_MAX)
         let v = fresnel_v_from_mu(mu);
-        let f1 = f_fresnel_exact(1.0, v);
+        let f1 = fresnel_dielectric(1.0, v);
         assert!((f1 - mu).abs() <= 1e-12 * mu.max(1e-3), "F(c=1) = {f1}, μ = {mu}");
         if mu > 0.0 {
             // Grazing: F = 1 for every real interface. (μ = 0 is no interface at all, v = 1:
             // F = 0 for every c > 0, and the guard FRESNEL_G_PLUS_C_MIN keeps that at c = 0.)
-            assert!((f_fresnel_exact(0.0, v) - 1.0).abs() < 1e-12, "F(c=0), μ = {mu}");
+            assert!((fresnel_dielectric(0.0, v) - 1.0).abs() < 1e-12, "F(c=0), μ = {mu}");
         }
     }
-    assert_eq!(f_fresnel_exact(0.0, fresnel_v_from_mu(0.0)), 0.0);
+    assert_eq!(fresnel_dielectric(0.0, fresnel_v_from_mu(0.0)), 0.0);
     // μ = 1 is capped: v finite, F(1) within 2e-4 of 1.
     let v = fresnel_v_from_mu(1.0);
-    assert!(v.is_finite() && (f_fresnel_exact(1.0, v) - 1.0).abs() < 2e-4);
+    assert!(v.is_finite() && (fresnel_dielectric(1.0, v) - 1.0).abs() < 2e-4);
     // F grows monotonically towards grazing for a dielectric.
     let v = fresnel_v_from_mu(0.04);
     let mut last = 0.0;
     for i in (0..=100).rev() {
-        let f = f_fresnel_exact(i as f64 / 100.0, v);
+        let f = fresnel_dielectric(i as f64 / 100.0, v);
         assert!(f >= last - 1e-15);
         last = f;
     }

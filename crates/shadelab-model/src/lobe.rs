@@ -4,7 +4,7 @@
 //! over (θ_h, θ_d) at φ_d = 90°, the slice BRDF Explorer draws ([`theta_h_theta_d_slice`]).
 
 use crate::guards::N_DOT_V_MIN;
-use crate::lighting::brdf::{d_beckmann, f_fresnel_exact, fresnel_v_from_mu, g_cook_torrance, specular_phong};
+use crate::lighting::brdf::{d_beckmann, fresnel_dielectric, fresnel_v_from_mu, g_cook_torrance, specular_phong};
 use crate::lighting::common::safe_normalize;
 use crate::lighting::lights::light_sample;
 use crate::scene::{MAX_LIGHTS, Material, Scene};
@@ -122,7 +122,7 @@ pub fn plane_lobe(n: DVec3, l: DVec3, mat: &Material) -> Lobe {
         let lit = nl > 0.0 && nw > 0.0;
         let d = d_beckmann(nh, n.cross(h).length_squared(), m);
         let g = g_cook_torrance(nh, nw, nl, wh);
-        let f = mean(v_index.map(|vi| f_fresnel_exact(wh, vi)));
+        let f = mean(v_index.map(|vi| fresnel_dielectric(wh, vi)));
         lobe.theta.push(theta);
         lobe.phong.push(if lit { specular_phong(w.dot(r), mat.h.value(), mat.h.is_mirror()) } else { 0.0 });
         lobe.cook_torrance.push(if lit { f * d * g / nw.max(N_DOT_V_MIN) } else { 0.0 });
@@ -150,7 +150,7 @@ pub fn rho_s_at(theta_h: f64, theta_d: f64, mat: &Material) -> f64 {
         return 0.0;
     }
     let v_index = mat.mu.map(fresnel_v_from_mu);
-    let f = v_index.iter().map(|&vi| f_fresnel_exact(l.dot(h), vi)).sum::<f64>() / 3.0;
+    let f = v_index.iter().map(|&vi| fresnel_dielectric(l.dot(h), vi)).sum::<f64>() / 3.0;
     let dd = d_beckmann(n.dot(h), n.cross(h).length_squared(), mat.m);
     let g = g_cook_torrance(n.dot(h), nv, nl, v.dot(h));
     f / std::f64::consts::PI * dd * g / (nv * nl)

@@ -187,7 +187,7 @@ mod tests {
     /// The shader's strides are the vertex formats'.
     #[test]
     fn the_strides_are_the_wgsl_constants() {
-        let src = include_str!("../../../shaders/shading.wgsl");
+        let src = include_str!("../../../shaders/types.wgsl");
         for (name, bytes) in
             [("FLAT_CORNER_FLOATS", size_of::<FlatVertex>()), ("SMOOTH_VERTEX_FLOATS", size_of::<SmoothVertex>())]
         {

@@ -8,9 +8,11 @@
 use shadelab_model::effects::EffectKey;
 
 /// `(file name, source)` in the order they are concatenated.
-pub const FILES: [(&str, &str); 13] = [
+pub const FILES: [(&str, &str); 17] = [
     ("common.wgsl", include_str!("../../../shaders/common.wgsl")),
     ("brdf.wgsl", include_str!("../../../shaders/brdf.wgsl")),
+    // Cook–Torrance's D, G and F, each selected by the material's code.
+    ("microfacet.wgsl", include_str!("../../../shaders/microfacet.wgsl")),
     ("models.wgsl", include_str!("../../../shaders/models.wgsl")),
     ("lights.wgsl", include_str!("../../../shaders/lights.wgsl")),
     // Only in permutations with area lights (the whole file is one `#if EFFECT_AREA_LIGHTS`).
@@ -23,9 +25,16 @@ pub const FILES: [(&str, &str); 13] = [
     ("surface.wgsl", include_str!("../../../shaders/surface.wgsl")),
     // Light through a surface: only in permutations with transparent objects (and the sweep).
     ("transmission.wgsl", include_str!("../../../shaders/transmission.wgsl")),
+    // The shading module's uniform structs and layout constants, then its bindings: after the
+    // terms above, which `terms_source` gives compute passes that bind their own.
+    ("types.wgsl", include_str!("../../../shaders/types.wgsl")),
+    ("bindings.wgsl", include_str!("../../../shaders/bindings.wgsl")),
     // Only in permutations with cast shadows (the whole file is one `#if EFFECT_CAST_SHADOWS`).
     ("shadows.wgsl", include_str!("../../../shaders/shadows.wgsl")),
+    // The model at a point and the material at a pixel: the functions the entry points call.
     ("shading.wgsl", include_str!("../../../shaders/shading.wgsl")),
+    // The mesh passes' entry points: the lighting passes, the three modes, baseline and shadow pass.
+    ("entry_points.wgsl", include_str!("../../../shaders/entry_points.wgsl")),
     // Gouraud's and Phong shading's stages with screen-space interpolation.
     ("screen_space.wgsl", include_str!("../../../shaders/screen_space.wgsl")),
     // The glass pass's entry points: only in permutations with transparent objects.
@@ -80,10 +89,10 @@ fn uber_defines() -> Vec<&'static str> {
 
 /// Constants, guards and the lighting terms with every effect, without entry points (for compute
 /// passes that evaluate the terms directly; the one texture binding of `surface` goes unused):
-/// `common`, `brdf`, `models`, `lights`, `area_lights`, `area_points`, `shadow_math`, `surface` and
+/// `common`, `brdf`, `microfacet`, `models`, `lights`, `area_lights`, `area_points`, `shadow_math`, `surface` and
 /// `transmission`.
 pub fn terms_source() -> String {
-    let raw = FILES[..9].iter().map(|(_, s)| *s).collect::<Vec<_>>().join("\n");
+    let raw = FILES[..10].iter().map(|(_, s)| *s).collect::<Vec<_>>().join("\n");
     preprocess(&raw, &uber_defines()).expect("the shipped WGSL preprocesses")
 }
 

@@ -6,12 +6,14 @@
 use crate::shaders::tests::parse;
 use crate::shaders::{FILES, lighting_source, terms_source};
 use shadelab_model::params::NamedValue;
+use shadelab_model::lighting::microfacet::{Distribution, Fresnel, Masking, Microfacet};
 use shadelab_model::{FalloffForm, IlluminationModel, LightKind, SpecularModel};
 
 /// Each WGSL file and the source of its f64 twin.
-const TWINS: [(&str, &str); 13] = [
+const TWINS: [(&str, &str); 17] = [
     ("common.wgsl", include_str!("../../shadelab-model/src/lighting/common.rs")),
     ("brdf.wgsl", include_str!("../../shadelab-model/src/lighting/brdf.rs")),
+    ("microfacet.wgsl", include_str!("../../shadelab-model/src/lighting/microfacet.rs")),
     ("models.wgsl", include_str!("../../shadelab-model/src/lighting/models.rs")),
     ("lights.wgsl", include_str!("../../shadelab-model/src/lighting/lights.rs")),
     ("area_lights.wgsl", include_str!("../../shadelab-model/src/lighting/area.rs")),
@@ -33,6 +35,9 @@ const TWINS: [(&str, &str); 13] = [
         ),
     ),
     ("transmission.wgsl", include_str!("../../shadelab-model/src/lighting/transmission.rs")),
+    // Structs and bindings: no functions.
+    ("types.wgsl", ""),
+    ("bindings.wgsl", ""),
     (
         "shadows.wgsl",
         concat!(
@@ -41,6 +46,8 @@ const TWINS: [(&str, &str); 13] = [
         ),
     ),
     ("shading.wgsl", include_str!("../../shadelab-model/src/lighting/shading.rs")),
+    // Stages and their helpers: their counterpart is the reference's exact per-pixel image.
+    ("entry_points.wgsl", include_str!("../../shadelab-model/src/lighting/shading.rs")),
     // Stages only: their counterpart is the reference's exact per-pixel image.
     ("screen_space.wgsl", include_str!("../../shadelab-model/src/lighting/shading.rs")),
     // The glass pass: its counterpart is the reference's tracer, which follows every branch.
@@ -56,7 +63,7 @@ const TWINS: [(&str, &str); 13] = [
 /// WGSL functions with no f64 twin, by file, and why. (Entry points are left out by naga's list:
 /// they are the GPU's stages, whose f64 counterpart is `reference::render_reference`.)
 const NO_TWIN: [(&str, &str, &str); 41] = [
-    ("shading.wgsl", "pixel_inputs", "the interpolants at a pixel; the reference has the exact hit"),
+    ("entry_points.wgsl", "pixel_inputs", "the interpolants at a pixel; the reference has the exact hit"),
     ("glass.wgsl", "project_to_pixel", "a point on the target; the reference traces rays, it has no target"),
     ("glass.wgsl", "texel", "a pixel of the target; the reference traces rays, it has no target"),
     ("glass.wgsl", "scene_behind", "the target behind the pixel; the reference traces the ray on"),
@@ -79,12 +86,12 @@ const NO_TWIN: [(&str, &str, &str); 41] = [
     ("shading.wgsl", "write_lit", "the lighting pass's output; the reference lights every pixel exactly"),
     ("shading.wgsl", "lit_count", "the lighting pass's chunk size; the reference has no passes"),
     ("shading.wgsl", "read_lit", "the vertex stage's input; the reference lights every pixel exactly"),
-    ("shading.wgsl", "per_vertex_pixel", "the per-vertex modes' tinted colour; the reference lights every pixel"),
+    ("entry_points.wgsl", "per_vertex_pixel", "the per-vertex modes' tinted colour; the reference lights every pixel"),
     ("shading.wgsl", "finish", "the debug view that paints non-finite pixels; the reference has none"),
     ("shading.wgsl", "to_world", "the object transform; its f64 side is scene::Transform::matrix"),
     ("shading.wgsl", "normal_to_world", "the normal transform; its f64 side is Transform::normal_matrix"),
-    ("shading.wgsl", "gouraud_vertex", "Gouraud's vertex stage; the reference lights every pixel exactly"),
-    ("shading.wgsl", "phong_vertex", "Phong shading's vertex stage; the reference lights every pixel exactly"),
+    ("entry_points.wgsl", "gouraud_vertex", "Gouraud's vertex stage; the reference lights every pixel exactly"),
+    ("entry_points.wgsl", "phong_vertex", "Phong shading's vertex stage; the reference lights every pixel exactly"),
     ("screen_space.wgsl", "screen_or_perspective", "the rasterizer's screen-space interpolant; the reference has none"),
     ("shading.wgsl", "vertex_seed", "the shadow filter's noise seed; the reference traces exact shadow rays"),
     ("shadows.wgsl", "shadow_rotation", "the soft filters' per-pixel noise; the reference has no filter"),
@@ -229,12 +236,20 @@ fn wgsl_codes_equal_rust_codes() {
     rust.extend(FalloffForm::ALL.iter().map(|(n, f)| (code_name("FALLOFF", n), f.code())));
     rust.extend(SpecularModel::ALL.iter().map(|(n, s)| (code_name("SPECULAR", n), s.code())));
     rust.extend(IlluminationModel::ALL.iter().map(|(n, s)| (code_name("ILLUMINATION", n), s.code())));
+    rust.extend(Distribution::ALL.iter().map(|(n, d)| (code_name("DISTRIBUTION", n), d.code())));
+    rust.extend(Masking::ALL.iter().map(|(n, g)| (code_name("MASKING", n), g.code())));
+    rust.extend(Fresnel::ALL.iter().map(|(n, f)| (code_name("FRESNEL", n), f.code())));
+    rust.push(("MICROFACET_CHAPTER".into(), Microfacet::CHAPTER.code()));
+    let field_bits = shadelab_model::lighting::microfacet::MICROFACET_FIELD_BITS;
+    rust.push(("MICROFACET_FIELD_BITS".into(), field_bits));
+    rust.push(("MICROFACET_FIELD_MASK".into(), (1 << field_bits) - 1));
     for (name, code) in &rust {
         assert_eq!(wgsl_constant(&module, name), Some(*code as f64), "{name}: WGSL vs Rust code()");
     }
     // Every u32 code of the WGSL with one of these prefixes has its Rust value.
     for (name, ty) in FILES.iter().flat_map(|(_, src)| wgsl_consts(src)) {
-        let coded = ["LIGHT_", "FALLOFF_", "SPECULAR_", "ILLUMINATION_"].iter().any(|p| name.starts_with(p));
+        let coded = ["LIGHT_", "FALLOFF_", "SPECULAR_", "ILLUMINATION_", "DISTRIBUTION_", "MASKING_", "FRESNEL_", "MICROFACET_"]
+            .iter().any(|p| name.starts_with(p));
         if ty == "u32" && coded {
             assert!(rust.iter().any(|(n, _)| *n == name), "{name} has no Rust code()");
         }
@@ -249,7 +264,7 @@ fn wgsl_codes_equal_rust_codes() {
         assert_eq!(wgsl_constant(&lighting, name), Some(*bit as f64), "{name}: WGSL vs textures::MAP_BITS");
     }
     // Codes are distinct within a kind.
-    for prefix in ["LIGHT_", "FALLOFF_", "SPECULAR_", "ILLUMINATION_"] {
+    for prefix in ["LIGHT_", "FALLOFF_", "SPECULAR_", "ILLUMINATION_", "DISTRIBUTION_", "MASKING_", "FRESNEL_"] {
         let mut codes: Vec<u32> = rust.iter().filter(|(n, _)| n.starts_with(prefix)).map(|(_, c)| *c).collect();
         let len = codes.len();
         codes.sort();

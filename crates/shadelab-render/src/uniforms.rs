@@ -104,7 +104,8 @@ pub struct ObjectUniform {
     pub absorption_form: u32,
     /// `effects::longest_chord`: the path-length view's white.
     pub longest_chord: f32,
-    pub _pad2: f32,
+    /// `Microfacet::code`: the material's D, G and F.
+    pub microfacet: u32,
 }
 
 /// One light's shadow map as `shadows.wgsl`'s `ShadowLight` reads it (zeroed: no shadow).
@@ -252,7 +253,7 @@ impl ObjectUniform {
             exit_shape: object.shape.exit_code(),
             absorption_form: shadelab_model::effects::absorption_form(scene, index).code(),
             longest_chord: shadelab_model::effects::longest_chord(scene, index) as f32,
-            _pad2: 0.0,
+            microfacet: material.microfacet.code(),
         }
     }
 }

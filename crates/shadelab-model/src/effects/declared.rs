@@ -100,8 +100,8 @@ declare_effects! {
         name: "Cook–Torrance specular",
         label: "cook-torrance",
         define: Some("EFFECT_SPECULAR_COOK_TORRANCE"),
-        functions: &["specular_cook_torrance", "d_beckmann", "g_cook_torrance", "f_fresnel_exact", "fresnel_v_from_mu"],
-        members: &[("Object", "mu")],
+        functions: &["specular_microfacet", "microfacet_d", "microfacet_g", "microfacet_f", "fresnel_v_from_mu"],
+        members: &[("Object", "mu"), ("Object", "microfacet")],
     },
     /// Ambient `I_amb·r_a·C` (docs/model.md §2).
     Ambient {
@@ -405,7 +405,8 @@ declare_effects! {
         name: "refraction",
         label: "refract",
         define: Some("EFFECT_REFRACTION"),
-        functions: &["refract_snell", "fresnel_dielectric", "reflect_about", "scene_along"],
+        // fresnel_dielectric is shared with Cook–Torrance's F, so it is not the glass's alone.
+        functions: &["refract_snell", "reflect_about", "scene_along"],
         members: &[("Object", "ior")],
     },
     /// Absorption inside a transparent object over the path measured from its geometry, in the

@@ -280,6 +280,7 @@ pub(super) fn pbr_material(m: &json::Material) -> Material {
         mu_tinted: base.map(|c| c * metallic),
         emission: m.emissive_factor.0.map(|e| (e as f64).clamp(0.0, 1.0)),
         maps: Default::default(),
+        microfacet: Default::default(),
     }
 }
 

@@ -3,6 +3,7 @@
 //!
 //! - [`common`] ↔ `common.wgsl`: the shared helpers.
 //! - [`brdf`] ↔ `brdf.wgsl`: the terms of the illumination model and the specular models.
+//! - [`microfacet`] ↔ `microfacet.wgsl`: Cook–Torrance's D, G and F, each chosen by the material.
 //! - [`lights`] ↔ `lights.wgsl`: the light sources, their parameters and falloffs.
 //! - [`models`] ↔ `models.wgsl`: the Lambert rule and the four-term sum, and the model choice.
 //! - [`area`] ↔ `area_lights.wgsl`, [`area_points`] ↔ `area_points.wgsl`: area lights, exact and
@@ -19,6 +20,7 @@ pub mod area_points;
 pub mod brdf;
 pub mod common;
 pub mod lights;
+pub mod microfacet;
 pub mod models;
 pub mod shading;
 pub mod transmission;

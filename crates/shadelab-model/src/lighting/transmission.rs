@@ -6,7 +6,8 @@
 //! reference's tracer (`reference/glass.rs`) use the rest. The WGSL twin is
 //! `shaders/transmission.wgsl`.
 
-use crate::guards::{FRESNEL_G_PLUS_C_MIN, QUADRIC_A_MIN};
+pub use super::microfacet::fresnel_dielectric;
+use crate::guards::QUADRIC_A_MIN;
 use glam::DVec3;
 
 /// Below this a·d the chapter neglects absorption (7.5): the light it drops is under
@@ -147,28 +148,6 @@ pub fn refract_snell(i: DVec3, n: DVec3, eta: f64) -> Option<DVec3> {
         return None;
     }
     Some(i * eta + n * (eta * cos_i - cos2_t.sqrt()))
-}
-
-/// The chapter's exact unpolarized Fresnel factor (docs/model.md §5) at an interface met at
-/// cos θ_i = `c`, with `v` = n_t/n_i from either side (below 1 from inside the denser medium):
-/// `F = ½ ((g − c)/(g + c))² {1 + [(c(g + c) − 1)/(c(g − c) + 1)]²}`, g = √(v² + c² − 1); 1 under
-/// total internal reflection (g² < 0). The transmitted share is 1 − F.
-pub fn fresnel_dielectric(c: f64, v: f64) -> f64 {
-    let c = c.clamp(0.0, 1.0);
-    let v = v.max(0.0);
-    // g² = v² − 1 + c², grouped to keep what cancels exact: (v − 1)(v + 1) + c² near grazing (v
-    // = 1 gives c² exactly), v² − (1 − c)(1 + c) from c = ½ up (c = 1 gives v² exactly, where the
-    // other grouping loses a small v² to the 1s).
-    let sin2 = (1.0 - c) * (1.0 + c);
-    let g2 = if c < 0.5 { (v - 1.0) * (v + 1.0) + c * c } else { v * v - sin2 };
-    if g2 < 0.0 {
-        return 1.0;
-    }
-    let g = g2.sqrt();
-    let a = (g - c) / (g + c).max(FRESNEL_G_PLUS_C_MIN);
-    // c(g + c) − 1 = cg − sin²θ and c(g − c) + 1 = cg + sin²θ ≥ 0 (v at c = 1), without the 1s.
-    let b = (c * g - sin2) / (c * g + sin2).max(FRESNEL_G_PLUS_C_MIN);
-    (0.5 * a * a * (1.0 + b * b)).clamp(0.0, 1.0)
 }
 
 /// How long the part of the ray from `o` along unit `d` inside a sphere (`centre`, `radius`) is:

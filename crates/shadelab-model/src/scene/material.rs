@@ -50,6 +50,8 @@ pub struct Material {
     /// The textures that vary the model's other parameters per point (glTF's metallic–roughness,
     /// occlusion, emissive and normal textures; docs/textures.md).
     pub maps: MaterialMaps,
+    /// The D, G and F of its Cook–Torrance specular (the chapter's by default).
+    pub microfacet: crate::lighting::microfacet::Microfacet,
 }
 
 /// A material's textures beyond the base colour. Each is optional; a point without one uses the
@@ -121,6 +123,7 @@ impl Default for Material {
             mu_tinted: [0.0; 3],
             emission: [0.0; 3],
             maps: MaterialMaps::default(),
+            microfacet: crate::lighting::microfacet::Microfacet::CHAPTER,
         }
     }
 }

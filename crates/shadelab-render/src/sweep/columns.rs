@@ -8,6 +8,7 @@ use glam::DVec3;
 use shadelab_model::guards::{D0_MIN, M_MIN, N_DOT_V_MIN};
 use shadelab_model::lighting::area::{self, AreaLight, AreaShape};
 use shadelab_model::lighting::area_points::{area_emitter, area_point_sample};
+use shadelab_model::lighting::microfacet::{self, Microfacet};
 use shadelab_model::lighting::{brdf, common, lights, models, transmission};
 use shadelab_model::shadows;
 use shadelab_model::{FalloffForm, Light, LightKind, Material, PhongExponent, SpecularModel};
@@ -37,7 +38,7 @@ pub const COLUMNS: [Column; 46] = [
     col("specular_phong", "SPECULAR_PHONG", 1, 1.0, "(V·R)^h with V·R clamped to [0, 1]"),
     col("d_beckmann", "D_BECKMANN", 1, D_MAX, "peak 1/(4 m²) at m = M_MIN"),
     col("g_cook_torrance", "G_COOK_TORRANCE", 1, 1.0, "min{1, …}"),
-    col("f_fresnel_exact", "F_FRESNEL_EXACT", 3, 1.0, "a reflectance"),
+    col("microfacet_f (fresnel_dielectric at V·H)", "MICROFACET_F", 3, 1.0, "a reflectance"),
     col(
         "specular_cook_torrance",
         "SPECULAR_COOK_TORRANCE",
@@ -212,7 +213,7 @@ const DIFFUSE_LAMBERT: usize = offset("DIFFUSE_LAMBERT");
 const SPECULAR_PHONG: usize = offset("SPECULAR_PHONG");
 const D_BECKMANN: usize = offset("D_BECKMANN");
 const G_COOK_TORRANCE: usize = offset("G_COOK_TORRANCE");
-const F_FRESNEL_EXACT: usize = offset("F_FRESNEL_EXACT");
+const MICROFACET_F: usize = offset("MICROFACET_F");
 const SPECULAR_COOK_TORRANCE: usize = offset("SPECULAR_COOK_TORRANCE");
 const FALLOFF_QUADRATIC: usize = offset("FALLOFF_QUADRATIC");
 const FALLOFF_LINEAR: usize = offset("FALLOFF_LINEAR");
@@ -315,7 +316,7 @@ pub(super) fn reference(
     out[SPECULAR_PHONG] = brdf::specular_phong(v.dot(r), h, mirror);
     out[D_BECKMANN] = brdf::d_beckmann(n.dot(half), n.cross(half).length_squared(), m);
     out[G_COOK_TORRANCE] = brdf::g_cook_torrance(n.dot(half), n.dot(v), n.dot(l), v.dot(half));
-    rgb(&mut out, F_FRESNEL_EXACT, v_index.map(|vi| brdf::f_fresnel_exact(v.dot(half), vi)));
+    rgb(&mut out, MICROFACET_F, microfacet::microfacet_f(Microfacet::CHAPTER, v.dot(half), v_index));
     rgb(&mut out, SPECULAR_COOK_TORRANCE, brdf::specular_cook_torrance(n, v, l, m, v_index));
     out[FALLOFF_QUADRATIC] = lights::falloff_quadratic(d, alpha);
     out[FALLOFF_LINEAR] = lights::falloff_linear(d, d0);

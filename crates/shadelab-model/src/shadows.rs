@@ -14,7 +14,8 @@ use glam::{DMat4, DVec3, DVec4};
 
 mod cascades;
 pub use cascades::{
-    SHADOW_CASCADE_DEPTH_RATIO, SHADOW_CASCADE_MARGIN_TEXELS, SHADOW_CASCADES_MAX, cascade_count, cascade_projection,
+    SHADOW_CASCADE_DEPTH_RATIO, SHADOW_CASCADE_MARGIN_TEXELS, SHADOW_CASCADES_MAX, cascade_count, cascade_layers,
+    cascade_projection,
     cascade_splits, cascades_for_depths, shadow_cascade, shadow_ortho_texel_world, view_depth_range,
 };
 
@@ -381,7 +382,7 @@ pub fn shadow_cubes(scene: &Scene) -> Vec<u32> {
         match l.kind {
             _ if !l.shadow.casts => 0,
             LightKind::Point | LightKind::Rect | LightKind::Disk | LightKind::Sphere => 6,
-            LightKind::Directional if l.shadow.cascades => cascade_count(scene),
+            LightKind::Directional => cascade_layers(scene, l),
             _ => 1,
         }
     };

@@ -19,7 +19,8 @@ use bytemuck::Zeroable;
 use shadelab_model::lighting::area_points::area_emitter;
 use shadelab_model::shadows::{
     MAX_SHADOW_LAYERS, SHADOW_CONSTANT_BIAS, SHADOW_DEPTH_BIAS_CLAMP, SHADOW_MAP_BUDGET_BYTES, SHADOW_RESOLUTION,
-    SHADOW_SLOPE_BIAS, SHADOW_TEXEL_BYTES, cascade_count, cascade_projection, scene_bounds, shadow_cubes,
+    SHADOW_SLOPE_BIAS, SHADOW_TEXEL_BYTES, cascade_count, cascade_layers, cascade_projection, scene_bounds,
+    shadow_cubes,
     shadow_projection,
 };
 use shadelab_model::{Light, LightKind, Scene};
@@ -61,7 +62,7 @@ impl ShadowPlan {
             let n = match l.kind {
                 // An area light's map is its centre's cube, or one per point source.
                 LightKind::Point | LightKind::Rect | LightKind::Disk | LightKind::Sphere => 6 * c,
-                LightKind::Directional if l.shadow.cascades => cascade_count(scene),
+                LightKind::Directional => cascade_layers(scene, l),
                 _ => 1,
             };
             let resolution = l.shadow.clamped().resolution;
@@ -102,6 +103,9 @@ pub(crate) struct ShadowMaps {
     casters_bind: wgpu::BindGroup,
     /// Whether the uniform's lights cast (false: zeroed, every light unshadowed).
     casting: bool,
+    /// Per plan light, the layers the uniform uses this frame (a directional light's cascades
+    /// may be fewer than its layers): the shadow passes draw only these.
+    drawn: Vec<u32>,
 }
 
 /// The maps' bind group layout (@group(2)): `Shadows`, the depth array, two comparison samplers.
@@ -224,11 +228,13 @@ pub fn shadows_uniform(scene: &Scene, plan: &ShadowPlan, aspect: f64) -> Shadows
     let Some((centre, radius)) = scene_bounds(scene) else { return u };
     for ((slot, light), map) in u.lights.iter_mut().zip(&scene.lights).zip(&plan.lights) {
         let Some(map) = map else { continue };
+        // A directional light's cascades this frame: as many of its layers as the view needs.
+        let cascades = if light.kind == LightKind::Directional && map.layers > 1 { cascade_count(scene) } else { 1 };
         // One projection per cube (an area light drawn as points has one per point source, each
         // from where it sits); the others have one map, from the light itself.
         let project = |at: &Light| {
-            if at.kind == LightKind::Directional && map.layers > 1 {
-                cascade_projection(at, scene, aspect, (centre, radius), map.resolution, map.layers)
+            if cascades > 1 {
+                cascade_projection(at, scene, aspect, (centre, radius), map.resolution, cascades)
             } else {
                 shadow_projection(at, centre, radius, map.resolution)
             }
@@ -249,7 +255,8 @@ pub fn shadows_uniform(scene: &Scene, plan: &ShadowPlan, aspect: f64) -> Shadows
         let Some(p) = first else { continue };
         *slot = ShadowLightUniform {
             first_layer: map.first_layer,
-            layers: map.layers,
+            // The layers drawn this frame (a directional light's cascade count is a runtime value).
+            layers: if light.kind == LightKind::Directional { cascades } else { map.layers },
             shadow_filter: light.drawn_shadow_filter().code(),
             perspective: p.perspective as u32,
             texel_world: p.texel_world as f32,
@@ -324,7 +331,7 @@ impl Renderer {
                 }),
             }],
         });
-        ShadowMaps { plan, texture, layer_views, uniform, bind, casters_bind, casting: false }
+        ShadowMaps { plan, texture, layer_views, uniform, bind, casters_bind, casting: false, drawn: Vec::new() }
     }
 
     /// Plan the scene's shadow maps, (re)allocate them when the plan changed, and write their
@@ -347,6 +354,7 @@ impl Renderer {
         }
         let maps = slot.as_mut().expect("made above");
         self.queue.write_buffer(&maps.uniform, 0, bytemuck::bytes_of(&u));
+        maps.drawn = u.lights.iter().zip(&maps.plan.lights).map(|(l, m)| m.map_or(0, |_| l.layers)).collect();
         maps.casting = true;
     }
 
@@ -368,8 +376,9 @@ impl Renderer {
         let maps = slot.as_ref().expect("made above");
         let mut timestamp = timestamp;
         if maps.casting {
-            for map in maps.plan.lights.iter().flatten() {
-                for layer in map.first_layer..map.first_layer + map.layers {
+            for (map, &drawn) in maps.plan.lights.iter().zip(&maps.drawn) {
+                let Some(map) = map else { continue };
+                for layer in map.first_layer..map.first_layer + drawn.min(map.layers) {
                     let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
                         label: Some("shadow pass"),
                         color_attachments: &[],
@@ -499,9 +508,18 @@ mod tests {
         for l in &mut s.lights {
             l.shadow.resolution = 4096;
         }
+        // The directional light holds SHADOW_CASCADES_MAX layers whatever the view: with the
+        // point light's six, 10 layers of 64 MiB pass the budget, so the side halves.
         let plan = ShadowPlan::for_scene(&s, &limits);
-        assert_eq!((plan.side, plan.layers), (4096, 7), "a directional and a point light at 4096");
+        assert_eq!((plan.side, plan.layers), (2048, 10), "a directional light with cascades and a point light");
         assert!(plan.bytes() <= SHADOW_MAP_BUDGET_BYTES);
+        // Its orbit changes no plan: a camera twice as far keeps the same layers.
+        let mut far = s.clone();
+        far.camera.eye = far.camera.target + (s.camera.eye - s.camera.target) * 2.0;
+        assert!(ShadowPlan::for_scene(&far, &limits) == plan, "the plan follows the camera");
+        s.lights[0].shadow.cascades = false;
+        let plan = ShadowPlan::for_scene(&s, &limits);
+        assert_eq!((plan.side, plan.layers), (4096, 7), "one directional map and a point light at 4096");
         s.lights[0].shadow.resolution = 256;
         let plan = ShadowPlan::for_scene(&s, &limits);
         assert_eq!(plan.lights[0].map(|m| m.resolution), Some(256), "a light asking less keeps its side");

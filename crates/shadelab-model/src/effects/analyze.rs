@@ -370,9 +370,11 @@ fn shadow_filter(lights: &[crate::scene::Light], shadows: bool, filter: ShadowFi
 }
 
 /// Cascades are on when shadows are, some directional light casts them with its cascades
-/// allowed, and the objects in view span a depth ratio over `SHADOW_CASCADE_DEPTH_RATIO`.
+/// allowed, and the camera is perspective. The view's depth range is not asked: it sets how many
+/// cascades a frame draws (`shadows::cascade_count`, a uniform), so orbiting never changes the
+/// program or the maps.
 fn shadow_cascades(scene: &Scene, lights: &[crate::scene::Light], shadows: bool) -> (bool, String) {
-    use crate::shadows::{SHADOW_CASCADE_DEPTH_RATIO, cascades_for_depths, view_depth_range};
+    use crate::shadows::{SHADOW_CASCADE_DEPTH_RATIO, SHADOW_CASCADES_MAX};
     let directional = |l: &&crate::scene::Light| l.kind == LightKind::Directional && l.shadow.casts;
     if !shadows {
         return (false, "no cast shadows".into());
@@ -386,16 +388,13 @@ fn shadow_cascades(scene: &Scene, lights: &[crate::scene::Light], shadows: bool)
     if scene.camera.orthographic.is_some() {
         return (false, "the camera is orthographic: a pixel covers the same area at every depth".into());
     }
-    let Some((near, far)) = view_depth_range(scene) else {
-        return (false, "no object in view".into());
-    };
-    let n = cascades_for_depths(near, far);
-    let span = format!("the objects in view span depths {near:.2} to {far:.2}, a ratio of {:.1}", far / near);
-    if n > 1 {
-        (true, format!("{span} (over {SHADOW_CASCADE_DEPTH_RATIO}): {n} cascades"))
-    } else {
-        (false, format!("{span} (at most {SHADOW_CASCADE_DEPTH_RATIO}): one map fits"))
-    }
+    (
+        true,
+        format!(
+            "a directional light casts with cascades allowed and the camera is perspective: up to \
+             {SHADOW_CASCADES_MAX} maps, one per depth ratio of {SHADOW_CASCADE_DEPTH_RATIO} in view, chosen each frame"
+        ),
+    )
 }
 
 #[cfg(test)]
@@ -439,7 +438,14 @@ mod tests {
         let a = analyze(&s, SpecularModel::CookTorrance);
         assert_eq!(
             a.key.effects(),
-            vec![Effect::Diffuse, Effect::DirectionalLights, Effect::CastShadows, Effect::ShadowFilterPcf],
+            // Cascades come with a perspective camera and a directional caster, whatever the view.
+            vec![
+                Effect::Diffuse,
+                Effect::DirectionalLights,
+                Effect::CastShadows,
+                Effect::ShadowFilterPcf,
+                Effect::ShadowCascades
+            ],
             "{:?}",
             a.lines()
         );
@@ -486,11 +492,19 @@ mod tests {
     }
 
     #[test]
-    fn cascades_need_a_deep_view_and_a_directional_caster() {
+    fn cascades_need_a_directional_caster_and_a_perspective_camera() {
         let on = |s: &Scene| analyze(s, SpecularModel::Phong).key.has(Effect::ShadowCascades);
-        assert!(!on(&Scene::builtin("default").unwrap()), "the default view spans a ratio under 8");
         let mut s = Scene::builtin("field").unwrap();
         assert!(on(&s));
+        // The view's depth does not decide the program: a camera moved close or far keeps it.
+        for distance in [0.5, 2.0, 50.0] {
+            let mut moved = s.clone();
+            moved.camera.eye = moved.camera.target + (s.camera.eye - s.camera.target) * distance;
+            assert!(on(&moved), "distance × {distance}");
+        }
+        let mut ortho = s.clone();
+        ortho.camera.orthographic = Some(4.0);
+        assert!(!on(&ortho), "an orthographic view needs one map");
         s.lights[0].shadow.cascades = false;
         assert!(!on(&s), "cascades off");
         s.lights[0].shadow.cascades = true;

@@ -80,6 +80,14 @@ fn ray_box(o: DVec3, d: DVec3, lo: DVec3, hi: DVec3) -> Option<(f64, f64)> {
     (t0 <= t1 && t1.is_finite()).then_some((t0, t1))
 }
 
+/// The layers a directional light that casts shadows holds, whatever the view: with its cascades
+/// allowed and a perspective camera [`SHADOW_CASCADES_MAX`], else 1. Fixed by the light and the
+/// projection, so orbiting, panning and zooming never reallocate the maps or change the program;
+/// [`cascade_count`] says how many of them a frame draws.
+pub fn cascade_layers(scene: &Scene, light: &Light) -> u32 {
+    if light.shadow.cascades && scene.camera.orthographic.is_none() { SHADOW_CASCADES_MAX } else { 1 }
+}
+
 /// How many cascades a directional light needs in this scene's view: enough that each covers a
 /// depth ratio of at most [`SHADOW_CASCADE_DEPTH_RATIO`], at most [`SHADOW_CASCADES_MAX`]; 1
 /// (one map fitted to the scene) when the view's ratio is within it.

@@ -4,7 +4,7 @@
 
 use crate::gltf_io::SceneSettings;
 use crate::params::{PhongExponent, ShadingMode, SpecularModel};
-use crate::presets::PRESETS;
+use crate::presets::{MaterialPreset, PRESETS};
 use crate::scene::{Camera, Light, Material, Object, Scene, Shape, Transform};
 use glam::DVec3;
 
@@ -192,62 +192,17 @@ pub fn material_board() -> Scene {
     let row_x = |i: usize, n: usize| (i as f64 - (n as f64 - 1.0) / 2.0) * 0.95;
     let metals: Vec<_> = PRESETS.iter().filter(|p| p.metal).collect();
     for (i, p) in metals.iter().enumerate() {
-        let mat = Material {
-            name: p.name.into(),
-            color: p.color,
-            r_s: 1.0,
-            r_d: 0.25,
-            r_a: 0.5,
-            m: 0.2,
-            h: PhongExponent::from_m(0.2),
-            mu: p.mu,
-            ..Material::default()
-        };
+        let mat = metal_material(p);
         sphere(p.name.into(), mat, row_x(i, metals.len()), -1.3);
     }
     let dielectrics: Vec<_> = PRESETS.iter().filter(|p| !p.metal).collect();
     for (i, p) in dielectrics.iter().enumerate() {
-        // Transmission t and absorption a per unit length (docs/model.md §7): clear glass barely absorbs;
-        // water absorbs red most (about 0.45 per metre, here per unit).
-        let (transmission, absorption) = match p.name {
-            "glass" => (0.9, [0.02, 0.01, 0.015]),
-            "water" => (0.85, [0.45, 0.06, 0.03]),
-            _ => (0.0, [0.0; 3]),
-        };
-        let mat = Material {
-            name: p.name.into(),
-            color: p.color,
-            r_s: 1.0,
-            r_d: 0.8,
-            r_a: 0.8,
-            m: 0.15,
-            h: PhongExponent::from_m(0.15),
-            mu: p.mu,
-            transmission,
-            ior: None,
-            absorption,
-            thickness: if transmission > 0.0 { 0.76 } else { 0.0 },
-            base_color_texture: None,
-            mu_tinted: [0.0; 3],
-            emission: [0.0; 3],
-            maps: Default::default(),
-            microfacet: Default::default(),
-        };
+        let mat = dielectric_material(p);
         sphere(p.name.into(), mat, row_x(i, dielectrics.len()), 0.0);
     }
     let roughness = [0.05, 0.1, 0.2, 0.35, 0.6];
     for (i, m) in roughness.into_iter().enumerate() {
-        let mat = Material {
-            name: format!("plastic m={m}"),
-            color: [0.75, 0.12, 0.08],
-            r_s: 1.0,
-            r_d: 0.8,
-            r_a: 0.8,
-            m,
-            h: PhongExponent::from_m(m),
-            mu: [0.04; 3],
-            ..Material::default()
-        };
+        let mat = plastic_material(m);
         sphere(format!("plastic m={m}"), mat, row_x(i, roughness.len()), 1.3);
     }
     Scene {
@@ -264,5 +219,65 @@ pub fn material_board() -> Scene {
         meshes: Default::default(),
         illumination: Default::default(),
         textures: Vec::new(),
+    }
+}
+
+/// A metal preset's material on the board: μ from the preset, fairly sharp, little diffuse.
+fn metal_material(p: &MaterialPreset) -> Material {
+    Material {
+        name: p.name.into(),
+        color: p.color,
+        r_s: 1.0,
+        r_d: 0.25,
+        r_a: 0.5,
+        m: 0.2,
+        h: PhongExponent::from_m(0.2),
+        mu: p.mu,
+        ..Material::default()
+    }
+}
+
+/// A dielectric preset's material on the board; glass and water transmit and absorb.
+fn dielectric_material(p: &MaterialPreset) -> Material {
+    // Transmission t and absorption a per unit length (docs/model.md §7): clear glass barely absorbs;
+    // water absorbs red most (about 0.45 per metre, here per unit).
+    let (transmission, absorption) = match p.name {
+        "glass" => (0.9, [0.02, 0.01, 0.015]),
+        "water" => (0.85, [0.45, 0.06, 0.03]),
+        _ => (0.0, [0.0; 3]),
+    };
+    Material {
+        name: p.name.into(),
+        color: p.color,
+        r_s: 1.0,
+        r_d: 0.8,
+        r_a: 0.8,
+        m: 0.15,
+        h: PhongExponent::from_m(0.15),
+        mu: p.mu,
+        transmission,
+        ior: None,
+        absorption,
+        thickness: if transmission > 0.0 { 0.76 } else { 0.0 },
+        base_color_texture: None,
+        mu_tinted: [0.0; 3],
+        emission: [0.0; 3],
+        maps: Default::default(),
+        microfacet: Default::default(),
+    }
+}
+
+/// The board's red plastic with roughness `m` (h = 2/m² − 2).
+fn plastic_material(m: f64) -> Material {
+    Material {
+        name: format!("plastic m={m}"),
+        color: [0.75, 0.12, 0.08],
+        r_s: 1.0,
+        r_d: 0.8,
+        r_a: 0.8,
+        m,
+        h: PhongExponent::from_m(m),
+        mu: [0.04; 3],
+        ..Material::default()
     }
 }

@@ -71,13 +71,7 @@ pub fn run(gpu: &Gpu, inputs: SweepInputs) -> SweepReport {
         let expected = reference(n, v, l, (m, h, mirror), mu, (d, alpha, d0), 1.0, shadow);
         let gpu_out = &out[idx * OUTPUTS..(idx + 1) * OUTPUTS];
         let mut perturbed: Option<[[f64; OUTPUTS]; 8]> = None;
-        let near_switch = {
-            let nn = safe_normalize(n, v);
-            let r = 2.0 * nn.dot(l) * nn - l;
-            nn.dot(l).abs() < SWITCH_MARGIN
-                || nn.dot(v).abs() < SWITCH_MARGIN
-                || (mirror && (v.dot(r) - MIRROR_V_DOT_R_MIN).abs() < SWITCH_MARGIN)
-        };
+        let near_switch = is_near_switch(n, v, l, mirror);
         for t in terms.iter_mut() {
             for c in t.columns.clone() {
                 let (gv, rv) = (gpu_out[c] as f64, expected[c]);
@@ -104,34 +98,8 @@ pub fn run(gpu: &Gpu, inputs: SweepInputs) -> SweepReport {
                     t.ill_conditioned += 1;
                     continue;
                 }
-                let p = perturbed.get_or_insert_with(|| {
-                    // Rotate each vector by INPUT_PERTURBATION radians about two axes perpendicular
-                    // to it, and scale its components by 1 ± INPUT_PERTURBATION (the rounding a
-                    // position gets per component), both ways; scale the scalars and the length
-                    // of the sampled light direction alike.
-                    let (pn, pv, pl) = (perpendiculars(n), perpendiculars(v), perpendiculars(l));
-                    let patterns = [DVec3::new(1.0, -1.0, 1.0), DVec3::new(-1.0, 1.0, 1.0)];
-                    std::array::from_fn(|j| {
-                        let k = if j % 2 == 0 { INPUT_PERTURBATION } else { -INPUT_PERTURBATION };
-                        let (dn, dv, dl) = match j / 2 {
-                            a @ 0..=1 => (pn[a] * k * n.length(), pv[a] * k, pl[a] * k),
-                            a => {
-                                let s = patterns[a - 2] * k;
-                                (n * s, v * s, l * -s)
-                            }
-                        };
-                        reference(
-                            n + dn,
-                            (v + dv).normalize(),
-                            (l + dl).normalize(),
-                            (m * (1.0 + k), if mirror { h } else { h * (1.0 + k) }, mirror),
-                            mu.map(|x| x * (1.0 + k)),
-                            (d * (1.0 + k) + k.abs(), alpha * (1.0 + k), d0 * (1.0 + k)),
-                            1.0 + k,
-                            shadow,
-                        )
-                    })
-                });
+                let p = perturbed
+                    .get_or_insert_with(|| perturbed_references(n, v, l, (m, h, mirror), mu, (d, alpha, d0), shadow));
                 let change = p.iter().map(|q| (q[c] - rv).abs() / rv.abs().max(ERROR_ABS_FLOOR)).fold(0.0, f64::max);
                 if change > WELL_CONDITIONED_CHANGE {
                     t.ill_conditioned += 1;
@@ -145,6 +113,53 @@ pub fn run(gpu: &Gpu, inputs: SweepInputs) -> SweepReport {
         }
     }
     SweepReport { inputs, combinations: total, terms, gpu_ms }
+}
+
+/// Whether the inputs are within `SWITCH_MARGIN` of a switch (N·L = 0, N·V = 0, the mirror threshold).
+fn is_near_switch(n: DVec3, v: DVec3, l: DVec3, mirror: bool) -> bool {
+    let nn = safe_normalize(n, v);
+    let r = 2.0 * nn.dot(l) * nn - l;
+    nn.dot(l).abs() < SWITCH_MARGIN
+        || nn.dot(v).abs() < SWITCH_MARGIN
+        || (mirror && (v.dot(r) - MIRROR_V_DOT_R_MIN).abs() < SWITCH_MARGIN)
+}
+
+/// The f64 reference at the eight perturbations of a combination's inputs, for its conditioning.
+fn perturbed_references(
+    n: DVec3,
+    v: DVec3,
+    l: DVec3,
+    (m, h, mirror): (f64, f64, bool),
+    mu: [f64; 3],
+    (d, alpha, d0): (f64, f64, f64),
+    shadow: &ShadowCase,
+) -> [[f64; OUTPUTS]; 8] {
+    // Rotate each vector by INPUT_PERTURBATION radians about two axes perpendicular
+    // to it, and scale its components by 1 ± INPUT_PERTURBATION (the rounding a
+    // position gets per component), both ways; scale the scalars and the length
+    // of the sampled light direction alike.
+    let (pn, pv, pl) = (perpendiculars(n), perpendiculars(v), perpendiculars(l));
+    let patterns = [DVec3::new(1.0, -1.0, 1.0), DVec3::new(-1.0, 1.0, 1.0)];
+    std::array::from_fn(|j| {
+        let k = if j % 2 == 0 { INPUT_PERTURBATION } else { -INPUT_PERTURBATION };
+        let (dn, dv, dl) = match j / 2 {
+            a @ 0..=1 => (pn[a] * k * n.length(), pv[a] * k, pl[a] * k),
+            a => {
+                let s = patterns[a - 2] * k;
+                (n * s, v * s, l * -s)
+            }
+        };
+        reference(
+            n + dn,
+            (v + dv).normalize(),
+            (l + dl).normalize(),
+            (m * (1.0 + k), if mirror { h } else { h * (1.0 + k) }, mirror),
+            mu.map(|x| x * (1.0 + k)),
+            (d * (1.0 + k) + k.abs(), alpha * (1.0 + k), d0 * (1.0 + k)),
+            1.0 + k,
+            shadow,
+        )
+    })
 }
 
 /// Two unit vectors perpendicular to `v` and to each other (any two, for a zero `v`).

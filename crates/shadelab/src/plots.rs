@@ -3,6 +3,7 @@
 //! plot shares (the font, log axes, saving).
 
 use crate::bench::accuracy::{Report, Row, Study};
+use plotters::coord::Shift;
 use plotters::coord::combinators::{BindKeyPoints, LogCoord, WithKeyPoints};
 use plotters::prelude::*;
 use shadelab_model::{ShadingMode, SpecularModel};
@@ -130,80 +131,103 @@ pub fn error_vs_time(report: &Report, path: &Path) -> anyhow::Result<()> {
         let cols = if n > 1 { 2 } else { 1 };
         let panels = body.split_evenly((n.div_ceil(cols), cols));
         for (scene, area) in report.plan.scenes.iter().zip(panels.iter()) {
-            let rows: Vec<&Row> = report
-                .rows
-                .iter()
-                .filter(|r| r.study == Study::Modes && r.scene == *scene && (r.width, r.height) == (w, h))
-                .filter(|r| r.error.is_some())
-                .collect();
-            let xr = log_range(rows.iter().map(|r| r.median_ms));
-            let yr = log_range(rows.iter().map(|r| r.error.unwrap().rmse));
-            let mut chart = ChartBuilder::on(area)
-                .caption(format!("{scene}: RMSE vs GPU time (levels of detail along each line)"), ("sans-serif", 17))
-                .margin(12)
-                .x_label_area_size(40)
-                .y_label_area_size(70)
-                .build_cartesian_2d(log_axis(xr), log_axis(yr))
-                .map_err(plot_err)?;
-            chart
-                .configure_mesh()
-                .x_desc("median GPU ms per frame")
-                .y_desc("RMSE vs exact surface (linear)")
-                .y_label_formatter(&|v| format!("{v:.0e}"))
-                .x_label_formatter(&|v| format!("{v}"))
-                .draw()
-                .map_err(plot_err)?;
-            for (shading, specular) in programs().into_iter().skip(1) {
-                let color = program_color(shading, specular);
-                let mut pts: Vec<(f64, f64, u32)> = rows
-                    .iter()
-                    .filter(|r| r.shading == shading && r.specular == specular)
-                    .map(|r| (r.median_ms, r.error.unwrap().rmse, r.level))
-                    .collect();
-                pts.sort_by_key(|p| p.2);
-                chart
-                    .draw_series(LineSeries::new(pts.iter().map(|p| (p.0, p.1)), color.stroke_width(2)))
-                    .map_err(plot_err)?
-                    .label(label(shading, specular))
-                    .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], color.stroke_width(3)));
-                chart.draw_series(pts.iter().map(|p| Circle::new((p.0, p.1), 4, color.filled()))).map_err(plot_err)?;
-                // The coarsest level is labelled, so a reader sees which end is which.
-                if let Some(p) = pts.first() {
-                    chart
-                        .draw_series(std::iter::once(
-                            EmptyElement::at((p.0, p.1))
-                                + Text::new(
-                                    format!("level {}", p.2),
-                                    (7, -16),
-                                    ("sans-serif", 13).into_font().color(&color),
-                                ),
-                        ))
-                        .map_err(plot_err)?;
-                }
-            }
-            for specular in SpecularModel::ALL_MODELS {
-                let mut front: Vec<(f64, f64)> = rows
-                    .iter()
-                    .filter(|r| r.pareto && r.specular == Some(specular))
-                    .map(|r| (r.median_ms, r.error.unwrap().rmse))
-                    .collect();
-                front.sort_by(|a, b| a.0.total_cmp(&b.0));
-                let style = match specular {
-                    SpecularModel::Phong => BLACK.stroke_width(1),
-                    SpecularModel::CookTorrance => RGBColor(150, 150, 150).stroke_width(1),
-                };
-                chart
-                    .draw_series(LineSeries::new(front.iter().copied(), style))
-                    .map_err(plot_err)?
-                    .label(format!("Pareto front, {specular} specular"))
-                    .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], style));
-                chart.draw_series(front.iter().map(|p| Cross::new(*p, 6, style.stroke_width(2)))).map_err(plot_err)?;
-            }
-            draw_legend(&mut chart, SeriesLabelPosition::LowerLeft, 13)?;
+            error_vs_time_panel(area, report, scene, (w, h))?;
         }
         root.present().map_err(plot_err)?;
     }
     save(buf, size, path)
+}
+
+/// One scene's panel of [`error_vs_time`]: its rows at `(w, h)`, a line per program, the Pareto fronts.
+fn error_vs_time_panel(
+    area: &DrawingArea<BitMapBackend<'_>, Shift>,
+    report: &Report,
+    scene: &str,
+    (w, h): (u32, u32),
+) -> anyhow::Result<()> {
+    let rows: Vec<&Row> = report
+        .rows
+        .iter()
+        .filter(|r| r.study == Study::Modes && r.scene == scene && (r.width, r.height) == (w, h))
+        .filter(|r| r.error.is_some())
+        .collect();
+    let xr = log_range(rows.iter().map(|r| r.median_ms));
+    let yr = log_range(rows.iter().map(|r| r.error.unwrap().rmse));
+    let mut chart = ChartBuilder::on(area)
+        .caption(format!("{scene}: RMSE vs GPU time (levels of detail along each line)"), ("sans-serif", 17))
+        .margin(12)
+        .x_label_area_size(40)
+        .y_label_area_size(70)
+        .build_cartesian_2d(log_axis(xr), log_axis(yr))
+        .map_err(plot_err)?;
+    chart
+        .configure_mesh()
+        .x_desc("median GPU ms per frame")
+        .y_desc("RMSE vs exact surface (linear)")
+        .y_label_formatter(&|v| format!("{v:.0e}"))
+        .x_label_formatter(&|v| format!("{v}"))
+        .draw()
+        .map_err(plot_err)?;
+    for (shading, specular) in programs().into_iter().skip(1) {
+        let color = program_color(shading, specular);
+        let pts = program_points(&rows, shading, specular);
+        chart
+            .draw_series(LineSeries::new(pts.iter().map(|p| (p.0, p.1)), color.stroke_width(2)))
+            .map_err(plot_err)?
+            .label(label(shading, specular))
+            .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], color.stroke_width(3)));
+        chart.draw_series(pts.iter().map(|p| Circle::new((p.0, p.1), 4, color.filled()))).map_err(plot_err)?;
+        // The coarsest level is labelled, so a reader sees which end is which.
+        if let Some(p) = pts.first() {
+            chart
+                .draw_series(std::iter::once(
+                    EmptyElement::at((p.0, p.1))
+                        + Text::new(format!("level {}", p.2), (7, -16), ("sans-serif", 13).into_font().color(&color)),
+                ))
+                .map_err(plot_err)?;
+        }
+    }
+    for specular in SpecularModel::ALL_MODELS {
+        let front = pareto_front(&rows, specular);
+        let style = match specular {
+            SpecularModel::Phong => BLACK.stroke_width(1),
+            SpecularModel::CookTorrance => RGBColor(150, 150, 150).stroke_width(1),
+        };
+        chart
+            .draw_series(LineSeries::new(front.iter().copied(), style))
+            .map_err(plot_err)?
+            .label(format!("Pareto front, {specular} specular"))
+            .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], style));
+        chart.draw_series(front.iter().map(|p| Cross::new(*p, 6, style.stroke_width(2)))).map_err(plot_err)?;
+    }
+    draw_legend(&mut chart, SeriesLabelPosition::LowerLeft, 13)?;
+    Ok(())
+}
+
+/// A program's rows as (time, RMSE, level), in order of level.
+fn program_points(
+    rows: &[&Row],
+    shading: Option<ShadingMode>,
+    specular: Option<SpecularModel>,
+) -> Vec<(f64, f64, u32)> {
+    let mut pts: Vec<(f64, f64, u32)> = rows
+        .iter()
+        .filter(|r| r.shading == shading && r.specular == specular)
+        .map(|r| (r.median_ms, r.error.unwrap().rmse, r.level))
+        .collect();
+    pts.sort_by_key(|p| p.2);
+    pts
+}
+
+/// The Pareto front's rows with `specular` as (time, RMSE), in order of time.
+fn pareto_front(rows: &[&Row], specular: SpecularModel) -> Vec<(f64, f64)> {
+    let mut front: Vec<(f64, f64)> = rows
+        .iter()
+        .filter(|r| r.pareto && r.specular == Some(specular))
+        .map(|r| (r.median_ms, r.error.unwrap().rmse))
+        .collect();
+    front.sort_by(|a, b| a.0.total_cmp(&b.0));
+    front
 }
 
 /// How time grows: per added light (left) and per pixel count (right, log–log), every program

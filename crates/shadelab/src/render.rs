@@ -6,7 +6,7 @@ use anyhow::Context;
 use shadelab_model::ShadingMode;
 use shadelab_model::gltf_io::{self, LoadedScene, SceneSettings};
 use shadelab_model::params::NamedValue;
-use shadelab_render::{AdapterChoice, Gpu, LinearImage, RenderSettings};
+use shadelab_render::{AdapterChoice, Gpu, LinearImage, RenderSettings, UploadError};
 use std::path::Path;
 
 /// What `render --overlay` draws over the image.
@@ -112,7 +112,39 @@ pub fn run(args: &cli::RenderArgs) -> Result<(), Failure> {
     if args.explain {
         print!("{}", explain(&scene, &settings));
     }
-    if (args.reference || args.difference) && !shadelab_model::scene_variants::reference_covers(&scene) {
+    check_difference_flags(args, &scene, &settings, kind)?;
+    let gpu = Gpu::headless(AdapterChoice::from_env()).context("opening a GPU adapter")?;
+    log::info!("adapter: {}", gpu.describe());
+    if args.interpolation_difference {
+        return interpolation_difference(&gpu, &scene, (width, height), &settings, &args.output);
+    }
+    if args.reference || args.difference {
+        return crate::reference_views::run(&gpu, &scene, (width, height), &settings, args, kind);
+    }
+    let image = if factor {
+        shadelab_render::render_shadow_factor(&gpu, &scene, (width, height), &settings)
+    } else if args.overlay.is_empty() {
+        shadelab_render::render_image(&gpu, &scene, width, height, &settings)
+    } else {
+        render_with_overlays(&gpu, &scene, (width, height), &settings, &args.overlay)
+    }
+    .map_err(|e| Failure::Usage(format!("{}: {e}", args.scene.scene)))?;
+    save(&image, &args.output, kind).with_context(|| format!("writing {}", args.output.display()))?;
+    let bad = image.nonfinite_count();
+    if bad > 0 {
+        log::warn!("{bad} pixels are not finite");
+    }
+    Ok(())
+}
+
+/// Errors for `--reference`, `--difference` and `--interpolation-difference` where they cannot apply.
+fn check_difference_flags(
+    args: &cli::RenderArgs,
+    scene: &shadelab_model::Scene,
+    settings: &RenderSettings,
+    kind: ImageKind,
+) -> Result<(), Failure> {
+    if (args.reference || args.difference) && !shadelab_model::scene_variants::reference_covers(scene) {
         return Err(Failure::Usage(format!(
             "--reference, --difference: only for scenes of analytic shapes and file meshes of at most {} triangles in all (REFERENCE_MESH_TRIANGLES: the reference tests every triangle per ray)",
             shadelab_model::scene_variants::REFERENCE_MESH_TRIANGLES
@@ -127,40 +159,30 @@ pub fn run(args: &cli::RenderArgs) -> Result<(), Failure> {
                 .into(),
         ));
     }
-    let gpu = Gpu::headless(AdapterChoice::from_env()).context("opening a GPU adapter")?;
-    log::info!("adapter: {}", gpu.describe());
-    if args.interpolation_difference {
-        return interpolation_difference(&gpu, &scene, (width, height), &settings, &args.output);
-    }
-    if args.reference || args.difference {
-        return crate::reference_views::run(&gpu, &scene, (width, height), &settings, args, kind);
-    }
-    let image = if factor {
-        shadelab_render::render_shadow_factor(&gpu, &scene, (width, height), &settings)
-    } else if args.overlay.is_empty() {
-        shadelab_render::render_image(&gpu, &scene, width, height, &settings)
-    } else {
-        // Each overlay once, in the order given (a later one drawn over an earlier one).
-        let mut overlays: Vec<Overlay> = Vec::new();
-        for o in &args.overlay {
-            if !overlays.contains(o) {
-                overlays.push(*o);
-            }
-        }
-        let lines: Vec<_> = overlays.iter().map(|o| (*o, o.lines(&scene))).collect();
-        for (o, (l, _)) in &lines {
-            log::info!("overlay {}: {} lines", o.name(), l.len());
-        }
-        let sets: Vec<_> = lines.iter().map(|(_, (l, c))| (l.as_slice(), *c)).collect();
-        shadelab_render::overlay_pass::render_image_with_line_sets(&gpu, &scene, (width, height), &settings, &sets)
-    }
-    .map_err(|e| Failure::Usage(format!("{}: {e}", args.scene.scene)))?;
-    save(&image, &args.output, kind).with_context(|| format!("writing {}", args.output.display()))?;
-    let bad = image.nonfinite_count();
-    if bad > 0 {
-        log::warn!("{bad} pixels are not finite");
-    }
     Ok(())
+}
+
+/// The frame with `--overlay`'s line sets drawn over it.
+fn render_with_overlays(
+    gpu: &Gpu,
+    scene: &shadelab_model::Scene,
+    (width, height): (u32, u32),
+    settings: &RenderSettings,
+    overlay: &[Overlay],
+) -> Result<LinearImage, UploadError> {
+    // Each overlay once, in the order given (a later one drawn over an earlier one).
+    let mut overlays: Vec<Overlay> = Vec::new();
+    for o in overlay {
+        if !overlays.contains(o) {
+            overlays.push(*o);
+        }
+    }
+    let lines: Vec<_> = overlays.iter().map(|o| (*o, o.lines(scene))).collect();
+    for (o, (l, _)) in &lines {
+        log::info!("overlay {}: {} lines", o.name(), l.len());
+    }
+    let sets: Vec<_> = lines.iter().map(|(_, (l, c))| (l.as_slice(), *c)).collect();
+    shadelab_render::overlay_pass::render_image_with_line_sets(gpu, scene, (width, height), settings, &sets)
 }
 
 /// `render --interpolation-difference`: the FLIP map of the screen-space image against the

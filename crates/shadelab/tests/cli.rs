@@ -353,22 +353,22 @@ fn bench_accuracy_quick_is_well_formed_and_orders_the_modes() {
     }
 }
 
-/// `render --explain` lists every decision with its reason; `bench effects` measures the
-/// specialized, uber and floor pipelines side by side.
+/// The output of `render --explain` of the sphere (directional light, Phong specular) with `extra`.
+fn explain_sphere(png: &std::path::Path, extra: &[&str]) -> String {
+    let mut args = vec!["render", "--explain", "--scene", "sphere", "--light", "directional", "--specular", "phong"];
+    args.extend_from_slice(extra);
+    args.extend(["--width", "32", "--height", "18", "--output", png.to_str().unwrap()]);
+    let o = shadelab(&args);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    String::from_utf8_lossy(&o.stdout).into_owned()
+}
+
+/// `render --explain` lists every decision with its reason: shadows, filters and the effects left out.
 #[test]
-fn explain_and_bench_effects() {
+fn explain_lists_shadow_decisions_with_reasons() {
     let png = out_dir().join("explain.png");
-    let explain = |extra: &[&str]| {
-        let mut args =
-            vec!["render", "--explain", "--scene", "sphere", "--light", "directional", "--specular", "phong"];
-        args.extend_from_slice(extra);
-        args.extend(["--width", "32", "--height", "18", "--output", png.to_str().unwrap()]);
-        let o = shadelab(&args);
-        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-        String::from_utf8_lossy(&o.stdout).into_owned()
-    };
     // The sphere on its ground casts a shadow onto it; `--shadows off` takes the effect out.
-    let text = explain(&[]);
+    let text = explain_sphere(&png, &[]);
     assert!(
         text.contains("pipeline [diffuse+phong+ambient+dir+shadows+pcf]")
             && text.contains("cast shadows: on")
@@ -376,9 +376,9 @@ fn explain_and_bench_effects() {
         "{text}"
     );
     // A filter's code is in the pipeline only when a light uses it.
-    let text = explain(&["--shadow-filter", "poisson"]);
+    let text = explain_sphere(&png, &["--shadow-filter", "poisson"]);
     assert!(text.contains("pipeline [diffuse+phong+ambient+dir+shadows+poisson]"), "{text}");
-    let text = explain(&["--shadows", "off"]);
+    let text = explain_sphere(&png, &["--shadows", "off"]);
     for needle in [
         "pipeline [diffuse+phong+ambient+dir]",
         "cast shadows: off",
@@ -389,6 +389,12 @@ fn explain_and_bench_effects() {
     ] {
         assert!(text.contains(needle), "missing '{needle}' in:\n{text}");
     }
+}
+
+/// `render --explain` names an area light's code and PCSS, and the glass scene's glass effects.
+#[test]
+fn explain_names_area_light_and_glass_effects() {
+    let png = out_dir().join("explain-area-glass.png");
     // An area light brings its code and PCSS; the explain line names the light.
     let args =
         ["render", "--explain", "--scene", "penumbra", "--light", "disk", "--light-size", "0.3", "--width", "32"];
@@ -428,6 +434,11 @@ fn explain_and_bench_effects() {
     ] {
         assert!(text.contains(needle), "missing '{needle}' in:\n{text}");
     }
+}
+
+/// `bench effects` measures the specialized, uber and floor pipelines side by side.
+#[test]
+fn bench_effects_measures_specialized_uber_and_floors() {
     let o = shadelab(&["bench", "effects", "--frames", "2", "--warmup", "1", "--width", "64", "--height", "36"]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let text = String::from_utf8_lossy(&o.stdout);

@@ -8,6 +8,7 @@ use super::extras::{self, Number, Vec3, agrees};
 use super::scene_file::{Reader, num, quat, vec3};
 use crate::scene::{COMPOSED_ASPECT, Camera};
 use glam::{DMat3, DMat4, DQuat, DVec3};
+use gltf::json;
 use serde::{Deserialize, Serialize};
 use serde_json::{Value, json};
 
@@ -65,7 +66,8 @@ impl Reader<'_> {
     }
 
     fn camera(&mut self, ci: usize, world: &DMat4, center: DVec3, radius: f64) -> Result<Camera, GltfError> {
-        let c = &self.root.cameras[ci];
+        let root = self.root;
+        let c = &root.cameras[ci];
         let what = format!("camera {ci}");
         let eye = world.transform_point3(DVec3::ZERO);
         let forward = world.transform_vector3(DVec3::NEG_Z);
@@ -77,7 +79,31 @@ impl Reader<'_> {
         }
         let forward = forward.normalize();
         let far_auto = ((eye - center).length() + radius) * 2.0;
-        let (fov, near, far, orthographic) = match (&c.perspective, &c.orthographic) {
+        let (fov, near, far, orthographic) = self.projection(c, &what, far_auto)?;
+        let depth = (center - eye).dot(forward).max(radius * 0.1).max(1e-3);
+        let camera = Camera {
+            eye,
+            target: eye + forward * depth,
+            up: up_node.normalize(),
+            fov_y_deg: fov,
+            near,
+            far,
+            orthographic,
+        };
+        // The exact eye, the orbit pivot and the up vector shadelab wrote, when they still agree
+        // with the node.
+        let ex: CameraExtras = extras::read(&self.cx, &c.extras, &what)?;
+        Ok(exact_view(camera, ex, forward))
+    }
+
+    /// The camera's projection, checked: field of view (degrees), near, far and an orthographic half height.
+    fn projection(
+        &mut self,
+        c: &json::Camera,
+        what: &str,
+        far_auto: f64,
+    ) -> Result<(f64, f64, f64, Option<f64>), GltfError> {
+        Ok(match (&c.perspective, &c.orthographic) {
             (Some(p), _) => {
                 let yfov = p.yfov as f64;
                 if !(yfov > 0.0 && yfov < std::f64::consts::PI) {
@@ -112,53 +138,41 @@ impl Reader<'_> {
                 (FALLBACK_FOV_Y_DEG, near, far, Some(ymag))
             }
             (None, None) => return Err(self.cx.invalid(format!("{what} has neither perspective nor orthographic"))),
-        };
-        let depth = (center - eye).dot(forward).max(radius * 0.1).max(1e-3);
-        let mut camera = Camera {
-            eye,
-            target: eye + forward * depth,
-            up: up_node.normalize(),
-            fov_y_deg: fov,
-            near,
-            far,
-            orthographic,
-        };
-        // The exact eye, the orbit pivot and the up vector shadelab wrote, when they still agree
-        // with the node.
-        let ex: CameraExtras = extras::read(&self.cx, &c.extras, &what)?;
-        if let Some(eye) = ex.eye.filter(|e| agrees(e.0, camera.eye)) {
-            camera.eye = eye.0;
-        }
-        for (v, field) in
-            [(ex.fov_y_deg, &mut camera.fov_y_deg), (ex.near, &mut camera.near), (ex.far, &mut camera.far)]
-        {
-            if let Some(Number(v)) = v
-                && agrees(DVec3::splat(v), DVec3::splat(*field))
-            {
-                *field = v;
-            }
-        }
-        if let (Some(Number(v)), Some(h)) = (ex.ymag, camera.orthographic.as_mut())
-            && agrees(DVec3::splat(v), DVec3::splat(*h))
-        {
-            *h = v;
-        }
-        let eye = camera.eye;
-        if let Some(Vec3(t)) = ex.target
-            && (t - eye).length_squared() > 0.0
-            && (t - eye).normalize().dot(forward) > 1.0 - TARGET_ON_AXIS
-        {
-            camera.target = t;
-        }
-        if let Some(Vec3(up)) = ex.up {
-            let with = Camera { up, ..camera };
-            if up.cross(forward).length_squared() > UP_OFF_AXIS && with.view().abs_diff_eq(camera.view(), UP_SAME_VIEW)
-            {
-                camera.up = up;
-            }
-        }
-        Ok(camera)
+        })
     }
+}
+
+/// The camera with the extras' exact eye, projection, orbit pivot and up vector where they agree.
+fn exact_view(mut camera: Camera, ex: CameraExtras, forward: DVec3) -> Camera {
+    if let Some(eye) = ex.eye.filter(|e| agrees(e.0, camera.eye)) {
+        camera.eye = eye.0;
+    }
+    for (v, field) in [(ex.fov_y_deg, &mut camera.fov_y_deg), (ex.near, &mut camera.near), (ex.far, &mut camera.far)] {
+        if let Some(Number(v)) = v
+            && agrees(DVec3::splat(v), DVec3::splat(*field))
+        {
+            *field = v;
+        }
+    }
+    if let (Some(Number(v)), Some(h)) = (ex.ymag, camera.orthographic.as_mut())
+        && agrees(DVec3::splat(v), DVec3::splat(*h))
+    {
+        *h = v;
+    }
+    let eye = camera.eye;
+    if let Some(Vec3(t)) = ex.target
+        && (t - eye).length_squared() > 0.0
+        && (t - eye).normalize().dot(forward) > 1.0 - TARGET_ON_AXIS
+    {
+        camera.target = t;
+    }
+    if let Some(Vec3(up)) = ex.up {
+        let with = Camera { up, ..camera };
+        if up.cross(forward).length_squared() > UP_OFF_AXIS && with.view().abs_diff_eq(camera.view(), UP_SAME_VIEW) {
+            camera.up = up;
+        }
+    }
+    camera
 }
 
 /// A camera that shows a sphere of `radius` about `center`, from the front and a little above.

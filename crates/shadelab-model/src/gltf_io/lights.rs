@@ -95,6 +95,17 @@ impl Reader<'_> {
 
     fn light(&mut self, li: usize, l: &khr::Light, world: &DMat4) -> Result<Light, GltfError> {
         let what = format!("light {li}");
+        let mut light = self.file_light(&what, l, world)?;
+        // The file's kind: an area light in the extras replaces `light.kind`, not this.
+        let kind = light.kind;
+        let ex: LightExtras = extras::read(&self.cx, &l.extras, &what)?;
+        let file_filter = exact_params(&mut light, &ex);
+        self.area_params(&what, &mut light, &ex, kind, world, file_filter);
+        self.held_cones(&what, light, kind)
+    }
+
+    /// The light as the file's own fields describe it, before `extras.shadelab` is applied.
+    fn file_light(&mut self, what: &str, l: &khr::Light, world: &DMat4) -> Result<Light, GltfError> {
         let intensity = l.intensity as f64;
         if !intensity.is_finite() || intensity < 0.0 || !l.color.iter().all(|c| c.is_finite()) {
             return Err(self
@@ -131,7 +142,7 @@ impl Reader<'_> {
             })?),
             None => None,
         };
-        let mut light = Light {
+        Ok(Light {
             kind,
             position,
             direction,
@@ -147,50 +158,20 @@ impl Reader<'_> {
             size: [crate::lighting::lights::LIGHT_SIZE_DEFAULT; 2],
             tangent: DVec3::X,
             area_points: 0,
-        };
-        let ex: LightExtras = extras::read(&self.cx, &l.extras, &what)?;
-        let set = |field: &mut f64, v: Option<f64>| {
-            if let Some(v) = v {
-                *field = v;
-            }
-        };
-        set(&mut light.intensity, ex.intensity.map(|v| v.0));
-        if let Some(c) = ex.color {
-            light.color = c.0;
-        }
-        set(&mut light.falloff_alpha, ex.alpha.map(|v| v.0));
-        set(&mut light.d0, ex.d0.map(|v| v.0));
-        if let Some(f) = ex.falloff_form {
-            light.falloff_form = f.0;
-        }
-        if let Some(p) = ex.position.filter(|p| agrees(p.0, light.position)) {
-            light.position = p.0;
-        }
-        if let Some(d) = ex.direction.filter(|d| agrees(d.0, light.direction)) {
-            light.direction = d.0;
-        }
-        set(&mut light.inner_cone, ex.inner_cone.map(|v| v.0));
-        set(&mut light.outer_cone, ex.outer_cone.map(|v| v.0));
-        if let Some(v) = ex.range {
-            light.range = Some(v.0);
-        }
-        if let Some(c) = ex.casts_shadows {
-            light.shadow.casts = c.0;
-        }
-        if let Some(r) = ex.shadow_resolution {
-            light.shadow.resolution = r.0;
-        }
-        if let Some(c) = ex.shadow_cascades {
-            light.shadow.cascades = c.0;
-        }
-        if let Some(n) = ex.pcss_taps {
-            light.shadow.pcss_taps = n.0;
-        }
-        let file_filter = ex.shadow_filter.is_some();
-        if let Some(f) = ex.shadow_filter {
-            light.shadow.filter = f.0;
-        }
-        match ex.area.map(|a| a.0) {
+        })
+    }
+
+    /// The extras' area light, size, tangent and point count (`kind`: the file's light kind).
+    fn area_params(
+        &mut self,
+        what: &str,
+        light: &mut Light,
+        ex: &LightExtras,
+        kind: LightKind,
+        world: &DMat4,
+        file_filter: bool,
+    ) {
+        match ex.area.as_ref().map(|a| a.0) {
             Some(area) if area.is_area() && kind != LightKind::Directional => {
                 light.kind = area;
                 // The file's spot cone stands in for a flat light's face; the light has none.
@@ -212,14 +193,20 @@ impl Reader<'_> {
                 }
             }
         }
-        set(&mut light.size[0], ex.width.map(|v| v.0));
-        light.size[1] = ex.height.map_or(light.size[0], |v| v.0);
-        if let Some(t) = ex.tangent {
+        if let Some(v) = &ex.width {
+            light.size[0] = v.0;
+        }
+        light.size[1] = ex.height.as_ref().map_or(light.size[0], |v| v.0);
+        if let Some(t) = &ex.tangent {
             light.tangent = t.0;
         }
-        if let Some(k) = ex.points.filter(|_| light.kind.is_area()) {
+        if let Some(k) = ex.points.as_ref().filter(|_| light.kind.is_area()) {
             light.area_points = k.0;
         }
+    }
+
+    /// The light with its spot cones checked and held to [0, π/2] (`kind`: the file's light kind).
+    fn held_cones(&self, what: &str, mut light: Light, kind: LightKind) -> Result<Light, GltfError> {
         // glTF's f32 π/2 is a little above f64's: the cones are held to [0, π/2] after the check.
         let (inner, outer) = (light.inner_cone, light.outer_cone);
         let span = params::CONE_ANGLE_F32;
@@ -235,6 +222,51 @@ impl Reader<'_> {
         light.outer_cone = outer.min(params::CONE_ANGLE.max);
         Ok(light)
     }
+}
+
+/// The extras' exact parameters and shadow settings over the light; whether they chose a filter.
+fn exact_params(light: &mut Light, ex: &LightExtras) -> bool {
+    let set = |field: &mut f64, v: Option<f64>| {
+        if let Some(v) = v {
+            *field = v;
+        }
+    };
+    set(&mut light.intensity, ex.intensity.as_ref().map(|v| v.0));
+    if let Some(c) = &ex.color {
+        light.color = c.0;
+    }
+    set(&mut light.falloff_alpha, ex.alpha.as_ref().map(|v| v.0));
+    set(&mut light.d0, ex.d0.as_ref().map(|v| v.0));
+    if let Some(f) = &ex.falloff_form {
+        light.falloff_form = f.0;
+    }
+    if let Some(p) = ex.position.as_ref().filter(|p| agrees(p.0, light.position)) {
+        light.position = p.0;
+    }
+    if let Some(d) = ex.direction.as_ref().filter(|d| agrees(d.0, light.direction)) {
+        light.direction = d.0;
+    }
+    set(&mut light.inner_cone, ex.inner_cone.as_ref().map(|v| v.0));
+    set(&mut light.outer_cone, ex.outer_cone.as_ref().map(|v| v.0));
+    if let Some(v) = &ex.range {
+        light.range = Some(v.0);
+    }
+    if let Some(c) = &ex.casts_shadows {
+        light.shadow.casts = c.0;
+    }
+    if let Some(r) = &ex.shadow_resolution {
+        light.shadow.resolution = r.0;
+    }
+    if let Some(c) = &ex.shadow_cascades {
+        light.shadow.cascades = c.0;
+    }
+    if let Some(n) = &ex.pcss_taps {
+        light.shadow.pcss_taps = n.0;
+    }
+    if let Some(f) = &ex.shadow_filter {
+        light.shadow.filter = f.0;
+    }
+    ex.shadow_filter.is_some()
 }
 
 /// Light `i` as a `KHR_lights_punctual` light and the node that places it (its −Z along the

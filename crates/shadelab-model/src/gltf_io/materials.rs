@@ -288,8 +288,50 @@ pub(super) fn pbr_material(m: &json::Material) -> Material {
 /// the model's exact parameters in `extras.shadelab`; the extensions it uses are added to
 /// `extensions_used`.
 pub(super) fn write_material(m: &Material, extensions_used: &mut Vec<&'static str>) -> Value {
-    let mu_max = m.mu.iter().fold(0.0f64, |a, b| a.max(*b));
     let mut ext = serde_json::Map::new();
+    let (base, metallic) = write_extensions(m, &mut ext, extensions_used);
+    let ex = MaterialExtras {
+        color: Some(m.color.into()),
+        m: Some(m.m.into()),
+        h: Some(Phong(m.h)),
+        mu: Some(m.mu.into()),
+        r_s: Some(m.r_s.into()),
+        r_d: Some(m.r_d.into()),
+        r_a: Some(m.r_a.into()),
+        t: Some(m.transmission.into()),
+        a: Some(m.absorption.into()),
+        d: Some(m.thickness.into()),
+        mu_t: Some(m.mu_tinted.into()),
+        emission: (m.emission != [0.0; 3]).then(|| m.emission.into()),
+        mf0: m.maps.metal_roughness.map(|mr| mr.metallic_f0.into()),
+        ior: m.ior.map(Into::into),
+    };
+    let mut out = json!({
+        "name": m.name,
+        "pbrMetallicRoughness": {
+            "baseColorFactor": [num(base[0]), num(base[1]), num(base[2]), 1.0],
+            "metallicFactor": metallic,
+            "roughnessFactor": num(m.m.clamp(0.0, 1.0).sqrt()),
+        },
+        "extras": extras::shadelab(&ex),
+    });
+    write_texture_slots(m, &mut out, extensions_used);
+    if m.emission != [0.0; 3] {
+        out["emissiveFactor"] = rgb(m.emission);
+    }
+    if !ext.is_empty() {
+        out["extensions"] = Value::Object(ext);
+    }
+    out
+}
+
+/// The material's KHR_materials extensions into `ext` (named in `extensions_used`); the glTF base colour and metallic.
+fn write_extensions(
+    m: &Material,
+    ext: &mut serde_json::Map<String, Value>,
+    extensions_used: &mut Vec<&'static str>,
+) -> ([f64; 3], f64) {
+    let mu_max = m.mu.iter().fold(0.0f64, |a, b| a.max(*b));
     let (base, metallic) = if mu_max <= DIELECTRIC_MU_MAX {
         // A dielectric: μ through the index of refraction v = (1 + √μ)/(1 − √μ) (docs/model.md
         // §5) of its largest channel, the others by KHR_materials_specular's colour.
@@ -326,31 +368,11 @@ pub(super) fn write_material(m: &Material, extensions_used: &mut Vec<&'static st
         );
         extensions_used.push("KHR_materials_volume");
     }
-    let ex = MaterialExtras {
-        color: Some(m.color.into()),
-        m: Some(m.m.into()),
-        h: Some(Phong(m.h)),
-        mu: Some(m.mu.into()),
-        r_s: Some(m.r_s.into()),
-        r_d: Some(m.r_d.into()),
-        r_a: Some(m.r_a.into()),
-        t: Some(m.transmission.into()),
-        a: Some(m.absorption.into()),
-        d: Some(m.thickness.into()),
-        mu_t: Some(m.mu_tinted.into()),
-        emission: (m.emission != [0.0; 3]).then(|| m.emission.into()),
-        mf0: m.maps.metal_roughness.map(|mr| mr.metallic_f0.into()),
-        ior: m.ior.map(Into::into),
-    };
-    let mut out = json!({
-        "name": m.name,
-        "pbrMetallicRoughness": {
-            "baseColorFactor": [num(base[0]), num(base[1]), num(base[2]), 1.0],
-            "metallicFactor": metallic,
-            "roughnessFactor": num(m.m.clamp(0.0, 1.0).sqrt()),
-        },
-        "extras": extras::shadelab(&ex),
-    });
+    (base, metallic)
+}
+
+/// The material's texture slots into `out`, the material's JSON (extensions they use named in `extensions_used`).
+fn write_texture_slots(m: &Material, out: &mut Value, extensions_used: &mut Vec<&'static str>) {
     let info = super::textures::texture_info;
     if let Some(t) = &m.base_color_texture {
         out["pbrMetallicRoughness"]["baseColorTexture"] = info(t, extensions_used);
@@ -371,11 +393,4 @@ pub(super) fn write_material(m: &Material, extensions_used: &mut Vec<&'static st
         slot["scale"] = num(n.scale);
         out["normalTexture"] = slot;
     }
-    if m.emission != [0.0; 3] {
-        out["emissiveFactor"] = rgb(m.emission);
-    }
-    if !ext.is_empty() {
-        out["extensions"] = Value::Object(ext);
-    }
-    out
 }

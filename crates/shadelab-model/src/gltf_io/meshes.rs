@@ -104,57 +104,11 @@ impl Reader<'_> {
             Some(a) => Some(self.per_vertex::<2>(a.value(), &format!("{what}: TEXCOORD_0"), &[Type::Vec2], n)?),
             None => None,
         };
-        let colors = match prim.attributes.get(&Checked::Valid(Semantic::Colors(0))) {
-            Some(a) => {
-                let c = self.per_vertex::<3>(a.value(), &format!("{what}: COLOR_0"), &[Type::Vec3, Type::Vec4], n)?;
-                if c.iter().flatten().any(|x| !x.is_finite()) {
-                    self.cx.warn(format!("{what}: a COLOR_0 value is not finite: drawn as white"));
-                }
-                // Colours are linear RGB in [0, 1] (glTF 2.0 §3.7.2.1); alpha is not used (opaque).
-                Some(c.into_iter().map(|c| c.map(|x| if x.is_finite() { x.clamp(0.0, 1.0) } else { 1.0 })).collect())
-            }
-            None => None,
-        };
-        let read: [Semantic; 5] =
-            [Semantic::Positions, Semantic::Normals, Semantic::TexCoords(0), Semantic::Colors(0), Semantic::Tangents];
-        for name in prim.attributes.keys().filter_map(|k| match k {
-            Checked::Valid(s) if !read.contains(s) => Some(s.to_string()),
-            Checked::Valid(_) => None,
-            Checked::Invalid => Some("an unknown attribute".to_string()),
-        }) {
-            self.cx.warn(format!("{what}: attribute {name} is not used"));
-        }
-        let tangents = match prim.attributes.get(&Checked::Valid(Semantic::Tangents)) {
-            Some(a) => {
-                let t = self.per_vertex::<4>(a.value(), &format!("{what}: TANGENT"), &[Type::Vec4], n)?;
-                if t.iter().flatten().any(|x| !x.is_finite()) {
-                    self.cx.warn(format!(
-                        "{what}: a TANGENT value is not finite: the normal texture is not applied there"
-                    ));
-                }
-                Some(t)
-            }
-            None => None,
-        };
+        let colors = self.colors(prim, &what, n)?;
+        self.warn_unused_attributes(prim, &what);
+        let tangents = self.tangents(prim, &what, n)?;
         let corners = self.corners(prim, positions.len(), &what)?;
-        let tris: Vec<[u32; 3]> = match mode {
-            Mode::Triangles => {
-                if corners.len() % 3 != 0 {
-                    return Err(self.cx.invalid(format!(
-                        "{what}: {} {} is not a multiple of 3",
-                        corners.len(),
-                        if prim.indices.is_some() { "indices" } else { "vertices" }
-                    )));
-                }
-                corners.chunks_exact(3).map(|c| [c[0], c[1], c[2]]).collect()
-            }
-            // glTF 2.0 §3.7.2.1: strip triangle i is {v_i, v_(i+1+i%2), v_(i+2−i%2)}; fan
-            // triangle i is {v_(i+1), v_(i+2), v_0}.
-            Mode::TriangleStrip => (0..corners.len().saturating_sub(2))
-                .map(|i| [corners[i], corners[i + 1 + i % 2], corners[i + 2 - i % 2]])
-                .collect(),
-            _ => (0..corners.len().saturating_sub(2)).map(|i| [corners[i + 1], corners[i + 2], corners[0]]).collect(),
-        };
+        let tris = self.triangles(prim, mode, &corners, &what)?;
         if tris.len() > MAX_TRIANGLES {
             return Err(self.too_many(tris.len()));
         }
@@ -183,6 +137,94 @@ impl Reader<'_> {
         let analytic = self.analytic_shape(&mesh.extras, &tm, &what)?;
         self.file_meshes.push((tm, None));
         Ok(Some(Prim { mesh: self.file_meshes.len() - 1, material, analytic }))
+    }
+
+    /// `COLOR_0`, one linear RGB colour per vertex in [0, 1] (not finite: white), if the primitive has it.
+    fn colors(
+        &mut self,
+        prim: &json::mesh::Primitive,
+        what: &str,
+        n: usize,
+    ) -> Result<Option<Vec<[f32; 3]>>, GltfError> {
+        use json::accessor::Type;
+        use json::mesh::Semantic;
+        Ok(match prim.attributes.get(&Checked::Valid(Semantic::Colors(0))) {
+            Some(a) => {
+                let c = self.per_vertex::<3>(a.value(), &format!("{what}: COLOR_0"), &[Type::Vec3, Type::Vec4], n)?;
+                if c.iter().flatten().any(|x| !x.is_finite()) {
+                    self.cx.warn(format!("{what}: a COLOR_0 value is not finite: drawn as white"));
+                }
+                // Colours are linear RGB in [0, 1] (glTF 2.0 §3.7.2.1); alpha is not used (opaque).
+                Some(c.into_iter().map(|c| c.map(|x| if x.is_finite() { x.clamp(0.0, 1.0) } else { 1.0 })).collect())
+            }
+            None => None,
+        })
+    }
+
+    /// A warning for each attribute of the primitive that is not read.
+    fn warn_unused_attributes(&mut self, prim: &json::mesh::Primitive, what: &str) {
+        use json::mesh::Semantic;
+        let read: [Semantic; 5] =
+            [Semantic::Positions, Semantic::Normals, Semantic::TexCoords(0), Semantic::Colors(0), Semantic::Tangents];
+        for name in prim.attributes.keys().filter_map(|k| match k {
+            Checked::Valid(s) if !read.contains(s) => Some(s.to_string()),
+            Checked::Valid(_) => None,
+            Checked::Invalid => Some("an unknown attribute".to_string()),
+        }) {
+            self.cx.warn(format!("{what}: attribute {name} is not used"));
+        }
+    }
+
+    /// `TANGENT`, one tangent and bitangent sign per vertex, if the primitive has it.
+    fn tangents(
+        &mut self,
+        prim: &json::mesh::Primitive,
+        what: &str,
+        n: usize,
+    ) -> Result<Option<Vec<[f32; 4]>>, GltfError> {
+        use json::accessor::Type;
+        use json::mesh::Semantic;
+        Ok(match prim.attributes.get(&Checked::Valid(Semantic::Tangents)) {
+            Some(a) => {
+                let t = self.per_vertex::<4>(a.value(), &format!("{what}: TANGENT"), &[Type::Vec4], n)?;
+                if t.iter().flatten().any(|x| !x.is_finite()) {
+                    self.cx.warn(format!(
+                        "{what}: a TANGENT value is not finite: the normal texture is not applied there"
+                    ));
+                }
+                Some(t)
+            }
+            None => None,
+        })
+    }
+
+    /// The triangles of a triangle list, strip or fan (`mode`) from its corner list.
+    fn triangles(
+        &self,
+        prim: &json::mesh::Primitive,
+        mode: json::mesh::Mode,
+        corners: &[u32],
+        what: &str,
+    ) -> Result<Vec<[u32; 3]>, GltfError> {
+        use json::mesh::Mode;
+        Ok(match mode {
+            Mode::Triangles => {
+                if corners.len() % 3 != 0 {
+                    return Err(self.cx.invalid(format!(
+                        "{what}: {} {} is not a multiple of 3",
+                        corners.len(),
+                        if prim.indices.is_some() { "indices" } else { "vertices" }
+                    )));
+                }
+                corners.chunks_exact(3).map(|c| [c[0], c[1], c[2]]).collect()
+            }
+            // glTF 2.0 §3.7.2.1: strip triangle i is {v_i, v_(i+1+i%2), v_(i+2−i%2)}; fan
+            // triangle i is {v_(i+1), v_(i+2), v_0}.
+            Mode::TriangleStrip => (0..corners.len().saturating_sub(2))
+                .map(|i| [corners[i], corners[i + 1 + i % 2], corners[i + 2 - i % 2]])
+                .collect(),
+            _ => (0..corners.len().saturating_sub(2)).map(|i| [corners[i + 1], corners[i + 2], corners[0]]).collect(),
+        })
     }
 
     /// An attribute with one element per vertex, as f32 (the GPU's precision).

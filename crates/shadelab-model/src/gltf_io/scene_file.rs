@@ -184,40 +184,11 @@ impl Reader<'_> {
                 (sc.nodes.iter().map(|n| n.value()).collect::<Vec<_>>(), Some(sc))
             }
             // No scene: glTF 2.0 §3.5.1 lets a viewer show nothing; we show every root node.
-            None => {
-                let mut has_parent = vec![false; root.nodes.len()];
-                for n in &root.nodes {
-                    for c in n.children.iter().flatten() {
-                        if let Some(p) = has_parent.get_mut(c.value()) {
-                            *p = true;
-                        }
-                    }
-                }
-                ((0..root.nodes.len()).filter(|&i| !has_parent[i]).collect(), None)
-            }
+            None => (parentless_nodes(root), None),
         };
         let instances = self.walk(&roots)?;
 
-        let mut scene = Scene {
-            absorption: Default::default(),
-            name: scene_json.and_then(|s| s.name.clone()).unwrap_or_else(|| "glTF scene".into()),
-            objects: Vec::new(),
-            materials: Vec::new(),
-            lights: Vec::new(),
-            ambient: DEFAULT_AMBIENT,
-            camera: Camera {
-                eye: DVec3::Z,
-                target: DVec3::ZERO,
-                up: DVec3::Y,
-                fov_y_deg: FALLBACK_FOV_Y_DEG,
-                near: 0.1,
-                far: 100.0,
-                orthographic: None,
-            },
-            meshes: Default::default(),
-            illumination: Default::default(),
-            textures: Vec::new(),
-        };
+        let mut scene = empty_scene(scene_json.and_then(|s| s.name.clone()).unwrap_or_else(|| "glTF scene".into()));
         self.materials(&mut scene)?;
         let mut default_material = None;
         let mut settings = SceneSettings::default();
@@ -269,6 +240,43 @@ impl Reader<'_> {
         let cameras = self.cameras(camera_nodes, center, radius)?;
         scene.camera = cameras[0].1;
         Ok(LoadedScene { scene, settings, warnings: self.cx.warnings, cameras })
+    }
+}
+
+/// The nodes no node has as a child: what is shown when the file has no scene.
+fn parentless_nodes(root: &json::Root) -> Vec<usize> {
+    let mut has_parent = vec![false; root.nodes.len()];
+    for n in &root.nodes {
+        for c in n.children.iter().flatten() {
+            if let Some(p) = has_parent.get_mut(c.value()) {
+                *p = true;
+            }
+        }
+    }
+    (0..root.nodes.len()).filter(|&i| !has_parent[i]).collect()
+}
+
+/// A scene named `name` with nothing in it yet: the default ambient and a fallback camera.
+fn empty_scene(name: String) -> Scene {
+    Scene {
+        absorption: Default::default(),
+        name,
+        objects: Vec::new(),
+        materials: Vec::new(),
+        lights: Vec::new(),
+        ambient: DEFAULT_AMBIENT,
+        camera: Camera {
+            eye: DVec3::Z,
+            target: DVec3::ZERO,
+            up: DVec3::Y,
+            fov_y_deg: FALLBACK_FOV_Y_DEG,
+            near: 0.1,
+            far: 100.0,
+            orthographic: None,
+        },
+        meshes: Default::default(),
+        illumination: Default::default(),
+        textures: Vec::new(),
     }
 }
 

@@ -38,45 +38,10 @@ pub fn sphere_glb(triangles: usize, with_normals: bool) -> (Vec<u8>, usize) {
     let rings = s / 2;
     let (cols, rows) = (s as usize + 1, rings as usize + 1);
     let mut bin: Vec<u8> = Vec::with_capacity(cols * rows * 24 + sphere_triangles(s) * 12);
-    // Positions, then normals (the same unit vectors), vertex (i, j) at index j·cols + i; the
-    // seam column is duplicated, as texture-mapped spheres are.
-    let vertex = |i: usize, j: usize| {
-        let theta = std::f64::consts::PI * j as f64 / rings as f64;
-        let phi = std::f64::consts::TAU * i as f64 / s as f64;
-        DVec3::new(theta.sin() * phi.cos(), theta.cos(), -theta.sin() * phi.sin()).as_vec3()
-    };
-    for _attribute in 0..(1 + usize::from(with_normals)) {
-        for j in 0..rows {
-            for i in 0..cols {
-                for c in vertex(i, j).to_array() {
-                    bin.extend_from_slice(&c.to_le_bytes());
-                }
-            }
-        }
-    }
+    push_vertices(&mut bin, s, with_normals);
     let vertex_bytes = cols * rows * 12;
     let index_offset = bin.len();
-    let at = |i: usize, j: usize| (j * cols + i) as u32;
-    let mut count = 0usize;
-    for j in 0..rings as usize {
-        for i in 0..s as usize {
-            // Counter-clockwise seen from outside; the pole bands keep one triangle of two.
-            let quad = [[at(i, j), at(i, j + 1), at(i + 1, j + 1)], [at(i, j), at(i + 1, j + 1), at(i + 1, j)]];
-            let keep: &[[u32; 3]] = if j == 0 {
-                &quad[..1]
-            } else if j + 1 == rings as usize {
-                &quad[1..]
-            } else {
-                &quad
-            };
-            for t in keep {
-                for v in t {
-                    bin.extend_from_slice(&v.to_le_bytes());
-                }
-                count += 1;
-            }
-        }
-    }
+    let count = push_indices(&mut bin, s);
     debug_assert_eq!(count, sphere_triangles(s));
     let vertices = cols * rows;
     let light_dir = DVec3::new(0.5, -0.8, -0.6).normalize();
@@ -115,6 +80,56 @@ pub fn sphere_glb(triangles: usize, with_normals: bool) -> (Vec<u8>, usize) {
         ]
     });
     (glb_container(root, bin), count)
+}
+
+/// The sphere's positions, then (`with_normals`) its normals, appended to `bin` as f32 triples.
+fn push_vertices(bin: &mut Vec<u8>, s: u32, with_normals: bool) {
+    let rings = s / 2;
+    let (cols, rows) = (s as usize + 1, rings as usize + 1);
+    // Positions, then normals (the same unit vectors), vertex (i, j) at index j·cols + i; the
+    // seam column is duplicated, as texture-mapped spheres are.
+    let vertex = |i: usize, j: usize| {
+        let theta = std::f64::consts::PI * j as f64 / rings as f64;
+        let phi = std::f64::consts::TAU * i as f64 / s as f64;
+        DVec3::new(theta.sin() * phi.cos(), theta.cos(), -theta.sin() * phi.sin()).as_vec3()
+    };
+    for _attribute in 0..(1 + usize::from(with_normals)) {
+        for j in 0..rows {
+            for i in 0..cols {
+                for c in vertex(i, j).to_array() {
+                    bin.extend_from_slice(&c.to_le_bytes());
+                }
+            }
+        }
+    }
+}
+
+/// The sphere's triangles appended to `bin` as u32 indices; how many there are.
+fn push_indices(bin: &mut Vec<u8>, s: u32) -> usize {
+    let rings = s / 2;
+    let cols = s as usize + 1;
+    let at = |i: usize, j: usize| (j * cols + i) as u32;
+    let mut count = 0usize;
+    for j in 0..rings as usize {
+        for i in 0..s as usize {
+            // Counter-clockwise seen from outside; the pole bands keep one triangle of two.
+            let quad = [[at(i, j), at(i, j + 1), at(i + 1, j + 1)], [at(i, j), at(i + 1, j + 1), at(i + 1, j)]];
+            let keep: &[[u32; 3]] = if j == 0 {
+                &quad[..1]
+            } else if j + 1 == rings as usize {
+                &quad[1..]
+            } else {
+                &quad
+            };
+            for t in keep {
+                for v in t {
+                    bin.extend_from_slice(&v.to_le_bytes());
+                }
+                count += 1;
+            }
+        }
+    }
+    count
 }
 
 #[cfg(test)]

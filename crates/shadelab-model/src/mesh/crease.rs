@@ -38,40 +38,10 @@ pub fn build_mesh(triangles: &[[DVec3; 3]], crease_angle_deg: f64) -> Result<Mes
     let cos_crease = crease_angle_deg.to_radians().cos();
     let normals: Vec<Option<DVec3>> = triangles.iter().map(face_normal).collect();
     // The vertex of each corner (corner c of triangle t is 3t + c).
-    let corner_vertex: Vec<u32> = {
-        let mut ids: HashMap<[u32; 3], u32> = HashMap::default();
-        triangles
-            .iter()
-            .flatten()
-            .map(|p| {
-                let next = ids.len() as u32;
-                *ids.entry(key(*p)).or_insert(next)
-            })
-            .collect()
-    };
+    let corner_vertex = corner_vertices(triangles);
     let vertices = corner_vertex.iter().map(|&v| v as usize + 1).max().unwrap_or(0);
-    // A corner whose vertex an earlier corner of the same triangle already has (a degenerate
-    // triangle): its face is listed once around that vertex.
-    let repeats = |c: usize| (1..=c % 3).any(|k| corner_vertex[c - k] == corner_vertex[c]);
     // Faces around vertex v: faces[start[v]..start[v + 1]], in triangle order.
-    let mut start = vec![0usize; vertices + 1];
-    for (c, &v) in corner_vertex.iter().enumerate() {
-        if !repeats(c) {
-            start[v as usize + 1] += 1;
-        }
-    }
-    for v in 0..vertices {
-        start[v + 1] += start[v];
-    }
-    let mut faces = vec![0u32; start[vertices]];
-    let mut cursor = start.clone();
-    for (c, &v) in corner_vertex.iter().enumerate() {
-        if !repeats(c) {
-            faces[cursor[v as usize]] = (c / 3) as u32;
-            cursor[v as usize] += 1;
-        }
-    }
-    drop(cursor);
+    let (start, faces) = faces_around(&corner_vertex, vertices);
     let mut data = MeshData {
         smooth_vertices: Vec::with_capacity(vertices),
         indices: vec![0; corner_vertex.len()],
@@ -100,16 +70,7 @@ pub fn build_mesh(triangles: &[[DVec3; 3]], crease_angle_deg: f64) -> Result<Mes
                 let sum = if one_surface {
                     all
                 } else if pairwise {
-                    let mut sum = DVec3::ZERO;
-                    for &g in around {
-                        if let Some(ng) = normals[g as usize] {
-                            // A zero-area face has no surface of its own: it takes every neighbour.
-                            if own.is_none_or(|nf| nf.dot(ng) >= cos_crease) {
-                                sum += ng;
-                            }
-                        }
-                    }
-                    sum
+                    pairwise_sum(around, &normals, own, cos_crease)
                 } else {
                     // More faces than CREASE_VALENCE_MAX meeting at a crease: the corner keeps its
                     // own face's normal, and its own vertex (no search among the others).
@@ -136,6 +97,58 @@ pub fn build_mesh(triangles: &[[DVec3; 3]], crease_angle_deg: f64) -> Result<Mes
         data.flat_vertices.extend(FlatCorner::of_triangle(t, own.unwrap_or(DVec3::Y)));
     }
     Ok(data)
+}
+
+/// The vertex of each corner (3t + c): corners that round to the same f32 position share one.
+fn corner_vertices(triangles: &[[DVec3; 3]]) -> Vec<u32> {
+    let mut ids: HashMap<[u32; 3], u32> = HashMap::default();
+    triangles
+        .iter()
+        .flatten()
+        .map(|p| {
+            let next = ids.len() as u32;
+            *ids.entry(key(*p)).or_insert(next)
+        })
+        .collect()
+}
+
+/// The faces around each vertex as compressed rows: vertex v's are `faces[start[v]..start[v + 1]]`.
+fn faces_around(corner_vertex: &[u32], vertices: usize) -> (Vec<usize>, Vec<u32>) {
+    // A corner whose vertex an earlier corner of the same triangle already has (a degenerate
+    // triangle): its face is listed once around that vertex.
+    let repeats = |c: usize| (1..=c % 3).any(|k| corner_vertex[c - k] == corner_vertex[c]);
+    let mut start = vec![0usize; vertices + 1];
+    for (c, &v) in corner_vertex.iter().enumerate() {
+        if !repeats(c) {
+            start[v as usize + 1] += 1;
+        }
+    }
+    for v in 0..vertices {
+        start[v + 1] += start[v];
+    }
+    let mut faces = vec![0u32; start[vertices]];
+    let mut cursor = start.clone();
+    for (c, &v) in corner_vertex.iter().enumerate() {
+        if !repeats(c) {
+            faces[cursor[v as usize]] = (c / 3) as u32;
+            cursor[v as usize] += 1;
+        }
+    }
+    (start, faces)
+}
+
+/// The sum of the normals of the faces `around` a vertex within the crease angle of `own`'s.
+fn pairwise_sum(around: &[u32], normals: &[Option<DVec3>], own: Option<DVec3>, cos_crease: f64) -> DVec3 {
+    let mut sum = DVec3::ZERO;
+    for &g in around {
+        if let Some(ng) = normals[g as usize] {
+            // A zero-area face has no surface of its own: it takes every neighbour.
+            if own.is_none_or(|nf| nf.dot(ng) >= cos_crease) {
+                sum += ng;
+            }
+        }
+    }
+    sum
 }
 
 /// Builds a [`MeshData`] corner by corner: smooth vertices welded by position and normal (as

@@ -275,9 +275,48 @@ pub(super) fn reference(
     shadow: &ShadowCase,
 ) -> [f64; OUTPUTS] {
     let n = common::safe_normalize(n_raw, v);
+    let v_index = mu.map(brdf::fresnel_v_from_mu);
+    let inp = Combination { n_raw, n, v, l, m, h, mirror, mu, v_index, d, alpha, d0, l_len };
+    // NaN marks a column not written (a test checks there is none).
+    let mut out = [f64::NAN; OUTPUTS];
+    light_columns(&mut out, &inp);
+    shadow_map_columns(&mut out, &inp, shadow);
+    surface_map_columns(&mut out, &inp);
+    area_columns(&mut out, &inp);
+    transmission_columns(&mut out, &inp);
+    pcss_columns(&mut out, &inp);
+    out
+}
+
+/// One combination's inputs as [`reference`]'s column groups read them (`n` is `n_raw` normalized).
+#[derive(Clone, Copy)]
+struct Combination {
+    n_raw: DVec3,
+    n: DVec3,
+    v: DVec3,
+    l: DVec3,
+    m: f64,
+    h: f64,
+    mirror: bool,
+    mu: [f64; 3],
+    /// Fresnel's v of each channel of μ.
+    v_index: [f64; 3],
+    d: f64,
+    alpha: f64,
+    d0: f64,
+    l_len: f64,
+}
+
+/// Writes a colour's three channels at column offset `at`.
+fn rgb(out: &mut [f64; OUTPUTS], at: usize, c: [f64; 3]) {
+    out[at..at + 3].copy_from_slice(&c);
+}
+
+/// The BRDF, falloff, per-light contribution, other-model and spot-and-window columns.
+fn light_columns(out: &mut [f64; OUTPUTS], inp: &Combination) {
+    let Combination { n, v, l, m, h, mirror, mu, v_index, d, alpha, d0, l_len, .. } = *inp;
     let half = common::safe_normalize(l + v, n);
     let r = 2.0 * n.dot(l) * n - l;
-    let v_index = mu.map(brdf::fresnel_v_from_mu);
     let mut light = Light {
         kind: LightKind::Point,
         position: l * d,
@@ -309,62 +348,74 @@ pub(super) fn reference(
     };
     let outer = m * SWEEP_CONE_PER_M;
     let inner = outer * alpha.min(1.0);
-    // NaN marks a column not written (a test checks there is none).
-    let mut out = [f64::NAN; OUTPUTS];
-    let rgb = |out: &mut [f64; OUTPUTS], at: usize, c: [f64; 3]| out[at..at + 3].copy_from_slice(&c);
     out[DIFFUSE_LAMBERT] = brdf::diffuse_lambert(n.dot(l));
     out[SPECULAR_PHONG] = brdf::specular_phong(v.dot(r), h, mirror);
     out[D_BECKMANN] = brdf::d_beckmann(n.dot(half), n.cross(half).length_squared(), m);
     out[G_COOK_TORRANCE] = brdf::g_cook_torrance(n.dot(half), n.dot(v), n.dot(l), v.dot(half));
-    rgb(&mut out, MICROFACET_F, microfacet::microfacet_f(Microfacet::CHAPTER, v.dot(half), v_index));
-    rgb(&mut out, SPECULAR_COOK_TORRANCE, brdf::specular_cook_torrance(n, v, l, m, v_index));
+    rgb(out, MICROFACET_F, microfacet::microfacet_f(Microfacet::CHAPTER, v.dot(half), v_index));
+    rgb(out, SPECULAR_COOK_TORRANCE, brdf::specular_cook_torrance(n, v, l, m, v_index));
     out[FALLOFF_QUADRATIC] = lights::falloff_quadratic(d, alpha);
     out[FALLOFF_LINEAR] = lights::falloff_linear(d, d0);
     let cp = brdf::light_contribution(&quadratic, n, v, &mat, v_index, SpecularModel::Phong);
-    rgb(&mut out, CONTRIBUTION_PHONG, cp);
+    rgb(out, CONTRIBUTION_PHONG, cp);
     let cc = brdf::light_contribution(&linear, n, v, &mat, v_index, SpecularModel::CookTorrance);
-    rgb(&mut out, CONTRIBUTION_COOK_TORRANCE, cc);
+    rgb(out, CONTRIBUTION_COOK_TORRANCE, cc);
     // The other models at the linear falloff's sample; m in [0, 1] doubles as the share 1 − t.
     let (nl, nv) = (linear.form, n.dot(v));
-    rgb(&mut out, LAMBERT_RULE_LIT, models::lambert_rule_lit(SWEEP_COLOR, linear.radiance, nl));
-    rgb(&mut out, LAMBERT_RULE_FILL, models::lambert_rule_fill(SWEEP_COLOR, linear.radiance));
+    rgb(out, LAMBERT_RULE_LIT, models::lambert_rule_lit(SWEEP_COLOR, linear.radiance, nl));
+    rgb(out, LAMBERT_RULE_FILL, models::lambert_rule_fill(SWEEP_COLOR, linear.radiance));
     out[REFLECTED_COS_PHI] = models::reflected_cos_phi(nl, nv);
-    rgb(&mut out, SUM_CONTRIBUTION, models::sum_contribution(linear.radiance, nl, nv, SWEEP_COLOR, 1.0, 1.0));
-    rgb(&mut out, TRANSMITTED_TERM, models::transmitted_term(linear.radiance, SWEEP_COLOR, m));
+    rgb(out, SUM_CONTRIBUTION, models::sum_contribution(linear.radiance, nl, nv, SWEEP_COLOR, 1.0, 1.0));
+    rgb(out, TRANSMITTED_TERM, models::transmitted_term(linear.radiance, SWEEP_COLOR, m));
     out[SPOT_CONE] = lights::spot_cone(v.dot(l), inner.cos() * l_len, outer.cos() * l_len);
     out[WINDOW_RANGE] = lights::window_range(d, d0);
+}
+
+/// The shadow-map columns: the cube face, the texel's world size and the map coordinate.
+fn shadow_map_columns(out: &mut [f64; OUTPUTS], inp: &Combination, shadow: &ShadowCase) {
+    let Combination { n, l, d, .. } = *inp;
     let to_p = l * d;
     let texel = shadows::shadow_texel_world(shadow.texel_world as f64, shadow.perspective, d * n.dot(l));
     out[SHADOW_FACE] = shadows::shadow_face(to_p) as f64;
     out[SHADOW_TEXEL_WORLD] = texel;
     let q = to_p + n * (shadows::SHADOW_NORMAL_OFFSET_TEXELS as f64 * texel);
-    rgb(&mut out, SHADOW_MAP_COORD, shadows::shadow_map_coord(shadow.dmat4(), q).to_array());
+    rgb(out, SHADOW_MAP_COORD, shadows::shadow_map_coord(shadow.dmat4(), q).to_array());
     out[SHADOW_ORTHO_TEXEL_WORLD] = shadows::shadow_ortho_texel_world(shadow.dmat4(), SWEEP_SHADOW_RESOLUTION);
+}
+
+/// The surface columns: tint, vertex colour, texture coordinates and the material maps.
+fn surface_map_columns(out: &mut [f64; OUTPUTS], inp: &Combination) {
+    let Combination { n_raw, n, v, l, m, h, mu, d, alpha, d0, .. } = *inp;
     // The surface at a tint of m in every channel, μ's tinted part μ itself (a metal); the raw
     // normal as a vertex colour (outside [0, 1]); d and α as texture coordinates, transformed by
     // the offset (d0, d), a rotation of 4m right angles and the scale (h, d).
     let (c, mu_t) = shadelab_model::scene::tinted_surface(SWEEP_COLOR, mu, mu, [m; 3]);
-    rgb(&mut out, TINTED_SURFACE_C, c);
-    rgb(&mut out, TINTED_SURFACE_MU, mu_t);
-    rgb(&mut out, VERTEX_TINT, shadelab_model::scene::vertex_tint(n_raw.to_array()));
+    rgb(out, TINTED_SURFACE_C, c);
+    rgb(out, TINTED_SURFACE_MU, mu_t);
+    rgb(out, VERTEX_TINT, shadelab_model::scene::vertex_tint(n_raw.to_array()));
     let uv = shadelab_model::scene::texture_uv([d, alpha], [d0, d], 4.0 * m * SWEEP_CONE_PER_M, [h, d]);
-    rgb(&mut out, TEXTURE_UV, [uv[0], uv[1], 0.0]);
+    rgb(out, TEXTURE_UV, [uv[0], uv[1], 0.0]);
     // The material maps with the raw normal's channels as texels (outside [0, 1]): a metal
     // (μ_t = μ, M·F0 = 0.04·μ) at metal scale x, the roughness m at scale y, r_a = 0.8 occluded by
     // z at strength m, and I_e = μ times the normal as an emissive texel.
     let (x, y, z) = (n_raw.x, n_raw.y, n_raw.z);
     let (c, mu_s, _) = shadelab_model::scene::metallic_scaled(SWEEP_COLOR, mu, mu, mu.map(|c| 0.04 * c), x);
-    rgb(&mut out, METALLIC_SCALED_C, c);
-    rgb(&mut out, METALLIC_SCALED_MU, mu_s);
+    rgb(out, METALLIC_SCALED_C, c);
+    rgb(out, METALLIC_SCALED_MU, mu_s);
     out[ROUGHNESS_SCALED] = shadelab_model::scene::roughness_scaled(m, y);
     out[PHONG_H_FROM_M] = shadelab_model::scene::phong_h_from_m(m);
     out[OCCLUDED] = shadelab_model::scene::occluded(0.8, z, m);
-    rgb(&mut out, EMITTED, shadelab_model::scene::emitted(mu, n_raw.to_array()));
+    rgb(out, EMITTED, shadelab_model::scene::emitted(mu, n_raw.to_array()));
     // N turned by the raw normal as a texel in the frame of L as tangent (along N at normal
     // incidence: no frame), its sign from V·L, scale h.
     let w = if v.dot(l) < 0.0 { -1.0 } else { 1.0 };
     let mapped = shadelab_model::scene::normal_mapped(n, [l.x, l.y, l.z, w], n_raw.to_array(), h);
-    rgb(&mut out, NORMAL_MAPPED, mapped.to_array());
+    rgb(out, NORMAL_MAPPED, mapped.to_array());
+}
+
+/// The area-light columns: each shape's diffuse form, specular scale and point-source form.
+fn area_columns(out: &mut [f64; OUTPUTS], inp: &Combination) {
+    let Combination { n, v, l, m, d, alpha, l_len, .. } = *inp;
     // Area lights at l·d facing −v, α as their size (0 to 1e6 m): the diffuse form and the
     // specular point's scale of each shape. Their corners' components are as large as the light,
     // so their rounding moves the light's plane by about its size times the perturbation
@@ -399,12 +450,17 @@ pub(super) fn reference(
             })
             .sum();
     }
+}
+
+/// The transmission columns: Fresnel, refraction, absorption, the sphere's chord and shape exits.
+fn transmission_columns(out: &mut [f64; OUTPUTS], inp: &Combination) {
+    let Combination { n, v, l, m, v_index, d, alpha, .. } = *inp;
     // Light through a surface at N, met along −V: into a medium of index v (μ's red channel) and
     // out of it (total internal reflection past its critical angle); absorption over a·d = α·d
     // (0 to 1e10); the chord from l·d·m towards V through a sphere of radius α at the origin.
     let (vr, c) = (v_index[0], n.dot(v));
-    out[FRESNEL_DIELECTRIC] = transmission::fresnel_dielectric(c, vr);
-    out[FRESNEL_DIELECTRIC + 1] = transmission::fresnel_dielectric(c, 1.0 / vr);
+    out[FRESNEL_DIELECTRIC] = microfacet::fresnel_dielectric(c, vr);
+    out[FRESNEL_DIELECTRIC + 1] = microfacet::fresnel_dielectric(c, 1.0 / vr);
     let refracted = transmission::refract_snell(-v, n, 1.0 / vr).map_or([0.0; 4], |t| [t.x, t.y, t.z, 1.0]);
     out[REFRACT_SNELL..REFRACT_SNELL + 4].copy_from_slice(&refracted);
     out[ABSORPTION] = transmission::absorption_exact(alpha * d);
@@ -419,6 +475,11 @@ pub(super) fn reference(
     for (k, shape) in [SHAPE_SPHERE, SHAPE_CYLINDER, SHAPE_CUBE, SHAPE_PYRAMID].into_iter().enumerate() {
         out[SHAPE_EXIT + k] = transmission::shape_exit(shape, n * m, v).map_or(-1.0, |e| e.0);
     }
+}
+
+/// The PCSS and shadow-depth columns.
+fn pcss_columns(out: &mut [f64; OUTPUTS], inp: &Combination) {
+    let Combination { n, l, m, d, alpha, d0, .. } = *inp;
     // PCSS with a light α wide, the receiver at d and the blocker at d0 (d = d0 among them: a
     // receiver touching its blocker); m as a stored depth between near d0 and far d0 + d.
     out[PENUMBRA_WIDTH] = shadows::penumbra_width(alpha, d, d0);
@@ -426,7 +487,6 @@ pub(super) fn reference(
     out[SHADOW_LINEAR_DEPTH] = shadows::shadow_linear_depth(m, d0, d0 + d);
     out[SHADOW_STORED_DEPTH] = shadows::shadow_stored_depth(d, d0, d0 + d);
     out[RECEIVER_SLOPE] = shadows::receiver_slope(n.dot(l));
-    out
 }
 
 #[cfg(test)]

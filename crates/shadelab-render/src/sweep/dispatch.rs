@@ -56,20 +56,7 @@ pub(super) fn dispatch(gpu: &Gpu, inputs: &SweepInputs, total: usize) -> Vec<f32
     let mut enc = device.create_command_encoder(&Default::default());
     for first in (0..total).step_by(per_chunk) {
         let chunk = per_chunk.min(total - first);
-        let counts: [u32; 12] = [
-            inputs.geometry.len() as u32,
-            inputs.m.len() as u32,
-            inputs.h.len() as u32,
-            inputs.mu.len() as u32,
-            inputs.d.len() as u32,
-            inputs.alpha.len() as u32,
-            total as u32,
-            (inputs.geometry.len() * 3) as u32,
-            inputs.shadow.len() as u32,
-            first as u32,
-            chunk as u32,
-            0,
-        ];
+        let counts = chunk_counts(inputs, total, first, chunk);
         let counts_buf = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
             label: Some("sweep counts"),
             contents: bytemuck::cast_slice(&counts),
@@ -101,6 +88,29 @@ pub(super) fn dispatch(gpu: &Gpu, inputs: &SweepInputs, total: usize) -> Vec<f32
     }
     enc.copy_buffer_to_buffer(&out_buf, 0, &read_buf, 0, out_size);
     gpu.queue.submit([enc.finish()]);
+    read_back(device, &read_buf)
+}
+
+/// The kernel's uniform for one chunk: the axes' lengths, the total and the chunk's range.
+fn chunk_counts(inputs: &SweepInputs, total: usize, first: usize, chunk: usize) -> [u32; 12] {
+    [
+        inputs.geometry.len() as u32,
+        inputs.m.len() as u32,
+        inputs.h.len() as u32,
+        inputs.mu.len() as u32,
+        inputs.d.len() as u32,
+        inputs.alpha.len() as u32,
+        total as u32,
+        (inputs.geometry.len() * 3) as u32,
+        inputs.shadow.len() as u32,
+        first as u32,
+        chunk as u32,
+        0,
+    ]
+}
+
+/// The readback buffer's floats, once the GPU has written them (waits for it).
+fn read_back(device: &wgpu::Device, read_buf: &wgpu::Buffer) -> Vec<f32> {
     let slice = read_buf.slice(..);
     slice.map_async(wgpu::MapMode::Read, |r| r.expect("map sweep outputs"));
     device.poll(wgpu::PollType::wait_indefinitely()).expect("poll");

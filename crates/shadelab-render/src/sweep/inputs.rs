@@ -91,6 +91,64 @@ fn dir(theta_deg: f64, phi_deg: f64) -> DVec3 {
     DVec3::new(t.sin() * p.cos(), t.cos(), t.sin() * p.sin())
 }
 
+/// Grazing light and view at angles approaching 90° from both sides, onto `g`.
+fn push_grazing(g: &mut Vec<Geometry>) {
+    let y = [0.0f32, 1.0, 0.0];
+    for (k, eps) in [1e-7f64, 1e-5, 1e-3, -1e-7, -1e-5].into_iter().enumerate() {
+        let t = 90.0 - eps.to_degrees();
+        let labels = [
+            "grazing light +1e-7",
+            "grazing light +1e-5",
+            "grazing light +1e-3",
+            "grazing light −1e-7",
+            "grazing light −1e-5",
+        ];
+        g.push(Geometry { n: y, v: unit(dir(20.0, 0.0)), l: unit(dir(t, 180.0)), label: labels[k] });
+        let labels = [
+            "grazing view +1e-7",
+            "grazing view +1e-5",
+            "grazing view +1e-3",
+            "grazing view −1e-7",
+            "grazing view −1e-5",
+        ];
+        g.push(Geometry { n: y, v: unit(dir(t, 0.0)), l: unit(dir(20.0, 180.0)), label: labels[k] });
+        g.push(Geometry { n: y, v: unit(dir(t, 0.0)), l: unit(dir(t, 180.0)), label: "both grazing, mirror" });
+    }
+}
+
+/// Views exactly and nearly in the light's mirror direction, onto `g`.
+fn push_mirror(g: &mut Vec<Geometry>) {
+    let y = [0.0f32, 1.0, 0.0];
+    for theta in [0.5, 10.0, 45.0, 80.0, 89.9] {
+        g.push(Geometry { n: y, v: unit(dir(theta, 0.0)), l: unit(dir(theta, 180.0)), label: "mirror direction" });
+        for off in [1e-4, 1e-3, 0.08, 1.0] {
+            g.push(Geometry {
+                n: y,
+                v: unit(dir(theta + off, 0.0)),
+                l: unit(dir(theta, 180.0)),
+                label: "near mirror direction",
+            });
+        }
+    }
+}
+
+/// A deterministic spread over the sphere (normals tilted too) onto `g`, up to 150 in all.
+fn push_spread(g: &mut Vec<Geometry>) {
+    let mut state = 0x2545_f491_4f6c_dd1du64;
+    let mut rnd = move || {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        (state >> 11) as f64 / (1u64 << 53) as f64
+    };
+    while g.len() < 150 {
+        let n = dir(rnd() * 60.0, rnd() * 360.0);
+        let v = dir(rnd() * 180.0, rnd() * 360.0);
+        let l = dir(rnd() * 180.0, rnd() * 360.0);
+        g.push(Geometry { n: unit(n), v: unit(v), l: unit(l), label: "spread" });
+    }
+}
+
 impl SweepInputs {
     /// The hard cases of docs/model.md §9 plus a deterministic spread of ordinary directions.
     pub fn standard() -> SweepInputs {
@@ -115,53 +173,9 @@ impl SweepInputs {
                 label: "non-unit normal",
             },
         ];
-        // Grazing light and view at angles approaching 90° from both sides.
-        for (k, eps) in [1e-7f64, 1e-5, 1e-3, -1e-7, -1e-5].into_iter().enumerate() {
-            let t = 90.0 - eps.to_degrees();
-            let labels = [
-                "grazing light +1e-7",
-                "grazing light +1e-5",
-                "grazing light +1e-3",
-                "grazing light −1e-7",
-                "grazing light −1e-5",
-            ];
-            g.push(Geometry { n: y, v: unit(dir(20.0, 0.0)), l: unit(dir(t, 180.0)), label: labels[k] });
-            let labels = [
-                "grazing view +1e-7",
-                "grazing view +1e-5",
-                "grazing view +1e-3",
-                "grazing view −1e-7",
-                "grazing view −1e-5",
-            ];
-            g.push(Geometry { n: y, v: unit(dir(t, 0.0)), l: unit(dir(20.0, 180.0)), label: labels[k] });
-            g.push(Geometry { n: y, v: unit(dir(t, 0.0)), l: unit(dir(t, 180.0)), label: "both grazing, mirror" });
-        }
-        // Exactly and nearly in the mirror direction.
-        for theta in [0.5, 10.0, 45.0, 80.0, 89.9] {
-            g.push(Geometry { n: y, v: unit(dir(theta, 0.0)), l: unit(dir(theta, 180.0)), label: "mirror direction" });
-            for off in [1e-4, 1e-3, 0.08, 1.0] {
-                g.push(Geometry {
-                    n: y,
-                    v: unit(dir(theta + off, 0.0)),
-                    l: unit(dir(theta, 180.0)),
-                    label: "near mirror direction",
-                });
-            }
-        }
-        // A deterministic spread over the sphere (normals tilted too).
-        let mut state = 0x2545_f491_4f6c_dd1du64;
-        let mut rnd = move || {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            (state >> 11) as f64 / (1u64 << 53) as f64
-        };
-        while g.len() < 150 {
-            let n = dir(rnd() * 60.0, rnd() * 360.0);
-            let v = dir(rnd() * 180.0, rnd() * 360.0);
-            let l = dir(rnd() * 180.0, rnd() * 360.0);
-            g.push(Geometry { n: unit(n), v: unit(v), l: unit(l), label: "spread" });
-        }
+        push_grazing(&mut g);
+        push_mirror(&mut g);
+        push_spread(&mut g);
         SweepInputs {
             geometry: g,
             m: vec![0.0, 1e-6, 1e-3, 0.01, 0.05, 0.2, 0.5, 1.0],

@@ -11,20 +11,10 @@ use shadelab_render::{AdapterChoice, Gpu, RenderSettings, Renderer, Target};
 
 /// `shadelab bench effects`: specialized vs uber vs per-effect floors, per scene and shading.
 pub fn run(args: &cli::BenchEffectsArgs) -> Result<(), Failure> {
-    use shadelab_render::{Program, Specialization};
+    use shadelab_render::Program;
     let (width, height) = args.size.pixels();
     let (frames, warmup) = (args.frames as usize, args.warmup as usize);
-    let mut scenes = args
-        .scenes
-        .iter()
-        .map(|name| cli::scene(&cli::SceneArgs { scene: name.clone(), ..cli::SceneArgs::default() }))
-        .collect::<Result<Vec<_>, _>>()?;
-    for s in &mut scenes {
-        if let Some(m) = args.model {
-            s.apply(&shadelab_model::Overrides::for_model(m));
-        }
-        s.apply(&shadelab_model::Overrides { light: args.light, light_size: args.light_size, ..Default::default() });
-    }
+    let scenes = load_scenes(args)?;
     let gpu = Gpu::headless(AdapterChoice::from_env()).context("opening a GPU adapter")?;
     let mut r = Renderer::new(&gpu.device, &gpu.queue);
     let target = Target::new(&gpu.device, width, height, shadelab_render::target::HDR_FORMAT);
@@ -44,18 +34,7 @@ pub fn run(args: &cli::BenchEffectsArgs) -> Result<(), Failure> {
         let gs = r.upload(scene).map_err(|e| Failure::Usage(format!("{}: {e}", scene.name)))?;
         for shading in ShadingMode::ALL_MODES {
             let base = RenderSettings::new(shading, specular);
-            // The mode's own program: the per-vertex modes hold no per-pixel lighting maps.
-            let key = Program::for_scene(scene, &base).effects();
-            let mut programs = vec![
-                ("specialized".to_string(), RenderSettings { specialization: Specialization::Specialized, ..base }),
-                ("uber".to_string(), RenderSettings { specialization: Specialization::Uber, ..base }),
-            ];
-            for e in key.effects() {
-                programs.push((
-                    format!("without {}", e.name()),
-                    RenderSettings { specialization: Specialization::Fixed(key.without(e)), ..base },
-                ));
-            }
+            let programs = shading_programs(scene, base);
             // Each row with its scene: the drawn one, and the one keeping small lights' areas.
             let mut rows: Vec<(&Scene, String, RenderSettings)> =
                 programs.into_iter().map(|(name, s)| (scene, name, s)).collect();
@@ -91,4 +70,38 @@ pub fn run(args: &cli::BenchEffectsArgs) -> Result<(), Failure> {
         }
     }
     Ok(())
+}
+
+/// The named scenes with `--model`, `--light` and `--light-size` applied.
+fn load_scenes(args: &cli::BenchEffectsArgs) -> Result<Vec<Scene>, Failure> {
+    let mut scenes = args
+        .scenes
+        .iter()
+        .map(|name| cli::scene(&cli::SceneArgs { scene: name.clone(), ..cli::SceneArgs::default() }))
+        .collect::<Result<Vec<_>, _>>()?;
+    for s in &mut scenes {
+        if let Some(m) = args.model {
+            s.apply(&shadelab_model::Overrides::for_model(m));
+        }
+        s.apply(&shadelab_model::Overrides { light: args.light, light_size: args.light_size, ..Default::default() });
+    }
+    Ok(scenes)
+}
+
+/// One shading mode's programs: specialized, uber, and specialized without each of its effects.
+fn shading_programs(scene: &Scene, base: RenderSettings) -> Vec<(String, RenderSettings)> {
+    use shadelab_render::{Program, Specialization};
+    // The mode's own program: the per-vertex modes hold no per-pixel lighting maps.
+    let key = Program::for_scene(scene, &base).effects();
+    let mut programs = vec![
+        ("specialized".to_string(), RenderSettings { specialization: Specialization::Specialized, ..base }),
+        ("uber".to_string(), RenderSettings { specialization: Specialization::Uber, ..base }),
+    ];
+    for e in key.effects() {
+        programs.push((
+            format!("without {}", e.name()),
+            RenderSettings { specialization: Specialization::Fixed(key.without(e)), ..base },
+        ));
+    }
+    programs
 }

@@ -12,11 +12,11 @@ pub use plot::plot;
 use crate::{Failure, cli};
 use anyhow::Context;
 use shadelab_model::Scene;
-use shadelab_model::reference::render_reference;
+use shadelab_model::reference::{ReferenceImage, render_reference};
 use shadelab_model::shadows::ShadowFilter;
 use shadelab_render::image_error;
 use shadelab_render::timing::{FrameTimer, TimeSource, TimedDraw, median, quantile_sorted};
-use shadelab_render::{Gpu, Program, RenderSettings, Renderer, SceneGpu, Target, target};
+use shadelab_render::{Gpu, LinearImage, Program, RenderSettings, Renderer, SceneGpu, Target, target};
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
@@ -192,44 +192,7 @@ pub fn run_plan(
     let mut r = Renderer::new(&gpu.device, &gpu.queue);
     let timer = FrameTimer::new(&gpu.device, &gpu.queue);
     let target = Target::new(&gpu.device, size.0, size.1, target::HDR_FORMAT);
-    let upload = |r: &mut Renderer, s: &Scene| r.upload(s).map_err(|e| Failure::Usage(format!("{}: {e}", scene.name)));
-    // One upload per resolution keeps each map array allocated once: a filter is only a uniform,
-    // a new side would reallocate the maps between interleaved frames.
-    let mut off_scene = scene.clone();
-    off_scene.set_shadows(false);
-    let mut uploads: Vec<SceneGpu> = vec![upload(&mut r, &off_scene)?];
-    let mut configs: Vec<(Config, usize, Scene)> =
-        vec![(Config::Baseline, 0, off_scene.clone()), (Config::Off, 0, off_scene.clone())];
-    for &resolution in resolutions {
-        uploads.push(upload(&mut r, &with_shadows(scene, resolution, ShadowFilter::Pcf))?);
-        let filters_upload = uploads.len() - 1;
-        for filter in FILTERS {
-            configs.push((
-                Config::Shadows { resolution, filter },
-                uploads.len() - 1,
-                with_shadows(scene, resolution, filter),
-            ));
-        }
-        if has_cascades(scene) {
-            uploads.push(upload(&mut r, &one_map(scene, resolution))?);
-            configs.push((Config::OneMap { resolution }, uploads.len() - 1, one_map(scene, resolution)));
-        }
-        if scene.lights.iter().any(|l| l.kind.is_area()) {
-            let points = as_point_lights(scene, resolution);
-            uploads.push(upload(&mut r, &points)?);
-            configs.push((Config::PointLights { resolution }, uploads.len() - 1, points));
-            // Tap counts are a uniform: they share the filters' upload (the same maps).
-            for taps in PCSS_TAP_COUNTS {
-                let s = with_pcss_taps(scene, resolution, taps);
-                configs.push((Config::PcssTaps { resolution, taps }, filters_upload, s));
-            }
-            for k in POINT_COUNTS {
-                let points = as_points(scene, resolution, k);
-                uploads.push(upload(&mut r, &points)?);
-                configs.push((Config::Points { resolution, k }, uploads.len() - 1, points));
-            }
-        }
-    }
+    let (uploads, configs) = plan(&mut r, scene, resolutions)?;
     let program = |c: Config, s: &Scene| match c {
         Config::Baseline => Program::NullBaseline,
         _ => Program::for_scene(s, &settings),
@@ -257,23 +220,8 @@ pub fn run_plan(
     let mut rows = Vec::new();
     for (i, (c, g, _)) in configs.iter().enumerate() {
         let m = median(&mut samples[i]);
-        let side = match c {
-            Config::Shadows { .. }
-            | Config::OneMap { .. }
-            | Config::PointLights { .. }
-            | Config::PcssTaps { .. }
-            | Config::Points { .. } => {
-                r.shadow_plan(&uploads[*g]).and_then(|p| p.lights.iter().flatten().map(|l| l.resolution).max())
-            }
-            _ => None,
-        };
-        let (rmse, share) = match &images[i] {
-            Some(img) => (
-                Some(image_error::compare(img, &reference).stats.rmse),
-                Some(image_error::shadow_disagreement(img, &off_image, &reference).stats.share_disagreeing),
-            ),
-            None => (None, None),
-        };
+        let side = map_side(&r, c, &uploads[*g]);
+        let (rmse, share) = shadow_errors(images[i].as_ref(), &off_image, &reference);
         rows.push(Row {
             config: *c,
             side,
@@ -303,6 +251,83 @@ pub fn run_plan(
         command: command.to_string(),
         seconds: start.elapsed().as_secs_f64(),
     })
+}
+
+/// The uploads (one per map side and light form) and every row's config, upload index and scene.
+#[allow(clippy::type_complexity)]
+fn plan(
+    r: &mut Renderer,
+    scene: &Scene,
+    resolutions: &[u32],
+) -> Result<(Vec<SceneGpu>, Vec<(Config, usize, Scene)>), Failure> {
+    let upload = |r: &mut Renderer, s: &Scene| r.upload(s).map_err(|e| Failure::Usage(format!("{}: {e}", scene.name)));
+    // One upload per resolution keeps each map array allocated once: a filter is only a uniform,
+    // a new side would reallocate the maps between interleaved frames.
+    let mut off_scene = scene.clone();
+    off_scene.set_shadows(false);
+    let mut uploads: Vec<SceneGpu> = vec![upload(&mut *r, &off_scene)?];
+    let mut configs: Vec<(Config, usize, Scene)> =
+        vec![(Config::Baseline, 0, off_scene.clone()), (Config::Off, 0, off_scene.clone())];
+    for &resolution in resolutions {
+        uploads.push(upload(&mut *r, &with_shadows(scene, resolution, ShadowFilter::Pcf))?);
+        let filters_upload = uploads.len() - 1;
+        for filter in FILTERS {
+            configs.push((
+                Config::Shadows { resolution, filter },
+                uploads.len() - 1,
+                with_shadows(scene, resolution, filter),
+            ));
+        }
+        if has_cascades(scene) {
+            uploads.push(upload(&mut *r, &one_map(scene, resolution))?);
+            configs.push((Config::OneMap { resolution }, uploads.len() - 1, one_map(scene, resolution)));
+        }
+        if scene.lights.iter().any(|l| l.kind.is_area()) {
+            let points = as_point_lights(scene, resolution);
+            uploads.push(upload(&mut *r, &points)?);
+            configs.push((Config::PointLights { resolution }, uploads.len() - 1, points));
+            // Tap counts are a uniform: they share the filters' upload (the same maps).
+            for taps in PCSS_TAP_COUNTS {
+                let s = with_pcss_taps(scene, resolution, taps);
+                configs.push((Config::PcssTaps { resolution, taps }, filters_upload, s));
+            }
+            for k in POINT_COUNTS {
+                let points = as_points(scene, resolution, k);
+                uploads.push(upload(&mut *r, &points)?);
+                configs.push((Config::Points { resolution, k }, uploads.len() - 1, points));
+            }
+        }
+    }
+    Ok((uploads, configs))
+}
+
+/// The largest shadow-map side the row's upload drew with; `None` for a row without maps.
+fn map_side(r: &Renderer, c: &Config, gpu_scene: &SceneGpu) -> Option<u32> {
+    match c {
+        Config::Shadows { .. }
+        | Config::OneMap { .. }
+        | Config::PointLights { .. }
+        | Config::PcssTaps { .. }
+        | Config::Points { .. } => {
+            r.shadow_plan(gpu_scene).and_then(|p| p.lights.iter().flatten().map(|l| l.resolution).max())
+        }
+        _ => None,
+    }
+}
+
+/// A row's image RMSE and share of pixels disagreeing in shadow; `None`s for a row not rendered.
+fn shadow_errors(
+    image: Option<&LinearImage>,
+    off_image: &LinearImage,
+    reference: &ReferenceImage,
+) -> (Option<f64>, Option<f64>) {
+    match image {
+        Some(img) => (
+            Some(image_error::compare(img, reference).stats.rmse),
+            Some(image_error::shadow_disagreement(img, off_image, reference).stats.share_disagreeing),
+        ),
+        None => (None, None),
+    }
 }
 
 /// The CSV header; one line per row follows (empty fields where a row has no value).

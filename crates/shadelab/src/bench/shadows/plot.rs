@@ -88,17 +88,7 @@ pub fn plot(report: &Report, path: &Path) -> anyhow::Result<()> {
         let y = log_range(scored.iter().filter_map(|r| r.rmse));
         let (ylo, yhi) = (y.start, y.end);
         let mut chart = ChartBuilder::on(&root)
-            .caption(
-                format!(
-                    "Error vs time, '{}' {}×{}: {} ({})",
-                    report.scene,
-                    report.size.0,
-                    report.size.1,
-                    report.device,
-                    report.time_source.label()
-                ),
-                ("sans-serif", 18),
-            )
+            .caption(caption(report), ("sans-serif", 18))
             .margin(14)
             .x_label_area_size(45)
             .y_label_area_size(80)
@@ -124,34 +114,17 @@ pub fn plot(report: &Report, path: &Path) -> anyhow::Result<()> {
             }
         }
         // The Pareto front: its rows in order of time, joined by a dashed step line.
-        let mut front: Vec<(f64, f64)> =
-            scored.iter().filter(|r| r.pareto).map(|r| (r.median_ms, r.rmse.unwrap_or(f64::NAN))).collect();
-        front.sort_by(|a, b| a.0.total_cmp(&b.0));
-        let steps: Vec<(f64, f64)> = front
-            .iter()
-            .enumerate()
-            .flat_map(|(i, p)| if i == 0 { vec![*p] } else { vec![(p.0, front[i - 1].1), *p] })
-            .collect();
+        let steps = pareto_steps(&scored);
         chart
             .draw_series(DashedLineSeries::new(steps, 6, 4, BLACK.stroke_width(2)))
             .map_err(plot_err)?
             .label("Pareto front (no row both faster and more accurate)")
             .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], BLACK.stroke_width(2)));
         for m in methods() {
-            let mut pts: Vec<(f64, f64, String)> = scored
-                .iter()
-                .filter_map(|r| {
-                    let resolution = (m.of)(r.config)?;
-                    let side = r.side.unwrap_or(resolution);
-                    let label =
-                        if side == resolution { format!("{side}") } else { format!("{resolution} (used {side})") };
-                    Some((r.median_ms, r.rmse?, label))
-                })
-                .collect();
+            let pts = method_points(&m, &scored);
             if pts.is_empty() {
                 continue;
             }
-            pts.sort_by(|a, b| a.0.total_cmp(&b.0));
             let color = m.color;
             chart
                 .draw_series(LineSeries::new(pts.iter().map(|p| (p.0, p.1)), color.stroke_width(2)))
@@ -170,4 +143,43 @@ pub fn plot(report: &Report, path: &Path) -> anyhow::Result<()> {
         root.present().map_err(plot_err)?;
     }
     save(buf, size, path)
+}
+
+/// The plot's title: the scene, the image size, the device and the time source.
+fn caption(report: &Report) -> String {
+    format!(
+        "Error vs time, '{}' {}×{}: {} ({})",
+        report.scene,
+        report.size.0,
+        report.size.1,
+        report.device,
+        report.time_source.label()
+    )
+}
+
+/// The Pareto front's rows in order of time, as the corners of a step line through them.
+fn pareto_steps(scored: &[&Row]) -> Vec<(f64, f64)> {
+    let mut front: Vec<(f64, f64)> =
+        scored.iter().filter(|r| r.pareto).map(|r| (r.median_ms, r.rmse.unwrap_or(f64::NAN))).collect();
+    front.sort_by(|a, b| a.0.total_cmp(&b.0));
+    front
+        .iter()
+        .enumerate()
+        .flat_map(|(i, p)| if i == 0 { vec![*p] } else { vec![(p.0, front[i - 1].1), *p] })
+        .collect()
+}
+
+/// A method's rows as (time, RMSE, label with the map side) in order of time.
+fn method_points(m: &Method, scored: &[&Row]) -> Vec<(f64, f64, String)> {
+    let mut pts: Vec<(f64, f64, String)> = scored
+        .iter()
+        .filter_map(|r| {
+            let resolution = (m.of)(r.config)?;
+            let side = r.side.unwrap_or(resolution);
+            let label = if side == resolution { format!("{side}") } else { format!("{resolution} (used {side})") };
+            Some((r.median_ms, r.rmse?, label))
+        })
+        .collect();
+    pts.sort_by(|a, b| a.0.total_cmp(&b.0));
+    pts
 }

@@ -64,6 +64,13 @@ impl Viewer {
                 self.mark(format!("shading:{name}"), &r);
             }
         });
+        self.model_ui(ui);
+        self.view_options_ui(ui);
+        self.difference_ui(ui);
+    }
+
+    /// The model menu, the Phong model's specular term and the term on show.
+    fn model_ui(&mut self, ui: &mut egui::Ui) {
         let current = ModelChoice::of(self.scene.illumination, self.settings.specular);
         let mut choice = current;
         let marks = &mut self.marks;
@@ -99,6 +106,10 @@ impl Viewer {
                 self.mark(format!("term:{name}"), &r);
             }
         });
+    }
+
+    /// Screen-space interpolation, the non-finite paint and the lines drawn over the view.
+    fn view_options_ui(&mut self, ui: &mut egui::Ui) {
         let mut screen = self.settings.interpolation == Interpolation::Screen;
         ui.add_enabled(
             self.settings.shading != ShadingMode::Flat,
@@ -122,6 +133,10 @@ impl Viewer {
             ui.checkbox(&mut self.creases.enabled, "creases")
                 .on_hover_text("the edges the crease-angle rule keeps sharp (faces more than 60° apart), orange");
         });
+    }
+
+    /// The difference view's checkbox and, when it is on, which error map it shows.
+    fn difference_ui(&mut self, ui: &mut egui::Ui) {
         let analytic = shadelab_model::scene_variants::is_analytic(&self.scene);
         let r =
             ui.add_enabled(analytic, egui::Checkbox::new(&mut self.difference.enabled, "difference from reference"));

@@ -370,14 +370,21 @@ fn explain_lists_shadow_decisions_with_reasons() {
     // The sphere on its ground casts a shadow onto it; `--shadows off` takes the effect out.
     let text = explain_sphere(&png, &[]);
     assert!(
-        text.contains("pipeline [diffuse+phong+ambient+dir+shadows+pcf]")
+        text.contains("pipeline [diffuse+phong+ambient+dir+shadows+pcf+cascades]")
             && text.contains("cast shadows: on")
             && text.contains("shadow filter poisson: off — no casting light filters with poisson"),
         "{text}"
     );
     // A filter's code is in the pipeline only when a light uses it.
     let text = explain_sphere(&png, &["--shadow-filter", "poisson"]);
-    assert!(text.contains("pipeline [diffuse+phong+ambient+dir+shadows+poisson]"), "{text}");
+    assert!(text.contains("pipeline [diffuse+phong+ambient+dir+shadows+poisson+cascades]"), "{text}");
+    // Cascades follow the light's setting, not the view: off, the pipeline has none.
+    let text = explain_sphere(&png, &["--shadow-cascades", "off"]);
+    assert!(
+        text.contains("pipeline [diffuse+phong+ambient+dir+shadows+pcf]")
+            && text.contains("shadow cascades: off — every directional light's cascades setting is off"),
+        "{text}"
+    );
     let text = explain_sphere(&png, &["--shadows", "off"]);
     for needle in [
         "pipeline [diffuse+phong+ambient+dir]",

@@ -17,6 +17,7 @@ pub mod presets;
 pub mod reference;
 pub mod scene;
 pub mod scene_variants;
+pub mod shadow_settings;
 pub mod shadows;
 pub mod terminator;
 pub mod terms;

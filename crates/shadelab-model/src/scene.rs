@@ -25,7 +25,7 @@ pub use texture::{
 };
 
 use crate::params::*;
-use crate::shadows::{ShadowFilter, ShadowSettings};
+use crate::shadow_settings::{ShadowFilter, ShadowSettings};
 use glam::{DMat3, DMat4, DVec3};
 
 /// Analytic shapes, each in its own unit box `[-1, 1]³` of object space.

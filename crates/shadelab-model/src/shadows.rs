@@ -19,96 +19,9 @@ pub use cascades::{
     cascade_splits, cascades_for_depths, shadow_cascade, shadow_ortho_texel_world, view_depth_range,
 };
 
-/// How the shadow map is filtered where a point is compared with it.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum ShadowFilter {
-    /// One comparison at the nearest texel: a hard, aliased edge.
-    Hard,
-    /// The hardware's 2×2 bilinear comparison (percentage-closer filtering over one texel).
-    Pcf,
-    /// Percentage-closer filtering over rotated Poisson-disk taps (a wider, smoother edge).
-    Poisson,
-    /// Percentage-closer soft shadows: the penumbra of an area light, as wide as its size and
-    /// the blocker's and receiver's distances give (docs/area-lights.md); a light without an
-    /// area gets `Pcf`'s edge.
-    Pcss,
-}
-
-impl ShadowFilter {
-    /// The value of `ShadowLight.shadow_filter` in WGSL: `SHADOW_FILTER_<NAME>` of `shaders/shadows.wgsl`.
-    pub fn code(self) -> u32 {
-        match self {
-            ShadowFilter::Hard => 0,
-            ShadowFilter::Pcf => 1,
-            ShadowFilter::Poisson => 2,
-            ShadowFilter::Pcss => 3,
-        }
-    }
-}
-
-impl NamedValue for ShadowFilter {
-    const FLAG: &'static str = "--shadow-filter";
-    const ALL: &'static [(&'static str, Self)] = &[
-        ("hard", ShadowFilter::Hard),
-        ("pcf", ShadowFilter::Pcf),
-        ("poisson", ShadowFilter::Poisson),
-        ("pcss", ShadowFilter::Pcss),
-    ];
-}
-
-/// Side of a light's shadow map in texels (a cube face's side for a point light).
-pub const SHADOW_RESOLUTION: ParamRange = ParamRange {
-    flag: "--shadow-resolution",
-    symbol: "N",
-    meaning: "shadow map resolution in texels",
-    min: 256.0,
-    max: 4096.0,
+pub use crate::shadow_settings::{
+    PCSS_TAPS, SHADOW_PCSS_TAPS, SHADOW_RESOLUTION, SHADOW_RESOLUTION_DEFAULT, ShadowFilter, ShadowSettings,
 };
-
-/// Taps of each of PCSS's two passes (blocker search, filter): 4 is a coarse but usable
-/// penumbra, 64 four times the default's cost; the study times several.
-pub const PCSS_TAPS: ParamRange =
-    ParamRange { flag: "--pcss-taps", symbol: "n", meaning: "taps of each PCSS pass", min: 4.0, max: 64.0 };
-
-/// The shadow map side a light gets unless it says otherwise.
-pub const SHADOW_RESOLUTION_DEFAULT: u32 = 2048;
-
-/// One light's shadow settings.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub struct ShadowSettings {
-    /// The light casts shadows (when the scene has something to shadow; see the effect analysis).
-    pub casts: bool,
-    /// Shadow map side in texels, within [`SHADOW_RESOLUTION`].
-    pub resolution: u32,
-    pub filter: ShadowFilter,
-    /// A directional light may split its map into cascades when the view calls for them
-    /// ([`cascade_count`]); off, it keeps one map fitted to the whole scene.
-    pub cascades: bool,
-    /// Taps of each of PCSS's two passes, within [`PCSS_TAPS`].
-    pub pcss_taps: u32,
-}
-
-impl Default for ShadowSettings {
-    fn default() -> Self {
-        ShadowSettings {
-            casts: true,
-            resolution: SHADOW_RESOLUTION_DEFAULT,
-            filter: ShadowFilter::Pcf,
-            cascades: true,
-            pcss_taps: SHADOW_PCSS_TAPS,
-        }
-    }
-}
-
-impl ShadowSettings {
-    /// The settings with the resolution kept inside [`SHADOW_RESOLUTION`] and the PCSS taps
-    /// inside [`PCSS_TAPS`].
-    pub fn clamped(self) -> ShadowSettings {
-        let r = (self.resolution as f64).clamp(SHADOW_RESOLUTION.min, SHADOW_RESOLUTION.max) as u32;
-        let taps = (self.pcss_taps as f64).clamp(PCSS_TAPS.min, PCSS_TAPS.max) as u32;
-        ShadowSettings { resolution: r, pcss_taps: taps, ..self }
-    }
-}
 
 /// The rasterizer's slope-scaled depth bias in the shadow pass (`DepthBiasState::slope_scale`):
 /// depth is pushed away from the light by this many times the triangle's depth slope per pixel,
@@ -167,13 +80,6 @@ pub const SHADOW_BOUNDS_RADIUS_MIN: f64 = 1e-3;
 /// map, lit. 1e-20 keeps `c.xyz / w` finite in f32 for any |c.xyz| below 3e18.
 pub const SHADOW_CLIP_W_MIN: f64 = 1e-20;
 
-/// The default taps of each of PCSS's two passes (`ShadowFilter::Pcss`): 32. The blocker search's
-/// spiral puts n·√q of its taps in a blocker cone q of the search region wide; on the `penumbra`
-/// scene (q ≈ 1/13 with the plate 1 m up) 16 taps put 4 there, too few to find a plate edge
-/// covering the cone's outer tenth, and the penumbra's 10–90 % width measured 0.64–0.77 of the
-/// reference's; 32 put 9 and measure 0.73–0.86 (64: 0.84–0.92), `bench penumbra`.
-/// `ShadowSettings::pcss_taps` sets another count within [`PCSS_TAPS`].
-pub const SHADOW_PCSS_TAPS: u32 = 32;
 
 /// The nearest blocker PCSS searches for, as a share of the receiver's distance from the light:
 /// a blocker nearer than a tenth casts a penumbra over 9 light sizes wide, more than 16 search

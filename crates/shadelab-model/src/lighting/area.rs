@@ -558,9 +558,6 @@ pub fn specular_representative_point(
     super::brdf::specular_cook_torrance(n, v, l, m, v_index).map(|s| s * k)
 }
 
-/// The penumbra's width the shadow filters aim for, w_light·(d_r − d_b)/d_b (with PCSS's math).
-pub use crate::shadows::penumbra_width;
-
 #[cfg(test)]
 #[path = "area_tests.rs"]
 mod tests;

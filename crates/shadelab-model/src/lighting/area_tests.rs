@@ -2,6 +2,7 @@
 //! cases (docs/area-lights.md).
 
 use super::*;
+use crate::shadows::penumbra_width;
 
 fn clear(_: DVec3, _: DVec3) -> bool {
     true

@@ -6,7 +6,7 @@ use super::area::{AreaLight, AreaShape, area_form, area_specular_point};
 use super::common::safe_normalize;
 use crate::guards::*;
 use crate::params::{NamedValue, ParamRange};
-use crate::shadows::{ShadowFilter, ShadowSettings};
+use crate::shadow_settings::{ShadowFilter, ShadowSettings};
 use glam::DVec3;
 
 /// Light source kind (docs/model.md §6).

@@ -277,6 +277,26 @@ pub fn shadow_projection(light: &Light, centre: DVec3, radius: f64, resolution: 
     }
 }
 
+/// The layers `light` holds in the frame's array of maps, per cube, whatever the view: 0 when it
+/// casts no shadow, 6 for a point or area light's cube, [`cascade_layers`] for a directional
+/// light, 1 for a spot's map. The one place a kind's layers are decided: [`shadow_cubes`], the
+/// renderer's shadow plan and the viewer's map menu read it.
+pub fn light_layers(scene: &Scene, light: &Light) -> u32 {
+    match light.kind {
+        _ if !light.shadow.casts => 0,
+        LightKind::Point | LightKind::Rect | LightKind::Disk | LightKind::Sphere => 6,
+        LightKind::Directional => cascade_layers(scene, light),
+        LightKind::Spot => 1,
+    }
+}
+
+/// The layers of `light`'s map (per cube) a frame draws and reads: a directional light's
+/// [`cascade_count`] for this view when it holds cascades, otherwise all of [`light_layers`].
+pub fn drawn_layers(scene: &Scene, light: &Light) -> u32 {
+    let layers = light_layers(scene, light);
+    if light.kind == LightKind::Directional && layers > 1 { cascade_count(scene).min(layers) } else { layers }
+}
+
 /// How many shadow cubes each light slot of `scene` gets (the first `MAX_LIGHTS`): 0 for a light
 /// that casts none or has no cube (directional, spot), 1 for a point or area light, its k for an
 /// area light drawn as k points, as many as `MAX_SHADOW_LAYERS` leaves once every other casting
@@ -284,15 +304,7 @@ pub fn shadow_projection(light: &Light, centre: DVec3, radius: f64, resolution: 
 /// layers out from this; the effect analysis reports a light that got fewer than its k.
 pub fn shadow_cubes(scene: &Scene) -> Vec<u32> {
     let lights: Vec<&Light> = scene.lights.iter().take(crate::scene::MAX_LIGHTS).collect();
-    let own = |l: &Light| -> u32 {
-        match l.kind {
-            _ if !l.shadow.casts => 0,
-            LightKind::Point | LightKind::Rect | LightKind::Disk | LightKind::Sphere => 6,
-            LightKind::Directional => cascade_layers(scene, l),
-            _ => 1,
-        }
-    };
-    let own: Vec<u32> = lights.iter().map(|l| own(l)).collect();
+    let own: Vec<u32> = lights.iter().map(|l| light_layers(scene, l)).collect();
     let mut spare = MAX_SHADOW_LAYERS.saturating_sub(own.iter().sum());
     lights
         .iter()

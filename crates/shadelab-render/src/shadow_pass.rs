@@ -19,8 +19,7 @@ use bytemuck::Zeroable;
 use shadelab_model::lighting::area_points::area_emitter;
 use shadelab_model::shadows::{
     MAX_SHADOW_LAYERS, SHADOW_CONSTANT_BIAS, SHADOW_DEPTH_BIAS_CLAMP, SHADOW_MAP_BUDGET_BYTES, SHADOW_RESOLUTION,
-    SHADOW_SLOPE_BIAS, SHADOW_TEXEL_BYTES, cascade_count, cascade_layers, cascade_projection, scene_bounds,
-    shadow_cubes,
+    SHADOW_SLOPE_BIAS, SHADOW_TEXEL_BYTES, cascade_projection, drawn_layers, light_layers, scene_bounds, shadow_cubes,
     shadow_projection,
 };
 use shadelab_model::{Light, LightKind, Scene};
@@ -59,12 +58,8 @@ impl ShadowPlan {
                 lights.push(None);
                 continue;
             }
-            let n = match l.kind {
-                // An area light's map is its centre's cube, or one per point source.
-                LightKind::Point | LightKind::Rect | LightKind::Disk | LightKind::Sphere => 6 * c,
-                LightKind::Directional => cascade_layers(scene, l),
-                _ => 1,
-            };
+            // An area light's map is its centre's cube, or one per point source (c cubes).
+            let n = light_layers(scene, l) * c.max(1);
             let resolution = l.shadow.clamped().resolution;
             lights.push(Some(LightMap { first_layer: layers, layers: n, cubes: c.max(1), resolution }));
             layers += n;
@@ -229,7 +224,7 @@ pub fn shadows_uniform(scene: &Scene, plan: &ShadowPlan, aspect: f64) -> Shadows
     for ((slot, light), map) in u.lights.iter_mut().zip(&scene.lights).zip(&plan.lights) {
         let Some(map) = map else { continue };
         // A directional light's cascades this frame: as many of its layers as the view needs.
-        let cascades = if light.kind == LightKind::Directional && map.layers > 1 { cascade_count(scene) } else { 1 };
+        let cascades = if light.kind == LightKind::Directional { drawn_layers(scene, light) } else { 1 };
         // One projection per cube (an area light drawn as points has one per point source, each
         // from where it sits); the others have one map, from the light itself.
         let project = |at: &Light| {

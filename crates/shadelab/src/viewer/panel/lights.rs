@@ -9,7 +9,7 @@ use eframe::egui;
 use glam::DVec3;
 use shadelab_model::params::{self, NamedValue};
 use shadelab_model::scene::MAX_LIGHTS;
-use shadelab_model::shadows::{SHADOW_RESOLUTION, ShadowFilter, ShadowSettings};
+use shadelab_model::shadows::{SHADOW_RESOLUTION, ShadowFilter, ShadowSettings, drawn_layers};
 use shadelab_model::{FalloffForm, Light, LightKind};
 
 /// Where a light's range starts when it is switched on, scene units: beyond the built-in scenes,
@@ -25,9 +25,9 @@ impl Viewer {
             }
         });
         let mut remove = None;
-        // A directional light's cascades (when its setting allows them), for the map's layer menu.
-        let may_cascade = self.scene.lights.iter().any(|l| l.kind == LightKind::Directional && l.shadow.cascades);
-        let cascades = if may_cascade { shadelab_model::shadows::cascade_count(&self.scene) } else { 1 };
+        // Each light's layers drawn this frame (a cube's faces, a directional light's cascades), for
+        // the map's layer menu.
+        let layers: Vec<u32> = self.scene.lights.iter().map(|l| drawn_layers(&self.scene, l)).collect();
         for (i, l) in self.scene.lights.iter_mut().enumerate() {
             egui::CollapsingHeader::new(format!("L{} — {}", i + 1, l.kind.name())).id_salt(i).show(ui, |ui| {
                 ui.horizontal(|ui| {
@@ -135,12 +135,7 @@ impl Viewer {
                     l.inner_cone = inner.min(outer).to_radians().max(cone.min).min(l.outer_cone);
                 }
                 shadow_ui(ui, i, l.kind == LightKind::Directional, &mut l.shadow);
-                let layers = match l.kind {
-                    LightKind::Point | LightKind::Rect | LightKind::Disk | LightKind::Sphere => 6,
-                    LightKind::Directional if l.shadow.cascades => cascades,
-                    _ => 1,
-                };
-                shadow_map_ui(ui, i, l.kind, layers, &mut self.shadow_maps);
+                shadow_map_ui(ui, i, l.kind, layers[i].max(1), &mut self.shadow_maps);
             });
         }
         if let Some(i) = remove {

@@ -8,7 +8,7 @@
 //! f64 twin of the shadow projection (the light's view-projections, the cube face, the map
 //! coordinate) that the render crate packs into the uniforms.
 
-use crate::params::{LightKind, NamedValue, ParamRange};
+use crate::params::LightKind;
 use crate::scene::{Light, Scene, Shape};
 use glam::{DMat4, DVec3, DVec4};
 

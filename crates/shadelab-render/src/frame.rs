@@ -181,7 +181,7 @@ impl Renderer {
         maps: Option<&wgpu::BindGroup>,
         start: Option<(&wgpu::QuerySet, u32)>,
     ) {
-        let pipeline = self.pipelines.lighting_pipeline(program, entry);
+        let pipeline = crate::lighting_pass::pipeline(&mut self.pipelines, program, entry);
         let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
             label: Some(entry),
             timestamp_writes: start.map(|(qs, i)| wgpu::ComputePassTimestampWrites {

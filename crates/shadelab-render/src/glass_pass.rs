@@ -3,7 +3,8 @@
 //! stands (what is behind it, the farther glass included), reading the opaque depth; a mesh's
 //! back faces drawn just before it give its exit (`shaders/glass.wgsl`).
 
-use crate::pipelines::DEPTH_FORMAT;
+use crate::pipelines::{DEPTH_FORMAT, PassKey, PipelineCache};
+use crate::program::Program;
 use crate::renderer::Renderer;
 use crate::target::Target;
 use crate::upload::SceneGpu;
@@ -100,10 +101,31 @@ pub fn glass_order(scene: &Scene) -> Vec<usize> {
     order.into_iter().map(|(_, i)| i).collect()
 }
 
+/// The glass pass's pipeline of `program` from the cache (`back`: a mesh's back faces), built on
+/// first use.
+fn glass_pipeline(
+    cache: &mut PipelineCache,
+    program: Program,
+    format: wgpu::TextureFormat,
+    back: bool,
+) -> &wgpu::RenderPipeline {
+    let (effects, lights) = (program.effects(), program.light_loop());
+    let pass = if back { "glass back faces" } else { "glass" };
+    let key = PassKey { pass, effects, lights, format: Some(format) };
+    cache.pass_pipeline(key, |cx| {
+        let layout = match (back, effects.has(Effect::CastShadows)) {
+            (true, _) => &cx.layouts.glass_back,
+            (false, false) => &cx.layouts.glass,
+            (false, true) => &cx.layouts.glass_shadows,
+        };
+        build_pipeline(cx.device, layout, cx.module, effects, &lights.constants(), format, back)
+    })
+}
+
 /// Build one of the glass pipelines: `back` draws a mesh's back faces into the two back targets,
 /// otherwise the object's front faces over the target, depth-tested against the opaque scene
 /// without writing it.
-pub(crate) fn build_pipeline(
+fn build_pipeline(
     device: &wgpu::Device,
     layout: &wgpu::PipelineLayout,
     module: &wgpu::ShaderModule,
@@ -190,11 +212,11 @@ impl Renderer {
         let exits = gpu_scene.glass_exits.lock().expect("not poisoned").clone();
         let fx = program.effects();
         let surfaces = fx.samples_textures() || fx.has(Effect::VertexColors);
-        let front = self.pipelines.glass_pipeline(program, target.format, false).clone();
+        let front = glass_pipeline(&mut self.pipelines, program, target.format, false).clone();
         // The back-face pipeline only where some object in the pass is a mesh.
         let needs_back = |i: &usize| exits.get(*i).copied() == Some(shadelab_model::lighting::transmission::SHAPE_MESH);
         let back =
-            order.iter().any(needs_back).then(|| self.pipelines.glass_pipeline(program, target.format, true).clone());
+            order.iter().any(needs_back).then(|| glass_pipeline(&mut self.pipelines, program, target.format, true).clone());
         let g = self.glass.as_ref().expect("made above");
         for (n, &i) in order.iter().enumerate() {
             let Some(mesh) = gpu_scene.objects.get(i).and_then(|k| gpu_scene.meshes.get(k)) else { continue };

@@ -142,8 +142,25 @@ impl LitColors {
     }
 }
 
+/// The lighting pass `entry` (`cs_flat`, `cs_gouraud`) of a program from the cache: its effect
+/// set and light loop, built on first use.
+pub(crate) fn pipeline<'c>(
+    cache: &'c mut crate::pipelines::PipelineCache,
+    program: crate::program::Program,
+    entry: &'static str,
+) -> &'c wgpu::ComputePipeline {
+    let (effects, lights) = (program.effects(), program.light_loop());
+    let key = crate::pipelines::PassKey { pass: entry, effects, lights, format: None };
+    cache.pass_compute(key, |cx| {
+        let shadows = effects.has(shadelab_model::effects::Effect::CastShadows);
+        let layout = if shadows { &cx.layouts.lighting_pass_shadows } else { &cx.layouts.lighting_pass };
+        let label = format!("{entry} [{}] {}", effects.label(), lights.label());
+        build_pipeline(cx.device, layout, cx.module, entry, &label, lights)
+    })
+}
+
 /// Build the compute pipeline of `entry` (a lighting pass) from a permutation's module.
-pub(crate) fn build_pipeline(
+fn build_pipeline(
     device: &wgpu::Device,
     layout: &wgpu::PipelineLayout,
     module: &wgpu::ShaderModule,

@@ -1,6 +1,7 @@
 //! The pipeline cache: one shader module per effect set and one render pipeline per
 //! [`PipelineKey`] (program + colour format), built on first use, or on a worker thread while the
-//! uber pipeline draws (the viewer), and the shadow pass's depth-only pipeline. A program with
+//! uber pipeline draws (the viewer), and the other passes' pipelines, which each pass builds
+//! itself through [`PipelineCache::pass_pipeline`] (the cache knows no pass). A program with
 //! cast shadows has three bind groups (the shadow maps are @group(2)), one without has two.
 //! Hot-reloaded WGSL replaces them all.
 
@@ -56,6 +57,25 @@ impl Layouts {
     }
 }
 
+/// What selects one of a pass's own pipelines: the pass (and its variant, say "glass back"),
+/// the effect set whose module it is built from, its light loop and its colour format (`None`:
+/// depth only or compute). The cache stores them; each pass builds its own.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct PassKey {
+    pub pass: &'static str,
+    pub effects: EffectKey,
+    pub lights: LightLoop,
+    pub format: Option<wgpu::TextureFormat>,
+}
+
+/// What a pass's build function gets from the cache: the device, the renderer's layouts and the
+/// effect set's shader module.
+pub struct BuildContext<'a> {
+    pub device: &'a wgpu::Device,
+    pub layouts: &'a Layouts,
+    pub module: &'a wgpu::ShaderModule,
+}
+
 /// A pipeline being built on a worker thread (the viewer keeps drawing meanwhile).
 struct PendingBuild {
     started: Instant,
@@ -69,13 +89,10 @@ pub struct PipelineCache {
     raw_source: String,
     modules: HashMap<EffectKey, wgpu::ShaderModule>,
     layouts: Layouts,
-    /// The shadow pass's depth-only pipeline, built on first use.
-    shadow_pipeline: Option<wgpu::RenderPipeline>,
-    /// The lighting passes' compute pipelines, by effect set, light loop and entry point, built
-    /// on first use.
-    lighting_pipelines: HashMap<(EffectKey, LightLoop, &'static str), wgpu::ComputePipeline>,
-    /// The glass pass's pipelines by effects, light loop, colour format and back faces or not.
-    glass_pipelines: HashMap<(EffectKey, LightLoop, wgpu::TextureFormat, bool), wgpu::RenderPipeline>,
+    /// The other passes' pipelines (shadow, glass, the lighting passes), each built by its pass
+    /// on first use through [`PipelineCache::pass_pipeline`] or [`PipelineCache::pass_compute`].
+    pass_pipelines: HashMap<PassKey, wgpu::RenderPipeline>,
+    pass_computes: HashMap<PassKey, wgpu::ComputePipeline>,
     pipelines: HashMap<PipelineKey, wgpu::RenderPipeline>,
     pending: HashMap<PipelineKey, PendingBuild>,
     /// Build missing pipelines on a worker thread and draw with the uber pipeline meanwhile
@@ -95,9 +112,8 @@ impl PipelineCache {
             raw_source: shaders::raw_lighting_source(),
             modules: HashMap::new(),
             layouts,
-            shadow_pipeline: None,
-            lighting_pipelines: HashMap::new(),
-            glass_pipelines: HashMap::new(),
+            pass_pipelines: HashMap::new(),
+            pass_computes: HashMap::new(),
             pipelines: HashMap::new(),
             pending: HashMap::new(),
             build_in_background: false,
@@ -114,9 +130,8 @@ impl PipelineCache {
         self.raw_source = raw_source.to_owned();
         self.modules.clear();
         self.pipelines.clear();
-        self.shadow_pipeline = None;
-        self.lighting_pipelines.clear();
-        self.glass_pipelines.clear();
+        self.pass_pipelines.clear();
+        self.pass_computes.clear();
         self.pending.clear();
         Ok(())
     }
@@ -153,59 +168,36 @@ impl PipelineCache {
         self.pipelines.insert(key, p);
     }
 
-    /// The shadow pass's depth-only pipeline (`vs_shadow` of the shadow permutation, with the
-    /// slope-scaled bias), built on first use and after a reload.
-    pub fn shadow_pipeline(&mut self) -> &wgpu::RenderPipeline {
-        if self.shadow_pipeline.is_none() {
-            let module = self.module(EffectKey::NONE.with(Effect::CastShadows));
-            let p = crate::shadow_pass::build_pipeline(&self.device, &self.layouts.shadow_pass, &module);
-            self.shadow_pipeline = Some(p);
+    /// A pass's render pipeline for `key`, built by the pass's own `build` on first use (from the
+    /// module of `key.effects`) and cached until a reload.
+    pub fn pass_pipeline(
+        &mut self,
+        key: PassKey,
+        build: impl FnOnce(&BuildContext) -> wgpu::RenderPipeline,
+    ) -> &wgpu::RenderPipeline {
+        if !self.pass_pipelines.contains_key(&key) {
+            let module = self.module(key.effects);
+            let p = build(&BuildContext { device: &self.device, layouts: &self.layouts, module: &module });
+            self.pass_pipelines.insert(key, p);
         }
-        self.shadow_pipeline.as_ref().expect("built above")
+        &self.pass_pipelines[&key]
     }
 
-    /// The lighting pass `entry` (`cs_flat`, `cs_gouraud`) of a program: its effect set and light
-    /// loop, built on first use.
-    pub fn lighting_pipeline(&mut self, program: Program, entry: &'static str) -> &wgpu::ComputePipeline {
-        let (effects, lights) = (program.effects(), program.light_loop());
-        if !self.lighting_pipelines.contains_key(&(effects, lights, entry)) {
-            let module = self.module(effects);
-            let layout = if effects.has(Effect::CastShadows) {
-                &self.layouts.lighting_pass_shadows
-            } else {
-                &self.layouts.lighting_pass
-            };
-            let label = format!("{entry} [{}] {}", effects.label(), lights.label());
-            let p = crate::lighting_pass::build_pipeline(&self.device, layout, &module, entry, &label, lights);
-            self.lighting_pipelines.insert((effects, lights, entry), p);
+    /// A pass's compute pipeline for `key`, built by the pass on first use, as [`Self::pass_pipeline`].
+    pub fn pass_compute(
+        &mut self,
+        key: PassKey,
+        build: impl FnOnce(&BuildContext) -> wgpu::ComputePipeline,
+    ) -> &wgpu::ComputePipeline {
+        if !self.pass_computes.contains_key(&key) {
+            let module = self.module(key.effects);
+            let p = build(&BuildContext { device: &self.device, layouts: &self.layouts, module: &module });
+            self.pass_computes.insert(key, p);
         }
-        &self.lighting_pipelines[&(effects, lights, entry)]
+        &self.pass_computes[&key]
     }
 
     /// Move pipelines finished on worker threads into the cache.
-    /// The glass pass's pipeline of `program` (`back`: a mesh's back faces), built on first use.
-    pub fn glass_pipeline(
-        &mut self,
-        program: Program,
-        format: wgpu::TextureFormat,
-        back: bool,
-    ) -> &wgpu::RenderPipeline {
-        let (effects, lights) = (program.effects(), program.light_loop());
-        let key = (effects, lights, format, back);
-        if !self.glass_pipelines.contains_key(&key) {
-            let module = self.module(effects);
-            let layout = match (back, effects.has(Effect::CastShadows)) {
-                (true, _) => &self.layouts.glass_back,
-                (false, false) => &self.layouts.glass,
-                (false, true) => &self.layouts.glass_shadows,
-            };
-            let constants = lights.constants();
-            let p = crate::glass_pass::build_pipeline(&self.device, layout, &module, effects, &constants, format, back);
-            self.glass_pipelines.insert(key, p);
-        }
-        &self.glass_pipelines[&key]
-    }
-
     pub fn poll_builds(&mut self) {
         let done: Vec<(PipelineKey, wgpu::RenderPipeline, Duration)> = self
             .pending

@@ -9,13 +9,15 @@
 //! halved until all layers fit in `SHADOW_MAP_BUDGET_BYTES`; a light asking for less uses the
 //! top-left `resolution²` of its layer (`ShadowLight.uv_scale`).
 
-use crate::pipelines::DEPTH_FORMAT;
+use crate::light_loop::LightLoop;
+use crate::pipelines::{DEPTH_FORMAT, PassKey, PipelineCache};
 use crate::renderer::Renderer;
 use crate::target::{LinearImage, padded_bytes_per_row};
 use crate::uniforms::{ShadowLightUniform, ShadowsUniform};
 use crate::upload::SceneGpu;
 use crate::vertex::SmoothVertex;
 use bytemuck::Zeroable;
+use shadelab_model::effects::{Effect, EffectKey};
 use shadelab_model::lighting::area_points::area_emitter;
 use shadelab_model::shadows::{
     MAX_SHADOW_LAYERS, SHADOW_CONSTANT_BIAS, SHADOW_DEPTH_BIAS_CLAMP, SHADOW_MAP_BUDGET_BYTES, SHADOW_RESOLUTION,
@@ -176,9 +178,16 @@ pub(crate) fn samplers(device: &wgpu::Device) -> [wgpu::Sampler; 2] {
     })
 }
 
+/// The shadow pass's pipeline from the cache, built on first use from the shadow permutation.
+fn shadow_pipeline(cache: &mut PipelineCache) -> &wgpu::RenderPipeline {
+    let effects = EffectKey::NONE.with(Effect::CastShadows);
+    let key = PassKey { pass: "shadow", effects, lights: LightLoop::Dynamic, format: None };
+    cache.pass_pipeline(key, |cx| build_pipeline(cx.device, &cx.layouts.shadow_pass, cx.module))
+}
+
 /// The depth-only pipeline of the shadow pass: `vs_shadow`, no fragment stage, the slope-scaled
 /// and constant biases of `shadelab_model::shadows`, no culling (planes are one-sided meshes).
-pub(crate) fn build_pipeline(
+fn build_pipeline(
     device: &wgpu::Device,
     layout: &wgpu::PipelineLayout,
     module: &wgpu::ShaderModule,
@@ -362,7 +371,7 @@ impl Renderer {
         gpu_scene: &SceneGpu,
         timestamp: Option<(&wgpu::QuerySet, u32)>,
     ) -> (wgpu::BindGroup, bool) {
-        let pipeline = self.pipelines.shadow_pipeline().clone();
+        let pipeline = shadow_pipeline(&mut self.pipelines).clone();
         let mut slot = gpu_scene.shadows.lock().unwrap_or_else(|e| e.into_inner());
         if slot.is_none() {
             let plan = ShadowPlan { side: 1, layers: 1, lights: Vec::new() };

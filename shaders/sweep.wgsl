@@ -35,6 +35,21 @@ struct SweepCounts {
 @group(0) @binding(1) var<storage, read> table: array<vec4<f32>>;
 @group(0) @binding(2) var<storage, read_write> outputs: array<f32>;
 
+// One combination's inputs as the column groups read them: n is n_raw normalized, h_row holds
+// (h, mirror), a_row (α, d0), v_index is Fresnel's v of each channel of μ.
+struct SweepCombination {
+    n_raw: vec3<f32>,
+    n: vec3<f32>,
+    v: vec3<f32>,
+    l: vec3<f32>,
+    m: f32,
+    h_row: vec4<f32>,
+    mu: vec3<f32>,
+    v_index: vec3<f32>,
+    d: f32,
+    a_row: vec4<f32>,
+}
+
 @compute @workgroup_size(64)
 fn sweep(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workgroups) groups: vec3<u32>) {
     let local = gid.x + gid.y * groups.x * 64u;
@@ -54,20 +69,43 @@ fn sweep(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workgroups)
     let mi = rest % counts.m;
     let gi = rest / counts.m;
 
-    let n_raw = table[gi * 3u].xyz;
-    let v = table[gi * 3u + 1u].xyz;
-    let l = table[gi * 3u + 2u].xyz;
+    var inp: SweepCombination;
+    inp.n_raw = table[gi * 3u].xyz;
+    inp.v = table[gi * 3u + 1u].xyz;
+    inp.l = table[gi * 3u + 2u].xyz;
     let o = counts.m_offset;
-    let m = table[o + mi].x;
-    let h_row = table[o + counts.m + hi];
-    let mu = table[o + counts.m + counts.h + ui].xyz;
-    let d = table[o + counts.m + counts.h + counts.mu + di].x;
-    let a_row = table[o + counts.m + counts.h + counts.mu + counts.d + ai];
+    inp.m = table[o + mi].x;
+    inp.h_row = table[o + counts.m + hi];
+    inp.mu = table[o + counts.m + counts.h + ui].xyz;
+    inp.d = table[o + counts.m + counts.h + counts.mu + di].x;
+    inp.a_row = table[o + counts.m + counts.h + counts.mu + counts.d + ai];
+    inp.n = safe_normalize(inp.n_raw, inp.v);
+    inp.v_index = fresnel_v_from_mu(inp.mu);
+    // The shadow case: (geometry + m index) of the projections, 5 rows each.
+    let so = o + counts.m + counts.h + counts.mu + counts.d + counts.alpha + ((gi + mi) % counts.shadow) * 5u;
 
-    let n = safe_normalize(n_raw, v);
+    // The column groups in column order, as the f64 reference writes them.
+    let base = local * SWEEP_OUTPUTS;
+    light_columns(base, inp);
+    shadow_map_columns(base, inp, so);
+    surface_map_columns(base, inp);
+    area_columns(base, inp);
+    transmission_columns(base, inp);
+    pcss_columns(base, inp);
+}
+
+// The BRDF, falloff, per-light contribution, other-model and spot-and-window columns.
+fn light_columns(base: u32, inp: SweepCombination) {
+    let n = inp.n;
+    let v = inp.v;
+    let l = inp.l;
+    let m = inp.m;
+    let h_row = inp.h_row;
+    let v_index = inp.v_index;
+    let d = inp.d;
+    let a_row = inp.a_row;
     let half = safe_normalize(l + v, n);
     let r = 2.0 * dot(n, l) * n - l;
-    let v_index = fresnel_v_from_mu(mu);
     let mirror = h_row.y > 0.5;
 
     var light: Light;
@@ -92,7 +130,6 @@ fn sweep(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workgroups)
         SPECULAR_COOK_TORRANCE, MICROFACET_CHAPTER,
     );
 
-    let base = local * SWEEP_OUTPUTS;
     outputs[base + COL_DIFFUSE_LAMBERT] = diffuse_lambert(dot(n, l));
     outputs[base + COL_SPECULAR_PHONG] = specular_phong(dot(v, r), h_row.x, mirror);
     let n_x_h = cross(n, half);
@@ -117,10 +154,14 @@ fn sweep(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workgroups)
     let inner = outer * min(a_row.x, 1.0);
     outputs[base + COL_SPOT_CONE] = spot_cone(dot(v, l), cos(inner), cos(outer));
     outputs[base + COL_WINDOW_RANGE] = window_range(d, a_row.y);
+}
 
-    // Shadow math: case (geometry + m index) of the projections, the receiver at l·d with normal
-    // n moved by the normal offset, as shadow_visibility does (docs/model.md §6).
-    let so = o + counts.m + counts.h + counts.mu + counts.d + counts.alpha + ((gi + mi) % counts.shadow) * 5u;
+// The shadow-map columns for the projection at table row `so`: the receiver at l·d with normal
+// n moved by the normal offset, as shadow_visibility does (docs/model.md §6).
+fn shadow_map_columns(base: u32, inp: SweepCombination, so: u32) {
+    let n = inp.n;
+    let l = inp.l;
+    let d = inp.d;
     let sm = mat4x4(table[so], table[so + 1u], table[so + 2u], table[so + 3u]);
     let s_row = table[so + 4u];
     let to_p = l * d;
@@ -129,7 +170,19 @@ fn sweep(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workgroups)
     outputs[base + COL_SHADOW_TEXEL_WORLD] = texel;
     put_rgb(base + COL_SHADOW_MAP_COORD, shadow_map_coord(sm, to_p + n * (SHADOW_NORMAL_OFFSET_TEXELS * texel)));
     outputs[base + COL_SHADOW_ORTHO_TEXEL_WORLD] = shadow_ortho_texel_world(sm, SWEEP_SHADOW_RESOLUTION);
+}
 
+// The surface columns: tint, vertex colour, texture coordinates and the material maps.
+fn surface_map_columns(base: u32, inp: SweepCombination) {
+    let n_raw = inp.n_raw;
+    let n = inp.n;
+    let v = inp.v;
+    let l = inp.l;
+    let m = inp.m;
+    let h_row = inp.h_row;
+    let mu = inp.mu;
+    let d = inp.d;
+    let a_row = inp.a_row;
     // The surface at a tint of m in every channel, μ's tinted part μ itself (a metal); the raw
     // normal as a vertex colour (outside [0, 1]); d and α as texture coordinates, transformed by
     // the offset (d0, d), a rotation of 4m right angles and the scale (h, d).
@@ -153,7 +206,16 @@ fn sweep(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workgroups)
     // incidence: no frame), its sign from V·L, scale h.
     let w = select(1.0, -1.0, dot(v, l) < 0.0);
     put_rgb(base + COL_NORMAL_MAPPED, normal_mapped(n, vec4(l, w), n_raw, h_row.x));
+}
 
+// The area-light columns: each shape's diffuse form, specular scale and point-source form.
+fn area_columns(base: u32, inp: SweepCombination) {
+    let n = inp.n;
+    let v = inp.v;
+    let l = inp.l;
+    let m = inp.m;
+    let d = inp.d;
+    let a_row = inp.a_row;
     // Area lights at l·d facing −v, α as their size (0 to 1e6 m): the diffuse form and the
     // specular point's scale of each shape.
     var area: Light;
@@ -176,6 +238,17 @@ fn sweep(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workgroups)
         }
         outputs[base + COL_AREA_POINTS_FORM + k] = form_sum;
     }
+}
+
+// The transmission columns: Fresnel, refraction, absorption, the sphere's chord and shape exits.
+fn transmission_columns(base: u32, inp: SweepCombination) {
+    let n = inp.n;
+    let v = inp.v;
+    let l = inp.l;
+    let m = inp.m;
+    let v_index = inp.v_index;
+    let d = inp.d;
+    let a_row = inp.a_row;
     // Light through a surface at N, met along −V: into v (μ's red channel) and out of it; absorption
     // over a·d = α·d; the chord from l·d·m towards V through a sphere of radius α at the origin.
     let c = dot(n, v);
@@ -197,6 +270,15 @@ fn sweep(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workgroups)
     for (var k = 0u; k < 4u; k++) {
         outputs[base + COL_SHAPE_EXIT + k] = shape_exit(shapes[k], n * m, v).w;
     }
+}
+
+// The PCSS and shadow-depth columns.
+fn pcss_columns(base: u32, inp: SweepCombination) {
+    let n = inp.n;
+    let l = inp.l;
+    let m = inp.m;
+    let d = inp.d;
+    let a_row = inp.a_row;
     outputs[base + COL_PENUMBRA_WIDTH] = penumbra_width(a_row.x, d, a_row.y);
     outputs[base + COL_PCSS_SEARCH_RADIUS] = pcss_search_radius(a_row.x, d, a_row.y);
     outputs[base + COL_SHADOW_LINEAR_DEPTH] = shadow_linear_depth(m, a_row.y, a_row.y + d);

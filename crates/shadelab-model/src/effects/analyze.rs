@@ -49,12 +49,25 @@ pub fn analyze(scene: &Scene, specular: SpecularModel) -> Analysis {
     let mats = &scene.materials;
     let used: Vec<&crate::scene::Material> = scene.objects.iter().filter_map(|o| mats.get(o.material)).collect();
     let lights = &scene.lights[..scene.lights.len().min(crate::scene::MAX_LIGHTS)];
-    let n_dir = lights.iter().filter(|l| l.kind == LightKind::Directional).count();
     // Point and spot lights: both have a position, a distance and a falloff.
     let points: Vec<_> = lights.iter().filter(|l| l.kind != LightKind::Directional).collect();
-    let n_spot = points.iter().filter(|l| l.kind == LightKind::Spot).count();
     let lit = !lights.is_empty();
+    // The groups in the order the explanation lists them.
+    decide_light_kinds(&mut a, lights, &points);
+    decide_area_lights(&mut a, scene, lights);
+    decide_falloff(&mut a, &points);
+    decide_diffuse_specular(&mut a, scene, &used, lit, specular);
+    decide_ambient_and_sum(&mut a, scene, &used, lit);
+    decide_shadows(&mut a, scene, lights);
+    decide_textures(&mut a, scene);
+    super::transparency::decide(&mut a, scene);
+    a
+}
 
+/// The lights' kinds: directional, point (spots among them) and spot.
+fn decide_light_kinds(a: &mut Analysis, lights: &[crate::scene::Light], points: &[&crate::scene::Light]) {
+    let n_dir = lights.iter().filter(|l| l.kind == LightKind::Directional).count();
+    let n_spot = points.iter().filter(|l| l.kind == LightKind::Spot).count();
     a.decide(Effect::DirectionalLights, n_dir > 0, format!("{n_dir} in the scene"));
     a.decide(
         Effect::PointLights,
@@ -69,6 +82,11 @@ pub fn analyze(scene: &Scene, specular: SpecularModel) -> Analysis {
         },
     );
     a.decide(Effect::SpotLights, n_spot > 0, format!("{n_spot} spot light(s)"));
+}
+
+/// Area lights in their exact form, then those drawn as point sources (with the shadow cubes
+/// they share when there are fewer than their points).
+fn decide_area_lights(a: &mut Analysis, scene: &Scene, lights: &[crate::scene::Light]) {
     let areas: Vec<String> = lights
         .iter()
         .enumerate()
@@ -103,6 +121,10 @@ pub fn analyze(scene: &Scene, specular: SpecularModel) -> Analysis {
         !as_points.is_empty(),
         if as_points.is_empty() { "no area light drawn as point sources".into() } else { as_points.join(", ") },
     );
+}
+
+/// The point and spot lights' range and falloff forms.
+fn decide_falloff(a: &mut Analysis, points: &[&crate::scene::Light]) {
     let ranged = points.iter().filter(|l| l.range.is_some()).count();
     a.decide(
         Effect::LightRange,
@@ -135,6 +157,16 @@ pub fn analyze(scene: &Scene, specular: SpecularModel) -> Analysis {
             "no point or spot light uses it".into()
         },
     );
+}
+
+/// The Phong model's diffuse term and its two specular models (only the chosen one is on).
+fn decide_diffuse_specular(
+    a: &mut Analysis,
+    scene: &Scene,
+    used: &[&crate::scene::Material],
+    lit: bool,
+    specular: SpecularModel,
+) {
     let model = scene.illumination;
     let phong_model = model == IlluminationModel::Phong;
     let other_model = format!("the illumination model is {model}, which has its own terms");
@@ -170,6 +202,11 @@ pub fn analyze(scene: &Scene, specular: SpecularModel) -> Analysis {
     a.decide(Effect::SpecularPhong, on, why);
     let (on, why) = spec_reason(SpecularModel::CookTorrance);
     a.decide(Effect::SpecularCookTorrance, on, why);
+}
+
+/// The ambient term, the Lambert rule, and the four-term sum with its transmitted term.
+fn decide_ambient_and_sum(a: &mut Analysis, scene: &Scene, used: &[&crate::scene::Material], lit: bool) {
+    let model = scene.illumination;
     let amb = scene.ambient.iter().cloned().fold(0.0, f64::max);
     let max_ra = used.iter().map(|m| m.r_a).fold(0.0, f64::max);
     a.decide(
@@ -212,6 +249,10 @@ pub fn analyze(scene: &Scene, specular: SpecularModel) -> Analysis {
             "every material is opaque (1 − t = 0)".into()
         },
     );
+}
+
+/// Cast shadows, then the filters and cascades, which need them.
+fn decide_shadows(a: &mut Analysis, scene: &Scene, lights: &[crate::scene::Light]) {
     let (on, why) = cast_shadows(scene, lights);
     a.decide(Effect::CastShadows, on, why);
     for (effect, filter) in [
@@ -225,6 +266,10 @@ pub fn analyze(scene: &Scene, specular: SpecularModel) -> Analysis {
     }
     let (cascades, why) = shadow_cascades(scene, lights, on);
     a.decide(Effect::ShadowCascades, cascades, why);
+}
+
+/// The surface's textures, vertex colours and emission.
+fn decide_textures(a: &mut Analysis, scene: &Scene) {
     let (textured, why) = base_color_texture(scene);
     a.decide(Effect::BaseColorTexture, textured, why);
     let (colored, why) = vertex_colors(scene);
@@ -239,8 +284,6 @@ pub fn analyze(scene: &Scene, specular: SpecularModel) -> Analysis {
     a.decide(Effect::Emission, on, why);
     let (on, why) = emissive_texture(scene);
     a.decide(Effect::EmissiveTexture, on, why);
-    super::transparency::decide(&mut a, scene);
-    a
 }
 
 /// The file mesh object `o` shows, if it is one.

@@ -65,6 +65,13 @@ impl Viewer {
             let py = (((pos.y - rect.min.y) * ppp).max(0.0) as u32).min(h - 1);
             self.lobe.pick(&self.scene, (px, py), (w, h));
         }
+        let (shown, error_map) = self.draw_view(ui, (w, h));
+        self.paint_view(ui, rect, ppp, (w, h), shown, error_map);
+    }
+
+    /// Draw the frame and its overlays into the view's target, and the picture shown in its
+    /// place if any; returns that picture and whether it is the difference view's error map.
+    fn draw_view(&mut self, ui: &egui::Ui, (w, h): (u32, u32)) -> (Option<egui::TextureId>, bool) {
         self.ensure_view(w, h);
         let view = self.view.as_ref().expect("view just made");
         // The frame as drawn, derived once per change (derive.rs); the uniforms written when it
@@ -116,6 +123,20 @@ impl Viewer {
             shown =
                 self.difference.update(&ctx, &mut self.renderer, &self.gpu_scene, &drawn.scene, &self.settings, (w, h));
         }
+        (shown, self.difference.enabled && analytic && !factor)
+    }
+
+    /// Paint the view: `shown` or the scene itself, then the difference view's legend when
+    /// `error_map`, else the light markers and the picked pixel.
+    fn paint_view(
+        &self,
+        ui: &egui::Ui,
+        rect: Rect,
+        ppp: f32,
+        (w, h): (u32, u32),
+        shown: Option<egui::TextureId>,
+        error_map: bool,
+    ) {
         let painter = ui.painter_at(rect);
         match shown {
             Some(t) => {
@@ -126,7 +147,7 @@ impl Viewer {
                 painter.add(super::blit::shape(rect));
             }
         }
-        if self.difference.enabled && analytic && !factor {
+        if error_map {
             let mode = format!("{} shading, {} specular", self.settings.shading, self.settings.specular);
             overlays::difference_legend(&painter, rect, &self.difference, &mode, self.frame_ms, self.show_live_numbers);
             return; // the light markers would hide the error map

@@ -30,118 +30,144 @@ impl Viewer {
         let layers: Vec<u32> = self.scene.lights.iter().map(|l| drawn_layers(&self.scene, l)).collect();
         for (i, l) in self.scene.lights.iter_mut().enumerate() {
             egui::CollapsingHeader::new(format!("L{} — {}", i + 1, l.kind.name())).id_salt(i).show(ui, |ui| {
-                ui.horizontal(|ui| {
-                    let mut kind = l.kind;
-                    for (name, k) in LightKind::ALL {
-                        let choice = ui.selectable_value(&mut kind, *k, *name);
-                        let meaning = match k {
-                            LightKind::Spot => Some("a point light that lights only a cone (glTF's spot light)"),
-                            LightKind::Rect => Some("a rectangle emitting from its front face: soft shadows"),
-                            LightKind::Disk => Some("a disk emitting from its front face: soft shadows"),
-                            LightKind::Sphere => Some("a sphere emitting all round: soft shadows"),
-                            _ => None,
-                        };
-                        if let Some(m) = meaning {
-                            choice.on_hover_text(m);
-                        }
-                    }
-                    l.set_kind(kind);
-                    if ui.button("remove").clicked() {
-                        remove = Some(i);
-                    }
-                });
-                let positional = l.kind != LightKind::Directional;
-                if positional {
-                    vec3_row(ui, "position", &mut l.position);
+                if light_ui(ui, i, l, layers[i].max(1), &mut self.shadow_maps) {
+                    remove = Some(i);
                 }
-                if !matches!(l.kind, LightKind::Point | LightKind::Sphere) {
-                    let name = match l.kind {
-                        LightKind::Directional => "direction",
-                        LightKind::Spot => "axis",
-                        _ => "normal",
-                    };
-                    vec3_row(ui, name, &mut l.direction);
-                    l.direction = l.direction.normalize_or(DVec3::NEG_Y);
-                }
-                if l.kind.is_area() {
-                    // A rectangle has a width and a height; a disk or sphere one diameter.
-                    let (w, h) =
-                        if l.kind == LightKind::Rect { ("width m", Some("height m")) } else { ("diameter m", None) };
-                    ui.add(
-                        egui::Slider::new(&mut l.size[0], params::LIGHT_SIZE.min..=params::LIGHT_SIZE.max)
-                            .logarithmic(true)
-                            .text(w),
-                    )
-                    .on_hover_text(tooltip(&params::LIGHT_SIZE));
-                    match h {
-                        Some(h) => {
-                            ui.add(
-                                egui::Slider::new(&mut l.size[1], params::LIGHT_SIZE.min..=params::LIGHT_SIZE.max)
-                                    .logarithmic(true)
-                                    .text(h),
-                            )
-                            .on_hover_text(tooltip(&params::LIGHT_SIZE));
-                        }
-                        None => l.size[1] = l.size[0],
-                    }
-                    // 0: the exact area form; k: the chapter's k point sources, to show what it
-                    // calls unnatural (k = 1) and how k hard shadows converge to the penumbra.
-                    ui.add(
-                        egui::Slider::new(&mut l.area_points, 0..=params::AREA_POINTS.max as u32)
-                            .text("points k (0 = exact)"),
-                    )
-                    .on_hover_text(tooltip(&params::AREA_POINTS));
-                }
-                ui.horizontal(|ui| {
-                    let mut c = l.color.map(|v| v as f32);
-                    if ui.color_edit_button_rgb(&mut c).changed() {
-                        l.color = c.map(f64::from);
-                    }
-                    slider(ui, &mut l.intensity, &params::INTENSITY, true);
-                });
-                if positional {
-                    ui.horizontal(|ui| {
-                        ui.selectable_value(&mut l.falloff_form, FalloffForm::Quadratic, "1/(1+αd²)");
-                        ui.selectable_value(&mut l.falloff_form, FalloffForm::Linear, "1/(d+d0)");
-                    });
-                    match l.falloff_form {
-                        FalloffForm::Quadratic => slider(ui, &mut l.falloff_alpha, &params::FALLOFF, true),
-                        FalloffForm::Linear => slider(ui, &mut l.d0, &params::D0, true),
-                    };
-                    ui.horizontal(|ui| {
-                        let mut ends = l.range.is_some();
-                        ui.checkbox(&mut ends, "range")
-                            .on_hover_text("the light ends at this distance, fading as glTF's 1 − (d/range)⁴");
-                        let mut r = l.range.unwrap_or(RANGE_SWITCHED_ON);
-                        if ends {
-                            ui.add(egui::Slider::new(&mut r, params::RANGE.min..=params::RANGE.max).logarithmic(true))
-                                .on_hover_text(tooltip(&params::RANGE));
-                        }
-                        l.range = ends.then_some(r);
-                    });
-                }
-                if l.kind == LightKind::Spot {
-                    // Degrees on the panel, radians in the model, both in the declared cone range;
-                    // the inner cone stays inside the outer (equal cones are the model's hard edge).
-                    let cone = params::CONE_ANGLE;
-                    let (lowest, widest) = (cone.min.to_degrees(), cone.max.to_degrees());
-                    let mut outer = l.outer_cone.to_degrees();
-                    let mut inner = l.inner_cone.to_degrees();
-                    ui.add(egui::Slider::new(&mut outer, lowest..=widest).text("outer cone °"))
-                        .on_hover_text("half-angle beyond which the spot gives no light");
-                    ui.add(egui::Slider::new(&mut inner, lowest..=outer).text("inner cone °"))
-                        .on_hover_text("half-angle within which the spot gives its full light");
-                    l.outer_cone = outer.to_radians().clamp(cone.min, cone.max);
-                    l.inner_cone = inner.min(outer).to_radians().max(cone.min).min(l.outer_cone);
-                }
-                shadow_ui(ui, i, l.kind == LightKind::Directional, &mut l.shadow);
-                shadow_map_ui(ui, i, l.kind, layers[i].max(1), &mut self.shadow_maps);
             });
         }
         if let Some(i) = remove {
             self.scene.lights.remove(i);
         }
     }
+}
+
+/// Light `i`'s section: kind, position or direction, size, colour and intensity, falloff and
+/// range, spot cones, shadow settings and map. True when its "remove" button was clicked.
+fn light_ui(ui: &mut egui::Ui, i: usize, l: &mut Light, layers: u32, maps: &mut ShadowMapViews) -> bool {
+    let removed = light_kind_row(ui, l);
+    let positional = l.kind != LightKind::Directional;
+    if positional {
+        vec3_row(ui, "position", &mut l.position);
+    }
+    if !matches!(l.kind, LightKind::Point | LightKind::Sphere) {
+        let name = match l.kind {
+            LightKind::Directional => "direction",
+            LightKind::Spot => "axis",
+            _ => "normal",
+        };
+        vec3_row(ui, name, &mut l.direction);
+        l.direction = l.direction.normalize_or(DVec3::NEG_Y);
+    }
+    if l.kind.is_area() {
+        area_light_ui(ui, l);
+    }
+    ui.horizontal(|ui| {
+        let mut c = l.color.map(|v| v as f32);
+        if ui.color_edit_button_rgb(&mut c).changed() {
+            l.color = c.map(f64::from);
+        }
+        slider(ui, &mut l.intensity, &params::INTENSITY, true);
+    });
+    if positional {
+        falloff_ui(ui, l);
+    }
+    if l.kind == LightKind::Spot {
+        spot_cone_ui(ui, l);
+    }
+    shadow_ui(ui, i, l.kind == LightKind::Directional, &mut l.shadow);
+    shadow_map_ui(ui, i, l.kind, layers, maps);
+    removed
+}
+
+/// The light's kind, one button each (with what the less familiar ones mean), and "remove":
+/// true when that was clicked.
+fn light_kind_row(ui: &mut egui::Ui, l: &mut Light) -> bool {
+    let mut removed = false;
+    ui.horizontal(|ui| {
+        let mut kind = l.kind;
+        for (name, k) in LightKind::ALL {
+            let choice = ui.selectable_value(&mut kind, *k, *name);
+            let meaning = match k {
+                LightKind::Spot => Some("a point light that lights only a cone (glTF's spot light)"),
+                LightKind::Rect => Some("a rectangle emitting from its front face: soft shadows"),
+                LightKind::Disk => Some("a disk emitting from its front face: soft shadows"),
+                LightKind::Sphere => Some("a sphere emitting all round: soft shadows"),
+                _ => None,
+            };
+            if let Some(m) = meaning {
+                choice.on_hover_text(m);
+            }
+        }
+        l.set_kind(kind);
+        if ui.button("remove").clicked() {
+            removed = true;
+        }
+    });
+    removed
+}
+
+/// An area light's size and how many point sources draw it.
+fn area_light_ui(ui: &mut egui::Ui, l: &mut Light) {
+    // A rectangle has a width and a height; a disk or sphere one diameter.
+    let (w, h) = if l.kind == LightKind::Rect { ("width m", Some("height m")) } else { ("diameter m", None) };
+    ui.add(
+        egui::Slider::new(&mut l.size[0], params::LIGHT_SIZE.min..=params::LIGHT_SIZE.max).logarithmic(true).text(w),
+    )
+    .on_hover_text(tooltip(&params::LIGHT_SIZE));
+    match h {
+        Some(h) => {
+            ui.add(
+                egui::Slider::new(&mut l.size[1], params::LIGHT_SIZE.min..=params::LIGHT_SIZE.max)
+                    .logarithmic(true)
+                    .text(h),
+            )
+            .on_hover_text(tooltip(&params::LIGHT_SIZE));
+        }
+        None => l.size[1] = l.size[0],
+    }
+    // 0: the exact area form; k: the chapter's k point sources, to show what it
+    // calls unnatural (k = 1) and how k hard shadows converge to the penumbra.
+    ui.add(egui::Slider::new(&mut l.area_points, 0..=params::AREA_POINTS.max as u32).text("points k (0 = exact)"))
+        .on_hover_text(tooltip(&params::AREA_POINTS));
+}
+
+/// A point or spot light's falloff form with its parameter, and its range.
+fn falloff_ui(ui: &mut egui::Ui, l: &mut Light) {
+    ui.horizontal(|ui| {
+        ui.selectable_value(&mut l.falloff_form, FalloffForm::Quadratic, "1/(1+αd²)");
+        ui.selectable_value(&mut l.falloff_form, FalloffForm::Linear, "1/(d+d0)");
+    });
+    match l.falloff_form {
+        FalloffForm::Quadratic => slider(ui, &mut l.falloff_alpha, &params::FALLOFF, true),
+        FalloffForm::Linear => slider(ui, &mut l.d0, &params::D0, true),
+    };
+    ui.horizontal(|ui| {
+        let mut ends = l.range.is_some();
+        ui.checkbox(&mut ends, "range")
+            .on_hover_text("the light ends at this distance, fading as glTF's 1 − (d/range)⁴");
+        let mut r = l.range.unwrap_or(RANGE_SWITCHED_ON);
+        if ends {
+            ui.add(egui::Slider::new(&mut r, params::RANGE.min..=params::RANGE.max).logarithmic(true))
+                .on_hover_text(tooltip(&params::RANGE));
+        }
+        l.range = ends.then_some(r);
+    });
+}
+
+/// A spot light's outer and inner cones.
+fn spot_cone_ui(ui: &mut egui::Ui, l: &mut Light) {
+    // Degrees on the panel, radians in the model, both in the declared cone range;
+    // the inner cone stays inside the outer (equal cones are the model's hard edge).
+    let cone = params::CONE_ANGLE;
+    let (lowest, widest) = (cone.min.to_degrees(), cone.max.to_degrees());
+    let mut outer = l.outer_cone.to_degrees();
+    let mut inner = l.inner_cone.to_degrees();
+    ui.add(egui::Slider::new(&mut outer, lowest..=widest).text("outer cone °"))
+        .on_hover_text("half-angle beyond which the spot gives no light");
+    ui.add(egui::Slider::new(&mut inner, lowest..=outer).text("inner cone °"))
+        .on_hover_text("half-angle within which the spot gives its full light");
+    l.outer_cone = outer.to_radians().clamp(cone.min, cone.max);
+    l.inner_cone = inner.min(outer).to_radians().max(cone.min).min(l.outer_cone);
 }
 
 /// One light's shadow settings: whether it casts, its shadow map's side (the powers of two in

@@ -117,6 +117,7 @@ pub fn figure_7_3_pyramid() -> Scene {
         meshes: Default::default(),
         illumination: Default::default(),
         textures: Vec::new(),
+        background: Some(crate::scene::BACKGROUND),
     }
 }
 
@@ -169,6 +170,7 @@ pub fn gouraud_vs_phong() -> Scene {
         meshes: Default::default(),
         illumination: Default::default(),
         textures: Vec::new(),
+        background: Some(crate::scene::BACKGROUND),
     }
 }
 
@@ -219,6 +221,7 @@ pub fn material_board() -> Scene {
         meshes: Default::default(),
         illumination: Default::default(),
         textures: Vec::new(),
+        background: Some(crate::scene::BACKGROUND),
     }
 }
 

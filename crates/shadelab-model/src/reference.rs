@@ -15,7 +15,7 @@ use crate::Light;
 use crate::lighting::area_points::area_emitter;
 use crate::lighting::shading::{shade, shade_with_visibility};
 use crate::params::SpecularModel;
-use crate::scene::{BACKGROUND, Material, Scene, UvFootprint};
+use crate::scene::{Material, Scene, UvFootprint};
 use glam::DMat4;
 use intersect::trace;
 use shadow_rays::ShadowRays;
@@ -43,6 +43,9 @@ pub struct ReferenceImage {
     pub hidden: Vec<u8>,
     /// The same pixels with no cast shadows (equal to `pixels` where `hidden` is 0).
     pub unshadowed: Vec<[f64; 3]>,
+    /// The scene's background (`Scene::background`): `None`, pixels with no object are black
+    /// with alpha 0.
+    pub background: Option<[f64; 3]>,
 }
 
 impl ReferenceImage {
@@ -80,6 +83,7 @@ impl ReferenceImage {
             object: vec![None; n],
             hidden: vec![0; n],
             unshadowed: vec![color; n],
+            background: Some(color),
         }
     }
 }
@@ -103,7 +107,7 @@ pub fn render_reference(scene: &Scene, specular: SpecularModel, width: u32, heig
 /// sources with a hard shadow ray each (the f64 twin of that approximation); otherwise
 /// [`render_reference`].
 pub fn render_drawn(scene: &Scene, specular: SpecularModel, width: u32, height: u32) -> ReferenceImage {
-    let mut img = ReferenceImage::empty(width, height);
+    let mut img = ReferenceImage::empty(width, height, scene.background);
     trace_rows(scene, specular, &mut img, 0..height);
     img
 }
@@ -121,7 +125,8 @@ impl ReferenceJob {
     pub fn new(scene: &Scene, specular: SpecularModel, width: u32, height: u32) -> ReferenceJob {
         let exact: Vec<Light> = scene.lights.iter().map(|l| Light { area_points: 0, ..l.clone() }).collect();
         let scene = Scene { lights: exact, ..scene.clone() };
-        ReferenceJob { scene, specular, img: ReferenceImage::empty(width, height), next_row: 0 }
+        let img = ReferenceImage::empty(width, height, scene.background);
+        ReferenceJob { scene, specular, img, next_row: 0 }
     }
 
     /// Trace up to `rows` more rows; true once every row is traced.
@@ -149,7 +154,7 @@ impl ReferenceJob {
 
 impl ReferenceImage {
     /// No pixels yet, room for `width × height`.
-    fn empty(width: u32, height: u32) -> ReferenceImage {
+    fn empty(width: u32, height: u32, background: Option<[f64; 3]>) -> ReferenceImage {
         let n = (width as usize) * (height as usize);
         ReferenceImage {
             width,
@@ -158,6 +163,7 @@ impl ReferenceImage {
             object: Vec::with_capacity(n),
             hidden: Vec::with_capacity(n),
             unshadowed: Vec::with_capacity(n),
+            background,
         }
     }
 }
@@ -173,8 +179,9 @@ fn trace_rows(scene: &Scene, specular: SpecularModel, img: &mut ReferenceImage, 
         for x in 0..width {
             let (o, dir) = scene.camera.ray(x, y, width, height);
             let Some(hit) = trace(scene, &inverses, o, dir) else {
-                img.pixels.push(BACKGROUND);
-                img.unshadowed.push(BACKGROUND);
+                let background = scene.background.unwrap_or([0.0; 3]);
+                img.pixels.push(background);
+                img.unshadowed.push(background);
                 img.object.push(None);
                 img.hidden.push(0);
                 continue;

@@ -128,6 +128,10 @@ pub struct Scene {
     /// How transparent objects absorb: exactly, or by the chapter's rule per object
     /// (docs/transparency.md).
     pub absorption: crate::lighting::transmission::AbsorptionChoice,
+    /// What a ray that meets nothing sees: [`BACKGROUND`]; `None` in a term view (`Term::apply`),
+    /// where such pixels are black with alpha 0, so that the term images add up to the whole
+    /// image everywhere once the background is composited under them.
+    pub background: Option<[f64; 3]>,
 }
 
 /// Background colour (linear RGB): dark enough for highlights to stand out, not black, so a blank

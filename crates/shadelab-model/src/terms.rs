@@ -101,10 +101,15 @@ impl Term {
     }
 
     /// Set the other terms' coefficients of `scene` to 0 in place (the lights, the geometry and
-    /// this term's coefficients stay).
+    /// this term's coefficients stay). A summand also drops the background (black, alpha 0), so
+    /// the summands add up to the whole image on every pixel with the background composited
+    /// under them; the shadow factor, not a summand, keeps it.
     pub fn apply(self, scene: &mut Scene) {
         if self == Term::All {
             return;
+        }
+        if self != Term::Shadow {
+            scene.background = None;
         }
         if self != Term::Ambient {
             scene.ambient = [0.0; 3];

@@ -124,6 +124,7 @@ pub fn compare_images(image: &LinearImage, against: &LinearImage) -> Comparison 
         pixels,
         object: vec![None; n],
         hidden: vec![0; n],
+        background: None,
     };
     compare(image, &reference)
 }
@@ -139,7 +140,13 @@ pub fn reference_image(reference: &ReferenceImage) -> LinearImage {
     LinearImage {
         width: reference.width,
         height: reference.height,
-        pixels: reference.pixels.iter().map(|p| [p[0] as f32, p[1] as f32, p[2] as f32, 1.0]).collect(),
+        // Alpha 0 where nothing was hit and the scene has no background (a term view).
+        pixels: (reference.pixels.iter().zip(&reference.object))
+            .map(|(p, o)| {
+                let alpha = if o.is_none() && reference.background.is_none() { 0.0 } else { 1.0 };
+                [p[0] as f32, p[1] as f32, p[2] as f32, alpha]
+            })
+            .collect(),
     }
 }
 

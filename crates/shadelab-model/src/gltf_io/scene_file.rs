@@ -277,6 +277,7 @@ fn empty_scene(name: String) -> Scene {
         meshes: Default::default(),
         illumination: Default::default(),
         textures: Vec::new(),
+        background: Some(crate::scene::BACKGROUND),
     }
 }
 

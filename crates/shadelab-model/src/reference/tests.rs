@@ -14,7 +14,7 @@ fn reference_render_sees_the_scene() {
     assert!(img.pixels.iter().all(|p| p.iter().all(|c| c.is_finite() && *c >= 0.0)));
     let seen: std::collections::HashSet<_> = img.object.iter().flatten().collect();
     assert!(seen.len() >= 6, "objects seen: {seen:?}");
-    assert_eq!(img.get(0, 0), BACKGROUND);
+    assert_eq!(img.get(0, 0), crate::scene::BACKGROUND);
 }
 
 const GROUND: usize = 0;
@@ -48,6 +48,7 @@ fn stage(objects: Vec<Object>, lights: Vec<Light>) -> Scene {
         meshes: Default::default(),
         illumination: Default::default(),
         textures: Vec::new(),
+        background: Some(crate::scene::BACKGROUND),
     }
 }
 

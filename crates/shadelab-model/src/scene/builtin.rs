@@ -281,6 +281,7 @@ pub fn default_scene() -> Scene {
         meshes: Default::default(),
         illumination: Default::default(),
         textures: Vec::new(),
+        background: Some(crate::scene::BACKGROUND),
     }
 }
 
@@ -344,5 +345,6 @@ pub fn single_shape_scene(name: &str, shape: Shape, tessellation: u32) -> Scene 
         meshes: Default::default(),
         illumination: Default::default(),
         textures: Vec::new(),
+        background: Some(crate::scene::BACKGROUND),
     }
 }

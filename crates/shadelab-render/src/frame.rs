@@ -100,7 +100,7 @@ impl Renderer {
         // pass splits its colours when C is tinted per pixel.
         let surfaces = fx.samples_textures() || fx.has(Effect::VertexColors);
         let split = fx.has(Effect::BaseColorTexture) || fx.has(Effect::VertexColors);
-        let lit_colors = lit_pass.map(|_| gpu_scene.lit_colors(&self.device, layouts, flat, split));
+        let lit_colors = lit_pass.map(|_| gpu_scene.lit_colors(&self.device, &self.queue, layouts, flat, split));
         if let (Some(entry), Some(colors)) = (lit_pass, lit_colors) {
             // The lighting pass is part of the mode's cost: the first timestamp opens it.
             let start = timestamps.filter(|_| !begun);
@@ -157,8 +157,9 @@ impl Renderer {
                 pass.set_bind_group(3, &c.colors_bind, &[]);
             }
             if flat {
-                pass.set_vertex_buffer(0, mesh.flat.slice(..));
-                if surfaces && let Some(s) = &mesh.flat_surface {
+                let flat_mesh = mesh.flat(&self.device, &self.queue);
+                pass.set_vertex_buffer(0, flat_mesh.corners.slice(..));
+                if surfaces && let Some(s) = &flat_mesh.surface {
                     pass.set_vertex_buffer(1, s.slice(..));
                 }
                 pass.draw(0..mesh.flat_count, 0..1);

@@ -14,13 +14,73 @@ pub struct MeshGpu {
     pub smooth_count: u32,
     pub indices: wgpu::Buffer,
     pub index_count: u32,
-    pub flat: wgpu::Buffer,
+    /// Corners of the flat mesh (three a triangle); their size is checked at upload.
     pub flat_count: u32,
+    /// Flat shading's corners, uploaded by the first frame that draws the mesh flat: a scene
+    /// never drawn flat holds none (36 B × 3 a triangle, about 1 GB at 10⁷ triangles).
+    flat: std::sync::OnceLock<FlatGpu>,
+    /// What the flat corners are made from.
+    flat_source: FlatSource,
     /// Each smooth vertex's texture coordinates and colour (`SurfaceVertex`), in scenes that
     /// have any: the textured and vertex-coloured permutations read it.
     pub surface: Option<wgpu::Buffer>,
-    /// The same per corner of the flat mesh.
-    pub flat_surface: Option<wgpu::Buffer>,
+}
+
+/// The flat mesh on the GPU: its corners and, in scenes with surface attributes, theirs.
+pub struct FlatGpu {
+    pub corners: wgpu::Buffer,
+    pub surface: Option<wgpu::Buffer>,
+}
+
+/// Where a mesh's flat corners come from when they are first drawn: a file's mesh (shared with
+/// the scene, not copied), or the tessellation made at upload.
+enum FlatSource {
+    File { meshes: shadelab_model::mesh::Meshes, index: usize, surfaces: bool },
+    Tessellated { data: std::sync::Arc<shadelab_model::mesh::MeshData>, surfaces: bool },
+}
+
+impl MeshGpu {
+    /// The flat mesh's buffers, written on first use (the lighting pass and the flat draw).
+    pub fn flat(&self, device: &wgpu::Device, queue: &wgpu::Queue) -> &FlatGpu {
+        self.flat.get_or_init(|| {
+            let count = self.flat_count as usize;
+            let usage = wgpu::BufferUsages::VERTEX | wgpu::BufferUsages::STORAGE;
+            let (corners, surface) = match &self.flat_source {
+                FlatSource::File { meshes, index, surfaces } => {
+                    let m = meshes.get(*index).expect("the mesh was uploaded from this index");
+                    let corners = buffer_from_pieces(device, queue, "flat vertices", usage, count, |r, out| {
+                        out.extend((r.start / 3..r.end / 3).flat_map(|k| m.flat_corners(k).map(|c| FlatVertex::from(&c))))
+                    });
+                    // Corner 3k + c of the flat mesh is corner c of triangle k.
+                    let surface = surfaces.then(|| {
+                        flat_surface(device, queue, count, |c| {
+                            crate::textures::surface_vertex(Some(m), m.indices[c / 3][c % 3] as usize)
+                        })
+                    });
+                    (corners, surface)
+                }
+                FlatSource::Tessellated { data, surfaces } => {
+                    let corners = buffer_from_pieces(device, queue, "flat vertices", usage, count, |r, out| {
+                        out.extend(data.flat_vertices[r].iter().map(FlatVertex::from))
+                    });
+                    (corners, surfaces.then(|| flat_surface(device, queue, count, |_| Default::default())))
+                }
+            };
+            FlatGpu { corners, surface }
+        })
+    }
+}
+
+/// The flat mesh's surface attributes, corner `c`'s from `at(c)`.
+fn flat_surface(
+    device: &wgpu::Device,
+    queue: &wgpu::Queue,
+    count: usize,
+    at: impl Fn(usize) -> crate::vertex::SurfaceVertex,
+) -> wgpu::Buffer {
+    buffer_from_pieces(device, queue, "flat surface attributes", wgpu::BufferUsages::VERTEX, count, |r, out| {
+        out.extend(r.map(&at))
+    })
 }
 
 /// A scene uploaded to the GPU: meshes (shared between objects of the same shape and
@@ -73,6 +133,7 @@ impl SceneGpu {
     pub(crate) fn lit_colors(
         &self,
         device: &wgpu::Device,
+        queue: &wgpu::Queue,
         layouts: (&wgpu::BindGroupLayout, &wgpu::BindGroupLayout),
         flat: bool,
         split: bool,
@@ -85,7 +146,7 @@ impl SceneGpu {
                 .map(|k| {
                     let m = &self.meshes[k];
                     let (input, count, bytes) = if flat {
-                        (&m.flat, m.flat_count as u64 / 3, FACE_BYTES)
+                        (&m.flat(device, queue).corners, m.flat_count as u64 / 3, FACE_BYTES)
                     } else {
                         (&m.smooth, m.smooth_count as u64, VERTEX_BYTES)
                     };
@@ -149,23 +210,21 @@ impl Uploader {
                     Shape::Mesh(i) => scene.meshes.get(i),
                     _ => None,
                 };
-                let mesh = match file_mesh {
+                let mut mesh = match (file_mesh, o.shape) {
                     // The file's vertices as they are: written to the GPU piece by piece.
-                    Some(m) if m.has_usable_normals() && m.check_finite().is_ok() => MeshGpu::new(
-                        device,
-                        &self.queue,
-                        &o.name,
-                        [m.positions.len(), 3 * m.triangle_count(), 3 * m.triangle_count()],
-                        |r, out| out.extend(r.map(|i| SmoothVertex::from(&m.smooth_vertex(i)))),
-                        |r, out| out.extend(m.indices[r.start / 3..r.end / 3].iter().flatten()),
-                        |r, out| {
-                            out.extend(
-                                (r.start / 3..r.end / 3).flat_map(|k| m.flat_corners(k).map(|c| FlatVertex::from(&c))),
-                            )
-                        },
-                    )?,
+                    (Some(m), Shape::Mesh(index)) if m.has_usable_normals() && m.check_finite().is_ok() => {
+                        MeshGpu::new(
+                            device,
+                            &self.queue,
+                            &o.name,
+                            [m.positions.len(), 3 * m.triangle_count(), 3 * m.triangle_count()],
+                            |r, out| out.extend(r.map(|i| SmoothVertex::from(&m.smooth_vertex(i)))),
+                            |r, out| out.extend(m.indices[r.start / 3..r.end / 3].iter().flatten()),
+                            FlatSource::File { meshes: scene.meshes.clone(), index, surfaces },
+                        )?
+                    }
                     _ => {
-                        let d = scene.mesh_data(o);
+                        let d = std::sync::Arc::new(scene.mesh_data(o));
                         MeshGpu::new(
                             device,
                             &self.queue,
@@ -173,11 +232,10 @@ impl Uploader {
                             [d.smooth_vertices.len(), d.indices.len(), d.flat_vertices.len()],
                             |r, out| out.extend(d.smooth_vertices[r].iter().map(SmoothVertex::from)),
                             |r, out| out.extend_from_slice(&d.indices[r]),
-                            |r, out| out.extend(d.flat_vertices[r].iter().map(FlatVertex::from)),
+                            FlatSource::Tessellated { data: d.clone(), surfaces },
                         )?
                     }
                 };
-                let mut mesh = mesh;
                 if surfaces {
                     // The file's vertices are the smooth vertices only on the first path above.
                     let m = file_mesh.filter(|m| m.has_usable_normals() && m.check_finite().is_ok());
@@ -189,20 +247,6 @@ impl Uploader {
                         wgpu::BufferUsages::VERTEX,
                         count,
                         |r, out| out.extend(r.map(|i| crate::textures::surface_vertex(m, i))),
-                    ));
-                    // Corner 3k + c of the flat mesh is corner c of triangle k.
-                    mesh.flat_surface = Some(buffer_from_pieces(
-                        device,
-                        &self.queue,
-                        "flat surface attributes",
-                        wgpu::BufferUsages::VERTEX,
-                        mesh.flat_count as usize,
-                        |r, out| {
-                            out.extend(r.map(|c| {
-                                let v = m.map(|m| m.indices[c / 3][c % 3] as usize);
-                                v.map_or_else(Default::default, |v| crate::textures::surface_vertex(m, v))
-                            }))
-                        },
                     ));
                 }
                 e.insert(mesh);
@@ -308,9 +352,10 @@ const PIECE_ELEMENTS: usize = 1 << 16;
 pub const STAGING_BATCH_BYTES: u64 = 64 << 20;
 
 impl MeshGpu {
-    /// A mesh's three GPU buffers, each of `counts` elements (smooth vertices, indices, flat
-    /// vertices) made by its `fill(range, out)`, which appends the elements of `range`. A range
-    /// of indices always covers whole triangles (it starts and ends at multiples of 3).
+    /// A mesh's smooth vertices and indices on the GPU, `counts[0]` and `counts[1]` elements
+    /// made by their `fill(range, out)`, which appends the elements of `range` (a range of
+    /// indices covers whole triangles). The `counts[2]` flat corners are only sized here: they are
+    /// written from `flat` when first drawn ([`MeshGpu::flat`]).
     #[allow(clippy::too_many_arguments)]
     fn new(
         device: &wgpu::Device,
@@ -319,7 +364,7 @@ impl MeshGpu {
         counts: [usize; 3],
         smooth: impl Fn(std::ops::Range<usize>, &mut Vec<SmoothVertex>),
         indices: impl Fn(std::ops::Range<usize>, &mut Vec<u32>),
-        flat: impl Fn(std::ops::Range<usize>, &mut Vec<FlatVertex>),
+        flat: FlatSource,
     ) -> Result<MeshGpu, UploadError> {
         let limit = device.limits().max_buffer_size;
         let sizes = [size_of::<SmoothVertex>(), size_of::<u32>(), size_of::<FlatVertex>()];
@@ -344,18 +389,11 @@ impl MeshGpu {
             smooth_count: counts[0] as u32,
             indices: buffer_from_pieces(device, queue, "indices", wgpu::BufferUsages::INDEX, counts[1], indices),
             index_count: counts[1] as u32,
-            // Also read as storage by the per-face pass (lighting_pass.rs).
-            flat: buffer_from_pieces(
-                device,
-                queue,
-                "flat vertices",
-                vertex | wgpu::BufferUsages::STORAGE,
-                counts[2],
-                flat,
-            ),
+            // Also read as storage by the per-face pass (lighting_pass.rs), once written.
+            flat: std::sync::OnceLock::new(),
+            flat_source: flat,
             flat_count: counts[2] as u32,
             surface: None,
-            flat_surface: None,
         })
     }
 }

@@ -29,10 +29,9 @@ fn shade(p: vec3<f32>, n_in: vec3<f32>, surface: Surface, pixel: vec2<f32>) -> v
 #if EFFECT_AMBIENT
     total += globals.ambient.rgb * surface.r_a * c;
 #endif
-#if EFFECT_LAMBERT_RULE
-    // The Lambert rule's I: the brightest light at the point, per channel, in [0, 1].
+    // The Lambert rule's I: the brightest light at the point, per channel, in [0, 1] (model_term
+    // raises it; without the rule it stays 0, unread).
     var i_max = vec3(0.0);
-#endif
     let fixed_loop = LOOP_LIGHTS != LOOP_DYNAMIC;
     let light_count = select(min(globals.light_count, MAX_LIGHTS), min(LOOP_LIGHTS, MAX_LIGHTS), fixed_loop);
     for (var i = 0u; i < light_count; i++) {
@@ -63,34 +62,10 @@ fn shade(p: vec3<f32>, n_in: vec3<f32>, surface: Surface, pixel: vec2<f32>) -> v
 #endif
 #endif
             // The chosen model's term of this light (or point source), before its shadow.
-            var lit = vec3(0.0);
-            var modelled = false;
-#if EFFECT_LAMBERT_RULE
-            if (globals.illumination == ILLUMINATION_LAMBERT) {
-                let li = clamp(s.radiance, vec3(0.0), vec3(1.0));
-                i_max = max(i_max, li);
-                lit = lambert_rule_lit(object.r_d * c, li, s.form);
-                modelled = true;
-            }
-#endif
-#if EFFECT_FOUR_TERM_SUM
-            if (!modelled && globals.illumination == ILLUMINATION_SUM) {
-#if EFFECT_TRANSMITTED_TERM
-                // The transmitted term is the light's, once (not per point source), unshadowed.
-                if (j == 0u) {
-                    total += transmitted_term(s.radiance, c, object.transmission);
-                }
-#endif
-                lit = sum_contribution(s.radiance, s.form, dot(n, v), c, object.r_d, object.r_s);
-                modelled = true;
-            }
-#endif
-            if (!modelled) {
-                lit = light_contribution(
-                    s, n, v, c, object.r_s, object.r_d, surface.m, surface.h, surface.mirror,
-                    v_index, globals.specular_model, terms,
-                );
-            }
+            let term = model_term(s, j, n, v, surface, v_index, terms, total, i_max);
+            total = term.total;
+            i_max = term.i_max;
+            let lit = term.lit;
             // A term that adds nothing here (the point faces away from the light) needs no
             // shadow query: its map lookups are skipped, as the f64 twin skips its shadow ray.
             if (any(lit != vec3(0.0))) {
@@ -108,6 +83,60 @@ fn shade(p: vec3<f32>, n_in: vec3<f32>, surface: Surface, pixel: vec2<f32>) -> v
     }
 #endif
     return total;
+}
+
+// One light sample's term under the chosen model, before its shadow, and the running sum and the
+// Lambert rule's I as the sample leaves them (WGSL's helpers return what they update).
+struct SampleTerm {
+    lit: vec3<f32>,
+    total: vec3<f32>,
+    i_max: vec3<f32>,
+}
+
+// The chosen model's term of light sample `s` (point source `j` of its light), before its shadow:
+// the Lambert rule raises `i_max` to the sample's I, and the sum adds the light's transmitted term
+// (unshadowed, once) to `total`.
+fn model_term(
+    s: LightSample,
+    j: u32,
+    n: vec3<f32>,
+    v: vec3<f32>,
+    surface: Surface,
+    v_index: vec3<f32>,
+    terms: u32,
+    total: vec3<f32>,
+    i_max: vec3<f32>,
+) -> SampleTerm {
+    let c = surface.c;
+    var out = SampleTerm(vec3(0.0), total, i_max);
+    var modelled = false;
+#if EFFECT_LAMBERT_RULE
+    if (globals.illumination == ILLUMINATION_LAMBERT) {
+        let li = clamp(s.radiance, vec3(0.0), vec3(1.0));
+        out.i_max = max(out.i_max, li);
+        out.lit = lambert_rule_lit(object.r_d * c, li, s.form);
+        modelled = true;
+    }
+#endif
+#if EFFECT_FOUR_TERM_SUM
+    if (!modelled && globals.illumination == ILLUMINATION_SUM) {
+#if EFFECT_TRANSMITTED_TERM
+        // The transmitted term is the light's, once (not per point source), unshadowed.
+        if (j == 0u) {
+            out.total += transmitted_term(s.radiance, c, object.transmission);
+        }
+#endif
+        out.lit = sum_contribution(s.radiance, s.form, dot(n, v), c, object.r_d, object.r_s);
+        modelled = true;
+    }
+#endif
+    if (!modelled) {
+        out.lit = light_contribution(
+            s, n, v, c, object.r_s, object.r_d, surface.m, surface.h, surface.mirror,
+            v_index, globals.specular_model, terms,
+        );
+    }
+    return out;
 }
 
 // The object's material untinted: C, μ where Cook–Torrance reads it, m, h and r_a.

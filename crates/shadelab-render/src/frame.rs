@@ -116,35 +116,34 @@ impl Renderer {
         };
         let clear = *gpu_scene.clear.lock().unwrap_or_else(|e| e.into_inner());
         let pipeline = self.pipelines.pipeline(key);
-        let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
-            label: Some("shadelab scene"),
-            color_attachments: &[Some(wgpu::RenderPassColorAttachment {
-                view: &target.color_view,
-                depth_slice: None,
-                resolve_target: None,
-                ops: wgpu::Operations { load: wgpu::LoadOp::Clear(clear), store: wgpu::StoreOp::Store },
-            })],
-            depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
-                view: &target.depth_view,
-                depth_ops: Some(wgpu::Operations { load: wgpu::LoadOp::Clear(1.0), store: wgpu::StoreOp::Store }),
-                stencil_ops: None,
-            }),
-            // Opened here unless an earlier pass opened it; closed here unless the glass pass follows.
-            timestamp_writes: timestamps.filter(|_| !begun || glass.is_empty()).map(|(qs, i)| {
-                wgpu::RenderPassTimestampWrites {
-                    query_set: qs,
-                    beginning_of_pass_write_index: (!begun).then_some(i),
-                    end_of_pass_write_index: glass.is_empty().then_some(i + 1),
-                }
-            }),
-            occlusion_query_set: None,
-            multiview_mask: None,
-        });
+        // Opened here unless an earlier pass opened it; closed here unless the glass pass follows.
+        let mut pass = scene_pass(encoder, target, clear, timestamps, !begun, glass.is_empty());
         pass.set_pipeline(pipeline);
         pass.set_bind_group(0, &gpu_scene.globals_bind, &[]);
         if let Some((maps, _)) = &shadows {
             pass.set_bind_group(2, maps, &[]);
         }
+        self.draw_objects(&mut pass, gpu_scene, lit_colors, &glass, flat, surfaces);
+        drop(pass);
+        if !glass.is_empty() {
+            let maps = shadows.as_ref().map(|s| &s.0);
+            let end = timestamps.map(|(qs, i)| (qs, i + 1));
+            self.encode_glass(encoder, gpu_scene, target, key.program, &glass, maps, end);
+        }
+    }
+
+    /// Draw the scene pass's objects but the transparent ones (`glass`), each with its uniforms,
+    /// its lighting pass's colours when there are some, and its flat or smooth mesh.
+    #[allow(clippy::too_many_arguments)]
+    fn draw_objects(
+        &self,
+        pass: &mut wgpu::RenderPass<'_>,
+        gpu_scene: &SceneGpu,
+        lit_colors: Option<&[Option<crate::lighting_pass::LitColors>]>,
+        glass: &[usize],
+        flat: bool,
+        surfaces: bool,
+    ) {
         for (i, k) in gpu_scene.objects.iter().enumerate() {
             if glass.contains(&i) {
                 continue;
@@ -171,12 +170,6 @@ impl Renderer {
                 pass.set_index_buffer(mesh.indices.slice(..), wgpu::IndexFormat::Uint32);
                 pass.draw_indexed(0..mesh.index_count, 0, 0..1);
             }
-        }
-        drop(pass);
-        if !glass.is_empty() {
-            let maps = shadows.as_ref().map(|s| &s.0);
-            let end = timestamps.map(|(qs, i)| (qs, i + 1));
-            self.encode_glass(encoder, gpu_scene, target, key.program, &glass, maps, end);
         }
     }
 
@@ -227,4 +220,37 @@ impl Renderer {
         self.encode(&mut encoder, gpu_scene, target, program, None);
         self.queue.submit([encoder.finish()]);
     }
+}
+
+/// Begin the scene pass into `target`, clearing its colour to `clear` and its depth; with
+/// `timestamps`, it writes the first slot when it `opens` the frame and the second when it `closes` it.
+fn scene_pass<'e>(
+    encoder: &'e mut wgpu::CommandEncoder,
+    target: &Target,
+    clear: wgpu::Color,
+    timestamps: Option<(&wgpu::QuerySet, u32)>,
+    opens: bool,
+    closes: bool,
+) -> wgpu::RenderPass<'e> {
+    encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+        label: Some("shadelab scene"),
+        color_attachments: &[Some(wgpu::RenderPassColorAttachment {
+            view: &target.color_view,
+            depth_slice: None,
+            resolve_target: None,
+            ops: wgpu::Operations { load: wgpu::LoadOp::Clear(clear), store: wgpu::StoreOp::Store },
+        })],
+        depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
+            view: &target.depth_view,
+            depth_ops: Some(wgpu::Operations { load: wgpu::LoadOp::Clear(1.0), store: wgpu::StoreOp::Store }),
+            stencil_ops: None,
+        }),
+        timestamp_writes: timestamps.filter(|_| opens || closes).map(|(qs, i)| wgpu::RenderPassTimestampWrites {
+            query_set: qs,
+            beginning_of_pass_write_index: opens.then_some(i),
+            end_of_pass_write_index: closes.then_some(i + 1),
+        }),
+        occlusion_query_set: None,
+        multiview_mask: None,
+    })
 }

@@ -7,7 +7,7 @@ use crate::pipelines::{DEPTH_FORMAT, PassKey, PipelineCache};
 use crate::program::Program;
 use crate::renderer::Renderer;
 use crate::target::Target;
-use crate::upload::SceneGpu;
+use crate::upload::{MeshGpu, SceneGpu};
 use crate::vertex::SmoothVertex;
 use shadelab_model::Scene;
 use shadelab_model::effects::{Effect, EffectKey};
@@ -82,6 +82,112 @@ impl GlassTextures {
             bind: None,
         }
     }
+
+    /// The glass bind group for `target`'s depth, made once per target: the views it holds stay.
+    fn bind_group(
+        &mut self,
+        device: &wgpu::Device,
+        layout: &wgpu::BindGroupLayout,
+        target: &Target,
+    ) -> wgpu::BindGroup {
+        if self.bind.as_ref().is_none_or(|(depth, _)| *depth != target.depth_view) {
+            let bind = device.create_bind_group(&wgpu::BindGroupDescriptor {
+                label: Some("shadelab glass"),
+                layout,
+                entries: &[
+                    wgpu::BindGroupEntry {
+                        binding: 8,
+                        resource: wgpu::BindingResource::TextureView(&self.behind_view),
+                    },
+                    wgpu::BindGroupEntry {
+                        binding: 9,
+                        resource: wgpu::BindingResource::TextureView(&target.depth_view),
+                    },
+                    wgpu::BindGroupEntry {
+                        binding: 10,
+                        resource: wgpu::BindingResource::TextureView(&self.back_position),
+                    },
+                    wgpu::BindGroupEntry {
+                        binding: 11,
+                        resource: wgpu::BindingResource::TextureView(&self.back_normal),
+                    },
+                ],
+            });
+            self.bind = Some((target.depth_view.clone(), bind));
+        }
+        self.bind.as_ref().expect("made above").1.clone()
+    }
+
+    /// Begin the pass that draws a mesh's back faces into the two back targets and their depth,
+    /// all cleared.
+    fn back_faces_pass<'e>(&self, encoder: &'e mut wgpu::CommandEncoder) -> wgpu::RenderPass<'e> {
+        let clear = |view| {
+            Some(wgpu::RenderPassColorAttachment {
+                view,
+                depth_slice: None,
+                resolve_target: None,
+                ops: wgpu::Operations {
+                    load: wgpu::LoadOp::Clear(wgpu::Color::TRANSPARENT),
+                    store: wgpu::StoreOp::Store,
+                },
+            })
+        };
+        encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+            label: Some("shadelab glass back faces"),
+            color_attachments: &[clear(&self.back_position), clear(&self.back_normal)],
+            depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
+                view: &self.back_depth,
+                depth_ops: Some(wgpu::Operations { load: wgpu::LoadOp::Clear(1.0), store: wgpu::StoreOp::Store }),
+                stencil_ops: None,
+            }),
+            timestamp_writes: None,
+            occlusion_query_set: None,
+            multiview_mask: None,
+        })
+    }
+}
+
+/// Begin the pass that draws a transparent object over `target`, testing against its opaque depth
+/// without writing it; `end`: the timestamp slot it writes at its end (the last object's pass).
+fn front_pass<'e>(
+    encoder: &'e mut wgpu::CommandEncoder,
+    target: &Target,
+    end: Option<(&wgpu::QuerySet, u32)>,
+) -> wgpu::RenderPass<'e> {
+    encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+        label: Some("shadelab glass"),
+        color_attachments: &[Some(wgpu::RenderPassColorAttachment {
+            view: &target.color_view,
+            depth_slice: None,
+            resolve_target: None,
+            ops: wgpu::Operations { load: wgpu::LoadOp::Load, store: wgpu::StoreOp::Store },
+        })],
+        // Read-only: the pass tests against the opaque depth and samples it.
+        depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
+            view: &target.depth_view,
+            depth_ops: None,
+            stencil_ops: None,
+        }),
+        timestamp_writes: end.map(|(qs, i)| wgpu::RenderPassTimestampWrites {
+            query_set: qs,
+            beginning_of_pass_write_index: None,
+            end_of_pass_write_index: Some(i),
+        }),
+        occlusion_query_set: None,
+        multiview_mask: None,
+    })
+}
+
+/// Set object `i`'s globals, uniforms and mesh buffers on `pass` (its surface attributes when the
+/// program reads them, `surfaces`), ready for its indexed draw.
+fn set_object(pass: &mut wgpu::RenderPass<'_>, gpu_scene: &SceneGpu, i: usize, mesh: &MeshGpu, surfaces: bool) {
+    pass.set_bind_group(0, &gpu_scene.globals_bind, &[]);
+    pass.set_bind_group(1, gpu_scene.object_bind(i), &[(i as u64 * gpu_scene.object_stride) as u32]);
+    pass.set_vertex_buffer(0, mesh.smooth.slice(..));
+    if surfaces && let Some(s) = &mesh.surface {
+        pass.set_vertex_buffer(1, s.slice(..));
+    }
+    pass.set_index_buffer(mesh.indices.slice(..), wgpu::IndexFormat::Uint32);
 }
 
 /// The transparent objects of `scene` the glass pass draws, far to near by the distance from the
@@ -187,28 +293,7 @@ impl Renderer {
         if !fits {
             self.glass = Some(GlassTextures::new(&self.device, target));
         }
-        let g = self.glass.as_mut().expect("made above");
-        // Made once per target: the views it holds stay.
-        if g.bind.as_ref().is_none_or(|(depth, _)| *depth != target.depth_view) {
-            let bind = self.device.create_bind_group(&wgpu::BindGroupDescriptor {
-                label: Some("shadelab glass"),
-                layout: &self.glass_layout,
-                entries: &[
-                    wgpu::BindGroupEntry { binding: 8, resource: wgpu::BindingResource::TextureView(&g.behind_view) },
-                    wgpu::BindGroupEntry {
-                        binding: 9,
-                        resource: wgpu::BindingResource::TextureView(&target.depth_view),
-                    },
-                    wgpu::BindGroupEntry {
-                        binding: 10,
-                        resource: wgpu::BindingResource::TextureView(&g.back_position),
-                    },
-                    wgpu::BindGroupEntry { binding: 11, resource: wgpu::BindingResource::TextureView(&g.back_normal) },
-                ],
-            });
-            g.bind = Some((target.depth_view.clone(), bind));
-        }
-        let bind = g.bind.as_ref().expect("made above").1.clone();
+        let bind = self.glass.as_mut().expect("made above").bind_group(&self.device, &self.glass_layout, target);
         let exits = gpu_scene.glass_exits.lock().expect("not poisoned").clone();
         let fx = program.effects();
         let surfaces = fx.samples_textures() || fx.has(Effect::VertexColors);
@@ -220,15 +305,6 @@ impl Renderer {
         let g = self.glass.as_ref().expect("made above");
         for (n, &i) in order.iter().enumerate() {
             let Some(mesh) = gpu_scene.objects.get(i).and_then(|k| gpu_scene.meshes.get(k)) else { continue };
-            let draw = |pass: &mut wgpu::RenderPass| {
-                pass.set_bind_group(0, &gpu_scene.globals_bind, &[]);
-                pass.set_bind_group(1, gpu_scene.object_bind(i), &[(i as u64 * gpu_scene.object_stride) as u32]);
-                pass.set_vertex_buffer(0, mesh.smooth.slice(..));
-                if surfaces && let Some(s) = &mesh.surface {
-                    pass.set_vertex_buffer(1, s.slice(..));
-                }
-                pass.set_index_buffer(mesh.indices.slice(..), wgpu::IndexFormat::Uint32);
-            };
             // What is behind the object, the farther glass included.
             encoder.copy_texture_to_texture(
                 target.color.as_image_copy(),
@@ -236,65 +312,19 @@ impl Renderer {
                 wgpu::Extent3d { width: target.width, height: target.height, depth_or_array_layers: 1 },
             );
             if let Some(back) = back.as_ref().filter(|_| needs_back(&i)) {
-                let clear = |view| {
-                    Some(wgpu::RenderPassColorAttachment {
-                        view,
-                        depth_slice: None,
-                        resolve_target: None,
-                        ops: wgpu::Operations {
-                            load: wgpu::LoadOp::Clear(wgpu::Color::TRANSPARENT),
-                            store: wgpu::StoreOp::Store,
-                        },
-                    })
-                };
-                let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
-                    label: Some("shadelab glass back faces"),
-                    color_attachments: &[clear(&g.back_position), clear(&g.back_normal)],
-                    depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
-                        view: &g.back_depth,
-                        depth_ops: Some(wgpu::Operations {
-                            load: wgpu::LoadOp::Clear(1.0),
-                            store: wgpu::StoreOp::Store,
-                        }),
-                        stencil_ops: None,
-                    }),
-                    timestamp_writes: None,
-                    occlusion_query_set: None,
-                    multiview_mask: None,
-                });
+                let mut pass = g.back_faces_pass(encoder);
                 pass.set_pipeline(back);
-                draw(&mut pass);
+                set_object(&mut pass, gpu_scene, i, mesh, surfaces);
                 pass.draw_indexed(0..mesh.index_count, 0, 0..1);
             }
             let last = n + 1 == order.len();
-            let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
-                label: Some("shadelab glass"),
-                color_attachments: &[Some(wgpu::RenderPassColorAttachment {
-                    view: &target.color_view,
-                    depth_slice: None,
-                    resolve_target: None,
-                    ops: wgpu::Operations { load: wgpu::LoadOp::Load, store: wgpu::StoreOp::Store },
-                })],
-                // Read-only: the pass tests against the opaque depth and samples it.
-                depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
-                    view: &target.depth_view,
-                    depth_ops: None,
-                    stencil_ops: None,
-                }),
-                timestamp_writes: end.filter(|_| last).map(|(qs, i)| wgpu::RenderPassTimestampWrites {
-                    query_set: qs,
-                    beginning_of_pass_write_index: None,
-                    end_of_pass_write_index: Some(i),
-                }),
-                occlusion_query_set: None,
-                multiview_mask: None,
-            });
+            let mut pass = front_pass(encoder, target, end.filter(|_| last));
             pass.set_pipeline(&front);
             if let Some(maps) = shadows {
                 pass.set_bind_group(2, maps, &[]);
             }
             pass.set_bind_group(3, &bind, &[]);
-            draw(&mut pass);
+            set_object(&mut pass, gpu_scene, i, mesh, surfaces);
             pass.draw_indexed(0..mesh.index_count, 0, 0..1);
         }
     }

@@ -206,50 +206,7 @@ impl Uploader {
             // `Shape::Mesh(i)` keys by its index: each file mesh is built once (its normals, else
             // the crease-angle rule), shared by every object that shows it.
             if let std::collections::hash_map::Entry::Vacant(e) = meshes.entry(k) {
-                let file_mesh = match o.shape {
-                    Shape::Mesh(i) => scene.meshes.get(i),
-                    _ => None,
-                };
-                let mut mesh = match (file_mesh, o.shape) {
-                    // The file's vertices as they are: written to the GPU piece by piece.
-                    (Some(m), Shape::Mesh(index)) if m.has_usable_normals() && m.check_finite().is_ok() => {
-                        MeshGpu::new(
-                            device,
-                            &self.queue,
-                            &o.name,
-                            [m.positions.len(), 3 * m.triangle_count(), 3 * m.triangle_count()],
-                            |r, out| out.extend(r.map(|i| SmoothVertex::from(&m.smooth_vertex(i)))),
-                            |r, out| out.extend(m.indices[r.start / 3..r.end / 3].iter().flatten()),
-                            FlatSource::File { meshes: scene.meshes.clone(), index, surfaces },
-                        )?
-                    }
-                    _ => {
-                        let d = std::sync::Arc::new(scene.mesh_data(o));
-                        MeshGpu::new(
-                            device,
-                            &self.queue,
-                            &o.name,
-                            [d.smooth_vertices.len(), d.indices.len(), d.flat_vertices.len()],
-                            |r, out| out.extend(d.smooth_vertices[r].iter().map(SmoothVertex::from)),
-                            |r, out| out.extend_from_slice(&d.indices[r]),
-                            FlatSource::Tessellated { data: d.clone(), surfaces },
-                        )?
-                    }
-                };
-                if surfaces {
-                    // The file's vertices are the smooth vertices only on the first path above.
-                    let m = file_mesh.filter(|m| m.has_usable_normals() && m.check_finite().is_ok());
-                    let count = mesh.smooth_count as usize;
-                    mesh.surface = Some(buffer_from_pieces(
-                        device,
-                        &self.queue,
-                        "surface attributes",
-                        wgpu::BufferUsages::VERTEX,
-                        count,
-                        |r, out| out.extend(r.map(|i| crate::textures::surface_vertex(m, i))),
-                    ));
-                }
-                e.insert(mesh);
+                e.insert(self.upload_mesh(scene, o, surfaces)?);
             }
             objects.push(k);
         }
@@ -273,6 +230,85 @@ impl Uploader {
             layout: &self.globals_layout,
             entries: &[wgpu::BindGroupEntry { binding: 0, resource: globals.as_entire_binding() }],
         });
+        let (sets, object_bind_of) = crate::textures::bind_sets(scene);
+        let objects_binds = self.objects_binds(scene, &objects_buf, &sets);
+        Ok(SceneGpu {
+            meshes,
+            objects,
+            lit: Default::default(),
+            globals,
+            globals_bind,
+            objects_buf,
+            objects_binds,
+            object_bind_of,
+            has_surfaces: surfaces,
+            object_stride,
+            triangle_count,
+            shadows: std::sync::Mutex::new(None),
+            glass_order: Default::default(),
+            glass_exits: Default::default(),
+            clear: std::sync::Mutex::new(crate::frame::CLEAR_COLOR),
+            uniform_writes: Default::default(),
+        })
+    }
+
+    /// Object `o`'s mesh on the GPU: a file's vertices as they are when its normals are usable,
+    /// else the tessellation (or the built file mesh), with surface attributes when `surfaces`.
+    fn upload_mesh(&self, scene: &Scene, o: &shadelab_model::Object, surfaces: bool) -> Result<MeshGpu, UploadError> {
+        let device = &self.device;
+        let file_mesh = match o.shape {
+            Shape::Mesh(i) => scene.meshes.get(i),
+            _ => None,
+        };
+        let mut mesh = match (file_mesh, o.shape) {
+            // The file's vertices as they are: written to the GPU piece by piece.
+            (Some(m), Shape::Mesh(index)) if m.has_usable_normals() && m.check_finite().is_ok() => MeshGpu::new(
+                device,
+                &self.queue,
+                &o.name,
+                [m.positions.len(), 3 * m.triangle_count(), 3 * m.triangle_count()],
+                |r, out| out.extend(r.map(|i| SmoothVertex::from(&m.smooth_vertex(i)))),
+                |r, out| out.extend(m.indices[r.start / 3..r.end / 3].iter().flatten()),
+                FlatSource::File { meshes: scene.meshes.clone(), index, surfaces },
+            )?,
+            _ => {
+                let d = std::sync::Arc::new(scene.mesh_data(o));
+                MeshGpu::new(
+                    device,
+                    &self.queue,
+                    &o.name,
+                    [d.smooth_vertices.len(), d.indices.len(), d.flat_vertices.len()],
+                    |r, out| out.extend(d.smooth_vertices[r].iter().map(SmoothVertex::from)),
+                    |r, out| out.extend_from_slice(&d.indices[r]),
+                    FlatSource::Tessellated { data: d.clone(), surfaces },
+                )?
+            }
+        };
+        if surfaces {
+            // The file's vertices are the smooth vertices only on the first path above.
+            let m = file_mesh.filter(|m| m.has_usable_normals() && m.check_finite().is_ok());
+            let count = mesh.smooth_count as usize;
+            mesh.surface = Some(buffer_from_pieces(
+                device,
+                &self.queue,
+                "surface attributes",
+                wgpu::BufferUsages::VERTEX,
+                count,
+                |r, out| out.extend(r.map(|i| crate::textures::surface_vertex(m, i))),
+            ));
+        }
+        Ok(mesh)
+    }
+
+    /// One object bind group per slot set of `sets` (`textures::bind_sets`): the uniforms in
+    /// `objects_buf`, then each slot's texture view and sampler.
+    fn objects_binds(
+        &self,
+        scene: &Scene,
+        objects_buf: &wgpu::Buffer,
+        sets: &[crate::textures::SlotTextures],
+    ) -> Vec<wgpu::BindGroup> {
+        let device = &self.device;
         // Each texture uploaded once; a slot without one reads a white texel (the identity of
         // every slot's rule).
         let white = shadelab_model::Texture::solid("white", [255; 4]);
@@ -280,14 +316,12 @@ impl Uploader {
             [ColorSpace::Srgb, ColorSpace::Linear].map(|s| crate::textures::upload(device, &self.queue, &white, s));
         // Each scene texture once per colour space a slot reads it in.
         let mut textures: HashMap<(usize, ColorSpace), crate::textures::GpuTexture> = HashMap::new();
-        let (sets, object_bind_of) = crate::textures::bind_sets(scene);
-        let objects_binds = sets
-            .iter()
+        sets.iter()
             .map(|set| {
                 let mut entries = vec![wgpu::BindGroupEntry {
                     binding: 0,
                     resource: wgpu::BindingResource::Buffer(wgpu::BufferBinding {
-                        buffer: &objects_buf,
+                        buffer: objects_buf,
                         offset: 0,
                         size: wgpu::BufferSize::new(size_of::<ObjectUniform>() as u64),
                     }),
@@ -320,25 +354,7 @@ impl Uploader {
                     entries: &entries,
                 })
             })
-            .collect();
-        Ok(SceneGpu {
-            meshes,
-            objects,
-            lit: Default::default(),
-            globals,
-            globals_bind,
-            objects_buf,
-            objects_binds,
-            object_bind_of,
-            has_surfaces: surfaces,
-            object_stride,
-            triangle_count,
-            shadows: std::sync::Mutex::new(None),
-            glass_order: Default::default(),
-            glass_exits: Default::default(),
-            clear: std::sync::Mutex::new(crate::frame::CLEAR_COLOR),
-            uniform_writes: Default::default(),
-        })
+            .collect()
     }
 }
 

@@ -6,7 +6,7 @@
 use super::area_points::{area_emitter, area_point_count, area_point_sample};
 use super::brdf::{SpecularModel, fresnel_v_from_mu, light_contribution};
 use super::common::safe_normalize;
-use super::lights::{Light, MAX_LIGHTS, light_sample};
+use super::lights::{Light, LightSample, MAX_LIGHTS, light_sample};
 use super::models::{IlluminationModel, lambert_rule_fill, lambert_rule_lit, sum_contribution, transmitted_term};
 use crate::scene::Material;
 use glam::{DVec3, DVec4};
@@ -68,28 +68,12 @@ pub fn shade_with_visibility(
             } else {
                 base
             };
-            let (l, radiance) = (s.l, s.radiance);
-            let lit = match model {
-                IlluminationModel::Lambert => {
-                    let i = radiance.map(|x| x.clamp(0.0, 1.0));
-                    i_max = std::array::from_fn(|j| i_max[j].max(i[j]));
-                    lambert_rule_lit(c.map(|x| x * mat.r_d), i, s.form)
-                }
-                IlluminationModel::Sum => {
-                    // The transmitted term is the light's, once (not per point source).
-                    let t = if j == 0 { transmitted_term(radiance, c, mat.transmission) } else { [0.0; 3] };
-                    for i in 0..3 {
-                        total[i] += t[i];
-                    }
-                    sum_contribution(radiance, s.form, n.dot(v), c, mat.r_d, mat.r_s)
-                }
-                IlluminationModel::Phong => light_contribution(&s, n, v, mat, v_index, specular),
-            };
+            let lit = model_term(model, &s, j, n, v, mat, v_index, specular, &mut i_max, &mut total);
             if lit == [0.0; 3] {
                 continue;
             }
             // A NaN visibility counts as none, like 0.
-            let w = visibility(k, light, j, l).clamp(0.0, 1.0);
+            let w = visibility(k, light, j, s.l).clamp(0.0, 1.0);
             if w.is_nan() || w == 0.0 {
                 continue;
             }
@@ -105,4 +89,41 @@ pub fn shade_with_visibility(
         }
     }
     total
+}
+
+/// The chosen model's term of light sample `s` (point source `j` of its light), before its shadow:
+/// the Lambert rule raises `i_max` to the sample's I, and the sum adds the light's transmitted
+/// term (unshadowed, once) to `total`.
+#[allow(clippy::too_many_arguments)]
+fn model_term(
+    model: IlluminationModel,
+    s: &LightSample,
+    j: u32,
+    n: DVec3,
+    v: DVec3,
+    mat: &Material,
+    v_index: [f64; 3],
+    specular: SpecularModel,
+    i_max: &mut [f64; 3],
+    total: &mut [f64; 3],
+) -> [f64; 3] {
+    let c = mat.color;
+    let radiance = s.radiance;
+    match model {
+        IlluminationModel::Lambert => {
+            let i = radiance.map(|x| x.clamp(0.0, 1.0));
+            let raised: [f64; 3] = std::array::from_fn(|j| i_max[j].max(i[j]));
+            *i_max = raised;
+            lambert_rule_lit(c.map(|x| x * mat.r_d), i, s.form)
+        }
+        IlluminationModel::Sum => {
+            // The transmitted term is the light's, once (not per point source).
+            let t = if j == 0 { transmitted_term(radiance, c, mat.transmission) } else { [0.0; 3] };
+            for i in 0..3 {
+                total[i] += t[i];
+            }
+            sum_contribution(radiance, s.form, n.dot(v), c, mat.r_d, mat.r_s)
+        }
+        IlluminationModel::Phong => light_contribution(s, n, v, mat, v_index, specular),
+    }
 }

@@ -125,6 +125,31 @@ case("missing-external-buffer.gltf", "an external buffer file that does not exis
 doc["buffers"] = [{"byteLength": len(bin_), "uri": "data:application/octet-stream;base64,@@@@"}]
 case("bad-base64.gltf", "a data: URI that is not base64", "buffer 0: bad base64 data",
      json.dumps(doc, indent=1).encode())
+
+
+def external(uri, extra_buffer=None):
+    """The base cube with its buffer at `uri` (and a second buffer nothing uses, if given)."""
+    doc, bin_ = base_parts()
+    doc["buffers"] = [{"byteLength": len(bin_), "uri": uri}]
+    if extra_buffer:
+        doc["buffers"].append({"byteLength": 16, "uri": extra_buffer})
+    return json.dumps(doc, indent=1).encode()
+
+
+# A scene reads only what lies in its own folder (gltf_io/confine.rs).
+case("uri-absolute-path.gltf", "a buffer at /etc/passwd",
+     "buffer 0: '/etc/passwd' is an absolute path, outside the scene's folder", external("/etc/passwd"))
+case("uri-traversal.gltf", "a buffer at ../../../../etc/hostname",
+     "buffer 0: '../../../../etc/hostname' leaves the scene's folder through '..'",
+     external("../../../../etc/hostname"))
+case("uri-link-outside.gltf", "a buffer through outside-link.bin, a link to the repository's Cargo.toml",
+     "buffer 0: 'outside-link.bin' is a link to", external("outside-link.bin"))
+case("uri-remote.gltf", "a buffer at http://example.com/cube.bin",
+     "buffer 0: 'http://example.com/cube.bin' is a remote URI; shadelab never opens a network connection",
+     external("http://example.com/cube.bin"))
+case("unused-outside-buffer.gltf", "a second buffer at /etc/passwd that no view uses: not read",
+     "warning: buffer 1: no accessor or image uses it: skipped, not read",
+     external("data:application/octet-stream;base64," + base64.b64encode(base_parts()[1]).decode(), "/etc/passwd"))
 case("unsupported-required-extension.gltf", "requires KHR_draco_mesh_compression",
      "requires unsupported extension(s): KHR_draco_mesh_compression",
      edited(lambda d: d.update(extensionsUsed=["KHR_draco_mesh_compression"],
@@ -193,6 +218,12 @@ case("texture-index-out-of-range.gltf", "a base colour texture index past the te
 case("image-huge-declared.gltf", "a PNG whose header declares 100000 × 100000 pixels",
      "image 0: 100000×100000 pixels, outside 1..=8192 per side (MAX_TEXTURE_SIDE)",
      edited(textured({"uri": "data:image/png;base64," + base64.b64encode(png_header(100000, 100000)).decode()})))
+case("image-absolute-path.gltf", "a base colour texture at /etc/passwd",
+     "image 0: '/etc/passwd' is an absolute path, outside the scene's folder",
+     edited(textured({"uri": "/etc/passwd"})))
+case("image-truncated-png.gltf", "a base colour texture whose PNG is cut after its header: not used",
+     "warning: image 0:",
+     edited(textured({"uri": "data:image/png;base64," + base64.b64encode(png_header(4, 4)[:60]).decode()})))
 case("image-view-past-buffer.gltf", "an image in a buffer view that ends past its buffer",
      "buffer view 2: bytes 0..4000 are past the end of buffer 0",
      edited(lambda d: (textured({"bufferView": 2, "mimeType": "image/png"})(d),
@@ -268,6 +299,11 @@ def main():
     for f in os.listdir(HERE):
         if f.endswith((".gltf", ".glb")):
             os.remove(os.path.join(HERE, f))
+    # The link a case reads through: out of this folder, to a file every checkout has.
+    link = os.path.join(HERE, "outside-link.bin")
+    if os.path.lexists(link):
+        os.remove(link)
+    os.symlink("../../Cargo.toml", link)
     rows = []
     for name, what, expected, data in CASES:
         with open(os.path.join(HERE, name), "wb") as f:

@@ -120,15 +120,22 @@ pub(super) fn embedded_buffer(bin: &[u8]) -> Value {
     }])
 }
 
-/// Every buffer's bytes, each exactly its `byteLength` long (checked against the data first).
+/// Every buffer's bytes, each exactly its `byteLength` long (checked against the data first). A
+/// buffer no accessor or image reaches is not read: it is empty, with a warning.
 pub(super) fn load_buffers<'a>(
-    cx: &Cx,
+    cx: &mut Cx,
     root: &json::Root,
     bin: Option<&'a [u8]>,
     externals: Externals,
 ) -> Result<Vec<Cow<'a, [u8]>>, GltfError> {
     let mut out = Vec::with_capacity(root.buffers.len());
+    let used = used_buffers(root);
     for (i, b) in root.buffers.iter().enumerate() {
+        if !used[i] {
+            cx.warn(format!("buffer {i}: no accessor or image uses it: skipped, not read"));
+            out.push(Cow::Borrowed(&[][..]));
+            continue;
+        }
         let declared = b.byte_length.0;
         if declared > MAX_FILE_BYTES {
             return Err(cx.too_large(format!(
@@ -166,6 +173,37 @@ pub(super) fn load_buffers<'a>(
     Ok(out)
 }
 
+/// Which buffers some accessor (its view or its sparse parts) or image reaches through a view.
+fn used_buffers(root: &json::Root) -> Vec<bool> {
+    let mut views = vec![false; root.buffer_views.len()];
+    let mut mark = |v: usize| {
+        if let Some(x) = views.get_mut(v) {
+            *x = true;
+        }
+    };
+    for a in &root.accessors {
+        if let Some(v) = &a.buffer_view {
+            mark(v.value());
+        }
+        if let Some(s) = &a.sparse {
+            mark(s.indices.buffer_view.value());
+            mark(s.values.buffer_view.value());
+        }
+    }
+    for image in &root.images {
+        if let Some(v) = &image.buffer_view {
+            mark(v.value());
+        }
+    }
+    let mut used = vec![false; root.buffers.len()];
+    for (view, _) in root.buffer_views.iter().zip(&views).filter(|(_, u)| **u) {
+        if let Some(u) = used.get_mut(view.buffer.value()) {
+            *u = true;
+        }
+    }
+    used
+}
+
 /// The bytes of a base64 `data:` URI (buffers and images).
 pub(super) fn data_uri(cx: &Cx, what: &str, uri: &str) -> Result<Vec<u8>, GltfError> {
     let (head, payload) = uri.split_once(',').unwrap_or((uri, ""));
@@ -185,8 +223,10 @@ pub(super) fn data_uri(cx: &Cx, what: &str, uri: &str) -> Result<Vec<u8>, GltfEr
 pub enum Externals<'a> {
     /// Nowhere: a scene read from memory alone refuses them.
     None,
-    /// The folder the scene file is in.
+    /// The folder the scene file is in; a URI may not lead out of it (`confine.rs`).
     Dir(&'a Path),
+    /// The folder the scene file is in, and any path a URI names (`--allow-outside-paths`).
+    Anywhere(&'a Path),
     /// Files handed in with the scene, by name (the browser's picked or dropped files, which
     /// carry no folder): a URI is matched by its last path segment.
     Files(&'a [(String, Vec<u8>)]),
@@ -202,7 +242,10 @@ pub(super) fn read_external_whole(
     externals: Externals,
 ) -> Result<Vec<u8>, GltfError> {
     let len = match externals {
-        Externals::Dir(d) => std::fs::metadata(d.join(percent_decode(uri))).map_or(0, |m| m.len()),
+        Externals::Dir(d) | Externals::Anywhere(d) => {
+            let path = super::confine::local_path(cx, what, uri, d, matches!(externals, Externals::Dir(_)))?;
+            std::fs::metadata(path).map_or(0, |m| m.len())
+        }
         Externals::Files(files) => given_file(files, uri).map_or(0, |b| b.len() as u64),
         Externals::None => 0,
     };
@@ -222,11 +265,10 @@ fn given_file<'f>(files: &'f [(String, Vec<u8>)], uri: &str) -> Option<&'f [u8]>
 /// An external buffer file: a relative path (percent-decoded), at least `declared` bytes long;
 /// only `declared` bytes are read.
 fn read_external(cx: &Cx, what: &str, uri: &str, declared: u64, externals: Externals) -> Result<Vec<u8>, GltfError> {
-    if uri.split(['/', '\\']).next().is_some_and(|first| first.contains(':')) {
-        return Err(cx.invalid(format!("{what}: '{uri}' is neither a data: URI nor a relative file path")));
-    }
-    let dir = match externals {
-        Externals::Dir(dir) => dir,
+    super::confine::relative_uri(cx, what, uri)?;
+    let path = match externals {
+        Externals::Dir(dir) => super::confine::local_path(cx, what, uri, dir, true)?,
+        Externals::Anywhere(dir) => super::confine::local_path(cx, what, uri, dir, false)?,
         Externals::Files(files) => {
             let data = given_file(files, uri).ok_or_else(|| {
                 cx.invalid(format!("{what}: external file '{uri}' was not given with the scene (pick or drop it too)"))
@@ -240,7 +282,6 @@ fn read_external(cx: &Cx, what: &str, uri: &str, declared: u64, externals: Exter
             return Err(cx.invalid(format!("{what}: external file '{uri}' cannot be read from memory")));
         }
     };
-    let path = dir.join(percent_decode(uri));
     let file = std::fs::File::open(&path).map_err(|e| cx.invalid(format!("{what}: cannot read '{uri}': {e}")))?;
     let len = file.metadata().map(|m| m.len()).unwrap_or(0);
     if len < declared {

@@ -66,6 +66,7 @@
 
 mod accessors;
 mod cameras;
+mod confine;
 mod container;
 mod extras;
 mod lights;
@@ -79,7 +80,7 @@ mod textures;
 pub(crate) use container::glb_container;
 pub use container::{Externals, percent_decode};
 pub use scene_file::{
-    load_scene, load_scene_from_bytes, load_scene_from_files, load_scene_from_slice, save_scene, scene_to_glb,
+    load_scene, load_scene_from_bytes, load_scene_with, load_scene_from_files, load_scene_from_slice, save_scene, scene_to_glb,
     scene_to_gltf_json,
 };
 pub use textures::{MAX_IMAGE_FILE_BYTES, MAX_TEXTURE_BYTES, MAX_TEXTURE_SIDE};

@@ -49,8 +49,14 @@ struct SceneExtras {
     absorption: Option<Named<crate::lighting::transmission::AbsorptionChoice>>,
 }
 
-/// Read a scene file (`.gltf` or `.glb`; external buffers relative to the file's folder).
+/// Read a scene file (`.gltf` or `.glb`; external buffers and images inside the file's folder).
 pub fn load_scene(path: &Path) -> Result<LoadedScene, GltfError> {
+    load_scene_with(path, false)
+}
+
+/// [`load_scene`], with `outside` letting its URIs name files outside its folder
+/// (`--allow-outside-paths`).
+pub fn load_scene_with(path: &Path, outside: bool) -> Result<LoadedScene, GltfError> {
     let file = path.display().to_string();
     let read = |error| GltfError::Read { file: file.clone(), error };
     let f = std::fs::File::open(path).map_err(read)?;
@@ -63,7 +69,8 @@ pub fn load_scene(path: &Path) -> Result<LoadedScene, GltfError> {
     }
     let mut bytes = Vec::with_capacity(len as usize);
     f.take(MAX_FILE_BYTES).read_to_end(&mut bytes).map_err(read)?;
-    load_scene_from_bytes(&bytes, &file, Externals::Dir(path.parent().unwrap_or(Path::new("."))))
+    let dir = path.parent().unwrap_or(Path::new("."));
+    load_scene_from_bytes(&bytes, &file, if outside { Externals::Anywhere(dir) } else { Externals::Dir(dir) })
 }
 
 /// Read a scene from memory: the fuzzing entry. External buffers are refused (no folder).
@@ -109,7 +116,13 @@ pub fn load_scene_from_bytes(bytes: &[u8], name: &str, externals: Externals) -> 
             cx.warn(format!("{n} {what}(s) ignored"));
         }
     }
-    let buffers = load_buffers(&cx, &root, bin, externals)?;
+    let buffers = load_buffers(&mut cx, &root, bin, externals)?;
+    // Images are read when a material's texture needs them; one no texture names never is.
+    for i in 0..root.images.len() {
+        if !root.textures.iter().any(|t| t.source.value() == i) {
+            cx.warn(format!("image {i}: no texture uses it: skipped, not read"));
+        }
+    }
     Reader {
         cx,
         root: &root,

@@ -293,6 +293,10 @@ pub struct SceneArgs {
     #[arg(long, default_value = "default", value_name = "NAME|PATH",
           help = format!("A built-in scene ({}) or a glTF 2.0 file (.gltf, .glb)", BUILTIN_SCENES.join(", ")))]
     pub scene: String,
+    /// Let a scene file's buffer and image URIs name files outside its own folder (absolute
+    /// paths, `..`, links that point out); without it they are refused
+    #[arg(long)]
+    pub allow_outside_paths: bool,
     #[arg(long, value_parser = values::real(params::M), help = within("Roughness m of every material", params::M))]
     pub m: Option<f64>,
     #[arg(long, value_parser = values::phong_exponent(),

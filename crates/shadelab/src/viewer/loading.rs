@@ -24,7 +24,8 @@ enum Report {
 /// Where a scene comes from: a file on disk, or files handed in together by name (the browser's
 /// picker or a drop: a `.gltf` with its `.bin` and images, or a `.glb`).
 pub enum Source {
-    Path(PathBuf),
+    /// A file and whether its URIs may lead outside its folder.
+    Path(PathBuf, bool),
     Files { main: String, files: Vec<(String, Vec<u8>)> },
 }
 
@@ -32,14 +33,14 @@ impl Source {
     /// The name errors and the panel give it.
     pub fn name(&self) -> String {
         match self {
-            Source::Path(p) => p.display().to_string(),
+            Source::Path(p, _) => p.display().to_string(),
             Source::Files { main, .. } => main.clone(),
         }
     }
 
     fn load(&self) -> Result<LoadedScene, GltfError> {
         match self {
-            Source::Path(p) => shadelab_model::gltf_io::load_scene(p),
+            Source::Path(p, outside) => shadelab_model::gltf_io::load_scene_with(p, *outside),
             Source::Files { main, files } => shadelab_model::gltf_io::load_scene_from_files(main, files),
         }
     }
@@ -132,7 +133,7 @@ impl Viewer {
     /// leaves it as it is and shows the loader's one-line error. A file opened while another
     /// loads replaces that one.
     pub fn open_file(&mut self, path: &Path) {
-        self.open_source(Source::Path(path.to_path_buf()));
+        self.open_source(Source::Path(path.to_path_buf(), self.allow_outside_paths));
     }
 
     /// Open files handed in together ([`Source::from_files`]) as [`Self::open_file`] does.

@@ -87,6 +87,7 @@ pub fn run(options: Options) -> Result<(), Failure> {
             let mut viewer = Viewer::new(cc, screenshot, exit_after_frames)?;
             viewer.show_loaded(loaded, &scene.scene)?;
             viewer.shader_dir = shaders;
+            viewer.allow_outside_paths = scene.allow_outside_paths;
             viewer.settings = settings;
             viewer.set_difference_view(difference);
             Ok(Box::new(viewer) as Box<dyn eframe::App>)
@@ -139,6 +140,9 @@ pub struct Viewer {
     shadow_factor: shadow_factor::ShadowFactorView,
     /// The panel's file path field (open / save scene).
     pub file_field: String,
+    /// Whether a file opened here may read buffers and images outside its folder
+    /// (`--allow-outside-paths`, the files row's *outside paths*).
+    pub allow_outside_paths: bool,
     /// How "open…" and "save as…" ask for a file.
     pub file_picker: FilePicker,
     /// The scene's cameras (a file's, in its node order; a built-in scene's one), and the one
@@ -229,6 +233,7 @@ impl Viewer {
             shadow_factor: shadow_factor::ShadowFactorView::default(),
             lobe: lobe::LobeView::default(),
             file_field: String::new(),
+            allow_outside_paths: false,
             file_picker: native_file_picker(),
             cameras: vec![("the scene's camera".into(), scene_camera)],
             camera_choice: 0,

@@ -47,6 +47,12 @@ impl Viewer {
             // A link needs the page's address: the desktop has none to give.
             #[cfg(target_arch = "wasm32")]
             self.copy_link_ui(ui);
+            // A page reads only the files it is given: paths outside a folder do not arise there.
+            #[cfg(not(target_arch = "wasm32"))]
+            ui.checkbox(&mut self.allow_outside_paths, "outside paths").on_hover_text(
+                "let a file's buffers and images lie outside its folder (absolute paths, '..', links); \
+                 off, they are refused (--allow-outside-paths)",
+            );
             if !idle {
                 ui.spinner();
             }

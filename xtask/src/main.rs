@@ -4,8 +4,10 @@
 //! On Debian/Ubuntu as root, a missing lavapipe is installed (`mesa-vulkan-drivers`); otherwise
 //! the one command to install it is printed. `.ci/run` calls this same command. It then builds
 //! the web version and tests it in headless Chromium (`web_test.rs`); `cargo xtask web` builds
-//! and serves that site (`web.rs`).
+//! and serves that site (`web.rs`). Last, every fuzz target runs for a short, fixed time
+//! (`fuzz.rs`; `cargo xtask fuzz` runs them longer).
 
+mod fuzz;
 mod web;
 mod web_test;
 
@@ -20,6 +22,13 @@ fn main() -> ExitCode {
     let args: Vec<String> = std::env::args().skip(1).collect();
     match args.first().map(String::as_str) {
         Some("test") => test(&args[1..]),
+        Some("fuzz") => match fuzz::main(&args[1..]) {
+            Ok(()) => ExitCode::SUCCESS,
+            Err(e) => {
+                eprintln!("xtask: {e}");
+                ExitCode::FAILURE
+            }
+        },
         Some("web") => match web::main(&args[1..]) {
             Ok(()) => ExitCode::SUCCESS,
             Err(e) => {
@@ -29,7 +38,7 @@ fn main() -> ExitCode {
         },
         _ => {
             eprintln!(
-                "usage: cargo xtask test [-- <cargo test args>]\n       cargo xtask web [--out DIR] [--port N] | --bench"
+                "usage: cargo xtask test [-- <cargo test args>]\n       cargo xtask web [--out DIR] [--port N] | --bench\n       cargo xtask fuzz [--seconds N]"
             );
             ExitCode::from(2)
         }
@@ -94,6 +103,8 @@ fn test(extra: &[String]) -> ExitCode {
     let (tests_ok, mut count) = run_counting(&mut cmd);
     count.check("viewer smoke test under Xvfb", viewer_smoke_test(&icd, &xdg));
     web_test::browser_tests(&icd, &mut count);
+    let fuzzing = format!("every fuzz target for {} s on its seeds", fuzz::CI_SECONDS);
+    count.check(&fuzzing, fuzz::run(fuzz::CI_SECONDS));
     count.check("`cargo run --release` reuses the test build", viewer_build_is_fresh());
     // The last line: every test binary's results, the smoke test and the build check, together.
     println!("xtask: {} passed, {} failed", count.passed, count.failed);

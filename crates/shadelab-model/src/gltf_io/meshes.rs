@@ -272,6 +272,14 @@ impl Reader<'_> {
             if w == 0.0 {
                 continue;
             }
+            // The work a weighted target costs is counted before its offsets are read.
+            self.cx.morph_offsets = self.cx.morph_offsets.saturating_add(positions.len());
+            if self.cx.morph_offsets > super::MAX_MORPH_OFFSETS {
+                return Err(self.cx.too_large(format!(
+                    "{what}: morph target {k}: the file's weighted targets add more than {} offsets (MAX_MORPH_OFFSETS)",
+                    super::MAX_MORPH_OFFSETS
+                )));
+            }
             let add = |acc: Option<json::Index<json::Accessor>>, to: &mut [DVec3], name: &str| {
                 let Some(acc) = acc else { return Ok(()) };
                 let d = self.vec3s(acc.value(), &format!("{what}: morph target {k} {name}"))?;

@@ -107,6 +107,12 @@ pub const MAX_FILE_BYTES: u64 = 1 << 31;
 /// slot, so 16384 objects are 4 MiB of uniforms.
 pub const MAX_OBJECTS: usize = 16_384;
 
+/// Most morph-target offsets applied in one file (each target with a weight adds one offset per
+/// vertex of its primitive): 3 × `MAX_TRIANGLES`, as many as the largest scene has corners. A few
+/// dozen facial blend shapes on a 10⁵-vertex head stay far below; a hostile file naming one
+/// large accessor as thousands of weighted targets would otherwise spend minutes adding them.
+pub const MAX_MORPH_OFFSETS: usize = 3 * MAX_TRIANGLES;
+
 /// Deepest node hierarchy followed. Character rigs reach ~100 levels; deeper is a broken file.
 /// (The walk uses an explicit stack, so this bounds work, not the call stack.)
 pub const MAX_NODE_DEPTH: usize = 256;

@@ -94,7 +94,7 @@ pub fn load_scene_from_files(main: &str, files: &[(String, Vec<u8>)]) -> Result<
 /// Read a scene from memory; `name` starts every error line; external buffers and images come
 /// from `externals`.
 pub fn load_scene_from_bytes(bytes: &[u8], name: &str, externals: Externals) -> Result<LoadedScene, GltfError> {
-    let mut cx = Cx { file: name.to_string(), warnings: Vec::new(), triangles: 0 };
+    let mut cx = Cx { file: name.to_string(), warnings: Vec::new(), triangles: 0, morph_offsets: 0 };
     let (json_bytes, bin) = split_container(&cx, bytes)?;
     let root: json::Root =
         json::deserialize::from_slice(json_bytes).map_err(|e| cx.format(format!("invalid glTF JSON: {e}")))?;
@@ -142,6 +142,8 @@ pub(super) struct Cx {
     pub(super) warnings: Vec<String>,
     /// Triangles of every object so far (each instance counts), against `MAX_TRIANGLES`.
     pub(super) triangles: usize,
+    /// Morph offsets applied so far (targets × vertices), against `MAX_MORPH_OFFSETS`.
+    pub(super) morph_offsets: usize,
 }
 
 impl Cx {

@@ -124,3 +124,31 @@ fn reference_ray_caster_sees_file_meshes() {
     assert!(seen > 50, "the mesh covers {seen} pixels");
     assert!(img.pixels.iter().all(|p| p.iter().all(|c| c.is_finite() && *c >= 0.0)));
 }
+
+/// Thousands of weighted morph targets naming one large accessor stop at `MAX_MORPH_OFFSETS`,
+/// in one line, before their offsets are added; a few targets still apply.
+#[test]
+fn morph_targets_past_the_offset_limit_are_an_error() {
+    // 65535 vertices (21845 triangles), every target the positions accessor itself.
+    let n = 65_535usize;
+    let bin = f32s(&(0..n).flat_map(|i| [(i % 256) as f32, (i / 256) as f32, 0.0]).collect::<Vec<f32>>());
+    let doc_with = |targets: usize| {
+        let doc = json!({
+            "asset": { "version": "2.0" },
+            "scenes": [{ "nodes": [0] }],
+            "nodes": [{ "mesh": 0 }],
+            "meshes": [{
+                "primitives": [{ "attributes": { "POSITION": 0 }, "targets": vec![json!({ "POSITION": 0 }); targets] }],
+                "weights": vec![0.001; targets],
+            }],
+            "accessors": [{ "bufferView": 0, "componentType": 5126, "count": n, "type": "VEC3",
+                            "min": [0, 0, 0], "max": [255, 255, 0] }],
+            "bufferViews": [{ "buffer": 0, "byteLength": bin.len() }],
+        });
+        with_buffer(doc, &bin)
+    };
+    assert_eq!(load(&doc_with(3)).scene.triangle_count(), n / 3);
+    let targets = MAX_MORPH_OFFSETS / n + 1;
+    let e = load_scene_from_slice(&doc_with(targets)).unwrap_err().to_string();
+    assert!(e.contains("MAX_MORPH_OFFSETS") && !e.contains('\n'), "{e}");
+}

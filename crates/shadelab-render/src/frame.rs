@@ -11,23 +11,6 @@ use crate::upload::SceneGpu;
 use shadelab_model::Scene;
 use shadelab_model::effects::Effect;
 
-/// The built-in background (`scene::BACKGROUND`), the same as the f64 reference's: what a scene
-/// pass clears to before its uniforms were written.
-pub const CLEAR_COLOR: wgpu::Color = wgpu::Color {
-    r: shadelab_model::scene::BACKGROUND[0],
-    g: shadelab_model::scene::BACKGROUND[1],
-    b: shadelab_model::scene::BACKGROUND[2],
-    a: 1.0,
-};
-
-/// What the scene pass clears to: the scene's background, opaque; without one (a term view)
-/// transparent black, so the term images add up on every pixel.
-pub fn clear_color(scene: &Scene) -> wgpu::Color {
-    match scene.background {
-        Some([r, g, b]) => wgpu::Color { r, g, b, a: 1.0 },
-        None => wgpu::Color::TRANSPARENT,
-    }
-}
 
 impl Renderer {
     /// Write a scene's parameters (materials, lights, camera) into its uniforms. Cheap: the
@@ -47,7 +30,7 @@ impl Renderer {
         program: Program,
     ) {
         gpu_scene.uniform_writes.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
-        *gpu_scene.clear.lock().unwrap_or_else(|e| e.into_inner()) = clear_color(scene);
+        *gpu_scene.clear.lock().unwrap_or_else(|e| e.into_inner()) = crate::uniforms::clear_color(scene);
         let flags = if settings.debug_nonfinite { crate::uniforms::FLAG_DEBUG_NONFINITE } else { 0 }
             | settings.glass_view.code() << crate::uniforms::GLASS_VIEW_SHIFT;
         let g = GlobalsUniform::new(scene, target.width, target.height, flags, settings.specular);

@@ -6,22 +6,8 @@
 //! CPU rasterizer spreads it over its threads (llvmpipe runs vertex stages on one). The bind
 //! groups are @group(3), bindings 1–3 (binding 0 is the shadow pass's).
 
+pub use crate::shaders::{FLAT_ENTRY_POINT, GOURAUD_ENTRY_POINT, lighting_entry_point as entry_point};
 use crate::vertex::{FlatVertex, SmoothVertex};
-use shadelab_model::ShadingMode;
-
-/// The lighting pass's entry point of a shading mode (`None`: Phong shading lights per pixel).
-pub fn entry_point(shading: ShadingMode) -> Option<&'static str> {
-    match shading {
-        ShadingMode::Flat => Some(FLAT_ENTRY_POINT),
-        ShadingMode::Gouraud => Some(GOURAUD_ENTRY_POINT),
-        ShadingMode::Phong => None,
-    }
-}
-
-/// The per-face pass's entry point in the lighting module.
-pub const FLAT_ENTRY_POINT: &str = "cs_flat";
-/// The per-vertex pass's entry point.
-pub const GOURAUD_ENTRY_POINT: &str = "cs_gouraud";
 
 /// Points per workgroup (`@workgroup_size` of both passes).
 pub const LIT_WORKGROUP: u32 = 64;

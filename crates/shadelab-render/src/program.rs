@@ -144,7 +144,7 @@ impl Program {
     /// (flat and Gouraud shading, `lighting_pass.rs`); `None` for Phong shading and the baseline.
     pub fn lighting_pass(self) -> Option<&'static str> {
         match self {
-            Program::Lit { shading, .. } => crate::lighting_pass::entry_point(shading),
+            Program::Lit { shading, .. } => crate::shaders::lighting_entry_point(shading),
             Program::NullBaseline => None,
         }
     }

@@ -172,6 +172,21 @@ pub fn entry_points(mode: shadelab_model::ShadingMode) -> (&'static str, &'stati
 /// Entry points of the null-shader baseline (constant colour): (vertex, fragment).
 pub const BASELINE_ENTRY_POINTS: (&str, &str) = ("vs_baseline", "fs_baseline");
 
+/// The per-face lighting pass's entry point (`lighting_pass.rs`).
+pub const FLAT_ENTRY_POINT: &str = "cs_flat";
+/// The per-vertex lighting pass's entry point.
+pub const GOURAUD_ENTRY_POINT: &str = "cs_gouraud";
+
+/// The lighting pass's entry point of a shading mode (`None`: Phong shading lights per pixel).
+pub fn lighting_entry_point(shading: shadelab_model::ShadingMode) -> Option<&'static str> {
+    use shadelab_model::ShadingMode::*;
+    match shading {
+        Flat => Some(FLAT_ENTRY_POINT),
+        Gouraud => Some(GOURAUD_ENTRY_POINT),
+        Phong => None,
+    }
+}
+
 #[cfg(test)]
 mod effect_structure;
 #[cfg(test)]

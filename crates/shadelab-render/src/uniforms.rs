@@ -185,6 +185,24 @@ impl LightUniform {
     }
 }
 
+/// The built-in background (`scene::BACKGROUND`), the same as the f64 reference's: what a scene
+/// pass clears to before its uniforms were written.
+pub const CLEAR_COLOR: wgpu::Color = wgpu::Color {
+    r: shadelab_model::scene::BACKGROUND[0],
+    g: shadelab_model::scene::BACKGROUND[1],
+    b: shadelab_model::scene::BACKGROUND[2],
+    a: 1.0,
+};
+
+/// What the scene pass clears to: the scene's background, opaque; without one (a term view)
+/// transparent black, so the term images add up on every pixel.
+pub fn clear_color(scene: &Scene) -> wgpu::Color {
+    match scene.background {
+        Some([r, g, b]) => wgpu::Color { r, g, b, a: 1.0 },
+        None => wgpu::Color::TRANSPARENT,
+    }
+}
+
 impl GlobalsUniform {
     pub fn new(scene: &Scene, width: u32, height: u32, flags: u32, specular: SpecularModel) -> Self {
         let mut lights = [LightUniform::zeroed(); MAX_LIGHTS];

@@ -115,7 +115,7 @@ pub struct SceneGpu {
     /// (`write_uniforms`): what the glass pass draws and how.
     pub(crate) glass_order: std::sync::Mutex<Vec<usize>>,
     pub(crate) glass_exits: std::sync::Mutex<Vec<u32>>,
-    /// The scene pass's clear colour as last written (`frame::clear_color` of the scene).
+    /// The scene pass's clear colour as last written (`uniforms::clear_color` of the scene).
     pub(crate) clear: std::sync::Mutex<wgpu::Color>,
     /// How many times the uniforms were written: a caller that keeps them between frames sees
     /// here whether another draw (another target, another scene's parameters) wrote over them.
@@ -247,7 +247,7 @@ impl Uploader {
             shadows: std::sync::Mutex::new(None),
             glass_order: Default::default(),
             glass_exits: Default::default(),
-            clear: std::sync::Mutex::new(crate::frame::CLEAR_COLOR),
+            clear: std::sync::Mutex::new(crate::uniforms::CLEAR_COLOR),
             uniform_writes: Default::default(),
         })
     }

@@ -8,11 +8,13 @@
 //! - [`models`] ↔ `models.wgsl`: the Lambert rule and the four-term sum, and the model choice.
 //! - [`area`] ↔ `area_lights.wgsl`, [`area_points`] ↔ `area_points.wgsl`: area lights, exact and
 //!   as k point sources.
-//! - [`shading`] ↔ `shading.wgsl`: the sum over the lights at one point.
+//! - [`shading`] ↔ `shading.wgsl`: the sum over the lights at one point (and the stages of
+//!   `entry_points.wgsl` and `screen_space.wgsl`, whose counterpart is the reference's image).
+//! - [`transmission`] ↔ `transmission.wgsl`: light through a surface (Snell, absorption, the
+//!   exits of the analytic shapes); the Fresnel factor from either side is [`microfacet`]'s.
 //!
-//! - [`transmission`]: light through a surface (Snell, Fresnel from either side, absorption),
-//!   f64 only until the GPU draws transparent materials.
-//!
+//! `shadows.rs` and `shadows/cascades.rs` at the crate root are the twins of `shadow_math.wgsl`
+//! and `shadows.wgsl`; `scene/material.rs` and `scene/texture.rs` those of `surface.wgsl`.
 //! The test `every_wgsl_function_has_a_rust_twin` (in `shadelab-render`) holds the pairing.
 
 pub mod area;

@@ -1,7 +1,9 @@
 // The microfacet terms of the Cook–Torrance form F·D·G/(N·V) (docs/model.md §5), one function
 // each, and the selectors that pick each term by the material's code (Microfacet::code in the f64
 // twin, crates/shadelab-model/src/lighting/microfacet.rs). A new D, G or F is one function here,
-// one arm in its selector and one code.
+// one arm in its selector and one code. Each arm is cut from a pipeline whose scene does not use
+// its term (the effects EFFECT_D_…, EFFECT_G_…, EFFECT_F_…). m is every term's width: Beckmann's
+// m, GGX's and Smith's α.
 
 // Fields of `object.microfacet`: the distribution D in bits 0–7, the masking G in bits 8–15, the
 // Fresnel factor F in bits 16–23.
@@ -9,10 +11,15 @@ const MICROFACET_FIELD_BITS: u32 = 8u;
 const MICROFACET_FIELD_MASK: u32 = 255u;
 // Each term's codes (Distribution::code, Masking::code, Fresnel::code).
 const DISTRIBUTION_BECKMANN: u32 = 0u;
-const MASKING_COOK_TORRANCE: u32 = 0u;
-const FRESNEL_DIELECTRIC: u32 = 0u;
-// The chapter's three terms, packed (Microfacet::CHAPTER).
+const DISTRIBUTION_GGX: u32 = 1u;
+const MASKING_V_GROOVE: u32 = 0u;
+const MASKING_SMITH: u32 = 1u;
+const MASKING_SMITH_CORRELATED: u32 = 2u;
+const FRESNEL_EXACT: u32 = 0u;
+const FRESNEL_SCHLICK: u32 = 1u;
+// The chapter's three terms, packed (Microfacet::CHAPTER), and glTF's (Microfacet::GLTF).
 const MICROFACET_CHAPTER: u32 = 0u;
+const MICROFACET_GLTF: u32 = 66049u;
 
 // docs/model.md §5: Beckmann facet distribution in the chapter's form
 // D = 1/(4 m² (N·H)⁴) · exp((1 − 1/(N·H)²)/m²), which is π/4 × the normalized Beckmann D.
@@ -27,6 +34,47 @@ fn d_beckmann(n_dot_h: f32, sin2_nh: f32, m_in: f32) -> f32 {
     // 1 − 1/c² = −sin²/c²
     let d = (1.0 / (4.0 * m2 * c2 * c2)) * exp(-max(sin2_nh, 0.0) / (c2 * m2));
     return select(0.0, d, n_dot_h > 0.0);
+}
+
+// docs/model.md §5: Trowbridge–Reitz (GGX) in the chapter's scale, π/4 × the normalized D, with
+// α = m: α²/(4 ((N·H)² α² + sin²θ_h)²), (N·H)²(α² − 1) + 1 written as Filament writes it to keep
+// its precision at the peak. The denominator is at least min(α², 1)²: no guard beyond M_MIN.
+fn d_ggx(n_dot_h: f32, sin2_nh: f32, m: f32) -> f32 {
+    let c = min(n_dot_h, 1.0);
+    let a = max(m, M_MIN);
+    let a2 = a * a;
+    let k = c * c * a2 + max(sin2_nh, 0.0);
+    return select(0.0, a2 / (4.0 * k * k), n_dot_h > 0.0);
+}
+
+// Smith's single-direction masking G1 = 1/(1 + Λ) at N·X = c for the distribution `d`, α = m.
+// GGX: 2c/(c + √(α² + (1 − α²)c²)), exact. Beckmann: Walter et al. 2007's rational fit (eq. 27)
+// in a = c/(α sin θ), multiplied through by (α sin θ)² so that sin θ = 0 never divides; 1 from
+// a = 1.6 up.
+fn smith_g1(d: u32, c_in: f32, m: f32) -> f32 {
+    let c = clamp(c_in, 0.0, 1.0);
+    let a = max(m, M_MIN);
+    if (d == DISTRIBUTION_GGX) {
+        return 2.0 * c / (c + sqrt(a * a + (1.0 - a * a) * c * c));
+    }
+    let t = a * sqrt((1.0 - c) * (1.0 + c));
+    // min(…, 1): the fit overshoots 1 by 3e-7 just below a = 1.6.
+    let fit = min((3.535 * c * t + 2.181 * c * c) / (t * t + 2.276 * c * t + 2.577 * c * c), 1.0);
+    return select(fit, 1.0, c >= 1.6 * t);
+}
+
+// docs/model.md §5: Smith's G with masking and shadowing independent, G1(N·V)·G1(N·L).
+fn g_smith_separable(d: u32, n_dot_v: f32, n_dot_l: f32, m: f32) -> f32 {
+    return smith_g1(d, n_dot_v, m) * smith_g1(d, n_dot_l, m);
+}
+
+// docs/model.md §5: Smith's height-correlated G, 1/(1 + Λ(V) + Λ(L)) = G1v·G1l/(G1v + G1l −
+// G1v·G1l); the numerator never exceeds the denominator, whose floor SMITH_DENOM_MIN only makes
+// 0/0 (both grazing) 0.
+fn g_smith_correlated(d: u32, n_dot_v: f32, n_dot_l: f32, m: f32) -> f32 {
+    let gv = smith_g1(d, n_dot_v, m);
+    let gl = smith_g1(d, n_dot_l, m);
+    return gv * gl / max(gv + gl - gv * gl, SMITH_DENOM_MIN);
 }
 
 // docs/model.md §5: geometric attenuation G = min{1, 2(N·H)(N·V)/(V·H), 2(N·H)(N·L)/(V·H)}, written so
@@ -65,31 +113,70 @@ fn fresnel_dielectric(c_in: f32, v_in: f32) -> f32 {
     return clamp(0.5 * a * a * (1.0 + b * b), 0.0, 1.0);
 }
 
-// The material's distribution D (field 0 of `terms`).
-fn microfacet_d(terms: u32, n_dot_h: f32, sin2_nh: f32, m: f32) -> f32 {
-    switch (terms & MICROFACET_FIELD_MASK) {
-        case DISTRIBUTION_BECKMANN, default: {
-            return d_beckmann(n_dot_h, sin2_nh, m);
-        }
-    }
+// docs/model.md §5: Schlick's approximation F0 + (1 − F0)(1 − c)⁵ with F0 = ((v − 1)/(v + 1))²,
+// the normal-incidence reflectance of index v (μ itself for the specular's v from μ).
+fn fresnel_schlick(c_in: f32, v_in: f32) -> f32 {
+    let c = clamp(c_in, 0.0, 1.0);
+    let v = max(v_in, 0.0);
+    let r = (v - 1.0) / (v + 1.0);
+    let f0 = r * r;
+    let x = 1.0 - c;
+    let x2 = x * x;
+    return f0 + (1.0 - f0) * x2 * x2 * x;
 }
 
-// The material's masking G (field 1 of `terms`).
-fn microfacet_g(terms: u32, n_dot_h: f32, n_dot_v: f32, n_dot_l: f32, v_dot_h: f32) -> f32 {
-    switch ((terms >> MICROFACET_FIELD_BITS) & MICROFACET_FIELD_MASK) {
-        case MASKING_COOK_TORRANCE, default: {
-            return g_cook_torrance(n_dot_h, n_dot_v, n_dot_l, v_dot_h);
-        }
+// The material's distribution D (field 0 of `terms`); 0 for a D this pipeline does not hold.
+fn microfacet_d(terms: u32, n_dot_h: f32, sin2_nh: f32, m: f32) -> f32 {
+    let d = terms & MICROFACET_FIELD_MASK;
+#if EFFECT_D_BECKMANN
+    if (d == DISTRIBUTION_BECKMANN) {
+        return d_beckmann(n_dot_h, sin2_nh, m);
     }
+#endif
+#if EFFECT_D_GGX
+    if (d == DISTRIBUTION_GGX) {
+        return d_ggx(n_dot_h, sin2_nh, m);
+    }
+#endif
+    return 0.0;
+}
+
+// The material's masking G (field 1 of `terms`); Smith's forms use the Λ of the material's D.
+fn microfacet_g(terms: u32, n_dot_h: f32, n_dot_v: f32, n_dot_l: f32, v_dot_h: f32, m: f32) -> f32 {
+    let g = (terms >> MICROFACET_FIELD_BITS) & MICROFACET_FIELD_MASK;
+    let d = terms & MICROFACET_FIELD_MASK;
+#if EFFECT_G_V_GROOVE
+    if (g == MASKING_V_GROOVE) {
+        return g_cook_torrance(n_dot_h, n_dot_v, n_dot_l, v_dot_h);
+    }
+#endif
+#if EFFECT_G_SMITH
+    if (g == MASKING_SMITH) {
+        return g_smith_separable(d, n_dot_v, n_dot_l, m);
+    }
+#endif
+#if EFFECT_G_SMITH_CORRELATED
+    if (g == MASKING_SMITH_CORRELATED) {
+        return g_smith_correlated(d, n_dot_v, n_dot_l, m);
+    }
+#endif
+    return 0.0;
 }
 
 // The material's Fresnel factor F (field 2 of `terms`) at c = V·H, per channel of `v_index`.
 fn microfacet_f(terms: u32, c: f32, v_index: vec3<f32>) -> vec3<f32> {
-    switch ((terms >> (2u * MICROFACET_FIELD_BITS)) & MICROFACET_FIELD_MASK) {
-        case FRESNEL_DIELECTRIC, default: {
-            return vec3(fresnel_dielectric(c, v_index.x), fresnel_dielectric(c, v_index.y), fresnel_dielectric(c, v_index.z));
-        }
+    let f = (terms >> (2u * MICROFACET_FIELD_BITS)) & MICROFACET_FIELD_MASK;
+#if EFFECT_F_EXACT
+    if (f == FRESNEL_EXACT) {
+        return vec3(fresnel_dielectric(c, v_index.x), fresnel_dielectric(c, v_index.y), fresnel_dielectric(c, v_index.z));
     }
+#endif
+#if EFFECT_F_SCHLICK
+    if (f == FRESNEL_SCHLICK) {
+        return vec3(fresnel_schlick(c, v_index.x), fresnel_schlick(c, v_index.y), fresnel_schlick(c, v_index.z));
+    }
+#endif
+    return vec3(0.0);
 }
 
 // docs/model.md §5: the Cook–Torrance form as it enters the sum, π·ρ_s·(N·L) = F·D·G/(N·V), with
@@ -102,7 +189,7 @@ fn specular_microfacet(n: vec3<f32>, v: vec3<f32>, l: vec3<f32>, m: f32, v_index
     let v_dot_h = clamp(dot(v, h), 0.0, 1.0);
     let n_x_h = cross(n, h);
     let d = microfacet_d(terms, n_dot_h, dot(n_x_h, n_x_h), m);
-    let g = microfacet_g(terms, n_dot_h, n_dot_v, n_dot_l, v_dot_h);
+    let g = microfacet_g(terms, n_dot_h, n_dot_v, n_dot_l, v_dot_h, m);
     let k = d * g / max(n_dot_v, N_DOT_V_MIN);
     let lit = n_dot_l > 0.0 && n_dot_v > 0.0;
     return select(vec3(0.0), microfacet_f(terms, v_dot_h, v_index) * k, lit);

@@ -87,11 +87,32 @@ fn sweep(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workgroups)
     // The column groups in column order, as the f64 reference writes them.
     let base = local * SWEEP_OUTPUTS;
     light_columns(base, inp);
+    microfacet_columns(base, inp);
     shadow_map_columns(base, inp, so);
     surface_map_columns(base, inp);
     area_columns(base, inp);
     transmission_columns(base, inp);
     pcss_columns(base, inp);
+}
+
+// The microfacet terms beyond the chapter's: GGX's D, Smith's G on both distributions, Schlick's F
+// and the glTF preset's whole specular.
+fn microfacet_columns(base: u32, inp: SweepCombination) {
+    let n = inp.n;
+    let v = inp.v;
+    let l = inp.l;
+    let m = inp.m;
+    let half = safe_normalize(l + v, n);
+    let n_x_h = cross(n, half);
+    let nv = dot(n, v);
+    let nl = dot(n, l);
+    outputs[base + COL_D_GGX] = d_ggx(dot(n, half), dot(n_x_h, n_x_h), m);
+    outputs[base + COL_G_SMITH_SEPARABLE] = g_smith_separable(DISTRIBUTION_GGX, nv, nl, m);
+    outputs[base + COL_G_SMITH_SEPARABLE + 1u] = g_smith_separable(DISTRIBUTION_BECKMANN, nv, nl, m);
+    outputs[base + COL_G_SMITH_CORRELATED] = g_smith_correlated(DISTRIBUTION_GGX, nv, nl, m);
+    outputs[base + COL_G_SMITH_CORRELATED + 1u] = g_smith_correlated(DISTRIBUTION_BECKMANN, nv, nl, m);
+    put_rgb(base + COL_MICROFACET_F_SCHLICK, microfacet_f(MICROFACET_GLTF, dot(v, half), inp.v_index));
+    put_rgb(base + COL_SPECULAR_MICROFACET_GLTF, specular_microfacet(n, v, l, m, inp.v_index, MICROFACET_GLTF));
 }
 
 // The BRDF, falloff, per-light contribution, other-model and spot-and-window columns.

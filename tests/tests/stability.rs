@@ -91,6 +91,54 @@ fn phong_shading_of_a_fine_sphere_matches_the_f64_reference() {
     }
 }
 
+/// Every combination of the microfacet terms (2 D × 3 G × 2 F) on the fine sphere, GPU against
+/// the f64 reference with the same terms, at the roughness the glTF preset meets most.
+#[test]
+fn every_microfacet_combination_matches_the_f64_reference() {
+    use shadelab_model::lighting::microfacet::{Distribution, Fresnel, Masking, Microfacet};
+    let (w, h) = (320, 180);
+    // A rim light from behind and to the side: its highlight lies where N·L and N·V are small,
+    // where G and F differ most between the forms.
+    let mut base = single_shape_scene("sphere", Shape::Sphere, 256);
+    base.materials.iter_mut().for_each(|m| m.m = 0.4);
+    base.lights = vec![Light::directional(DVec3::new(-1.0, -0.3, 1.2).normalize(), [1.0; 3], 1.0)];
+    let chapter = render_reference(&base, SpecularModel::CookTorrance, w, h);
+    let mut worst_mean: f64 = 0.0;
+    for (_, d) in Distribution::ALL {
+        for (_, g) in Masking::ALL {
+            for (_, f) in Fresnel::ALL {
+                let mut scene = base.clone();
+                scene.materials.iter_mut().for_each(|m| m.microfacet = Microfacet { d, g, f });
+                let settings = RenderSettings::new(ShadingMode::Phong, SpecularModel::CookTorrance);
+                let gpu_img = render_image(gpu(), &scene, w, h, &settings).expect("upload");
+                let reference = render_reference(&scene, SpecularModel::CookTorrance, w, h);
+                let pixels = interior(&reference, 1);
+                let (mean, max, worst) = error(&gpu_img, &reference, &pixels);
+                // How far the terms move the image, so that the check could fail.
+                let moved = pixels
+                    .iter()
+                    .map(|&(x, y)| {
+                        let (a, b) = (reference.get(x, y), chapter.get(x, y));
+                        (0..3).map(|c| (a[c] - b[c]).abs()).sum::<f64>()
+                    })
+                    .sum::<f64>()
+                    / (3 * pixels.len()) as f64;
+                eprintln!(
+                    "{d}/{g}/{f}: mean |error| {mean:.2e}, max {max:.2e} at {worst:?}; {moved:.2e} from the chapter's"
+                );
+                if (d, g, f) != (Distribution::Beckmann, Masking::VGroove, Fresnel::Exact) {
+                    assert!(moved > 10.0 * mean, "{d}/{g}/{f} moves the image by only {moved}");
+                }
+                worst_mean = worst_mean.max(mean);
+                // The thresholds of the chapter's terms above: a wrong term moves the mean by 1e-3.
+                assert!(mean < 1e-4, "{d}/{g}/{f}: mean |error| {mean}");
+                assert!(max < 4e-3, "{d}/{g}/{f}: max |error| {max} at {worst:?}");
+            }
+        }
+    }
+    eprintln!("largest mean |error| over the 12 combinations: {worst_mean:.2e}");
+}
+
 /// One 8-bit sRGB step at linear 1, in linear units: d(linear)/d(sRGB) at 1 is 2.4/1.055.
 const ONE_STEP_AT_WHITE: f64 = 2.4 / 1.055 / 255.0;
 

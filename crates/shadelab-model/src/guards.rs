@@ -56,6 +56,11 @@ pub const FRESNEL_SQRT_MU_MAX: f64 = 0.9999;
 /// reaches 0/0 there; with this floor F is 0, the value it has for every other `c` at `v = 1`.
 pub const FRESNEL_G_PLUS_C_MIN: f64 = 1e-6;
 
+/// Floor of the height-correlated Smith G's denominator `G1v + G1l − G1v·G1l`. Its numerator
+/// `G1v·G1l` never exceeds it, so the floor changes nothing but 0/0 (both directions grazing),
+/// which it makes 0; 1e-30 is a normal f32.
+pub const SMITH_DENOM_MIN: f64 = 1e-30;
+
 /// Distance under which a point light counts as touching the surface: the direction to it is
 /// undefined, so `L = N` (the light is straight above the surface point) is used instead.
 pub const LIGHT_DIST_MIN: f64 = 1e-4;
@@ -108,6 +113,7 @@ pub const ALL: &[(&str, f64)] = &[
     ("G_V_DOT_H_MIN", G_V_DOT_H_MIN),
     ("FRESNEL_SQRT_MU_MAX", FRESNEL_SQRT_MU_MAX),
     ("FRESNEL_G_PLUS_C_MIN", FRESNEL_G_PLUS_C_MIN),
+    ("SMITH_DENOM_MIN", SMITH_DENOM_MIN),
     ("LIGHT_DIST_MIN", LIGHT_DIST_MIN),
     ("D0_MIN", D0_MIN),
     ("SPOT_COS_SPAN_MIN", SPOT_COS_SPAN_MIN),

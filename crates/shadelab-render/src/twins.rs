@@ -5,8 +5,8 @@
 
 use crate::shaders::tests::parse;
 use crate::shaders::{FILES, lighting_source, terms_source};
-use shadelab_model::params::NamedValue;
 use shadelab_model::lighting::microfacet::{Distribution, Fresnel, Masking, Microfacet};
+use shadelab_model::params::NamedValue;
 use shadelab_model::{FalloffForm, IlluminationModel, LightKind, SpecularModel};
 
 /// Each WGSL file and the source of its f64 twin.
@@ -240,6 +240,7 @@ fn wgsl_codes_equal_rust_codes() {
     rust.extend(Masking::ALL.iter().map(|(n, g)| (code_name("MASKING", n), g.code())));
     rust.extend(Fresnel::ALL.iter().map(|(n, f)| (code_name("FRESNEL", n), f.code())));
     rust.push(("MICROFACET_CHAPTER".into(), Microfacet::CHAPTER.code()));
+    rust.push(("MICROFACET_GLTF".into(), Microfacet::GLTF.code()));
     let field_bits = shadelab_model::lighting::microfacet::MICROFACET_FIELD_BITS;
     rust.push(("MICROFACET_FIELD_BITS".into(), field_bits));
     rust.push(("MICROFACET_FIELD_MASK".into(), (1 << field_bits) - 1));
@@ -248,8 +249,18 @@ fn wgsl_codes_equal_rust_codes() {
     }
     // Every u32 code of the WGSL with one of these prefixes has its Rust value.
     for (name, ty) in FILES.iter().flat_map(|(_, src)| wgsl_consts(src)) {
-        let coded = ["LIGHT_", "FALLOFF_", "SPECULAR_", "ILLUMINATION_", "DISTRIBUTION_", "MASKING_", "FRESNEL_", "MICROFACET_"]
-            .iter().any(|p| name.starts_with(p));
+        let coded = [
+            "LIGHT_",
+            "FALLOFF_",
+            "SPECULAR_",
+            "ILLUMINATION_",
+            "DISTRIBUTION_",
+            "MASKING_",
+            "FRESNEL_",
+            "MICROFACET_",
+        ]
+        .iter()
+        .any(|p| name.starts_with(p));
         if ty == "u32" && coded {
             assert!(rust.iter().any(|(n, _)| *n == name), "{name} has no Rust code()");
         }

@@ -103,6 +103,71 @@ declare_effects! {
         functions: &["specular_microfacet", "microfacet_d", "microfacet_g", "microfacet_f", "fresnel_v_from_mu"],
         members: &[("Object", "mu"), ("Object", "microfacet")],
     },
+    /// The chapter's Beckmann D (docs/model.md §5), for a material that uses it.
+    DistributionBeckmann {
+        explain: "Beckmann D (the chapter's)",
+        name: "Beckmann D",
+        label: "beckmann",
+        define: Some("EFFECT_D_BECKMANN"),
+        functions: &["d_beckmann"],
+        members: &[],
+    },
+    /// GGX (Trowbridge–Reitz) D (docs/model.md §5).
+    DistributionGgx {
+        explain: "GGX D (Trowbridge–Reitz)",
+        name: "GGX D",
+        label: "ggx",
+        define: Some("EFFECT_D_GGX"),
+        functions: &["d_ggx"],
+        members: &[],
+    },
+    /// The chapter's V-groove G `min{1, …}` (docs/model.md §5).
+    MaskingVGroove {
+        explain: "V-groove G min{1, …} (the chapter's)",
+        name: "V-groove G",
+        label: "vgroove",
+        define: Some("EFFECT_G_V_GROOVE"),
+        functions: &["g_cook_torrance"],
+        members: &[],
+    },
+    /// Smith's separable G1(V)·G1(L) (docs/model.md §5).
+    MaskingSmith {
+        explain: "Smith G, separable G1(V)·G1(L)",
+        name: "separable Smith G",
+        label: "smith",
+        define: Some("EFFECT_G_SMITH"),
+        functions: &["g_smith_separable"],
+        members: &[],
+    },
+    /// Smith's height-correlated G (docs/model.md §5).
+    MaskingSmithCorrelated {
+        explain: "Smith G, height-correlated 1/(1 + Λ(V) + Λ(L))",
+        name: "height-correlated Smith G",
+        label: "smith-hc",
+        define: Some("EFFECT_G_SMITH_CORRELATED"),
+        functions: &["g_smith_correlated"],
+        members: &[],
+    },
+    /// The exact Fresnel F as the specular's F (docs/model.md §5).
+    FresnelExact {
+        explain: "exact Fresnel F (the chapter's)",
+        name: "exact F",
+        label: "exact-f",
+        define: Some("EFFECT_F_EXACT"),
+        // fresnel_dielectric is the glass's Fresnel too: a glass pass reaches it without this
+        // effect, so only the specular's call is this effect's (effect_structure checks it).
+        functions: &[],
+        members: &[],
+    },
+    /// Schlick's F (docs/model.md §5).
+    FresnelSchlick {
+        explain: "Schlick's F0 + (1 − F0)(1 − c)⁵",
+        name: "Schlick F",
+        label: "schlick",
+        define: Some("EFFECT_F_SCHLICK"),
+        functions: &["fresnel_schlick"],
+        members: &[],
+    },
     /// Ambient `I_amb·r_a·C` (docs/model.md §2).
     Ambient {
         explain: "ambient I_amb·r_a·C",
@@ -422,6 +487,37 @@ declare_effects! {
 }
 
 /// The effects that sample a material texture at the pixel's texture coordinates.
+/// The microfacet terms' effects: each D, G and F of [`crate::lighting::microfacet`].
+pub const MICROFACET_EFFECTS: [Effect; 7] = [
+    Effect::DistributionBeckmann,
+    Effect::DistributionGgx,
+    Effect::MaskingVGroove,
+    Effect::MaskingSmith,
+    Effect::MaskingSmithCorrelated,
+    Effect::FresnelExact,
+    Effect::FresnelSchlick,
+];
+
+/// The effects of a material's three microfacet terms.
+pub fn microfacet_effects(t: crate::lighting::microfacet::Microfacet) -> [Effect; 3] {
+    use crate::lighting::microfacet::{Distribution, Fresnel, Masking};
+    [
+        match t.d {
+            Distribution::Beckmann => Effect::DistributionBeckmann,
+            Distribution::Ggx => Effect::DistributionGgx,
+        },
+        match t.g {
+            Masking::VGroove => Effect::MaskingVGroove,
+            Masking::Smith => Effect::MaskingSmith,
+            Masking::SmithCorrelated => Effect::MaskingSmithCorrelated,
+        },
+        match t.f {
+            Fresnel::Exact => Effect::FresnelExact,
+            Fresnel::Schlick => Effect::FresnelSchlick,
+        },
+    ]
+}
+
 pub const TEXTURE_EFFECTS: [Effect; 5] = [
     Effect::BaseColorTexture,
     Effect::MetalRoughnessTexture,
@@ -453,7 +549,7 @@ const _: () = {
         assert!(DECLARED[i].effect as usize == i, "DECLARED is in Effect's order");
         i += 1;
     }
-    assert!(DECLARED.len() <= u32::BITS as usize, "an EffectKey holds one bit per effect");
+    assert!(DECLARED.len() <= u64::BITS as usize, "an EffectKey holds one bit per effect");
 };
 
 impl Effect {
@@ -492,8 +588,8 @@ impl Effect {
         self.declaration().members
     }
 
-    pub(super) const fn bit(self) -> u32 {
-        1 << self as u32
+    pub(super) const fn bit(self) -> u64 {
+        1 << self as u64
     }
 }
 

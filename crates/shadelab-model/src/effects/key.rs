@@ -7,7 +7,7 @@ use std::fmt;
 /// The simulated effects a shader permutation contains: one bit per declared effect. Plain
 /// `Copy + Hash`: pipelines are cached by it. An effect that is not simulated is never in a key.
 #[derive(Clone, Copy, PartialEq, Eq, Hash)]
-pub struct EffectKey(u32);
+pub struct EffectKey(u64);
 
 impl EffectKey {
     /// Every simulated effect present (the "uber" shader: what is not needed is switched off at
@@ -129,7 +129,7 @@ mod tests {
         assert_eq!(format!("{k:?}"), "EffectKey(diffuse+cook-torrance+point+range)");
         assert_eq!(
             EffectKey::UBER.without(Effect::Ambient).label(),
-            "diffuse+phong+cook-torrance+lambert+sum+it+dir+point+quad+linear+spot+area+apoints+range+shadows+hard+pcf+poisson+pcss+cascades+texture+vcolor+mrtex+aotex+emit+emittex+normtex+glass+refract+absorb"
+            "diffuse+phong+cook-torrance+beckmann+ggx+vgroove+smith+smith-hc+exact-f+schlick+lambert+sum+it+dir+point+quad+linear+spot+area+apoints+range+shadows+hard+pcf+poisson+pcss+cascades+texture+vcolor+mrtex+aotex+emit+emittex+normtex+glass+refract+absorb"
         );
         assert_eq!(Effect::SpecularPhong.to_string(), "Phong specular (V·R)^h");
     }

@@ -11,7 +11,9 @@ mod small_area_lights;
 mod transparency;
 
 pub use analyze::{ABSORPTION_LINEAR_BELOW, ABSORPTION_NEGLECT_BELOW, Analysis, Decision, analyze};
-pub use declared::{DECLARED, Declaration, Effect, TEXTURE_COORDS, TEXTURE_EFFECTS};
+pub use declared::{
+    DECLARED, Declaration, Effect, MICROFACET_EFFECTS, TEXTURE_COORDS, TEXTURE_EFFECTS, microfacet_effects,
+};
 pub use key::EffectKey;
 pub use small_area_lights::{
     SMALL_AREA_MAX_PX, SMALL_AREA_MAX_RADIUS_OVER_DISTANCE, SmallAreaLight, draw_small_area_lights_as_points,

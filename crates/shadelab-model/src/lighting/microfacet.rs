@@ -1,7 +1,8 @@
 //! The twin of `shaders/microfacet.wgsl`: the microfacet terms of the Cook–Torrance form
 //! `F·D·G/(N·V)` (docs/model.md §5), one function each, and the selectors that pick each term by
 //! the material's [`Microfacet`]. A new D, G or F is a variant of its enum, one function here and
-//! its twin, one arm in its selector.
+//! its twin, one arm in its selector. The roughness m is every term's width: Beckmann's m, GGX's
+//! and Smith's α (docs/model.md §5 gives the mapping to glTF's roughness and Phong's h).
 
 use super::common::safe_normalize;
 use crate::guards::*;
@@ -13,14 +14,21 @@ pub enum Distribution {
     /// The chapter's Beckmann form ([`d_beckmann`]).
     #[default]
     Beckmann,
+    /// Trowbridge–Reitz, called GGX ([`d_ggx`]): glTF's, Filament's and Bevy's D.
+    Ggx,
 }
 
 /// The masking–shadowing term G.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub enum Masking {
-    /// The chapter's `min{1, …}` ([`g_cook_torrance`]).
+    /// The chapter's V-groove `min{1, …}` ([`g_cook_torrance`]).
     #[default]
-    CookTorrance,
+    VGroove,
+    /// Smith's masking and shadowing as independent factors `G1(V)·G1(L)` ([`g_smith_separable`]).
+    Smith,
+    /// Smith's height-correlated form `1/(1 + Λ(V) + Λ(L))` ([`g_smith_correlated`]): glTF's and
+    /// Filament's.
+    SmithCorrelated,
 }
 
 /// The Fresnel factor F.
@@ -28,38 +36,58 @@ pub enum Masking {
 pub enum Fresnel {
     /// The exact unpolarized factor of a dielectric ([`fresnel_dielectric`]).
     #[default]
-    Dielectric,
+    Exact,
+    /// Schlick's approximation `F0 + (1 − F0)(1 − c)⁵` ([`fresnel_schlick`]).
+    Schlick,
 }
 
 impl Distribution {
     /// Each distribution by its name; `DISTRIBUTION_<NAME>` is its WGSL code.
-    pub const ALL: [(&'static str, Distribution); 1] = [("beckmann", Distribution::Beckmann)];
+    pub const ALL: [(&'static str, Distribution); 2] =
+        [("beckmann", Distribution::Beckmann), ("ggx", Distribution::Ggx)];
     pub fn code(self) -> u32 {
-        match self {
-            Distribution::Beckmann => 0,
-        }
+        self as u32
     }
 }
 
 impl Masking {
     /// Each masking term by its name; `MASKING_<NAME>` is its WGSL code.
-    pub const ALL: [(&'static str, Masking); 1] = [("cook-torrance", Masking::CookTorrance)];
+    pub const ALL: [(&'static str, Masking); 3] =
+        [("v-groove", Masking::VGroove), ("smith", Masking::Smith), ("smith-correlated", Masking::SmithCorrelated)];
     pub fn code(self) -> u32 {
-        match self {
-            Masking::CookTorrance => 0,
-        }
+        self as u32
     }
 }
 
 impl Fresnel {
     /// Each Fresnel factor by its name; `FRESNEL_<NAME>` is its WGSL code.
-    pub const ALL: [(&'static str, Fresnel); 1] = [("dielectric", Fresnel::Dielectric)];
+    pub const ALL: [(&'static str, Fresnel); 2] = [("exact", Fresnel::Exact), ("schlick", Fresnel::Schlick)];
     pub fn code(self) -> u32 {
-        match self {
-            Fresnel::Dielectric => 0,
-        }
+        self as u32
     }
 }
+
+/// The name of a term's variant in its `ALL` table (the CLI's, the files' and the panel's word).
+macro_rules! named_term {
+    ($($t:ty),*) => {$(
+        impl std::fmt::Display for $t {
+            fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+                let name = <$t>::ALL.iter().find(|(_, v)| v == self).map_or("?", |(n, _)| n);
+                f.write_str(name)
+            }
+        }
+        impl std::str::FromStr for $t {
+            type Err = String;
+            fn from_str(s: &str) -> Result<Self, String> {
+                <$t>::ALL.iter().find(|(n, _)| *n == s).map(|(_, v)| *v).ok_or_else(|| {
+                    let names: Vec<&str> = <$t>::ALL.iter().map(|(n, _)| *n).collect();
+                    format!("'{s}' is not one of {}", names.join(", "))
+                })
+            }
+        }
+    )*};
+}
+named_term!(Distribution, Masking, Fresnel);
 
 /// The D, G and F a material's specular uses, each chosen on its own.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
@@ -73,9 +101,13 @@ pub struct Microfacet {
 pub const MICROFACET_FIELD_BITS: u32 = 8;
 
 impl Microfacet {
-    /// The chapter's terms: Beckmann D, the min() G, the exact dielectric F.
-    pub const CHAPTER: Microfacet =
-        Microfacet { d: Distribution::Beckmann, g: Masking::CookTorrance, f: Fresnel::Dielectric };
+    /// The chapter's terms: Beckmann D, the V-groove G, the exact dielectric F.
+    pub const CHAPTER: Microfacet = Microfacet { d: Distribution::Beckmann, g: Masking::VGroove, f: Fresnel::Exact };
+    /// The glTF 2.0 specification's terms (its Appendix B), also Filament's: GGX D, the
+    /// height-correlated Smith G and Schlick's F, with α = m (docs/model.md §5).
+    pub const GLTF: Microfacet = Microfacet { d: Distribution::Ggx, g: Masking::SmithCorrelated, f: Fresnel::Schlick };
+    /// The presets by name (`--microfacet`).
+    pub const PRESETS: [(&'static str, Microfacet); 2] = [("chapter", Microfacet::CHAPTER), ("gltf", Microfacet::GLTF)];
 
     /// `object.microfacet` in WGSL: D in bits 0–7, G in 8–15, F in 16–23.
     pub fn code(self) -> u32 {
@@ -107,6 +139,56 @@ pub(crate) fn d_beckmann_normalized(n_dot_h: f64, m: f64) -> f64 {
     let cos2 = n_dot_h * n_dot_h;
     let tan2 = (1.0 - cos2) / cos2;
     (-tan2 / (m * m)).exp() / (std::f64::consts::PI * m * m * cos2 * cos2)
+}
+
+/// docs/model.md §5: Trowbridge–Reitz (GGX) in the chapter's scale, π/4 × the normalized
+/// `α²/(π ((N·H)²(α² − 1) + 1)²)`, with α = m: `D = α²/(4 ((N·H)² α² + sin²)²)`, writing
+/// `(N·H)²(α² − 1) + 1` as `(N·H)²α² + sin²θ_h` (Filament's form, precise at the peak). Its peak
+/// `1/(4α²)` equals Beckmann's at the same m; the denominator is at least min(α², 1)², so no guard
+/// beyond M_MIN is needed.
+pub fn d_ggx(n_dot_h: f64, sin2_nh: f64, m: f64) -> f64 {
+    if n_dot_h <= 0.0 {
+        return 0.0;
+    }
+    let c = n_dot_h.min(1.0);
+    let a2 = m.max(M_MIN).powi(2);
+    let k = c * c * a2 + sin2_nh.max(0.0);
+    a2 / (4.0 * k * k)
+}
+
+/// Smith's single-direction masking `G1 = 1/(1 + Λ)` at `N·X = c` for the material's D, with α = m:
+/// - GGX: `2c/(c + √(α² + (1 − α²)c²))`, exact; the denominator is at least min(α, 1).
+/// - Beckmann: Walter et al. 2007's rational fit (their eq. 27) in `a = c/(α sin θ)`,
+///   `(3.535a + 2.181a²)/(1 + 2.276a + 2.577a²)` below a = 1.6 and 1 above, multiplied through by
+///   (α sin θ)² so that nothing divides by sin θ = 0.
+pub fn smith_g1(d: Distribution, c_in: f64, m: f64) -> f64 {
+    let c = c_in.clamp(0.0, 1.0);
+    let a = m.max(M_MIN);
+    match d {
+        Distribution::Ggx => 2.0 * c / (c + (a * a + (1.0 - a * a) * c * c).sqrt()),
+        Distribution::Beckmann => {
+            let t = a * ((1.0 - c) * (1.0 + c)).sqrt();
+            if c >= 1.6 * t {
+                return 1.0;
+            }
+            // The fit overshoots 1 by 3e-7 just below a = 1.6: held at the bound it approximates.
+            ((3.535 * c * t + 2.181 * c * c) / (t * t + 2.276 * c * t + 2.577 * c * c)).min(1.0)
+        }
+    }
+}
+
+/// docs/model.md §5: Smith's G with masking and shadowing independent, `G1(N·V)·G1(N·L)`.
+pub fn g_smith_separable(d: Distribution, n_dot_v: f64, n_dot_l: f64, m: f64) -> f64 {
+    smith_g1(d, n_dot_v, m) * smith_g1(d, n_dot_l, m)
+}
+
+/// docs/model.md §5: Smith's height-correlated G, `1/(1 + Λ(V) + Λ(L))` with `Λ = 1/G1 − 1`, as
+/// `G1v·G1l/(G1v + G1l − G1v·G1l)`. The numerator never exceeds the denominator (G1 ≤ 1), so the
+/// floor SMITH_DENOM_MIN only turns 0/0 (both directions grazing) into 0.
+pub fn g_smith_correlated(d: Distribution, n_dot_v: f64, n_dot_l: f64, m: f64) -> f64 {
+    let gv = smith_g1(d, n_dot_v, m);
+    let gl = smith_g1(d, n_dot_l, m);
+    gv * gl / (gv + gl - gv * gl).max(SMITH_DENOM_MIN)
 }
 
 /// docs/model.md §5: geometric attenuation `G = min{1, 2(N·H)(N·V)/(V·H), 2(N·H)(N·L)/(V·H)}`.
@@ -151,24 +233,41 @@ pub fn fresnel_dielectric(c: f64, v: f64) -> f64 {
     (0.5 * a * a * (1.0 + b * b)).clamp(0.0, 1.0)
 }
 
+/// docs/model.md §5: Schlick's approximation of the exact factor, `F0 + (1 − F0)(1 − c)⁵` with
+/// `F0 = ((v − 1)/(v + 1))²`, the normal-incidence reflectance of index `v` (for the specular's
+/// `v` from μ that is μ itself, within FRESNEL_SQRT_MU_MAX).
+pub fn fresnel_schlick(c: f64, v: f64) -> f64 {
+    let c = c.clamp(0.0, 1.0);
+    let v = v.max(0.0);
+    let r = (v - 1.0) / (v + 1.0);
+    let f0 = r * r;
+    let x = 1.0 - c;
+    let x2 = x * x;
+    f0 + (1.0 - f0) * x2 * x2 * x
+}
+
 /// The material's distribution D.
 pub fn microfacet_d(terms: Microfacet, n_dot_h: f64, sin2_nh: f64, m: f64) -> f64 {
     match terms.d {
         Distribution::Beckmann => d_beckmann(n_dot_h, sin2_nh, m),
+        Distribution::Ggx => d_ggx(n_dot_h, sin2_nh, m),
     }
 }
 
-/// The material's masking G.
-pub fn microfacet_g(terms: Microfacet, n_dot_h: f64, n_dot_v: f64, n_dot_l: f64, v_dot_h: f64) -> f64 {
+/// The material's masking G; Smith's forms use the Λ of the material's D.
+pub fn microfacet_g(terms: Microfacet, n_dot_h: f64, n_dot_v: f64, n_dot_l: f64, v_dot_h: f64, m: f64) -> f64 {
     match terms.g {
-        Masking::CookTorrance => g_cook_torrance(n_dot_h, n_dot_v, n_dot_l, v_dot_h),
+        Masking::VGroove => g_cook_torrance(n_dot_h, n_dot_v, n_dot_l, v_dot_h),
+        Masking::Smith => g_smith_separable(terms.d, n_dot_v, n_dot_l, m),
+        Masking::SmithCorrelated => g_smith_correlated(terms.d, n_dot_v, n_dot_l, m),
     }
 }
 
 /// The material's Fresnel factor F at `c` = V·H, per channel of `v_index`.
 pub fn microfacet_f(terms: Microfacet, c: f64, v_index: [f64; 3]) -> [f64; 3] {
     match terms.f {
-        Fresnel::Dielectric => v_index.map(|v| fresnel_dielectric(c, v)),
+        Fresnel::Exact => v_index.map(|v| fresnel_dielectric(c, v)),
+        Fresnel::Schlick => v_index.map(|v| fresnel_schlick(c, v)),
     }
 }
 
@@ -185,7 +284,110 @@ pub fn specular_microfacet(n: DVec3, v: DVec3, l: DVec3, m: f64, v_index: [f64; 
     let n_dot_h = n.dot(h);
     let v_dot_h = v.dot(h).clamp(0.0, 1.0);
     let d = microfacet_d(terms, n_dot_h, n.cross(h).length_squared(), m);
-    let g = microfacet_g(terms, n_dot_h, n_dot_v, n_dot_l, v_dot_h);
+    let g = microfacet_g(terms, n_dot_h, n_dot_v, n_dot_l, v_dot_h, m);
     let k = d * g / n_dot_v.max(N_DOT_V_MIN);
     microfacet_f(terms, v_dot_h, v_index).map(|f| f * k)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::f64::consts::PI;
+
+    /// ∫ D·(N·H) dω_h over the hemisphere by the midpoint rule in θ (D depends on θ only).
+    fn projected_area(d: impl Fn(f64, f64) -> f64) -> f64 {
+        let n = 200_000;
+        let dt = 0.5 * PI / n as f64;
+        (0..n)
+            .map(|i| {
+                let t = (i as f64 + 0.5) * dt;
+                d(t.cos(), t.sin().powi(2)) * t.cos() * t.sin() * 2.0 * PI * dt
+            })
+            .sum()
+    }
+
+    #[test]
+    fn ggx_in_the_chapters_scale_is_pi_over_four_of_a_normalized_d() {
+        for m in [0.05, 0.2, 0.5, 1.0] {
+            let a = projected_area(|c, s2| d_ggx(c, s2, m)) * 4.0 / PI;
+            assert!((a - 1.0).abs() < 1e-3, "m = {m}: ∫D cos = {a}");
+            // Its peak equals Beckmann's at the same m.
+            assert!((d_ggx(1.0, 0.0, m) - d_beckmann(1.0, 0.0, m)).abs() < 1e-12);
+        }
+    }
+
+    #[test]
+    fn smith_g1_is_one_at_the_normal_zero_at_grazing_and_falls_between() {
+        for d in [Distribution::Ggx, Distribution::Beckmann] {
+            for m in [M_MIN, 0.1, 0.5, 1.0] {
+                assert!((smith_g1(d, 1.0, m) - 1.0).abs() < 1e-12, "{d:?} m = {m}");
+                assert_eq!(smith_g1(d, 0.0, m), 0.0, "{d:?} m = {m}");
+                let mut last = 0.0;
+                for i in 0..=1000 {
+                    let g = smith_g1(d, i as f64 / 1000.0, m);
+                    assert!((0.0..=1.0 + 1e-12).contains(&g) && g >= last - 1e-3, "{d:?} m = {m} c = {i}e-3: {g}");
+                    last = g;
+                }
+            }
+        }
+        // GGX's G1 against 1/(1 + Λ), Λ = (√(1 + α² tan²θ) − 1)/2 (Heitz 2014, eq. 72).
+        let (c, a): (f64, f64) = (0.3, 0.4);
+        let tan2 = (1.0 - c * c) / (c * c);
+        let lambda = ((1.0 + a * a * tan2).sqrt() - 1.0) / 2.0;
+        assert!((smith_g1(Distribution::Ggx, c, a) - 1.0 / (1.0 + lambda)).abs() < 1e-12);
+        // Walter's fit is continuous where it turns to 1 (a = 1.6).
+        let c = 1.6 / (1.0f64 + 1.6 * 1.6).sqrt();
+        let g = smith_g1(Distribution::Beckmann, c - 1e-9, 1.0);
+        assert!((g - 1.0).abs() < 1e-3, "{g}");
+    }
+
+    #[test]
+    fn height_correlated_smith_lies_between_the_product_and_the_smaller_g1() {
+        for d in [Distribution::Ggx, Distribution::Beckmann] {
+            for (nv, nl, m) in [(0.9, 0.2, 0.3), (0.5, 0.5, 0.8), (0.05, 0.99, 0.1), (0.0, 0.0, 0.5)] {
+                let (gv, gl) = (smith_g1(d, nv, m), smith_g1(d, nl, m));
+                let hc = g_smith_correlated(d, nv, nl, m);
+                assert!(hc.is_finite() && hc >= gv * gl - 1e-15 && hc <= gv.min(gl) + 1e-15, "{d:?} {nv} {nl}: {hc}");
+                assert_eq!(g_smith_separable(d, nv, nl, m), gv * gl);
+            }
+        }
+    }
+
+    #[test]
+    fn schlick_meets_the_exact_factor_at_its_ends() {
+        for mu in [0.0, 0.04, 0.5, 0.95] {
+            let v = fresnel_v_from_mu(mu);
+            assert!((fresnel_schlick(1.0, v) - mu).abs() < 1e-12, "μ = {mu}");
+            assert!((fresnel_schlick(1.0, v) - fresnel_dielectric(1.0, v)).abs() < 1e-12);
+            assert_eq!(fresnel_schlick(0.0, v), 1.0);
+        }
+        // Between them it is an approximation, worst near grazing where the exact factor dips
+        // towards Brewster's angle: for glass-like μ = 0.04 the largest gap is 0.0357 (at c ≈
+        // 0.09), for μ = 0.5 (v ≈ 5.8) it is 0.296 (at c ≈ 0.1).
+        for (mu, gap) in [(0.04, 0.0357), (0.5, 0.2962)] {
+            let v = fresnel_v_from_mu(mu);
+            let worst = (0..=1000)
+                .map(|i| i as f64 / 1000.0)
+                .map(|c| (fresnel_schlick(c, v) - fresnel_dielectric(c, v)).abs())
+                .fold(0.0, f64::max);
+            assert!((worst - gap).abs() < 5e-4, "μ = {mu}: {worst}");
+        }
+    }
+
+    #[test]
+    fn presets_and_names_round_trip() {
+        for (name, d) in Distribution::ALL {
+            assert_eq!(d.to_string(), name);
+            assert_eq!(name.parse::<Distribution>(), Ok(d));
+        }
+        for (name, g) in Masking::ALL {
+            assert_eq!(name.parse::<Masking>(), Ok(g));
+        }
+        for (name, f) in Fresnel::ALL {
+            assert_eq!(name.parse::<Fresnel>(), Ok(f));
+        }
+        assert!("blinn".parse::<Distribution>().unwrap_err().contains("beckmann, ggx"));
+        assert_eq!(Microfacet::CHAPTER.code(), 0);
+        assert_ne!(Microfacet::GLTF.code(), 0);
+    }
 }

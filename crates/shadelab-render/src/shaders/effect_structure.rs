@@ -56,6 +56,10 @@ const SURFACE: [Effect; 7] = [
 /// points reach them, so their subsets are validated on a few bases.
 const GLASS: [Effect; 3] = [Effect::Transmission, Effect::Refraction, Effect::Absorption];
 
+/// The microfacet terms (microfacet.wgsl): reached only through Cook–Torrance's specular, so
+/// their subsets are validated on a few bases.
+const MICROFACET: [Effect; 7] = shadelab_model::effects::MICROFACET_EFFECTS;
+
 /// The keys of every subset of `effects`.
 fn subsets(effects: &[Effect]) -> Vec<EffectKey> {
     (0..1u32 << effects.len())
@@ -76,7 +80,7 @@ fn every_permutation_validates_in_naga() {
     let raw = raw_lighting_source();
     let outside: Vec<Effect> = Effect::ALL
         .into_iter()
-        .filter(|e| !INSIDE_SHADOWS.contains(e) && !SURFACE.contains(e) && !AREA.contains(e) && !GLASS.contains(e))
+        .filter(|e| ![&INSIDE_SHADOWS[..], &SURFACE, &AREA, &GLASS, &MICROFACET].iter().any(|group| group.contains(e)))
         .collect();
     let all_inside: EffectKey = INSIDE_SHADOWS.into_iter().collect();
     let mut keys: Vec<EffectKey> = subsets(&outside).into_iter().map(|k| union(k, all_inside)).collect();
@@ -121,6 +125,17 @@ fn every_permutation_validates_in_naga() {
     for base in glass_bases {
         let base = GLASS.into_iter().fold(base, |k, e| k.without(e));
         keys.extend(subsets(&GLASS).into_iter().map(|k| union(k, base)));
+    }
+    // The microfacet terms on every other effect, on Cook–Torrance alone, and with glass (whose
+    // Fresnel is the exact F's function).
+    let microfacet_bases: [EffectKey; 3] = [
+        EffectKey::UBER,
+        [Effect::PointLights, Effect::SpecularCookTorrance].into_iter().collect(),
+        [Effect::DirectionalLights, Effect::SpecularCookTorrance, Effect::Transmission].into_iter().collect(),
+    ];
+    for base in microfacet_bases {
+        let base = MICROFACET.into_iter().fold(base, |k, e| k.without(e));
+        keys.extend(subsets(&MICROFACET).into_iter().map(|k| union(k, base)));
     }
     for key in keys {
         let src = lighting_source_for(&raw, key).unwrap();
@@ -258,6 +273,32 @@ fn a_permutation_without_an_effect_has_no_code_for_it() {
                 }
             }
         }
+    }
+}
+
+/// The exact F declares no function (the glass shares `fresnel_dielectric`), so its own check: in
+/// an opaque Cook–Torrance permutation, the specular reaches `fresnel_dielectric` exactly when
+/// the exact F is in, and `fresnel_schlick` exactly when Schlick's is.
+#[test]
+fn the_exact_fresnel_is_reached_only_with_its_effect() {
+    let raw = raw_lighting_source();
+    let base: EffectKey =
+        [Effect::PointLights, Effect::SpecularCookTorrance, Effect::DistributionGgx].into_iter().collect();
+    for (exact, schlick) in [(true, false), (false, true), (true, true), (false, false)] {
+        let mut key = base;
+        if exact {
+            key = key.with(Effect::FresnelExact);
+        }
+        if schlick {
+            key = key.with(Effect::FresnelSchlick);
+        }
+        let module = parse(&lighting_source_for(&raw, key).unwrap());
+        let (_, fs) = entry_points(ShadingMode::Phong);
+        let called: Vec<String> =
+            reachable(&module, fs).into_iter().filter_map(|f| module.functions[f].name.clone()).collect();
+        assert_eq!(called.iter().any(|f| f == "fresnel_dielectric"), exact, "{}", key.label());
+        assert_eq!(called.iter().any(|f| f == "fresnel_schlick"), schlick, "{}", key.label());
+        assert!(called.iter().any(|f| f == "d_ggx") && !called.iter().any(|f| f == "d_beckmann"), "{}", key.label());
     }
 }
 

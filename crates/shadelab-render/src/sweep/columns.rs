@@ -33,7 +33,7 @@ pub struct Column {
 const D_MAX: f64 = 1.0 / (4.0 * M_MIN * M_MIN);
 
 /// Every column in the order the kernel writes them (and the report lists them).
-pub const COLUMNS: [Column; 46] = [
+pub const COLUMNS: [Column; 51] = [
     col("diffuse_lambert", "DIFFUSE_LAMBERT", 1, 1.0, "N·L of unit vectors"),
     col("specular_phong", "SPECULAR_PHONG", 1, 1.0, "(V·R)^h with V·R clamped to [0, 1]"),
     col("d_beckmann", "D_BECKMANN", 1, D_MAX, "peak 1/(4 m²) at m = M_MIN"),
@@ -42,6 +42,17 @@ pub const COLUMNS: [Column; 46] = [
     col(
         "specular_cook_torrance",
         "SPECULAR_COOK_TORRANCE",
+        3,
+        D_MAX / N_DOT_V_MIN,
+        "F·D·G/(N·V) ≤ 1 · 1/(4 M_MIN²) · 1 / N_DOT_V_MIN",
+    ),
+    col("d_ggx", "D_GGX", 1, D_MAX, "peak 1/(4 α²) at α = m = M_MIN, as Beckmann's"),
+    col("g_smith_separable (GGX, Beckmann)", "G_SMITH_SEPARABLE", 2, 1.0, "a product of two G1 in [0, 1]"),
+    col("g_smith_correlated (GGX, Beckmann)", "G_SMITH_CORRELATED", 2, 1.0, "1/(1 + Λv + Λl), Λ ≥ 0"),
+    col("microfacet_f (fresnel_schlick at V·H)", "MICROFACET_F_SCHLICK", 3, 1.0, "F0 + (1 − F0)(1 − c)⁵, F0 in [0, 1]"),
+    col(
+        "specular_microfacet (glTF: GGX, correlated Smith, Schlick)",
+        "SPECULAR_MICROFACET_GLTF",
         3,
         D_MAX / N_DOT_V_MIN,
         "F·D·G/(N·V) ≤ 1 · 1/(4 M_MIN²) · 1 / N_DOT_V_MIN",
@@ -215,6 +226,11 @@ const D_BECKMANN: usize = offset("D_BECKMANN");
 const G_COOK_TORRANCE: usize = offset("G_COOK_TORRANCE");
 const MICROFACET_F: usize = offset("MICROFACET_F");
 const SPECULAR_COOK_TORRANCE: usize = offset("SPECULAR_COOK_TORRANCE");
+const D_GGX: usize = offset("D_GGX");
+const G_SMITH_SEPARABLE: usize = offset("G_SMITH_SEPARABLE");
+const G_SMITH_CORRELATED: usize = offset("G_SMITH_CORRELATED");
+const MICROFACET_F_SCHLICK: usize = offset("MICROFACET_F_SCHLICK");
+const SPECULAR_MICROFACET_GLTF: usize = offset("SPECULAR_MICROFACET_GLTF");
 const FALLOFF_QUADRATIC: usize = offset("FALLOFF_QUADRATIC");
 const FALLOFF_LINEAR: usize = offset("FALLOFF_LINEAR");
 const CONTRIBUTION_PHONG: usize = offset("CONTRIBUTION_PHONG");
@@ -280,6 +296,7 @@ pub(super) fn reference(
     // NaN marks a column not written (a test checks there is none).
     let mut out = [f64::NAN; OUTPUTS];
     light_columns(&mut out, &inp);
+    microfacet_columns(&mut out, &inp);
     shadow_map_columns(&mut out, &inp, shadow);
     surface_map_columns(&mut out, &inp);
     area_columns(&mut out, &inp);
@@ -369,6 +386,22 @@ fn light_columns(out: &mut [f64; OUTPUTS], inp: &Combination) {
     rgb(out, TRANSMITTED_TERM, models::transmitted_term(linear.radiance, SWEEP_COLOR, m));
     out[SPOT_CONE] = lights::spot_cone(v.dot(l), inner.cos() * l_len, outer.cos() * l_len);
     out[WINDOW_RANGE] = lights::window_range(d, d0);
+}
+
+/// The microfacet terms beyond the chapter's: GGX's D, Smith's G on both distributions, Schlick's
+/// F and the glTF preset's whole specular.
+fn microfacet_columns(out: &mut [f64; OUTPUTS], inp: &Combination) {
+    use microfacet::Distribution::{Beckmann, Ggx};
+    let Combination { n, v, l, m, v_index, .. } = *inp;
+    let half = common::safe_normalize(l + v, n);
+    let (nv, nl) = (n.dot(v), n.dot(l));
+    out[D_GGX] = microfacet::d_ggx(n.dot(half), n.cross(half).length_squared(), m);
+    out[G_SMITH_SEPARABLE] = microfacet::g_smith_separable(Ggx, nv, nl, m);
+    out[G_SMITH_SEPARABLE + 1] = microfacet::g_smith_separable(Beckmann, nv, nl, m);
+    out[G_SMITH_CORRELATED] = microfacet::g_smith_correlated(Ggx, nv, nl, m);
+    out[G_SMITH_CORRELATED + 1] = microfacet::g_smith_correlated(Beckmann, nv, nl, m);
+    rgb(out, MICROFACET_F_SCHLICK, microfacet::microfacet_f(Microfacet::GLTF, v.dot(half), v_index));
+    rgb(out, SPECULAR_MICROFACET_GLTF, microfacet::specular_microfacet(n, v, l, m, v_index, Microfacet::GLTF));
 }
 
 /// The shadow-map columns: the cube face, the texel's world size and the map coordinate.

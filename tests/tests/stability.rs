@@ -96,6 +96,7 @@ fn phong_shading_of_a_fine_sphere_matches_the_f64_reference() {
 #[test]
 fn every_microfacet_combination_matches_the_f64_reference() {
     use shadelab_model::lighting::microfacet::{Distribution, Fresnel, Masking, Microfacet};
+    use shadelab_model::params::NamedValue;
     let (w, h) = (320, 180);
     // A rim light from behind and to the side: its highlight lies where N·L and N·V are small,
     // where G and F differ most between the forms.
@@ -104,9 +105,9 @@ fn every_microfacet_combination_matches_the_f64_reference() {
     base.lights = vec![Light::directional(DVec3::new(-1.0, -0.3, 1.2).normalize(), [1.0; 3], 1.0)];
     let chapter = render_reference(&base, SpecularModel::CookTorrance, w, h);
     let mut worst_mean: f64 = 0.0;
-    for (_, d) in Distribution::ALL {
-        for (_, g) in Masking::ALL {
-            for (_, f) in Fresnel::ALL {
+    for &(_, d) in Distribution::ALL {
+        for &(_, g) in Masking::ALL {
+            for &(_, f) in Fresnel::ALL {
                 let mut scene = base.clone();
                 scene.materials.iter_mut().for_each(|m| m.microfacet = Microfacet { d, g, f });
                 let settings = RenderSettings::new(ShadingMode::Phong, SpecularModel::CookTorrance);

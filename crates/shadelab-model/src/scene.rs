@@ -24,6 +24,7 @@ pub use texture::{
     srgb_to_linear, texture_uv,
 };
 
+use crate::lighting::microfacet::Microfacet;
 use crate::params::*;
 use crate::shadow_settings::{ShadowFilter, ShadowSettings};
 use glam::{DMat3, DMat4, DVec3};
@@ -173,6 +174,22 @@ pub struct Overrides {
     pub shadow_cascades: Option<bool>,
     /// The illumination model (`--model`, with the specular model it fixes kept elsewhere).
     pub illumination: Option<crate::params::IlluminationModel>,
+    /// Every material's three microfacet terms (`--microfacet chapter|gltf`), before the terms
+    /// given one by one.
+    pub microfacet: Option<Microfacet>,
+    pub distribution: Option<crate::lighting::microfacet::Distribution>,
+    pub masking: Option<crate::lighting::microfacet::Masking>,
+    pub fresnel: Option<crate::lighting::microfacet::Fresnel>,
+}
+
+/// The microfacet overrides on one material's terms: the preset, then each term given.
+fn apply_terms(t: &mut Microfacet, o: &Overrides) {
+    if let Some(preset) = o.microfacet {
+        *t = preset;
+    }
+    t.d = o.distribution.unwrap_or(t.d);
+    t.g = o.masking.unwrap_or(t.g);
+    t.f = o.fresnel.unwrap_or(t.f);
 }
 
 impl Overrides {
@@ -231,6 +248,7 @@ impl Scene {
             if let Some(a) = o.absorption_coef {
                 mat.absorption = a;
             }
+            apply_terms(&mut mat.microfacet, o);
         }
         for light in &mut self.lights {
             if let Some(kind) = o.light {

@@ -116,3 +116,35 @@ fn explain_says_which_textures_a_mode_leaves_out() {
     let phong = run("phong");
     assert!(phong.contains("+mrtex+aotex+emit+emittex+normtex]") && !phong.contains("not drawn"), "{phong}");
 }
+
+/// A plain glTF file opens with the glTF BRDF and `--explain` says which terms are in and why;
+/// `--microfacet chapter` is the chapter's model one switch away, a term flag overrides one term,
+/// and the two images differ. A bad term name is one line and exit 2.
+#[test]
+fn a_gltf_file_opens_with_the_gltf_brdf_and_the_chapters_is_one_switch_away() {
+    let scene = "../shared/gltf-samples/BoxTextured.gltf";
+    let run = |extra: &[&str], png: &str| {
+        let mut args = vec!["render", "--explain", "--scene", scene, "--width", "96", "--height", "54"];
+        args.extend(extra);
+        args.extend(["--output", png]);
+        let o = shadelab(&args);
+        ok(&o);
+        String::from_utf8_lossy(&o.stdout).into_owned()
+    };
+    let (a, b) = (out("box-gltf.png"), out("box-chapter.png"));
+    let gltf = run(&[], &a);
+    for line in ["GGX D (Trowbridge–Reitz): on — used by", "Smith G, height-correlated", "Schlick's"] {
+        assert!(gltf.contains(line), "{line} in {gltf}");
+    }
+    assert!(gltf.contains("Beckmann D (the chapter's): off — no material with r_s > 0 uses it"), "{gltf}");
+    assert!(gltf.contains("+ggx+smith-hc+schlick+") && !gltf.contains("beckmann+"), "{gltf}");
+    let chapter = run(&["--microfacet", "chapter"], &b);
+    assert!(chapter.contains("+beckmann+vgroove+exact-f+") && !chapter.contains("ggx+"), "{chapter}");
+    assert!(std::fs::read(&a).unwrap() != std::fs::read(&b).unwrap(), "the two BRDFs draw the same image");
+    let one = run(&["--microfacet", "chapter", "--fresnel", "schlick"], &b);
+    assert!(one.contains("+beckmann+vgroove+schlick+"), "{one}");
+    let o = shadelab(&["render", "--scene", scene, "--masking", "smiths", "--output", &b]);
+    assert_eq!(o.status.code(), Some(2));
+    let e = String::from_utf8_lossy(&o.stderr);
+    assert!(e.contains("smiths") && e.contains("v-groove, smith, smith-correlated"), "{e}");
+}

@@ -2,9 +2,10 @@
 //! `_transmission` and `_volume` extensions mapped to the chapter's material (the table in the
 //! module's parent), and back; the exact parameters travel in `extras.shadelab`.
 
-use super::extras::{self, Absorption, Ior, Mu, Num, Phong, Rgb, Roughness, Thickness, Unit};
+use super::extras::{self, Absorption, Ior, Mu, Named, Num, Phong, Rgb, Roughness, Thickness, Unit};
 use super::scene_file::{Reader, num, rgb};
 use super::{ATTENUATION_COLOR_MIN, DEFAULT_IOR, DIELECTRIC_MU_MAX, GltfError, dielectric_f0, m_from_roughness};
+use crate::lighting::microfacet::{Distribution, Fresnel, Masking, Microfacet};
 use crate::params::{ParamRange, PhongExponent};
 use crate::scene::{Material, MetalRoughnessMap, NormalMap, OcclusionMap, Scene};
 use gltf::json;
@@ -57,6 +58,14 @@ struct MaterialExtras {
     /// The refractive index v given directly (`Material::ior`); absent: from μ.
     #[serde(skip_serializing_if = "Option::is_none")]
     ior: Option<Rgb<Ior>>,
+    /// The Cook–Torrance terms D, G and F (`Material::microfacet`); each absent: the chapter's
+    /// term when the material has `extras.shadelab`, else glTF's (docs/scene-files.md).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    distribution: Option<Named<Distribution>>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    masking: Option<Named<Masking>>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    fresnel: Option<Named<Fresnel>>,
 }
 
 impl Reader<'_> {
@@ -206,6 +215,14 @@ impl Reader<'_> {
         if let Some(v) = ex.mf0 {
             mf0 = v.0;
         }
+        // A material that states the chapter's parameters keeps the chapter's terms; a plain
+        // glTF material is drawn with the BRDF it was authored for (the glTF specification's).
+        let terms = if extras::has_shadelab(&m.extras) { Microfacet::CHAPTER } else { Microfacet::GLTF };
+        mat.microfacet = Microfacet {
+            d: ex.distribution.map_or(terms.d, |n| n.0),
+            g: ex.masking.map_or(terms.g, |n| n.0),
+            f: ex.fresnel.map_or(terms.f, |n| n.0),
+        };
         Ok((mat, mf0))
     }
 }
@@ -305,6 +322,9 @@ pub(super) fn write_material(m: &Material, extensions_used: &mut Vec<&'static st
         emission: (m.emission != [0.0; 3]).then(|| m.emission.into()),
         mf0: m.maps.metal_roughness.map(|mr| mr.metallic_f0.into()),
         ior: m.ior.map(Into::into),
+        distribution: Some(Named(m.microfacet.d)),
+        masking: Some(Named(m.microfacet.g)),
+        fresnel: Some(Named(m.microfacet.f)),
     };
     let mut out = json!({
         "name": m.name,

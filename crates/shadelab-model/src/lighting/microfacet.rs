@@ -6,6 +6,7 @@
 
 use super::common::safe_normalize;
 use crate::guards::*;
+use crate::params::NamedValue;
 use glam::DVec3;
 
 /// The facet distribution D.
@@ -42,52 +43,72 @@ pub enum Fresnel {
 }
 
 impl Distribution {
-    /// Each distribution by its name; `DISTRIBUTION_<NAME>` is its WGSL code.
-    pub const ALL: [(&'static str, Distribution); 2] =
-        [("beckmann", Distribution::Beckmann), ("ggx", Distribution::Ggx)];
+    /// `DISTRIBUTION_<NAME>` in WGSL.
     pub fn code(self) -> u32 {
         self as u32
     }
 }
 
 impl Masking {
-    /// Each masking term by its name; `MASKING_<NAME>` is its WGSL code.
-    pub const ALL: [(&'static str, Masking); 3] =
-        [("v-groove", Masking::VGroove), ("smith", Masking::Smith), ("smith-correlated", Masking::SmithCorrelated)];
+    /// `MASKING_<NAME>` in WGSL.
     pub fn code(self) -> u32 {
         self as u32
     }
 }
 
 impl Fresnel {
-    /// Each Fresnel factor by its name; `FRESNEL_<NAME>` is its WGSL code.
-    pub const ALL: [(&'static str, Fresnel); 2] = [("exact", Fresnel::Exact), ("schlick", Fresnel::Schlick)];
+    /// `FRESNEL_<NAME>` in WGSL.
     pub fn code(self) -> u32 {
         self as u32
     }
 }
 
-/// The name of a term's variant in its `ALL` table (the CLI's, the files' and the panel's word).
+impl NamedValue for Distribution {
+    const FLAG: &'static str = "--distribution";
+    const ALL: &'static [(&'static str, Self)] = &[("beckmann", Distribution::Beckmann), ("ggx", Distribution::Ggx)];
+}
+
+impl NamedValue for Masking {
+    const FLAG: &'static str = "--masking";
+    const ALL: &'static [(&'static str, Self)] =
+        &[("v-groove", Masking::VGroove), ("smith", Masking::Smith), ("smith-correlated", Masking::SmithCorrelated)];
+}
+
+impl NamedValue for Fresnel {
+    const FLAG: &'static str = "--fresnel";
+    const ALL: &'static [(&'static str, Self)] = &[("exact", Fresnel::Exact), ("schlick", Fresnel::Schlick)];
+}
+
+/// The presets by name (`--microfacet`); a combination that is no preset has no name of its own.
+impl NamedValue for Microfacet {
+    const FLAG: &'static str = "--microfacet";
+    const ALL: &'static [(&'static str, Self)] = &[("chapter", Microfacet::CHAPTER), ("gltf", Microfacet::GLTF)];
+}
+
+/// A term's name (the CLI's, the files' and the panel's word) and its parse.
 macro_rules! named_term {
     ($($t:ty),*) => {$(
         impl std::fmt::Display for $t {
             fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-                let name = <$t>::ALL.iter().find(|(_, v)| v == self).map_or("?", |(n, _)| n);
-                f.write_str(name)
+                f.write_str(self.name())
             }
         }
         impl std::str::FromStr for $t {
-            type Err = String;
-            fn from_str(s: &str) -> Result<Self, String> {
-                <$t>::ALL.iter().find(|(n, _)| *n == s).map(|(_, v)| *v).ok_or_else(|| {
-                    let names: Vec<&str> = <$t>::ALL.iter().map(|(n, _)| *n).collect();
-                    format!("'{s}' is not one of {}", names.join(", "))
-                })
+            type Err = crate::params::ParamError;
+            fn from_str(s: &str) -> Result<Self, Self::Err> {
+                Self::parse_named(s)
             }
         }
     )*};
 }
 named_term!(Distribution, Masking, Fresnel);
+
+/// `d/g/f`, e.g. `ggx/smith-correlated/schlick`.
+impl std::fmt::Display for Microfacet {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "{}/{}/{}", self.d, self.g, self.f)
+    }
+}
 
 /// The D, G and F a material's specular uses, each chosen on its own.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
@@ -106,8 +127,6 @@ impl Microfacet {
     /// The glTF 2.0 specification's terms (its Appendix B), also Filament's: GGX D, the
     /// height-correlated Smith G and Schlick's F, with α = m (docs/model.md §5).
     pub const GLTF: Microfacet = Microfacet { d: Distribution::Ggx, g: Masking::SmithCorrelated, f: Fresnel::Schlick };
-    /// The presets by name (`--microfacet`).
-    pub const PRESETS: [(&'static str, Microfacet); 2] = [("chapter", Microfacet::CHAPTER), ("gltf", Microfacet::GLTF)];
 
     /// `object.microfacet` in WGSL: D in bits 0–7, G in 8–15, F in 16–23.
     pub fn code(self) -> u32 {
@@ -376,17 +395,19 @@ mod tests {
 
     #[test]
     fn presets_and_names_round_trip() {
-        for (name, d) in Distribution::ALL {
+        for &(name, d) in Distribution::ALL {
             assert_eq!(d.to_string(), name);
-            assert_eq!(name.parse::<Distribution>(), Ok(d));
+            assert_eq!(name.parse::<Distribution>().unwrap(), d);
         }
-        for (name, g) in Masking::ALL {
-            assert_eq!(name.parse::<Masking>(), Ok(g));
+        for &(name, g) in Masking::ALL {
+            assert_eq!(name.parse::<Masking>().unwrap(), g);
         }
-        for (name, f) in Fresnel::ALL {
-            assert_eq!(name.parse::<Fresnel>(), Ok(f));
+        for &(name, f) in Fresnel::ALL {
+            assert_eq!(name.parse::<Fresnel>().unwrap(), f);
         }
-        assert!("blinn".parse::<Distribution>().unwrap_err().contains("beckmann, ggx"));
+        assert!("blinn".parse::<Distribution>().unwrap_err().to_string().contains("beckmann, ggx"));
+        assert_eq!(Microfacet::GLTF.to_string(), "ggx/smith-correlated/schlick");
+        assert_eq!(Microfacet::parse_named("gltf").unwrap(), Microfacet::GLTF);
         assert_eq!(Microfacet::CHAPTER.code(), 0);
         assert_ne!(Microfacet::GLTF.code(), 0);
     }

@@ -87,5 +87,9 @@ pub fn overrides(a: &SceneArgs) -> Overrides {
         shadow_cascades: a.shadow_cascades,
         // `--model` is a mode flag (ModeArgs::settle).
         illumination: None,
+        microfacet: a.microfacet,
+        distribution: a.distribution,
+        masking: a.masking,
+        fresnel: a.fresnel,
     }
 }

@@ -13,6 +13,7 @@ use crate::Failure;
 use clap::{Args, Parser, Subcommand};
 use shadelab_model::gltf_io::{LoadedScene, SceneSettings};
 use shadelab_model::params::{self, PhongExponent};
+use shadelab_model::lighting::microfacet::{Distribution, Fresnel, Masking, Microfacet};
 use shadelab_model::scene::BUILTIN_SCENES;
 use shadelab_model::shadows::{PCSS_TAPS, SHADOW_RESOLUTION, ShadowFilter};
 use shadelab_model::{
@@ -319,6 +320,21 @@ pub struct SceneArgs {
     /// [default: rule].
     #[arg(long, value_name = "exact|rule", value_parser = values::named::<shadelab_model::lighting::transmission::AbsorptionChoice>())]
     pub absorption: Option<shadelab_model::lighting::transmission::AbsorptionChoice>,
+    /// Every material's Cook–Torrance terms as a set: chapter (Beckmann D, V-groove G, exact F)
+    /// or gltf (GGX D, height-correlated Smith G, Schlick's F, as glTF 2.0 specifies) [default:
+    /// the scene file's; a glTF file without shadelab's extras opens with gltf]
+    #[arg(long, value_name = "SET", value_parser = values::named::<Microfacet>())]
+    pub microfacet: Option<Microfacet>,
+    /// Every material's facet distribution D, after --microfacet: beckmann (the chapter's) or ggx
+    #[arg(long, value_name = "D", value_parser = values::named::<Distribution>())]
+    pub distribution: Option<Distribution>,
+    /// Every material's masking–shadowing G, after --microfacet: v-groove (the chapter's), smith
+    /// (separable) or smith-correlated (height-correlated)
+    #[arg(long, value_name = "G", value_parser = values::named::<Masking>())]
+    pub masking: Option<Masking>,
+    /// Every material's Fresnel factor F, after --microfacet: exact (the chapter's) or schlick
+    #[arg(long, value_name = "F", value_parser = values::named::<Fresnel>())]
+    pub fresnel: Option<Fresnel>,
     #[arg(long, value_name = "ALPHA", value_parser = values::real(params::FALLOFF),
           help = within("Falloff factor α of every point and spot light, I0/(1 + α d²)", params::FALLOFF))]
     pub falloff: Option<f64>,

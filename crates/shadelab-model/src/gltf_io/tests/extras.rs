@@ -43,6 +43,27 @@ fn extras_null_values_and_several_bad_keys() {
 }
 
 #[test]
+fn a_plain_gltf_material_opens_with_the_gltf_brdf_and_extras_keep_the_chapters() {
+    use crate::lighting::microfacet::{Fresnel, Microfacet};
+    let material = |extras: Value| {
+        triangle(json!({
+            "materials": [{ "extras": extras }],
+            "meshes": [{ "primitives": [{ "attributes": { "POSITION": 0 }, "material": 0 }] }],
+        }))
+    };
+    let try_load = |bytes: &[u8]| load_scene_from_slice(bytes);
+    let plain = load(&material(json!({ "other": 1 })));
+    assert_eq!(plain.scene.materials[0].microfacet, Microfacet::GLTF);
+    // extras.shadelab without terms: the chapter's; one term named: that one, the others the chapter's.
+    let stated = load(&material(json!({ "shadelab": { "m": 0.3 } })));
+    assert_eq!(stated.scene.materials[0].microfacet, Microfacet::CHAPTER);
+    let one = load(&material(json!({ "shadelab": { "fresnel": "schlick" } })));
+    assert_eq!(one.scene.materials[0].microfacet, Microfacet { f: Fresnel::Schlick, ..Microfacet::CHAPTER });
+    let bad = try_load(&material(json!({ "shadelab": { "masking": "smiths" } }))).unwrap_err().to_string();
+    assert!(bad.contains("masking") && bad.contains("smith-correlated"), "{bad}");
+}
+
+#[test]
 fn extras_are_written_and_read_by_the_same_types() {
     // Every key of the module's `extras.shadelab` table is written, and read back exactly.
     let mut scene = Scene::builtin("sphere").unwrap();
@@ -52,6 +73,10 @@ fn extras_are_written_and_read_by_the_same_types() {
     };
     scene.materials[1].h = PhongExponent::Mirror;
     scene.materials[0].emission = [0.25, 0.5, 1.0];
+    scene.materials[1].microfacet = crate::lighting::microfacet::Microfacet {
+        d: crate::lighting::microfacet::Distribution::Ggx,
+        ..crate::lighting::microfacet::Microfacet::CHAPTER
+    };
     scene.lights[0].shadow = crate::shadows::ShadowSettings {
         casts: false,
         resolution: 300,
@@ -63,9 +88,11 @@ fn extras_are_written_and_read_by_the_same_types() {
     let doc: Value = serde_json::from_str(&scene_to_gltf_json(&scene, &settings)).unwrap();
     let keys = |v: &Value| v["extras"]["shadelab"].as_object().unwrap().keys().cloned().collect::<Vec<_>>().join(" ");
     // I_e only where the material emits, mf0 only with a metallic–roughness texture (tests/textures.rs).
-    assert_eq!(keys(&doc["materials"][0]), "C I_e a d h m mu mu_t r_a r_d r_s t");
-    assert_eq!(keys(&doc["materials"][1]), "C a d h m mu mu_t r_a r_d r_s t");
+    assert_eq!(keys(&doc["materials"][0]), "C I_e a d distribution fresnel h m masking mu mu_t r_a r_d r_s t");
+    assert_eq!(keys(&doc["materials"][1]), "C a d distribution fresnel h m masking mu mu_t r_a r_d r_s t");
     assert_eq!(doc["materials"][1]["extras"]["shadelab"]["h"], json!("mirror"));
+    assert_eq!(doc["materials"][1]["extras"]["shadelab"]["distribution"], json!("ggx"));
+    assert_eq!(doc["materials"][1]["extras"]["shadelab"]["masking"], json!("v-groove"));
     assert_eq!(
         keys(&doc["extensions"]["KHR_lights_punctual"]["lights"][0]),
         "I_L alpha casts_shadows color d0 direction falloff_form inner_cone outer_cone pcss_taps position range \

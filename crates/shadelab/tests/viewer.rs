@@ -64,6 +64,35 @@ fn clicking_the_specular_model_changes_the_image() {
     assert!(changed > 2000, "only {changed} pixels of the view changed");
 }
 
+/// The Cook–Torrance terms section: "all gltf" gives every material glTF's terms and changes the
+/// image; the selected material's D menu switches its D alone, live.
+#[test]
+fn the_terms_section_switches_each_term_live() {
+    use shadelab_model::lighting::microfacet::{Distribution, Microfacet};
+    let mut h = harness();
+    let before = h.render().expect("render");
+    h.get_by_label_contains("Cook–Torrance terms").scroll_to_me();
+    h.run_steps(20);
+    h.get_by_label_contains("Cook–Torrance terms").click();
+    h.run_steps(3);
+    h.get_by_label("all gltf").click();
+    h.run_steps(3);
+    let materials = h.state_mut().scene_mut().materials.clone();
+    assert!(materials.iter().all(|m| m.microfacet == Microfacet::GLTF));
+    let after = h.render().expect("render");
+    let changed = changed_view_pixels(&before, &after);
+    assert!(changed > 2000, "only {changed} pixels of the view changed");
+    h.get_by_label("all chapter").click();
+    h.run_steps(3);
+    h.get_by_label("D").click();
+    h.run_steps(3);
+    h.get_by_label("ggx").click();
+    h.run_steps(3);
+    let materials = h.state_mut().scene_mut().materials.clone();
+    let ggx: Vec<bool> = materials.iter().map(|m| m.microfacet.d == Distribution::Ggx).collect();
+    assert_eq!(ggx.iter().filter(|g| **g).count(), 1, "{ggx:?}");
+}
+
 /// The term row shows one term of the model alone; "all" brings the whole model back, and the
 /// scene's own coefficients are untouched by the view.
 #[test]
@@ -328,6 +357,8 @@ fn a_lights_casts_shadows_box_switches_its_shadows() {
     assert!(before.iter().all(|l| l.shadow.casts));
     // Collapsed sections show no shadow controls.
     assert!(h.query_by_label("casts shadows").is_none());
+    h.get_by_label("L1 — directional").scroll_to_me();
+    h.run_steps(20);
     h.get_by_label("L1 — directional").click();
     h.run_steps(2);
     // The box may be below the panel's fold: scroll to it first (the scroll is animated).

@@ -37,6 +37,9 @@ impl Viewer {
             );
         }
         slider(ui, &mut mat.m, &params::M, false);
+        let cook_torrance = self.settings.specular == shadelab_model::SpecularModel::CookTorrance;
+        super::microfacet::microfacet_ui(ui, &mut self.scene.materials, self.selected_material, cook_torrance);
+        let mat = &mut self.scene.materials[self.selected_material];
         let mut mirror = mat.h.is_mirror();
         let mut h = mat.h.value();
         ui.horizontal(|ui| {

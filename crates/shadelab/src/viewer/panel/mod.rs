@@ -8,6 +8,7 @@ mod glass;
 mod lights;
 mod live;
 mod material;
+mod microfacet;
 mod scene;
 
 use super::Viewer;

@@ -1,0 +1,51 @@
+//! The panel's Cook–Torrance terms: the selected material's D, G and F, each switched live, and
+//! the two sets (the chapter's, glTF's) for every material at once (docs/model.md §5).
+
+use eframe::egui;
+use shadelab_model::Material;
+use shadelab_model::lighting::microfacet::{Distribution, Fresnel, Masking, Microfacet};
+use shadelab_model::params::NamedValue;
+
+/// One term's menu: its values by name, the chosen one selected.
+fn term_menu<T: NamedValue + PartialEq + std::fmt::Display>(ui: &mut egui::Ui, label: &str, tip: &str, v: &mut T) {
+    egui::ComboBox::from_label(label)
+        .selected_text(v.to_string())
+        .show_ui(ui, |ui| {
+            for &(name, value) in T::ALL {
+                ui.selectable_value(v, value, name);
+            }
+        })
+        .response
+        .on_hover_text(tip);
+}
+
+/// The terms row: D, G and F of `selected`, and the sets for all of `materials`. Only
+/// Cook–Torrance specular reads them, which `active` says.
+pub(super) fn microfacet_ui(ui: &mut egui::Ui, materials: &mut [Material], selected: usize, active: bool) {
+    let t = materials[selected].microfacet;
+    let title = format!("Cook–Torrance terms: {t}");
+    let header = egui::CollapsingHeader::new(title).id_salt("microfacet terms").show(ui, |ui| terms_ui(ui, materials, selected));
+    header.header_response.on_hover_text(if active {
+        "Cook–Torrance's D, G and F for this material"
+    } else {
+        "Cook–Torrance's D, G and F: the specular model is Phong, which does not use them"
+    });
+}
+
+/// The opened section: the sets for every material, and the selected material's three menus.
+fn terms_ui(ui: &mut egui::Ui, materials: &mut [Material], selected: usize) {
+    ui.horizontal_wrapped(|ui| {
+        for (name, set) in Microfacet::ALL {
+            let tip = format!("every material: {set}");
+            if ui.small_button(format!("all {name}")).on_hover_text(tip).clicked() {
+                materials.iter_mut().for_each(|m| m.microfacet = *set);
+            }
+        }
+    });
+    let t = &mut materials[selected].microfacet;
+    ui.horizontal_wrapped(|ui| {
+        term_menu::<Distribution>(ui, "D", "facet distribution: beckmann (the chapter's) or ggx", &mut t.d);
+        term_menu::<Masking>(ui, "G", "masking–shadowing: v-groove (the chapter's), smith or smith-correlated", &mut t.g);
+        term_menu::<Fresnel>(ui, "F", "Fresnel factor: exact (the chapter's) or schlick", &mut t.f);
+    });
+}

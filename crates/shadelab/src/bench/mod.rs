@@ -6,6 +6,7 @@ pub mod effects;
 pub mod glass;
 pub mod load;
 pub mod mesh;
+pub mod microfacet;
 pub mod penumbra;
 pub mod render;
 pub mod shadows;

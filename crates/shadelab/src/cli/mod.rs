@@ -158,6 +158,12 @@ pub enum BenchCommand {
     /// Whitted reference; the chapter's absorption rule against the exact form at a range of a·d,
     /// its error beside the time it saves. Writes a Markdown report, CSVs and error maps.
     Glass(BenchGlassArgs),
+    /// What each Cook–Torrance term costs against what it changes: the default scene with each
+    /// of the 12 combinations of D, G and F, timed side by side against the null shader; each
+    /// combination's f64 reference against the chapter's and the GPU against its own; maps of
+    /// where a term's change lies; Schlick's F against the exact factor per μ. Writes a Markdown
+    /// report, CSVs and the maps.
+    Microfacet(BenchMicrofacetArgs),
 }
 
 #[derive(Args, Debug)]
@@ -176,6 +182,25 @@ pub struct BenchGlassArgs {
     pub warmup: u32,
     /// Folder for glass.md, glass-methods.csv, glass-rule.csv and the rule's error maps.
     #[arg(long, default_value = "bench-glass", value_name = "DIR")]
+    pub output: PathBuf,
+}
+
+#[derive(Args, Debug)]
+pub struct BenchMicrofacetArgs {
+    #[arg(long, default_value = "480", value_parser = values::count(params::WIDTH),
+          help = within("Width in pixels", params::WIDTH))]
+    pub width: u32,
+    #[arg(long, default_value = "270", value_parser = values::count(params::HEIGHT),
+          help = within("Height in pixels", params::HEIGHT))]
+    pub height: u32,
+    #[arg(long, default_value = "20", value_parser = values::count(FRAMES),
+          help = within("Measured frames per row (after warm-up)", FRAMES))]
+    pub frames: u32,
+    #[arg(long, default_value = "2", value_parser = values::count(WARMUP),
+          help = within("Warm-up frames per row (not measured)", WARMUP))]
+    pub warmup: u32,
+    /// Folder for microfacet.md, microfacet-combos.csv, microfacet-schlick.csv and the maps.
+    #[arg(long, default_value = "bench-microfacet", value_name = "DIR")]
     pub output: PathBuf,
 }
 

@@ -98,30 +98,10 @@ fn brdf_is_reciprocal() {
     }
 }
 
-/// Directional albedo of the Cook–Torrance lobe with F = 1 (a white furnace): the share of
-/// light from direction V that the specular lobe reflects, ∫ ρ_s (N·L) dω_L, by importance
-/// sampling the Beckmann distribution on a stratified grid.
+/// Directional albedo of the chapter's Cook–Torrance lobe with F = 1 (a white furnace,
+/// [`crate::furnace`]).
 fn white_furnace_albedo(m: f64, theta_v: f64) -> f64 {
-    let n = DVec3::Y;
-    let v = dir(theta_v, 0.0);
-    let grid = 512;
-    let mut sum = 0.0;
-    for i in 0..grid {
-        for j in 0..grid {
-            let (u1, u2) = ((i as f64 + 0.5) / grid as f64, (j as f64 + 0.5) / grid as f64);
-            let tan2 = -m * m * (1.0 - u1).ln();
-            let theta_h = tan2.sqrt().atan();
-            let h = dir(theta_h, 2.0 * PI * u2);
-            let l = 2.0 * v.dot(h) * h - v;
-            let (nl, nv, nh, vh) = (n.dot(l), n.dot(v), n.dot(h), v.dot(h));
-            if nl <= 0.0 || vh <= 0.0 {
-                continue;
-            }
-            // ρ_s (N·L) / pdf(L) with pdf(L) = D_B (N·H) / (4 V·H) and F = 1.
-            sum += g_cook_torrance(nh, nv, nl, vh) * vh / (nv * nh);
-        }
-    }
-    sum / (grid * grid) as f64
+    crate::furnace::directional_albedo(crate::lighting::microfacet::Microfacet::CHAPTER, m, theta_v.cos(), 512)
 }
 
 #[test]

@@ -4,6 +4,7 @@
 pub mod assets;
 pub mod brdf;
 pub mod effects;
+pub mod furnace;
 pub mod gltf_io;
 pub mod guards;
 #[cfg(test)]

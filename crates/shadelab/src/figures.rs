@@ -9,10 +9,11 @@ use clap::Parser;
 use std::path::Path;
 
 /// The scene files written beside the figures: (file name, the scene).
-fn scene_files() -> [(&'static str, shadelab_model::Scene); 2] {
+fn scene_files() -> [(&'static str, shadelab_model::Scene); 3] {
     [
         ("figure-7-3-pyramid.gltf", shadelab_model::assets::figure_7_3_pyramid()),
         ("gouraud-vs-phong.gltf", shadelab_model::assets::gouraud_vs_phong()),
+        ("material-board.gltf", shadelab_model::assets::material_board()),
     ]
 }
 
@@ -65,6 +66,16 @@ pub const FIGURES: &[Figure] = &[
         file: "model-cook-torrance.png",
         caption: "7.3: Cook–Torrance, Beckmann D, the min() G and the exact Fresnel F",
         flags: &["--model", "cook-torrance"],
+    },
+    Figure {
+        file: "brdf-chapter.png",
+        caption: "7.3: the material board with the chapter's terms: Beckmann D, V-groove G, exact F",
+        flags: &["--scene", "material-board.gltf", "--microfacet", "chapter"],
+    },
+    Figure {
+        file: "brdf-gltf.png",
+        caption: "the same board with glTF 2.0's terms: GGX D (long tails), height-correlated Smith G, Schlick's F",
+        flags: &["--scene", "material-board.gltf", "--microfacet", "gltf"],
     },
     Figure {
         file: "interpolation-screen.png",

@@ -3,7 +3,7 @@
 //! the GPU follows each combination's own f64 reference as closely as the chapter's; each map
 //! shows its change.
 
-use shadelab::bench::microfacet::{MAPS, combos, markdown, schlick_rows};
+use shadelab::bench::microfacet::{MAPS, combos, furnace_rows, markdown, schlick_rows};
 use shadelab_model::lighting::microfacet::{Distribution, Microfacet};
 use shadelab_render::{AdapterChoice, Gpu};
 
@@ -29,6 +29,7 @@ fn every_combination_changes_the_model_and_the_gpu_follows_each() {
     for m in &maps {
         assert!(m.pixels.iter().any(|v| *v > 128), "{}: the map shows no change", m.stem);
     }
-    let md = markdown(&rows, null_ms, &maps, &schlick_rows(), "lavapipe", "test");
+    let md = markdown(&rows, null_ms, &maps, &schlick_rows(), &furnace_rows(), "lavapipe", "test");
+    assert!(md.contains("| beckmann / v-groove | 0.1 |") && md.contains("Loses most: ggx / "), "{md}");
     assert!(md.contains("| beckmann/v-groove/exact |") && md.contains("| gold B | 0.336 |"), "{md}");
 }

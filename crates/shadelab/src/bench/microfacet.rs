@@ -5,6 +5,8 @@
 //! error); maps of where one term's change lies; and Schlick's F against the exact factor per μ,
 //! the metals' presets included (an approximation of the same quantity).
 
+mod plot;
+
 use crate::{Failure, cli};
 use anyhow::Context;
 use shadelab_model::lighting::microfacet::{self, Distribution, Fresnel, Masking, Microfacet};
@@ -212,11 +214,80 @@ pub fn schlick_rows() -> Vec<SchlickRow> {
     rows
 }
 
+/// The furnace's roughnesses and view angles (degrees).
+pub const FURNACE_M: [f64; 5] = [0.1, 0.3, 0.5, 0.7, 1.0];
+pub const FURNACE_VIEW_DEG: [f64; 6] = [0.0, 30.0, 60.0, 75.0, 85.0, 89.0];
+
+/// One D × G pair's albedo `E` (F = 1) at each roughness (rows) and view angle (columns).
+pub struct FurnaceRow {
+    pub terms: Microfacet,
+    pub albedo: Vec<Vec<f64>>,
+}
+
+/// The white furnace over every D × G pair, roughness and view angle (f64, no GPU).
+pub fn furnace_rows() -> Vec<FurnaceRow> {
+    use shadelab_model::furnace::{FURNACE_SAMPLES, directional_albedo, pairs};
+    pairs()
+        .into_iter()
+        .map(|terms| FurnaceRow {
+            terms,
+            albedo: FURNACE_M
+                .iter()
+                .map(|&m| {
+                    FURNACE_VIEW_DEG
+                        .iter()
+                        .map(|deg: &f64| directional_albedo(terms, m, deg.to_radians().cos(), FURNACE_SAMPLES / 2))
+                        .collect()
+                })
+                .collect(),
+        })
+        .collect()
+}
+
+/// The furnace's table, and the cells above 1 and the one that loses most, named.
+fn furnace_markdown(s: &mut String, rows: &[FurnaceRow]) {
+    let _ = writeln!(
+        s,
+        "\nThe white furnace: the lobe's directional albedo E = (1/π) ∫ D·G/(N·V) dω_L with F = 1 (1: no energy lost), per D / G, roughness m and view angle θ_v:\n"
+    );
+    let head: Vec<String> = FURNACE_VIEW_DEG.iter().map(|d| format!("θ_v = {d}°")).collect();
+    let _ = writeln!(s, "| D / G | m | {} |", head.join(" | "));
+    let _ = writeln!(s, "|---|---:|{}", "---:|".repeat(FURNACE_VIEW_DEG.len()));
+    let (mut over, mut least) = (Vec::new(), (f64::INFINITY, String::new()));
+    for r in rows {
+        for (mi, m) in FURNACE_M.iter().enumerate() {
+            let cells: Vec<String> = r.albedo[mi].iter().map(|e| format!("{e:.4}")).collect();
+            let _ = writeln!(s, "| {} / {} | {m} | {} |", r.terms.d, r.terms.g, cells.join(" | "));
+            for (vi, e) in r.albedo[mi].iter().enumerate() {
+                let at = format!("{} / {} at m = {m}, θ_v = {}°", r.terms.d, r.terms.g, FURNACE_VIEW_DEG[vi]);
+                if *e > 1.0 + FURNACE_TOLERANCE {
+                    over.push(format!("{at} ({e:.4})"));
+                }
+                if *e < least.0 {
+                    least = (*e, at);
+                }
+            }
+        }
+    }
+    let _ = writeln!(
+        s,
+        "\nAbove 1 (more than {FURNACE_TOLERANCE} over): {}. Loses most: {} (E = {:.4}).",
+        if over.is_empty() { "none".to_string() } else { over.join("; ") },
+        least.1,
+        least.0
+    );
+}
+
+/// How far above 1 an albedo counts as gaining energy: the quadrature's error at
+/// `FURNACE_SAMPLES / 2` per side (its test holds it to 2e-3 against an independent one).
+const FURNACE_TOLERANCE: f64 = 2e-3;
+
 pub fn markdown(
     rows: &[ComboRow],
     null_ms: f64,
     maps: &[MapImage],
     schlick: &[SchlickRow],
+    furnace: &[FurnaceRow],
     device: &str,
     command: &str,
 ) -> String {
@@ -248,6 +319,7 @@ pub fn markdown(
         let _ =
             writeln!(s, "| {} | {:.3} | {:.4} | {:.1} | {:.5} |", r.name, r.mu, r.max_error, r.at_deg, r.mean_error);
     }
+    furnace_markdown(&mut s, furnace);
     s
 }
 
@@ -272,6 +344,18 @@ pub fn schlick_csv(rows: &[SchlickRow]) -> String {
     s
 }
 
+pub fn furnace_csv(rows: &[FurnaceRow]) -> String {
+    let mut s = String::from("d,g,m,view_deg,albedo\n");
+    for r in rows {
+        for (mi, m) in FURNACE_M.iter().enumerate() {
+            for (vi, deg) in FURNACE_VIEW_DEG.iter().enumerate() {
+                let _ = writeln!(s, "{},{},{m},{deg},{}", r.terms.d, r.terms.g, r.albedo[mi][vi]);
+            }
+        }
+    }
+    s
+}
+
 fn write(dir: &Path, name: &str, bytes: &[u8]) -> anyhow::Result<PathBuf> {
     let p = dir.join(name);
     std::fs::write(&p, bytes).with_context(|| format!("writing {}", p.display()))?;
@@ -287,12 +371,17 @@ pub fn run(args: &cli::BenchMicrofacetArgs) -> Result<(), Failure> {
     let size = (args.width, args.height);
     let (rows, null_ms, maps) = combos(&gpu, size, args.frames as usize, args.warmup as usize)?;
     let schlick = schlick_rows();
-    let md = markdown(&rows, null_ms, &maps, &schlick, &gpu.describe(), &command);
+    let furnace = furnace_rows();
+    let md = markdown(&rows, null_ms, &maps, &schlick, &furnace, &gpu.describe(), &command);
     let mut paths = vec![
         write(&args.output, "microfacet.md", md.as_bytes())?,
         write(&args.output, "microfacet-combos.csv", combos_csv(&rows).as_bytes())?,
         write(&args.output, "microfacet-schlick.csv", schlick_csv(&schlick).as_bytes())?,
+        write(&args.output, "microfacet-furnace.csv", furnace_csv(&furnace).as_bytes())?,
     ];
+    let plot = args.output.join("microfacet-furnace.png");
+    plot::furnace(&furnace, &FURNACE_M, &FURNACE_VIEW_DEG, &plot)?;
+    paths.push(plot);
     for m in maps {
         let p = args.output.join(format!("{}.png", m.stem));
         image::RgbImage::from_raw(size.0, size.1, m.pixels)

@@ -4,7 +4,8 @@
 //! over (θ_h, θ_d) at φ_d = 90°, the slice BRDF Explorer draws ([`theta_h_theta_d_slice`]).
 
 use crate::guards::N_DOT_V_MIN;
-use crate::lighting::brdf::{d_beckmann, fresnel_dielectric, fresnel_v_from_mu, g_cook_torrance, specular_phong};
+use crate::lighting::brdf::{fresnel_v_from_mu, specular_phong};
+use crate::lighting::microfacet::{microfacet_d, microfacet_f, microfacet_g};
 use crate::lighting::common::safe_normalize;
 use crate::lighting::lights::light_sample;
 use crate::scene::{MAX_LIGHTS, Material, Scene};
@@ -79,7 +80,7 @@ pub const LOBE_SAMPLES: usize = 181;
 /// The specular terms along the plane of incidence of one light, for outgoing directions at
 /// θ = −90°…90° from N (positive on the mirror side of L), as the sum multiplies them by the
 /// light: Phong's `(V·R)^h`, Cook–Torrance's `F·D·G/(N·V)` (mean of the channels), and the
-/// chapter's D (over its peak `1/(4 m²)`), G and F (mean of the channels) on their own.
+/// material's D (over its peak `1/(4 m²)`), G and F (mean of the channels) on their own.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Lobe {
     pub theta: Vec<f64>,
@@ -104,7 +105,8 @@ pub fn plane_lobe(n: DVec3, l: DVec3, mat: &Material) -> Lobe {
     let v_index = mat.mu.map(fresnel_v_from_mu);
     let mean = |c: [f64; 3]| (c[0] + c[1] + c[2]) / 3.0;
     let m = mat.m;
-    let peak = d_beckmann(1.0, 0.0, m);
+    let terms = mat.microfacet;
+    let peak = microfacet_d(terms, 1.0, 0.0, m);
     let mut lobe = Lobe {
         theta: Vec::new(),
         phong: Vec::new(),
@@ -120,9 +122,9 @@ pub fn plane_lobe(n: DVec3, l: DVec3, mat: &Material) -> Lobe {
         let h = safe_normalize(l + w, n);
         let (nl, nw, nh, wh) = (n.dot(l), n.dot(w), n.dot(h), w.dot(h).clamp(0.0, 1.0));
         let lit = nl > 0.0 && nw > 0.0;
-        let d = d_beckmann(nh, n.cross(h).length_squared(), m);
-        let g = g_cook_torrance(nh, nw, nl, wh);
-        let f = mean(v_index.map(|vi| fresnel_dielectric(wh, vi)));
+        let d = microfacet_d(terms, nh, n.cross(h).length_squared(), m);
+        let g = microfacet_g(terms, nh, nw, nl, wh, m);
+        let f = mean(microfacet_f(terms, wh, v_index));
         lobe.theta.push(theta);
         lobe.phong.push(if lit { specular_phong(w.dot(r), mat.h.value(), mat.h.is_mirror()) } else { 0.0 });
         lobe.cook_torrance.push(if lit { f * d * g / nw.max(N_DOT_V_MIN) } else { 0.0 });
@@ -133,8 +135,8 @@ pub fn plane_lobe(n: DVec3, l: DVec3, mat: &Material) -> Lobe {
     lobe
 }
 
-/// The chapter's Cook–Torrance specular BRDF `ρ_s = (F/π)·D·G/((N·V)(N·L))` (docs/model.md §5,
-/// mean of the channels) at Rusinkiewicz angles θ_h, θ_d (degrees) and φ_d = 90°; 0 where L or V
+/// The Cook–Torrance specular BRDF `ρ_s = (F/π)·D·G/((N·V)(N·L))` with the material's terms
+/// (docs/model.md §5, mean of the channels) at Rusinkiewicz angles θ_h, θ_d (degrees) and φ_d = 90°; 0 where L or V
 /// is below the surface.
 pub fn rho_s_at(theta_h: f64, theta_d: f64, mat: &Material) -> f64 {
     let (th, td) = (theta_h.to_radians(), theta_d.to_radians());
@@ -150,9 +152,10 @@ pub fn rho_s_at(theta_h: f64, theta_d: f64, mat: &Material) -> f64 {
         return 0.0;
     }
     let v_index = mat.mu.map(fresnel_v_from_mu);
-    let f = v_index.iter().map(|&vi| fresnel_dielectric(l.dot(h), vi)).sum::<f64>() / 3.0;
-    let dd = d_beckmann(n.dot(h), n.cross(h).length_squared(), mat.m);
-    let g = g_cook_torrance(n.dot(h), nv, nl, v.dot(h));
+    let t = mat.microfacet;
+    let f = microfacet_f(t, l.dot(h), v_index).iter().sum::<f64>() / 3.0;
+    let dd = microfacet_d(t, n.dot(h), n.cross(h).length_squared(), mat.m);
+    let g = microfacet_g(t, n.dot(h), nv, nl, v.dot(h), mat.m);
     f / std::f64::consts::PI * dd * g / (nv * nl)
 }
 

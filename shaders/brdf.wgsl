@@ -33,6 +33,13 @@ fn specular_phong(v_dot_r: f32, h_in: f32, mirror: bool) -> f32 {
     return select(0.0, exp2(h * log2(max(x, PHONG_LOG2_ARG_MIN))), x > 0.0);
 }
 
+// docs/model.md §3: the factor (h + 1)/2 that makes Phong's lobe reflect all it receives at
+// normal view ((1/π) ∫ (V·R)^h dω = 2/(h + 1)); 1 for the mirror setting; h clamped as the term
+// clamps it.
+fn phong_normalization(h: f32, mirror: bool) -> f32 {
+    return select((clamp(h, 1.0, H_MAX) + 1.0) / 2.0, 1.0, mirror);
+}
+
 // docs/model.md §5: the Cook–Torrance term with the chapter's three terms (microfacet.wgsl).
 fn specular_cook_torrance(n: vec3<f32>, v: vec3<f32>, l: vec3<f32>, m: f32, v_index: vec3<f32>) -> vec3<f32> {
     return specular_microfacet(n, v, l, m, v_index, MICROFACET_CHAPTER);
@@ -43,7 +50,8 @@ fn specular_cook_torrance(n: vec3<f32>, v: vec3<f32>, l: vec3<f32>, m: f32, v_in
 // I_L · (r_d·C·max(form, 0) + r_s·S(L)·spec_scale), form being N·L for a point light; the
 // specular is zero where N·L ≤ 0 (the point's own shadow).
 // `specular_model` is SPECULAR_PHONG or SPECULAR_COOK_TORRANCE; `v_index` is per channel;
-// `terms` the material's microfacet terms (Microfacet::code).
+// `terms` the material's microfacet terms (Microfacet::code); `phong_normalized` scales Phong's
+// lobe by phong_normalization.
 fn light_contribution(
     s: LightSample,
     n: vec3<f32>,
@@ -57,6 +65,7 @@ fn light_contribution(
     v_index: vec3<f32>,
     specular_model: u32,
     terms: u32,
+    phong_normalized: bool,
 ) -> vec3<f32> {
     let n_dot_l = dot(n, s.l);
     let l = s.l;
@@ -69,7 +78,11 @@ fn light_contribution(
 #if EFFECT_SPECULAR_PHONG
     if (specular_model == SPECULAR_PHONG) {
         let r = 2.0 * n_dot_l * n - l;
-        spec += r_s * vec3(select(0.0, specular_phong(dot(v, r), h, mirror), dot(n, v) > 0.0));
+        var k = 1.0;
+#if EFFECT_PHONG_NORMALIZED
+        k = select(1.0, phong_normalization(h, mirror), phong_normalized);
+#endif
+        spec += r_s * k * vec3(select(0.0, specular_phong(dot(v, r), h, mirror), dot(n, v) > 0.0));
     }
 #endif
     var lit = select(vec3(0.0), spec * s.spec_scale, n_dot_l > 0.0);

@@ -131,9 +131,13 @@ fn model_term(
     }
 #endif
     if (!modelled) {
+        var normalized = false;
+#if EFFECT_PHONG_NORMALIZED
+        normalized = object.phong_normalized != 0u;
+#endif
         out.lit = light_contribution(
             s, n, v, c, object.r_s, object.r_d, surface.m, surface.h, surface.mirror,
-            v_index, globals.specular_model, terms,
+            v_index, globals.specular_model, terms, normalized,
         );
     }
     return out;

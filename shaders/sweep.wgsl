@@ -144,15 +144,16 @@ fn light_columns(base: u32, inp: SweepCombination) {
     let f = microfacet_f(MICROFACET_CHAPTER, dot(v, half), v_index);
     let ct = specular_cook_torrance(n, v, l, m, v_index);
     let c_phong = light_contribution(
-        quadratic, n, v, SWEEP_COLOR, 1.0, 1.0, m, h_row.x, mirror, v_index, SPECULAR_PHONG, MICROFACET_CHAPTER,
+        quadratic, n, v, SWEEP_COLOR, 1.0, 1.0, m, h_row.x, mirror, v_index, SPECULAR_PHONG, MICROFACET_CHAPTER, false,
     );
     let c_ct = light_contribution(
         linear, n, v, SWEEP_COLOR, 1.0, 1.0, m, h_row.x, mirror, v_index,
-        SPECULAR_COOK_TORRANCE, MICROFACET_CHAPTER,
+        SPECULAR_COOK_TORRANCE, MICROFACET_CHAPTER, false,
     );
 
     outputs[base + COL_DIFFUSE_LAMBERT] = diffuse_lambert(dot(n, l));
     outputs[base + COL_SPECULAR_PHONG] = specular_phong(dot(v, r), h_row.x, mirror);
+    outputs[base + COL_PHONG_NORMALIZED] = phong_normalization(h_row.x, mirror) * specular_phong(dot(v, r), h_row.x, mirror);
     let n_x_h = cross(n, half);
     outputs[base + COL_D_BECKMANN] = d_beckmann(dot(n, half), dot(n_x_h, n_x_h), m);
     outputs[base + COL_G_COOK_TORRANCE] = g_cook_torrance(dot(n, half), dot(n, v), dot(n, l), dot(v, half));

@@ -56,6 +56,8 @@ struct Object {
     maps: u32,
     occlusion_strength: f32,
     normal_scale: f32,
+    // 1: Phong's lobe normalized (Material::phong_normalized, brdf.wgsl).
+    phong_normalized: u32,
     // The normal texture's transform (its rotation: uv_rotations.w).
     normal_uv: vec4<f32>,
     // World to object space (the glass pass's analytic exit, glass.wgsl).

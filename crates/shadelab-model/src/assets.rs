@@ -267,6 +267,7 @@ fn dielectric_material(p: &MaterialPreset) -> Material {
         emission: [0.0; 3],
         maps: Default::default(),
         microfacet: Default::default(),
+        phong_normalized: false,
     }
 }
 

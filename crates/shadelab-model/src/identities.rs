@@ -123,6 +123,27 @@ fn white_furnace_albedo_of_the_cook_torrance_lobe_is_at_most_one() {
     eprintln!("{table}");
 }
 
+/// Phong's normalized lobe reflects all it receives at normal view: `(1/π) ∫ k·(N·L)^h dω_L = 1`
+/// with `k = phong_normalization(h)` (V = N, so V·R = N·L), for small and large h.
+#[test]
+fn the_normalized_phong_lobe_has_albedo_one_at_normal_view() {
+    use crate::lighting::brdf::phong_normalization;
+    for h in [1.0, 10.0, 100.0, 1e4] {
+        let n = 200_000;
+        let sum: f64 = (0..n)
+            .map(|i| {
+                let c = (i as f64 + 0.5) / n as f64;
+                specular_phong(c, h, false) * 2.0 * PI / n as f64
+            })
+            .sum();
+        let albedo = phong_normalization(h, false) * sum / PI;
+        assert!((albedo - 1.0).abs() < 1e-3, "h = {h}: {albedo}");
+        // Unnormalized, the chapter's lobe reflects 2/(h + 1) of it.
+        assert!((sum / PI - 2.0 / (h + 1.0)).abs() < 1e-3 * 2.0 / (h + 1.0), "h = {h}");
+    }
+    assert_eq!(phong_normalization(1e9, true), 1.0);
+}
+
 #[test]
 fn phong_lobe_tends_to_the_mirror_as_h_grows() {
     // Monotonically narrower as h grows, 1 exactly at the mirror direction.

@@ -180,6 +180,8 @@ pub struct Overrides {
     pub distribution: Option<crate::lighting::microfacet::Distribution>,
     pub masking: Option<crate::lighting::microfacet::Masking>,
     pub fresnel: Option<crate::lighting::microfacet::Fresnel>,
+    /// Every material's Phong lobe normalized (`--phong-normalized on|off`).
+    pub phong_normalized: Option<bool>,
 }
 
 /// The microfacet overrides on one material's terms: the preset, then each term given.
@@ -249,6 +251,7 @@ impl Scene {
                 mat.absorption = a;
             }
             apply_terms(&mut mat.microfacet, o);
+            mat.phong_normalized = o.phong_normalized.unwrap_or(mat.phong_normalized);
         }
         for light in &mut self.lights {
             if let Some(kind) = o.light {

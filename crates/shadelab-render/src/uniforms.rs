@@ -89,7 +89,8 @@ pub struct ObjectUniform {
     pub occlusion_strength: f32,
     /// The normal texture's `scale`.
     pub normal_scale: f32,
-    pub _pad: f32,
+    /// 1: Phong's lobe normalized (`Material::phong_normalized`).
+    pub phong_normalized: u32,
     /// The normal texture's transform: offset (xy) and scale (zw); its rotation is `uv_rotations.w`.
     pub normal_uv: [f32; 4],
     /// World to object space (the glass pass's analytic exit).
@@ -263,7 +264,7 @@ impl ObjectUniform {
             maps: slots.iter().zip(crate::textures::MAP_BITS).filter(|(s, _)| s.is_some()).map(|(_, b)| b).sum(),
             occlusion_strength: maps.occlusion.map_or(0.0, |o| o.strength) as f32,
             normal_scale: maps.normal.map_or(1.0, |n| n.scale) as f32,
-            _pad: 0.0,
+            phong_normalized: material.phong_normalized as u32,
             normal_uv: offset_scale(&transforms[3]),
             inverse_model: object.transform.matrix().inverse().as_mat4().to_cols_array_2d(),
             ior: rgb(material.refractive_index(), if material.disperses() { 1.0 } else { 0.0 }),

@@ -93,6 +93,23 @@ fn the_terms_section_switches_each_term_live() {
     assert_eq!(ggx.iter().filter(|g| **g).count(), 1, "{ggx:?}");
 }
 
+/// The h row's "normalized" box scales the selected material's Phong lobe: with Phong specular
+/// its highlights brighten.
+#[test]
+fn the_normalized_box_brightens_phongs_highlights() {
+    let mut h = harness();
+    h.get_by_label("Phong (V·R)^h").click();
+    h.run_steps(3);
+    let before = h.render().expect("render");
+    h.get_by_label("normalized").click();
+    h.run_steps(3);
+    let materials = h.state_mut().scene_mut().materials.clone();
+    assert_eq!(materials.iter().filter(|m| m.phong_normalized).count(), 1);
+    let after = h.render().expect("render");
+    let changed = changed_view_pixels(&before, &after);
+    assert!(changed > 200, "only {changed} pixels of the view changed");
+}
+
 /// The term row shows one term of the model alone; "all" brings the whole model back, and the
 /// scene's own coefficients are untouched by the view.
 #[test]

@@ -200,9 +200,24 @@ fn decide_diffuse_specular(
     };
     let (on, why) = spec_reason(SpecularModel::Phong);
     a.decide(Effect::SpecularPhong, on, why);
+    decide_phong_normalization(a, used, on);
     let (on, why) = spec_reason(SpecularModel::CookTorrance);
     a.decide(Effect::SpecularCookTorrance, on, why);
     decide_microfacet_terms(a, used, on);
+}
+
+/// Phong's normalized lobe: on when Phong specular is and a material with r_s > 0 asks for it.
+fn decide_phong_normalization(a: &mut Analysis, used: &[&crate::scene::Material], phong: bool) {
+    let normalized: Vec<&str> =
+        used.iter().filter(|m| m.phong_normalized && m.r_s > 0.0).map(|m| m.name.as_str()).collect();
+    let why = if !phong {
+        "Phong specular is off".to_string()
+    } else if let Some(first) = normalized.first() {
+        format!("{} material(s) with r_s > 0 ask for it, '{first}' first", normalized.len())
+    } else {
+        "no material with r_s > 0 asks for it".to_string()
+    };
+    a.decide(Effect::PhongNormalized, phong && !normalized.is_empty(), why);
 }
 
 /// Each microfacet D, G and F: on when Cook–Torrance is and a material with r_s > 0 uses it.
@@ -499,6 +514,16 @@ mod tests {
             k.without(Effect::SpecularCookTorrance).without_all(&chapter).with(Effect::SpecularPhong)
         );
         assert!(k.has(Effect::CastShadows), "{:?}", a.lines());
+    }
+
+    #[test]
+    fn phong_normalization_is_in_only_with_phong_specular_and_a_material_asking() {
+        let mut s = Scene::builtin("default").unwrap();
+        assert!(!analyze(&s, SpecularModel::Phong).key.has(Effect::PhongNormalized));
+        s.materials[1].phong_normalized = true;
+        let a = analyze(&s, SpecularModel::Phong);
+        assert!(a.key.has(Effect::PhongNormalized), "{:?}", a.lines());
+        assert!(!analyze(&s, SpecularModel::CookTorrance).key.has(Effect::PhongNormalized));
     }
 
     #[test]

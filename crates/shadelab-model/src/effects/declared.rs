@@ -94,6 +94,15 @@ declare_effects! {
         // h and mirror are passed in every permutation, as r_d is.
         members: &[],
     },
+    /// Phong's lobe normalized by `(h + 1)/2` (docs/model.md §3), for a material that asks for it.
+    PhongNormalized {
+        explain: "Phong lobe normalized (h + 1)/2",
+        name: "Phong normalization",
+        label: "phong-norm",
+        define: Some("EFFECT_PHONG_NORMALIZED"),
+        functions: &["phong_normalization"],
+        members: &[("Object", "phong_normalized")],
+    },
     /// Cook–Torrance specular `F·D·G/(N·V)` and the Fresnel index from μ (docs/model.md §5).
     SpecularCookTorrance {
         explain: "Cook–Torrance specular",

@@ -2,7 +2,7 @@
 //! `_transmission` and `_volume` extensions mapped to the chapter's material (the table in the
 //! module's parent), and back; the exact parameters travel in `extras.shadelab`.
 
-use super::extras::{self, Absorption, Ior, Mu, Named, Num, Phong, Rgb, Roughness, Thickness, Unit};
+use super::extras::{self, Absorption, Flag, Ior, Mu, Named, Num, Phong, Rgb, Roughness, Thickness, Unit};
 use super::scene_file::{Reader, num, rgb};
 use super::{ATTENUATION_COLOR_MIN, DEFAULT_IOR, DIELECTRIC_MU_MAX, GltfError, dielectric_f0, m_from_roughness};
 use crate::lighting::microfacet::{Distribution, Fresnel, Masking, Microfacet};
@@ -66,6 +66,9 @@ struct MaterialExtras {
     masking: Option<Named<Masking>>,
     #[serde(skip_serializing_if = "Option::is_none")]
     fresnel: Option<Named<Fresnel>>,
+    /// Phong's lobe normalized (`Material::phong_normalized`); written only when true.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    phong_normalized: Option<Flag>,
 }
 
 impl Reader<'_> {
@@ -223,6 +226,7 @@ impl Reader<'_> {
             g: ex.masking.map_or(terms.g, |n| n.0),
             f: ex.fresnel.map_or(terms.f, |n| n.0),
         };
+        mat.phong_normalized = ex.phong_normalized.is_some_and(|f| f.0);
         Ok((mat, mf0))
     }
 }
@@ -298,6 +302,7 @@ pub(super) fn pbr_material(m: &json::Material) -> Material {
         emission: m.emissive_factor.0.map(|e| (e as f64).clamp(0.0, 1.0)),
         maps: Default::default(),
         microfacet: Default::default(),
+        phong_normalized: false,
     }
 }
 
@@ -325,6 +330,7 @@ pub(super) fn write_material(m: &Material, extensions_used: &mut Vec<&'static st
         distribution: Some(Named(m.microfacet.d)),
         masking: Some(Named(m.microfacet.g)),
         fresnel: Some(Named(m.microfacet.f)),
+        phong_normalized: m.phong_normalized.then_some(Flag(true)),
     };
     let mut out = json!({
         "name": m.name,

@@ -57,6 +57,15 @@ pub(crate) fn lambert_rule(r: f64, i: f64, cos_alpha: f64) -> f64 {
     r * i * diffuse_lambert(cos_alpha) + r * (1.0 - i)
 }
 
+/// docs/model.md §3: the factor that normalizes Phong's lobe as the sum uses it, `(h + 1)/2`.
+/// The chapter's `(V·R)^h` has no `cos θ_i`, and `(1/π) ∫ (V·R)^h dω = 2/(h + 1)` when the lobe
+/// lies above the surface, so this factor makes that albedo 1 (Lewis 1994's `(n + 1)/2π` in the
+/// chapter's π scale; `(n + 2)/2π` is for the lobe with the cosine). The mirror setting, a spike
+/// of fixed height, keeps 1; `h` is clamped to [1, H_MAX] as the term clamps it.
+pub fn phong_normalization(h: f64, mirror: bool) -> f64 {
+    if mirror { 1.0 } else { (h.clamp(1.0, H_MAX) + 1.0) / 2.0 }
+}
+
 /// docs/model.md §3: Phong specular `(V·R)^h`, as `exp2(h·log2(V·R))` with the argument of
 /// `log2` kept at or above `PHONG_LOG2_ARG_MIN`; `mirror` is the `h = ∞` setting (guard
 /// `MIRROR_V_DOT_R_MIN`), otherwise `h` is clamped to `[1, H_MAX]`.
@@ -113,7 +122,9 @@ pub fn light_contribution(
             SpecularModel::CookTorrance => specular_microfacet(n, v, s.l, mat.m, v_index, mat.microfacet),
             SpecularModel::Phong => {
                 let r = 2.0 * n_dot_l * n - s.l;
-                let x = if n.dot(v) > 0.0 { specular_phong(v.dot(r), mat.h.value(), mat.h.is_mirror()) } else { 0.0 };
+                let (h, mirror) = (mat.h.value(), mat.h.is_mirror());
+                let k = if mat.phong_normalized { phong_normalization(h, mirror) } else { 1.0 };
+                let x = if n.dot(v) > 0.0 { k * specular_phong(v.dot(r), h, mirror) } else { 0.0 };
                 [x; 3]
             }
         }

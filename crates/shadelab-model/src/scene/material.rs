@@ -52,6 +52,9 @@ pub struct Material {
     pub maps: MaterialMaps,
     /// The D, G and F of its Cook–Torrance specular (the chapter's by default).
     pub microfacet: crate::lighting::microfacet::Microfacet,
+    /// Phong's lobe scaled to reflect all the light it receives at normal view
+    /// (`brdf::phong_normalization`, docs/model.md §3); off in the chapter's model.
+    pub phong_normalized: bool,
 }
 
 /// A material's textures beyond the base colour. Each is optional; a point without one uses the
@@ -124,6 +127,7 @@ impl Default for Material {
             emission: [0.0; 3],
             maps: MaterialMaps::default(),
             microfacet: crate::lighting::microfacet::Microfacet::CHAPTER,
+            phong_normalized: false,
         }
     }
 }

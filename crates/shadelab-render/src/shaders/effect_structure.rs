@@ -60,6 +60,10 @@ const GLASS: [Effect; 3] = [Effect::Transmission, Effect::Refraction, Effect::Ab
 /// their subsets are validated on a few bases.
 const MICROFACET: [Effect; 7] = shadelab_model::effects::MICROFACET_EFFECTS;
 
+/// Phong's normalization: one factor inside Phong specular's branch, validated on a few bases
+/// rather than doubling the product of the rest.
+const PHONG_OPTIONS: [Effect; 1] = [Effect::PhongNormalized];
+
 /// The keys of every subset of `effects`.
 fn subsets(effects: &[Effect]) -> Vec<EffectKey> {
     (0..1u32 << effects.len())
@@ -80,7 +84,10 @@ fn every_permutation_validates_in_naga() {
     let raw = raw_lighting_source();
     let outside: Vec<Effect> = Effect::ALL
         .into_iter()
-        .filter(|e| ![&INSIDE_SHADOWS[..], &SURFACE, &AREA, &GLASS, &MICROFACET].iter().any(|group| group.contains(e)))
+        .filter(|e| {
+            let groups = [&INSIDE_SHADOWS[..], &SURFACE, &AREA, &GLASS, &MICROFACET, &PHONG_OPTIONS];
+            !groups.iter().any(|group| group.contains(e))
+        })
         .collect();
     let all_inside: EffectKey = INSIDE_SHADOWS.into_iter().collect();
     let mut keys: Vec<EffectKey> = subsets(&outside).into_iter().map(|k| union(k, all_inside)).collect();
@@ -136,6 +143,13 @@ fn every_permutation_validates_in_naga() {
     for base in microfacet_bases {
         let base = MICROFACET.into_iter().fold(base, |k, e| k.without(e));
         keys.extend(subsets(&MICROFACET).into_iter().map(|k| union(k, base)));
+    }
+    // Phong's normalization on every other effect, on Phong specular alone, and on none.
+    let phong_bases: [EffectKey; 3] =
+        [EffectKey::UBER, [Effect::PointLights, Effect::SpecularPhong].into_iter().collect(), EffectKey::NONE];
+    for base in phong_bases {
+        let base = PHONG_OPTIONS.into_iter().fold(base, |k, e| k.without(e));
+        keys.extend(subsets(&PHONG_OPTIONS).into_iter().map(|k| union(k, base)));
     }
     for key in keys {
         let src = lighting_source_for(&raw, key).unwrap();

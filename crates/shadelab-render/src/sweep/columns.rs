@@ -5,7 +5,7 @@
 
 use super::inputs::ShadowCase;
 use glam::DVec3;
-use shadelab_model::guards::{D0_MIN, M_MIN, N_DOT_V_MIN};
+use shadelab_model::guards::{D0_MIN, H_MAX, M_MIN, N_DOT_V_MIN};
 use shadelab_model::lighting::area::{self, AreaLight, AreaShape};
 use shadelab_model::lighting::area_points::{area_emitter, area_point_sample};
 use shadelab_model::lighting::microfacet::{self, Microfacet};
@@ -33,9 +33,16 @@ pub struct Column {
 const D_MAX: f64 = 1.0 / (4.0 * M_MIN * M_MIN);
 
 /// Every column in the order the kernel writes them (and the report lists them).
-pub const COLUMNS: [Column; 51] = [
+pub const COLUMNS: [Column; 52] = [
     col("diffuse_lambert", "DIFFUSE_LAMBERT", 1, 1.0, "N·L of unit vectors"),
     col("specular_phong", "SPECULAR_PHONG", 1, 1.0, "(V·R)^h with V·R clamped to [0, 1]"),
+    col(
+        "phong_normalization × specular_phong",
+        "PHONG_NORMALIZED",
+        1,
+        (H_MAX + 1.0) / 2.0,
+        "(h + 1)/2 · (V·R)^h ≤ (H_MAX + 1)/2",
+    ),
     col("d_beckmann", "D_BECKMANN", 1, D_MAX, "peak 1/(4 m²) at m = M_MIN"),
     col("g_cook_torrance", "G_COOK_TORRANCE", 1, 1.0, "min{1, …}"),
     col("microfacet_f (fresnel_dielectric at V·H)", "MICROFACET_F", 3, 1.0, "a reflectance"),
@@ -222,6 +229,7 @@ const SWEEP_SHADOW_RESOLUTION: f64 = 2048.0;
 
 const DIFFUSE_LAMBERT: usize = offset("DIFFUSE_LAMBERT");
 const SPECULAR_PHONG: usize = offset("SPECULAR_PHONG");
+const PHONG_NORMALIZED: usize = offset("PHONG_NORMALIZED");
 const D_BECKMANN: usize = offset("D_BECKMANN");
 const G_COOK_TORRANCE: usize = offset("G_COOK_TORRANCE");
 const MICROFACET_F: usize = offset("MICROFACET_F");
@@ -367,6 +375,7 @@ fn light_columns(out: &mut [f64; OUTPUTS], inp: &Combination) {
     let inner = outer * alpha.min(1.0);
     out[DIFFUSE_LAMBERT] = brdf::diffuse_lambert(n.dot(l));
     out[SPECULAR_PHONG] = brdf::specular_phong(v.dot(r), h, mirror);
+    out[PHONG_NORMALIZED] = brdf::phong_normalization(h, mirror) * brdf::specular_phong(v.dot(r), h, mirror);
     out[D_BECKMANN] = brdf::d_beckmann(n.dot(half), n.cross(half).length_squared(), m);
     out[G_COOK_TORRANCE] = brdf::g_cook_torrance(n.dot(half), n.dot(v), n.dot(l), v.dot(half));
     rgb(out, MICROFACET_F, microfacet::microfacet_f(Microfacet::CHAPTER, v.dot(half), v_index));

@@ -91,5 +91,6 @@ pub fn overrides(a: &SceneArgs) -> Overrides {
         distribution: a.distribution,
         masking: a.masking,
         fresnel: a.fresnel,
+        phong_normalized: a.phong_normalized,
     }
 }

@@ -360,6 +360,10 @@ pub struct SceneArgs {
     /// Every material's Fresnel factor F, after --microfacet: exact (the chapter's) or schlick
     #[arg(long, value_name = "F", value_parser = values::named::<Fresnel>())]
     pub fresnel: Option<Fresnel>,
+    /// Every material's Phong lobe scaled by (h + 1)/2, so that it reflects all it receives at
+    /// normal view (on), or the chapter's (V·R)^h (off) [default: the scene file's, else off]
+    #[arg(long, value_name = "ON|OFF", value_parser = values::on_off())]
+    pub phong_normalized: Option<bool>,
     #[arg(long, value_name = "ALPHA", value_parser = values::real(params::FALLOFF),
           help = within("Falloff factor α of every point and spot light, I0/(1 + α d²)", params::FALLOFF))]
     pub falloff: Option<f64>,

@@ -73,6 +73,7 @@ fn extras_are_written_and_read_by_the_same_types() {
     };
     scene.materials[1].h = PhongExponent::Mirror;
     scene.materials[0].emission = [0.25, 0.5, 1.0];
+    scene.materials[0].phong_normalized = true;
     scene.materials[1].microfacet = crate::lighting::microfacet::Microfacet {
         d: crate::lighting::microfacet::Distribution::Ggx,
         ..crate::lighting::microfacet::Microfacet::CHAPTER
@@ -88,7 +89,10 @@ fn extras_are_written_and_read_by_the_same_types() {
     let doc: Value = serde_json::from_str(&scene_to_gltf_json(&scene, &settings)).unwrap();
     let keys = |v: &Value| v["extras"]["shadelab"].as_object().unwrap().keys().cloned().collect::<Vec<_>>().join(" ");
     // I_e only where the material emits, mf0 only with a metallic–roughness texture (tests/textures.rs).
-    assert_eq!(keys(&doc["materials"][0]), "C I_e a d distribution fresnel h m masking mu mu_t r_a r_d r_s t");
+    assert_eq!(
+        keys(&doc["materials"][0]),
+        "C I_e a d distribution fresnel h m masking mu mu_t phong_normalized r_a r_d r_s t"
+    );
     assert_eq!(keys(&doc["materials"][1]), "C a d distribution fresnel h m masking mu mu_t r_a r_d r_s t");
     assert_eq!(doc["materials"][1]["extras"]["shadelab"]["h"], json!("mirror"));
     assert_eq!(doc["materials"][1]["extras"]["shadelab"]["distribution"], json!("ggx"));

@@ -49,6 +49,9 @@ impl Viewer {
             )
             .on_hover_text(tooltip(&params::H));
             ui.checkbox(&mut mirror, "mirror").on_hover_text("h = ∞: a perfect mirror");
+            ui.checkbox(&mut mat.phong_normalized, "normalized").on_hover_text(
+                "Phong's lobe × (h + 1)/2, so that it reflects all it receives at normal view (docs/model.md §3)",
+            );
         });
         mat.h = if mirror { PhongExponent::Mirror } else { PhongExponent::Finite(h) };
         ui.checkbox(&mut self.mu_linked, "μ linked (one value for R, G, B)");

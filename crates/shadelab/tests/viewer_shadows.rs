@@ -36,6 +36,9 @@ fn run_until<T>(h: &mut Harness<'static, Viewer>, what: &str, done: impl Fn(&Vie
 fn the_show_shadow_map_box_shows_l1s_map_in_its_section() {
     let mut h = harness();
     assert!(h.query_by_label("show shadow map").is_none(), "collapsed sections show no map controls");
+    // The light's header may be below the panel's fold: scroll to it first.
+    h.get_by_label("L1 — directional").scroll_to_me();
+    h.run_steps(20);
     h.get_by_label("L1 — directional").click();
     h.run_steps(2);
     assert_eq!(h.state().shadow_map_shown(0), None);
@@ -109,6 +112,9 @@ fn a_directional_lights_cascades_have_a_menu() {
     };
     h.state_mut().show_loaded(loaded, "field").expect("shown");
     h.run_steps(2);
+    // The light's header may be below the panel's fold: scroll to it first.
+    h.get_by_label("L1 — directional").scroll_to_me();
+    h.run_steps(20);
     h.get_by_label("L1 — directional").click();
     h.run_steps(2);
     h.state_mut().set_shadow_map_view(0, true);

@@ -148,3 +148,25 @@ fn a_gltf_file_opens_with_the_gltf_brdf_and_the_chapters_is_one_switch_away() {
     let e = String::from_utf8_lossy(&o.stderr);
     assert!(e.contains("smiths") && e.contains("v-groove, smith, smith-correlated"), "{e}");
 }
+
+/// `--phong-normalized on` puts the normalization in the pipeline with Phong specular (and says
+/// why), brightens the highlights, and a saved scene keeps it.
+#[test]
+fn phong_normalized_is_a_flag_an_effect_and_saved() {
+    let (a, b, saved) = (out("phong-plain.png"), out("phong-normalized.png"), out("phong-normalized.gltf"));
+    let run = |scene: &str, extra: &[&str], png: &str| {
+        let mut args = vec!["render", "--explain", "--scene", scene, "--specular", "phong", "--width", "96", "--height", "54"];
+        args.extend(extra);
+        args.extend(["--output", png]);
+        let o = shadelab(&args);
+        ok(&o);
+        String::from_utf8_lossy(&o.stdout).into_owned()
+    };
+    let plain = run("sphere", &[], &a);
+    assert!(plain.contains("Phong lobe normalized (h + 1)/2: off — no material with r_s > 0 asks for it"), "{plain}");
+    let normalized = run("sphere", &["--phong-normalized", "on", "--save-scene", &saved], &b);
+    assert!(normalized.contains("Phong lobe normalized (h + 1)/2: on") && normalized.contains("+phong-norm+"), "{normalized}");
+    assert!(std::fs::read(&a).unwrap() != std::fs::read(&b).unwrap(), "the normalization changed nothing");
+    let again = run(&saved, &[], &a);
+    assert!(again.contains("Phong lobe normalized (h + 1)/2: on"), "{again}");
+}

@@ -200,51 +200,10 @@ fn decide_diffuse_specular(
     };
     let (on, why) = spec_reason(SpecularModel::Phong);
     a.decide(Effect::SpecularPhong, on, why);
-    decide_phong_normalization(a, used, on);
+    super::specular_terms::decide_phong_normalization(a, used, on);
     let (on, why) = spec_reason(SpecularModel::CookTorrance);
     a.decide(Effect::SpecularCookTorrance, on, why);
-    decide_microfacet_terms(a, used, on);
-}
-
-/// Phong's normalized lobe: on when Phong specular is and a material with r_s > 0 asks for it.
-fn decide_phong_normalization(a: &mut Analysis, used: &[&crate::scene::Material], phong: bool) {
-    let normalized: Vec<&str> =
-        used.iter().filter(|m| m.phong_normalized && m.r_s > 0.0).map(|m| m.name.as_str()).collect();
-    let why = if !phong {
-        "Phong specular is off".to_string()
-    } else if let Some(first) = normalized.first() {
-        format!("{} material(s) with r_s > 0 ask for it, '{first}' first", normalized.len())
-    } else {
-        "no material with r_s > 0 asks for it".to_string()
-    };
-    a.decide(Effect::PhongNormalized, phong && !normalized.is_empty(), why);
-}
-
-/// Each microfacet D, G and F: on when Cook–Torrance is and a material with r_s > 0 uses it.
-fn decide_microfacet_terms(a: &mut Analysis, used: &[&crate::scene::Material], cook_torrance: bool) {
-    for effect in super::declared::MICROFACET_EFFECTS {
-        let users: Vec<&str> = used
-            .iter()
-            .filter(|m| m.r_s > 0.0 && super::declared::microfacet_effects(m.microfacet).contains(&effect))
-            .map(|m| m.name.as_str())
-            .collect();
-        let why = if !cook_torrance {
-            "Cook–Torrance specular is off".to_string()
-        } else if users.is_empty() {
-            "no material with r_s > 0 uses it".to_string()
-        } else {
-            let mut names: Vec<&str> = Vec::new();
-            for n in users.iter().map(|n| if n.is_empty() { "(unnamed)" } else { n }) {
-                if !names.contains(&n) {
-                    names.push(n);
-                }
-            }
-            let more = if names.len() > 3 { format!(" and {} more", names.len() - 3) } else { String::new() };
-            names.truncate(3);
-            format!("used by {}{more}", names.iter().map(|n| format!("'{n}'")).collect::<Vec<_>>().join(", "))
-        };
-        a.decide(effect, cook_torrance && !users.is_empty(), why);
-    }
+    super::specular_terms::decide_microfacet_terms(a, used, on);
 }
 
 /// The ambient term, the Lambert rule, and the four-term sum with its transmitted term.
@@ -514,38 +473,6 @@ mod tests {
             k.without(Effect::SpecularCookTorrance).without_all(&chapter).with(Effect::SpecularPhong)
         );
         assert!(k.has(Effect::CastShadows), "{:?}", a.lines());
-    }
-
-    #[test]
-    fn phong_normalization_is_in_only_with_phong_specular_and_a_material_asking() {
-        let mut s = Scene::builtin("default").unwrap();
-        assert!(!analyze(&s, SpecularModel::Phong).key.has(Effect::PhongNormalized));
-        s.materials[1].phong_normalized = true;
-        let a = analyze(&s, SpecularModel::Phong);
-        assert!(a.key.has(Effect::PhongNormalized), "{:?}", a.lines());
-        assert!(!analyze(&s, SpecularModel::CookTorrance).key.has(Effect::PhongNormalized));
-    }
-
-    #[test]
-    fn each_microfacet_term_is_in_only_where_a_material_uses_it() {
-        use crate::lighting::microfacet::{Fresnel, Microfacet};
-        let mut s = Scene::builtin("default").unwrap();
-        let chapter = super::super::microfacet_effects(Microfacet::CHAPTER);
-        let gltf = super::super::microfacet_effects(Microfacet::GLTF);
-        s.materials.iter_mut().for_each(|m| m.microfacet = Microfacet::GLTF);
-        let a = analyze(&s, SpecularModel::CookTorrance);
-        assert!(gltf.iter().all(|e| a.key.has(*e)) && chapter.iter().all(|e| !a.key.has(*e)), "{:?}", a.lines());
-        // One material back to the exact F: both F are in, and the reason names it.
-        s.materials[0].microfacet.f = Fresnel::Exact;
-        let name = s.materials[0].name.clone();
-        let a = analyze(&s, SpecularModel::CookTorrance);
-        assert!(a.key.has(Effect::FresnelExact) && a.key.has(Effect::FresnelSchlick));
-        let why = &a.decisions.iter().find(|d| d.effect == Effect::FresnelExact).unwrap().reason;
-        assert!(why.contains(&format!("'{name}'")), "{why}");
-        // Without a specular weight the material's terms are not needed.
-        s.materials[0].r_s = 0.0;
-        assert!(!analyze(&s, SpecularModel::CookTorrance).key.has(Effect::FresnelExact));
-        assert!(!analyze(&s, SpecularModel::Phong).key.has(Effect::FresnelSchlick));
     }
 
     #[test]

@@ -496,37 +496,6 @@ declare_effects! {
 }
 
 /// The effects that sample a material texture at the pixel's texture coordinates.
-/// The microfacet terms' effects: each D, G and F of [`crate::lighting::microfacet`].
-pub const MICROFACET_EFFECTS: [Effect; 7] = [
-    Effect::DistributionBeckmann,
-    Effect::DistributionGgx,
-    Effect::MaskingVGroove,
-    Effect::MaskingSmith,
-    Effect::MaskingSmithCorrelated,
-    Effect::FresnelExact,
-    Effect::FresnelSchlick,
-];
-
-/// The effects of a material's three microfacet terms.
-pub fn microfacet_effects(t: crate::lighting::microfacet::Microfacet) -> [Effect; 3] {
-    use crate::lighting::microfacet::{Distribution, Fresnel, Masking};
-    [
-        match t.d {
-            Distribution::Beckmann => Effect::DistributionBeckmann,
-            Distribution::Ggx => Effect::DistributionGgx,
-        },
-        match t.g {
-            Masking::VGroove => Effect::MaskingVGroove,
-            Masking::Smith => Effect::MaskingSmith,
-            Masking::SmithCorrelated => Effect::MaskingSmithCorrelated,
-        },
-        match t.f {
-            Fresnel::Exact => Effect::FresnelExact,
-            Fresnel::Schlick => Effect::FresnelSchlick,
-        },
-    ]
-}
-
 pub const TEXTURE_EFFECTS: [Effect; 5] = [
     Effect::BaseColorTexture,
     Effect::MetalRoughnessTexture,

@@ -1,0 +1,119 @@
+//! The specular terms a material chooses beyond the specular model (docs/model.md §3, §5):
+//! Phong's normalized lobe and Cook–Torrance's D, G and F, each an effect that is on only where a
+//! material with `r_s > 0` uses it.
+
+use super::analyze::Analysis;
+use super::declared::Effect;
+
+/// The microfacet terms' effects: each D, G and F of [`crate::lighting::microfacet`].
+pub const MICROFACET_EFFECTS: [Effect; 7] = [
+    Effect::DistributionBeckmann,
+    Effect::DistributionGgx,
+    Effect::MaskingVGroove,
+    Effect::MaskingSmith,
+    Effect::MaskingSmithCorrelated,
+    Effect::FresnelExact,
+    Effect::FresnelSchlick,
+];
+
+/// The effects of a material's three microfacet terms.
+pub fn microfacet_effects(t: crate::lighting::microfacet::Microfacet) -> [Effect; 3] {
+    use crate::lighting::microfacet::{Distribution, Fresnel, Masking};
+    [
+        match t.d {
+            Distribution::Beckmann => Effect::DistributionBeckmann,
+            Distribution::Ggx => Effect::DistributionGgx,
+        },
+        match t.g {
+            Masking::VGroove => Effect::MaskingVGroove,
+            Masking::Smith => Effect::MaskingSmith,
+            Masking::SmithCorrelated => Effect::MaskingSmithCorrelated,
+        },
+        match t.f {
+            Fresnel::Exact => Effect::FresnelExact,
+            Fresnel::Schlick => Effect::FresnelSchlick,
+        },
+    ]
+}
+
+/// Phong's normalized lobe: on when Phong specular is and a material with r_s > 0 asks for it.
+pub(super) fn decide_phong_normalization(a: &mut Analysis, used: &[&crate::scene::Material], phong: bool) {
+    let normalized: Vec<&str> =
+        used.iter().filter(|m| m.phong_normalized && m.r_s > 0.0).map(|m| m.name.as_str()).collect();
+    let why = if !phong {
+        "Phong specular is off".to_string()
+    } else if let Some(first) = normalized.first() {
+        format!("{} material(s) with r_s > 0 ask for it, '{first}' first", normalized.len())
+    } else {
+        "no material with r_s > 0 asks for it".to_string()
+    };
+    a.decide(Effect::PhongNormalized, phong && !normalized.is_empty(), why);
+}
+
+/// Each microfacet D, G and F: on when Cook–Torrance is and a material with r_s > 0 uses it.
+pub(super) fn decide_microfacet_terms(a: &mut Analysis, used: &[&crate::scene::Material], cook_torrance: bool) {
+    for effect in MICROFACET_EFFECTS {
+        let users: Vec<&str> = used
+            .iter()
+            .filter(|m| m.r_s > 0.0 && microfacet_effects(m.microfacet).contains(&effect))
+            .map(|m| m.name.as_str())
+            .collect();
+        let why = if !cook_torrance {
+            "Cook–Torrance specular is off".to_string()
+        } else if users.is_empty() {
+            "no material with r_s > 0 uses it".to_string()
+        } else {
+            let mut names: Vec<&str> = Vec::new();
+            for n in users.iter().map(|n| if n.is_empty() { "(unnamed)" } else { n }) {
+                if !names.contains(&n) {
+                    names.push(n);
+                }
+            }
+            let more = if names.len() > 3 { format!(" and {} more", names.len() - 3) } else { String::new() };
+            names.truncate(3);
+            format!("used by {}{more}", names.iter().map(|n| format!("'{n}'")).collect::<Vec<_>>().join(", "))
+        };
+        a.decide(effect, cook_torrance && !users.is_empty(), why);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::effects::analyze;
+    use crate::params::SpecularModel;
+    use crate::scene::Scene;
+
+    #[test]
+    fn phong_normalization_is_in_only_with_phong_specular_and_a_material_asking() {
+        let mut s = Scene::builtin("default").unwrap();
+        assert!(!analyze(&s, SpecularModel::Phong).key.has(Effect::PhongNormalized));
+        s.materials[1].phong_normalized = true;
+        let a = analyze(&s, SpecularModel::Phong);
+        assert!(a.key.has(Effect::PhongNormalized), "{:?}", a.lines());
+        assert!(!analyze(&s, SpecularModel::CookTorrance).key.has(Effect::PhongNormalized));
+    }
+
+    #[test]
+    fn each_microfacet_term_is_in_only_where_a_material_uses_it() {
+        use crate::lighting::microfacet::{Fresnel, Microfacet};
+        let mut s = Scene::builtin("default").unwrap();
+        let chapter = microfacet_effects(Microfacet::CHAPTER);
+        let gltf = microfacet_effects(Microfacet::GLTF);
+        s.materials.iter_mut().for_each(|m| m.microfacet = Microfacet::GLTF);
+        let a = analyze(&s, SpecularModel::CookTorrance);
+        assert!(gltf.iter().all(|e| a.key.has(*e)) && chapter.iter().all(|e| !a.key.has(*e)), "{:?}", a.lines());
+        // One material back to the exact F: both F are in, and the reason names it.
+        s.materials[0].microfacet.f = Fresnel::Exact;
+        let name = s.materials[0].name.clone();
+        let a = analyze(&s, SpecularModel::CookTorrance);
+        assert!(a.key.has(Effect::FresnelExact) && a.key.has(Effect::FresnelSchlick));
+        let why = &a.decisions.iter().find(|d| d.effect == Effect::FresnelExact).unwrap().reason;
+        assert!(why.contains(&format!("'{name}'")), "{why}");
+        // Without a specular weight the material's terms are not needed.
+        s.materials[0].r_s = 0.0;
+        assert!(!analyze(&s, SpecularModel::CookTorrance).key.has(Effect::FresnelExact));
+        assert!(!analyze(&s, SpecularModel::Phong).key.has(Effect::FresnelSchlick));
+    }
+
+}

@@ -42,7 +42,7 @@ fn phong_normalization(h: f32, mirror: bool) -> f32 {
 
 // docs/model.md §5: the Cook–Torrance term with the chapter's three terms (microfacet.wgsl).
 fn specular_cook_torrance(n: vec3<f32>, v: vec3<f32>, l: vec3<f32>, m: f32, v_index: vec3<f32>) -> vec3<f32> {
-    return specular_microfacet(n, v, l, m, v_index, MICROFACET_CHAPTER);
+    return specular_microfacet(n, v, l, m, v_index, MICROFACET_CHAPTER, 1.0);
 }
 
 // What one light adds to the Phong illumination model (docs/model.md §3) at a point with unit
@@ -51,7 +51,7 @@ fn specular_cook_torrance(n: vec3<f32>, v: vec3<f32>, l: vec3<f32>, m: f32, v_in
 // specular is zero where N·L ≤ 0 (the point's own shadow).
 // `specular_model` is SPECULAR_PHONG or SPECULAR_COOK_TORRANCE; `v_index` is per channel;
 // `terms` the material's microfacet terms (Microfacet::code); `phong_normalized` scales Phong's
-// lobe by phong_normalization.
+// lobe by phong_normalization; `ms_e` is the lobe's albedo for its compensation (1: none).
 fn light_contribution(
     s: LightSample,
     n: vec3<f32>,
@@ -66,13 +66,14 @@ fn light_contribution(
     specular_model: u32,
     terms: u32,
     phong_normalized: bool,
+    ms_e: f32,
 ) -> vec3<f32> {
     let n_dot_l = dot(n, s.l);
     let l = s.l;
     var spec = vec3(0.0);
 #if EFFECT_SPECULAR_COOK_TORRANCE
     if (specular_model == SPECULAR_COOK_TORRANCE) {
-        spec += r_s * specular_microfacet(n, v, l, m, v_index, terms);
+        spec += r_s * specular_microfacet(n, v, l, m, v_index, terms, ms_e);
     }
 #endif
 #if EFFECT_SPECULAR_PHONG

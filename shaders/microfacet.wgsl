@@ -17,6 +17,8 @@ const MASKING_SMITH: u32 = 1u;
 const MASKING_SMITH_CORRELATED: u32 = 2u;
 const FRESNEL_EXACT: u32 = 0u;
 const FRESNEL_SCHLICK: u32 = 1u;
+// The multiple-scattering compensation's bit (MICROFACET_MULTIPLE_SCATTERING, multiscatter.wgsl).
+const MICROFACET_MULTIPLE_SCATTERING: u32 = 16777216u;
 // The chapter's three terms, packed (Microfacet::CHAPTER), and glTF's (Microfacet::GLTF).
 const MICROFACET_CHAPTER: u32 = 0u;
 const MICROFACET_GLTF: u32 = 66049u;
@@ -181,7 +183,17 @@ fn microfacet_f(terms: u32, c: f32, v_index: vec3<f32>) -> vec3<f32> {
 
 // docs/model.md §5: the Cook–Torrance form as it enters the sum, π·ρ_s·(N·L) = F·D·G/(N·V), with
 // the material's D, G and F; π keeps it on the scale of the chapter's diffuse term r_d·C·(N·L).
-fn specular_microfacet(n: vec3<f32>, v: vec3<f32>, l: vec3<f32>, m: f32, v_index: vec3<f32>, terms: u32) -> vec3<f32> {
+// `ms_e` is the lobe's albedo E for the multiple-scattering compensation (multiscatter.wgsl); 1
+// puts nothing back.
+fn specular_microfacet(
+    n: vec3<f32>,
+    v: vec3<f32>,
+    l: vec3<f32>,
+    m: f32,
+    v_index: vec3<f32>,
+    terms: u32,
+    ms_e: f32,
+) -> vec3<f32> {
     let n_dot_l = dot(n, l);
     let n_dot_v = dot(n, v);
     let h = safe_normalize(l + v, n);
@@ -192,5 +204,9 @@ fn specular_microfacet(n: vec3<f32>, v: vec3<f32>, l: vec3<f32>, m: f32, v_index
     let g = microfacet_g(terms, n_dot_h, n_dot_v, n_dot_l, v_dot_h, m);
     let k = d * g / max(n_dot_v, N_DOT_V_MIN);
     let lit = n_dot_l > 0.0 && n_dot_v > 0.0;
-    return select(vec3(0.0), microfacet_f(terms, v_dot_h, v_index) * k, lit);
+    var comp = vec3(1.0);
+#if EFFECT_MULTIPLE_SCATTERING
+    comp = ms_compensation(ms_e, v_index);
+#endif
+    return select(vec3(0.0), microfacet_f(terms, v_dot_h, v_index) * k * comp, lit);
 }

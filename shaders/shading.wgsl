@@ -25,6 +25,13 @@ fn shade(p: vec3<f32>, n_in: vec3<f32>, surface: Surface, pixel: vec2<f32>) -> v
     v_index = fresnel_v_from_mu(surface.mu);
     terms = object.microfacet;
 #endif
+    // The lobe's albedo for its multiple-scattering compensation, once a point (1: none).
+    var ms_e = 1.0;
+#if EFFECT_MULTIPLE_SCATTERING
+    if (globals.specular_model == SPECULAR_COOK_TORRANCE && (terms & MICROFACET_MULTIPLE_SCATTERING) != 0u) {
+        ms_e = ms_albedo(terms, dot(n, v), surface.m);
+    }
+#endif
     var total = vec3(0.0);
 #if EFFECT_AMBIENT
     total += globals.ambient.rgb * surface.r_a * c;
@@ -62,7 +69,7 @@ fn shade(p: vec3<f32>, n_in: vec3<f32>, surface: Surface, pixel: vec2<f32>) -> v
 #endif
 #endif
             // The chosen model's term of this light (or point source), before its shadow.
-            let term = model_term(s, j, n, v, surface, v_index, terms, total, i_max);
+            let term = model_term(s, j, n, v, surface, v_index, ms_e, terms, total, i_max);
             total = term.total;
             i_max = term.i_max;
             let lit = term.lit;
@@ -103,6 +110,7 @@ fn model_term(
     v: vec3<f32>,
     surface: Surface,
     v_index: vec3<f32>,
+    ms_e: f32,
     terms: u32,
     total: vec3<f32>,
     i_max: vec3<f32>,
@@ -137,7 +145,7 @@ fn model_term(
 #endif
         out.lit = light_contribution(
             s, n, v, c, object.r_s, object.r_d, surface.m, surface.h, surface.mirror,
-            v_index, globals.specular_model, terms, normalized,
+            v_index, globals.specular_model, terms, normalized, ms_e,
         );
     }
     return out;

@@ -18,6 +18,9 @@ struct Globals {
     // Which illumination model: ILLUMINATION_PHONG, _LAMBERT or _SUM (models.wgsl).
     illumination: u32,
     lights: array<Light, MAX_LIGHTS>,
+    // The multiple-scattering compensation's table (multiscatter.rs's ms_table), four floats a
+    // slot; zero unless a material uses it.
+    ms_albedo: array<vec4<f32>, MS_TABLE_VEC4S>,
 }
 
 struct Object {
@@ -77,6 +80,8 @@ struct Object {
 }
 
 const FLAG_DEBUG_NONFINITE: u32 = 1u;
+// vec4 slots of globals.ms_albedo (multiscatter::MS_TABLE_VEC4S).
+const MS_TABLE_VEC4S: u32 = 512u;
 
 // The per-vertex modes' lighting passes read FLAT_CORNER_FLOATS floats a corner of the flat
 // mesh (three corners a face) and SMOOTH_VERTEX_FLOATS floats a smooth vertex.

@@ -77,7 +77,7 @@ mod tests {
                 let phi = 2.0 * std::f64::consts::PI * (j as f64 + 0.5) / np as f64;
                 let l = DVec3::new(sl * phi.cos(), sl * phi.sin(), cl);
                 // F = 1: a μ whose factor is 1 within 2e-4 everywhere.
-                let s = crate::lighting::microfacet::specular_microfacet(n_v, v, l, m, [1e9; 3], terms)[0];
+                let s = crate::lighting::microfacet::specular_microfacet(n_v, v, l, m, [1e9; 3], terms, 1.0)[0];
                 sum += s;
             }
         }

@@ -61,6 +61,11 @@ pub const FRESNEL_G_PLUS_C_MIN: f64 = 1e-6;
 /// which it makes 0; 1e-30 is a normal f32.
 pub const SMITH_DENOM_MIN: f64 = 1e-30;
 
+/// Smallest lobe albedo E the multiple-scattering compensation `1 + F0·(1 − E)/E` divides by.
+/// The table's albedos are all above 0.3 (GGX with Smith at m = 1, normal view); the floor only
+/// keeps a value the table does not hold from dividing by 0, and bounds the factor by 20.
+pub const MS_ALBEDO_MIN: f64 = 0.05;
+
 /// Distance under which a point light counts as touching the surface: the direction to it is
 /// undefined, so `L = N` (the light is straight above the surface point) is used instead.
 pub const LIGHT_DIST_MIN: f64 = 1e-4;
@@ -114,6 +119,7 @@ pub const ALL: &[(&str, f64)] = &[
     ("FRESNEL_SQRT_MU_MAX", FRESNEL_SQRT_MU_MAX),
     ("FRESNEL_G_PLUS_C_MIN", FRESNEL_G_PLUS_C_MIN),
     ("SMITH_DENOM_MIN", SMITH_DENOM_MIN),
+    ("MS_ALBEDO_MIN", MS_ALBEDO_MIN),
     ("LIGHT_DIST_MIN", LIGHT_DIST_MIN),
     ("D0_MIN", D0_MIN),
     ("SPOT_COS_SPAN_MIN", SPOT_COS_SPAN_MIN),

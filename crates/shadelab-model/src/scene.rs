@@ -182,6 +182,9 @@ pub struct Overrides {
     pub fresnel: Option<crate::lighting::microfacet::Fresnel>,
     /// Every material's Phong lobe normalized (`--phong-normalized on|off`).
     pub phong_normalized: Option<bool>,
+    /// Every material's microfacet lobe compensated for multiple scattering
+    /// (`--multiple-scattering on|off`), after `microfacet`.
+    pub multiple_scattering: Option<bool>,
 }
 
 /// The microfacet overrides on one material's terms: the preset, then each term given.
@@ -192,6 +195,7 @@ fn apply_terms(t: &mut Microfacet, o: &Overrides) {
     t.d = o.distribution.unwrap_or(t.d);
     t.g = o.masking.unwrap_or(t.g);
     t.f = o.fresnel.unwrap_or(t.f);
+    t.multiple_scattering = o.multiple_scattering.unwrap_or(t.multiple_scattering);
 }
 
 impl Overrides {

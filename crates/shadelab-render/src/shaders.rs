@@ -8,11 +8,13 @@
 use shadelab_model::effects::EffectKey;
 
 /// `(file name, source)` in the order they are concatenated.
-pub const FILES: [(&str, &str); 17] = [
+pub const FILES: [(&str, &str); 19] = [
     ("common.wgsl", include_str!("../../../shaders/common.wgsl")),
     ("brdf.wgsl", include_str!("../../../shaders/brdf.wgsl")),
     // Cook–Torrance's D, G and F, each selected by the material's code.
     ("microfacet.wgsl", include_str!("../../../shaders/microfacet.wgsl")),
+    // The lobe's multiple-scattering compensation (its table lookup is in ms_table.wgsl).
+    ("multiscatter.wgsl", include_str!("../../../shaders/multiscatter.wgsl")),
     ("models.wgsl", include_str!("../../../shaders/models.wgsl")),
     ("lights.wgsl", include_str!("../../../shaders/lights.wgsl")),
     // Only in permutations with area lights (the whole file is one `#if EFFECT_AREA_LIGHTS`).
@@ -29,6 +31,8 @@ pub const FILES: [(&str, &str); 17] = [
     // terms above, which `terms_source` gives compute passes that bind their own.
     ("types.wgsl", include_str!("../../../shaders/types.wgsl")),
     ("bindings.wgsl", include_str!("../../../shaders/bindings.wgsl")),
+    // The compensation's table in the globals: with the multiple-scattering effect only.
+    ("ms_table.wgsl", include_str!("../../../shaders/ms_table.wgsl")),
     // Only in permutations with cast shadows (the whole file is one `#if EFFECT_CAST_SHADOWS`).
     ("shadows.wgsl", include_str!("../../../shaders/shadows.wgsl")),
     // The model at a point and the material at a pixel: the functions the entry points call.
@@ -83,16 +87,35 @@ pub fn preprocess(source: &str, defines: &[&str]) -> Result<String, String> {
     }
 }
 
+/// How many of [`FILES`] hold the terms alone (up to `types.wgsl`).
+const TERM_FILES: usize = 11;
+const _: () = assert!(same_name(FILES[TERM_FILES].0, "types.wgsl"), "the terms end where the types begin");
+
+const fn same_name(a: &str, b: &str) -> bool {
+    let (a, b) = (a.as_bytes(), b.as_bytes());
+    if a.len() != b.len() {
+        return false;
+    }
+    let mut i = 0;
+    while i < a.len() {
+        if a[i] != b[i] {
+            return false;
+        }
+        i += 1;
+    }
+    true
+}
+
 fn uber_defines() -> Vec<&'static str> {
     EffectKey::UBER.defines()
 }
 
 /// Constants, guards and the lighting terms with every effect, without entry points (for compute
 /// passes that evaluate the terms directly; the one texture binding of `surface` goes unused):
-/// `common`, `brdf`, `microfacet`, `models`, `lights`, `area_lights`, `area_points`, `shadow_math`, `surface` and
-/// `transmission`.
+/// `common`, `brdf`, `microfacet`, `multiscatter`, `models`, `lights`, `area_lights`, `area_points`,
+/// `shadow_math`, `surface` and `transmission`: the files before `types.wgsl`.
 pub fn terms_source() -> String {
-    let raw = FILES[..10].iter().map(|(_, s)| *s).collect::<Vec<_>>().join("\n");
+    let raw = FILES[..TERM_FILES].iter().map(|(_, s)| *s).collect::<Vec<_>>().join("\n");
     preprocess(&raw, &uber_defines()).expect("the shipped WGSL preprocesses")
 }
 

@@ -10,10 +10,11 @@ use shadelab_model::params::NamedValue;
 use shadelab_model::{FalloffForm, IlluminationModel, LightKind, SpecularModel};
 
 /// Each WGSL file and the source of its f64 twin.
-const TWINS: [(&str, &str); 17] = [
+const TWINS: [(&str, &str); 19] = [
     ("common.wgsl", include_str!("../../shadelab-model/src/lighting/common.rs")),
     ("brdf.wgsl", include_str!("../../shadelab-model/src/lighting/brdf.rs")),
     ("microfacet.wgsl", include_str!("../../shadelab-model/src/lighting/microfacet.rs")),
+    ("multiscatter.wgsl", include_str!("../../shadelab-model/src/lighting/multiscatter.rs")),
     ("models.wgsl", include_str!("../../shadelab-model/src/lighting/models.rs")),
     ("lights.wgsl", include_str!("../../shadelab-model/src/lighting/lights.rs")),
     ("area_lights.wgsl", include_str!("../../shadelab-model/src/lighting/area.rs")),
@@ -38,6 +39,8 @@ const TWINS: [(&str, &str); 17] = [
     // Structs and bindings: no functions.
     ("types.wgsl", ""),
     ("bindings.wgsl", ""),
+    // The table lookup of the compensation.
+    ("ms_table.wgsl", include_str!("../../shadelab-model/src/lighting/multiscatter.rs")),
     (
         "shadows.wgsl",
         concat!(
@@ -62,7 +65,8 @@ const TWINS: [(&str, &str); 17] = [
 
 /// WGSL functions with no f64 twin, by file, and why. (Entry points are left out by naga's list:
 /// they are the GPU's stages, whose f64 counterpart is `reference::render_reference`.)
-const NO_TWIN: [(&str, &str, &str); 41] = [
+const NO_TWIN: [(&str, &str, &str); 42] = [
+    ("ms_table.wgsl", "ms_node", "one node of the uniform table; the twin's ms_albedo indexes its slice"),
     ("entry_points.wgsl", "pixel_inputs", "the interpolants at a pixel; the reference has the exact hit"),
     ("glass.wgsl", "project_to_pixel", "a point on the target; the reference traces rays, it has no target"),
     ("glass.wgsl", "texel", "a pixel of the target; the reference traces rays, it has no target"),
@@ -241,6 +245,10 @@ fn wgsl_codes_equal_rust_codes() {
     rust.extend(Fresnel::ALL.iter().map(|(n, f)| (code_name("FRESNEL", n), f.code())));
     rust.push(("MICROFACET_CHAPTER".into(), Microfacet::CHAPTER.code()));
     rust.push(("MICROFACET_GLTF".into(), Microfacet::GLTF.code()));
+    rust.push((
+        "MICROFACET_MULTIPLE_SCATTERING".into(),
+        shadelab_model::lighting::microfacet::MICROFACET_MULTIPLE_SCATTERING,
+    ));
     let field_bits = shadelab_model::lighting::microfacet::MICROFACET_FIELD_BITS;
     rust.push(("MICROFACET_FIELD_BITS".into(), field_bits));
     rust.push(("MICROFACET_FIELD_MASK".into(), (1 << field_bits) - 1));
@@ -274,6 +282,12 @@ fn wgsl_codes_equal_rust_codes() {
     {
         assert_eq!(wgsl_constant(&lighting, name), Some(*bit as f64), "{name}: WGSL vs textures::MAP_BITS");
     }
+    // The compensation's table: its shape, as multiscatter.rs lays it out.
+    use shadelab_model::lighting::multiscatter::{MS_PAIRS, MS_TABLE_SIDE, MS_TABLE_VEC4S};
+    assert_eq!(wgsl_constant(&lighting, "MS_TABLE_SIDE"), Some(MS_TABLE_SIDE as f64));
+    assert_eq!(wgsl_constant(&lighting, "MS_PAIRS"), Some(MS_PAIRS as f64));
+    assert_eq!(wgsl_constant(&lighting, "MS_TABLE_VEC4S"), Some(MS_TABLE_VEC4S as f64));
+    assert!(MS_PAIRS * MS_TABLE_SIDE * MS_TABLE_SIDE <= 4 * MS_TABLE_VEC4S);
     // Codes are distinct within a kind.
     for prefix in ["LIGHT_", "FALLOFF_", "SPECULAR_", "ILLUMINATION_", "DISTRIBUTION_", "MASKING_", "FRESNEL_"] {
         let mut codes: Vec<u32> = rust.iter().filter(|(n, _)| n.starts_with(prefix)).map(|(_, c)| *c).collect();

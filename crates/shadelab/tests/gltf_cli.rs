@@ -143,6 +143,9 @@ fn a_gltf_file_opens_with_the_gltf_brdf_and_the_chapters_is_one_switch_away() {
     assert!(std::fs::read(&a).unwrap() != std::fs::read(&b).unwrap(), "the two BRDFs draw the same image");
     let one = run(&["--microfacet", "chapter", "--fresnel", "schlick"], &b);
     assert!(one.contains("+beckmann+vgroove+schlick+"), "{one}");
+    assert!(gltf.contains("multiple scattering 1 + F0·(1 − E)/E: off"), "{gltf}");
+    let ms = run(&["--multiple-scattering", "on"], &b);
+    assert!(ms.contains("multiple scattering 1 + F0·(1 − E)/E: on") && ms.contains("+schlick+ms+"), "{ms}");
     let o = shadelab(&["render", "--scene", scene, "--masking", "smiths", "--output", &b]);
     assert_eq!(o.status.code(), Some(2));
     let e = String::from_utf8_lossy(&o.stderr);
@@ -155,7 +158,8 @@ fn a_gltf_file_opens_with_the_gltf_brdf_and_the_chapters_is_one_switch_away() {
 fn phong_normalized_is_a_flag_an_effect_and_saved() {
     let (a, b, saved) = (out("phong-plain.png"), out("phong-normalized.png"), out("phong-normalized.gltf"));
     let run = |scene: &str, extra: &[&str], png: &str| {
-        let mut args = vec!["render", "--explain", "--scene", scene, "--specular", "phong", "--width", "96", "--height", "54"];
+        let mut args =
+            vec!["render", "--explain", "--scene", scene, "--specular", "phong", "--width", "96", "--height", "54"];
         args.extend(extra);
         args.extend(["--output", png]);
         let o = shadelab(&args);
@@ -165,7 +169,10 @@ fn phong_normalized_is_a_flag_an_effect_and_saved() {
     let plain = run("sphere", &[], &a);
     assert!(plain.contains("Phong lobe normalized (h + 1)/2: off — no material with r_s > 0 asks for it"), "{plain}");
     let normalized = run("sphere", &["--phong-normalized", "on", "--save-scene", &saved], &b);
-    assert!(normalized.contains("Phong lobe normalized (h + 1)/2: on") && normalized.contains("+phong-norm+"), "{normalized}");
+    assert!(
+        normalized.contains("Phong lobe normalized (h + 1)/2: on") && normalized.contains("+phong-norm+"),
+        "{normalized}"
+    );
     assert!(std::fs::read(&a).unwrap() != std::fs::read(&b).unwrap(), "the normalization changed nothing");
     let again = run(&saved, &[], &a);
     assert!(again.contains("Phong lobe normalized (h + 1)/2: on"), "{again}");

@@ -91,6 +91,10 @@ fn the_terms_section_switches_each_term_live() {
     let materials = h.state_mut().scene_mut().materials.clone();
     let ggx: Vec<bool> = materials.iter().map(|m| m.microfacet.d == Distribution::Ggx).collect();
     assert_eq!(ggx.iter().filter(|g| **g).count(), 1, "{ggx:?}");
+    h.get_by_label("multiple scattering").click();
+    h.run_steps(3);
+    let materials = h.state_mut().scene_mut().materials.clone();
+    assert_eq!(materials.iter().filter(|m| m.microfacet.multiple_scattering).count(), 1);
 }
 
 /// The h row's "normalized" box scales the selected material's Phong lobe: with Phong specular

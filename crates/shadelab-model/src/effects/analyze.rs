@@ -204,6 +204,7 @@ fn decide_diffuse_specular(
     let (on, why) = spec_reason(SpecularModel::CookTorrance);
     a.decide(Effect::SpecularCookTorrance, on, why);
     super::specular_terms::decide_microfacet_terms(a, used, on);
+    super::specular_terms::decide_multiple_scattering(a, used, on);
 }
 
 /// The ambient term, the Lambert rule, and the four-term sum with its transmitted term.

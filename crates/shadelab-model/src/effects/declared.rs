@@ -177,6 +177,15 @@ declare_effects! {
         functions: &["fresnel_schlick"],
         members: &[],
     },
+    /// The microfacet lobe's multiple-scattering compensation (docs/microfacet.md).
+    MultipleScattering {
+        explain: "multiple scattering 1 + F0·(1 − E)/E",
+        name: "multiple-scattering compensation",
+        label: "ms",
+        define: Some("EFFECT_MULTIPLE_SCATTERING"),
+        functions: &["ms_compensation", "ms_albedo"],
+        members: &[("Globals", "ms_albedo")],
+    },
     /// Ambient `I_amb·r_a·C` (docs/model.md §2).
     Ambient {
         explain: "ambient I_amb·r_a·C",

@@ -50,6 +50,21 @@ pub(super) fn decide_phong_normalization(a: &mut Analysis, used: &[&crate::scene
     a.decide(Effect::PhongNormalized, phong && !normalized.is_empty(), why);
 }
 
+/// The lobe's multiple-scattering compensation: on when Cook–Torrance is and a material with
+/// r_s > 0 asks for it.
+pub(super) fn decide_multiple_scattering(a: &mut Analysis, used: &[&crate::scene::Material], cook_torrance: bool) {
+    let asking: Vec<&str> =
+        used.iter().filter(|m| m.microfacet.multiple_scattering && m.r_s > 0.0).map(|m| m.name.as_str()).collect();
+    let why = if !cook_torrance {
+        "Cook–Torrance specular is off".to_string()
+    } else if let Some(first) = asking.first() {
+        format!("{} material(s) with r_s > 0 ask for it, '{first}' first", asking.len())
+    } else {
+        "no material with r_s > 0 asks for it".to_string()
+    };
+    a.decide(Effect::MultipleScattering, cook_torrance && !asking.is_empty(), why);
+}
+
 /// Each microfacet D, G and F: on when Cook–Torrance is and a material with r_s > 0 uses it.
 pub(super) fn decide_microfacet_terms(a: &mut Analysis, used: &[&crate::scene::Material], cook_torrance: bool) {
     for effect in MICROFACET_EFFECTS {
@@ -85,6 +100,16 @@ mod tests {
     use crate::scene::Scene;
 
     #[test]
+    fn the_compensation_is_in_only_with_cook_torrance_and_a_material_asking() {
+        let mut s = Scene::builtin("default").unwrap();
+        assert!(!analyze(&s, SpecularModel::CookTorrance).key.has(Effect::MultipleScattering));
+        s.materials[1].microfacet.multiple_scattering = true;
+        let a = analyze(&s, SpecularModel::CookTorrance);
+        assert!(a.key.has(Effect::MultipleScattering), "{:?}", a.lines());
+        assert!(!analyze(&s, SpecularModel::Phong).key.has(Effect::MultipleScattering));
+    }
+
+    #[test]
     fn phong_normalization_is_in_only_with_phong_specular_and_a_material_asking() {
         let mut s = Scene::builtin("default").unwrap();
         assert!(!analyze(&s, SpecularModel::Phong).key.has(Effect::PhongNormalized));
@@ -115,5 +140,4 @@ mod tests {
         assert!(!analyze(&s, SpecularModel::CookTorrance).key.has(Effect::FresnelExact));
         assert!(!analyze(&s, SpecularModel::Phong).key.has(Effect::FresnelSchlick));
     }
-
 }

@@ -69,6 +69,10 @@ struct MaterialExtras {
     /// Phong's lobe normalized (`Material::phong_normalized`); written only when true.
     #[serde(skip_serializing_if = "Option::is_none")]
     phong_normalized: Option<Flag>,
+    /// The microfacet lobe's multiple-scattering compensation (`Microfacet::multiple_scattering`);
+    /// written only when true.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    multiple_scattering: Option<Flag>,
 }
 
 impl Reader<'_> {
@@ -225,6 +229,7 @@ impl Reader<'_> {
             d: ex.distribution.map_or(terms.d, |n| n.0),
             g: ex.masking.map_or(terms.g, |n| n.0),
             f: ex.fresnel.map_or(terms.f, |n| n.0),
+            multiple_scattering: ex.multiple_scattering.is_some_and(|f| f.0),
         };
         mat.phong_normalized = ex.phong_normalized.is_some_and(|f| f.0);
         Ok((mat, mf0))
@@ -331,6 +336,7 @@ pub(super) fn write_material(m: &Material, extensions_used: &mut Vec<&'static st
         masking: Some(Named(m.microfacet.g)),
         fresnel: Some(Named(m.microfacet.f)),
         phong_normalized: m.phong_normalized.then_some(Flag(true)),
+        multiple_scattering: m.microfacet.multiple_scattering.then_some(Flag(true)),
     };
     let mut out = json!({
         "name": m.name,

@@ -4,11 +4,11 @@
 
 #[cfg(test)]
 use super::common::safe_normalize;
+#[cfg(test)]
+pub(crate) use super::microfacet::d_beckmann_normalized;
 pub use super::microfacet::{
     Microfacet, d_beckmann, fresnel_dielectric, fresnel_v_from_mu, g_cook_torrance, specular_microfacet,
 };
-#[cfg(test)]
-pub(crate) use super::microfacet::d_beckmann_normalized;
 use crate::guards::*;
 use crate::params::NamedValue;
 use crate::scene::Material;
@@ -81,7 +81,7 @@ pub fn specular_phong(v_dot_r: f64, h: f64, mirror: bool) -> f64 {
 /// docs/model.md §5: the Cook–Torrance term with the chapter's three terms
 /// ([`Microfacet::CHAPTER`]; the terms themselves are in [`super::microfacet`]).
 pub fn specular_cook_torrance(n: DVec3, v: DVec3, l: DVec3, m: f64, v_index: [f64; 3]) -> [f64; 3] {
-    specular_microfacet(n, v, l, m, v_index, Microfacet::CHAPTER)
+    specular_microfacet(n, v, l, m, v_index, Microfacet::CHAPTER, 1.0)
 }
 
 /// The chapter's specular BRDF `ρ_s = (F/π)·D·G/((N·V)(N·L))` for one channel, and the modern form
@@ -110,6 +110,7 @@ pub fn light_contribution(
     mat: &Material,
     v_index: [f64; 3],
     specular: SpecularModel,
+    ms_e: f64,
 ) -> [f64; 3] {
     let n_dot_l = n.dot(s.l);
     if n_dot_l <= 0.0 && s.form <= 0.0 {
@@ -119,7 +120,7 @@ pub fn light_contribution(
         [0.0; 3]
     } else {
         match specular {
-            SpecularModel::CookTorrance => specular_microfacet(n, v, s.l, mat.m, v_index, mat.microfacet),
+            SpecularModel::CookTorrance => specular_microfacet(n, v, s.l, mat.m, v_index, mat.microfacet, ms_e),
             SpecularModel::Phong => {
                 let r = 2.0 * n_dot_l * n - s.l;
                 let (h, mirror) = (mat.h.value(), mat.h.is_mirror());

@@ -103,10 +103,10 @@ macro_rules! named_term {
 }
 named_term!(Distribution, Masking, Fresnel);
 
-/// `d/g/f`, e.g. `ggx/smith-correlated/schlick`.
+/// `d/g/f`, e.g. `ggx/smith-correlated/schlick`, with `+ms` when compensated.
 impl std::fmt::Display for Microfacet {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        write!(f, "{}/{}/{}", self.d, self.g, self.f)
+        write!(f, "{}/{}/{}{}", self.d, self.g, self.f, if self.multiple_scattering { "+ms" } else { "" })
     }
 }
 
@@ -116,21 +116,34 @@ pub struct Microfacet {
     pub d: Distribution,
     pub g: Masking,
     pub f: Fresnel,
+    /// The multiple-scattering compensation on top (`multiscatter.rs`); neither set has it.
+    pub multiple_scattering: bool,
 }
 
 /// Bits of each field of [`Microfacet::code`] (WGSL `MICROFACET_FIELD_BITS`).
 pub const MICROFACET_FIELD_BITS: u32 = 8;
+/// The compensation's bit of [`Microfacet::code`], after the three fields.
+pub const MICROFACET_MULTIPLE_SCATTERING: u32 = 1 << (3 * MICROFACET_FIELD_BITS);
 
 impl Microfacet {
     /// The chapter's terms: Beckmann D, the V-groove G, the exact dielectric F.
-    pub const CHAPTER: Microfacet = Microfacet { d: Distribution::Beckmann, g: Masking::VGroove, f: Fresnel::Exact };
+    pub const CHAPTER: Microfacet =
+        Microfacet { d: Distribution::Beckmann, g: Masking::VGroove, f: Fresnel::Exact, multiple_scattering: false };
     /// The glTF 2.0 specification's terms (its Appendix B), also Filament's: GGX D, the
     /// height-correlated Smith G and Schlick's F, with α = m (docs/model.md §5).
-    pub const GLTF: Microfacet = Microfacet { d: Distribution::Ggx, g: Masking::SmithCorrelated, f: Fresnel::Schlick };
+    pub const GLTF: Microfacet = Microfacet {
+        d: Distribution::Ggx,
+        g: Masking::SmithCorrelated,
+        f: Fresnel::Schlick,
+        multiple_scattering: false,
+    };
 
-    /// `object.microfacet` in WGSL: D in bits 0–7, G in 8–15, F in 16–23.
+    /// `object.microfacet` in WGSL: D in bits 0–7, G in 8–15, F in 16–23, the compensation in
+    /// bit 24 (`MICROFACET_MULTIPLE_SCATTERING`).
     pub fn code(self) -> u32 {
-        self.d.code() | self.g.code() << MICROFACET_FIELD_BITS | self.f.code() << (2 * MICROFACET_FIELD_BITS)
+        let terms =
+            self.d.code() | self.g.code() << MICROFACET_FIELD_BITS | self.f.code() << (2 * MICROFACET_FIELD_BITS);
+        terms | if self.multiple_scattering { MICROFACET_MULTIPLE_SCATTERING } else { 0 }
     }
 }
 
@@ -292,8 +305,17 @@ pub fn microfacet_f(terms: Microfacet, c: f64, v_index: [f64; 3]) -> [f64; 3] {
 
 /// docs/model.md §5: the Cook–Torrance form as it enters the sum, `π ρ_s (N·L) = F·D·G/(N·V)`,
 /// with the material's D, G and F, per colour channel (`v` per channel). Multiplying by π keeps it
-/// on the scale of the chapter's diffuse term `r_d·C·(N·L)`, which has no 1/π.
-pub fn specular_microfacet(n: DVec3, v: DVec3, l: DVec3, m: f64, v_index: [f64; 3], terms: Microfacet) -> [f64; 3] {
+/// on the scale of the chapter's diffuse term `r_d·C·(N·L)`, which has no 1/π. `ms_e` is the
+/// lobe's albedo E for the compensation (`multiscatter.rs`); 1 (nothing to put back) without it.
+pub fn specular_microfacet(
+    n: DVec3,
+    v: DVec3,
+    l: DVec3,
+    m: f64,
+    v_index: [f64; 3],
+    terms: Microfacet,
+    ms_e: f64,
+) -> [f64; 3] {
     let n_dot_l = n.dot(l);
     let n_dot_v = n.dot(v);
     if n_dot_l <= 0.0 || n_dot_v <= 0.0 {
@@ -305,7 +327,9 @@ pub fn specular_microfacet(n: DVec3, v: DVec3, l: DVec3, m: f64, v_index: [f64; 
     let d = microfacet_d(terms, n_dot_h, n.cross(h).length_squared(), m);
     let g = microfacet_g(terms, n_dot_h, n_dot_v, n_dot_l, v_dot_h, m);
     let k = d * g / n_dot_v.max(N_DOT_V_MIN);
-    microfacet_f(terms, v_dot_h, v_index).map(|f| f * k)
+    let comp = super::multiscatter::ms_compensation(ms_e, v_index);
+    let f = microfacet_f(terms, v_dot_h, v_index);
+    std::array::from_fn(|c| f[c] * k * comp[c])
 }
 
 #[cfg(test)]

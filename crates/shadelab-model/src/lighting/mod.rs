@@ -4,6 +4,7 @@
 //! - [`common`] ↔ `common.wgsl`: the shared helpers.
 //! - [`brdf`] ↔ `brdf.wgsl`: the terms of the illumination model and the specular models.
 //! - [`microfacet`] ↔ `microfacet.wgsl`: Cook–Torrance's D, G and F, each chosen by the material.
+//! - [`multiscatter`] ↔ `multiscatter.wgsl`: the lobe's multiple-scattering compensation.
 //! - [`lights`] ↔ `lights.wgsl`: the light sources, their parameters and falloffs.
 //! - [`models`] ↔ `models.wgsl`: the Lambert rule and the four-term sum, and the model choice.
 //! - [`area`] ↔ `area_lights.wgsl`, [`area_points`] ↔ `area_points.wgsl`: area lights, exact and
@@ -24,5 +25,6 @@ pub mod common;
 pub mod lights;
 pub mod microfacet;
 pub mod models;
+pub mod multiscatter;
 pub mod shading;
 pub mod transmission;

@@ -52,6 +52,12 @@ pub fn shade_with_visibility(
     let v = safe_normalize(eye.truncate() - p * eye.w, DVec3::Y);
     let n = safe_normalize(n_in, v);
     let v_index = mat.mu.map(fresnel_v_from_mu);
+    // The lobe's albedo for its multiple-scattering compensation: once a point, as the WGSL.
+    let ms_e = if specular == SpecularModel::CookTorrance && mat.microfacet.multiple_scattering {
+        super::multiscatter::ms_albedo(mat.microfacet, n.dot(v), mat.m)
+    } else {
+        1.0
+    };
     let c = mat.color;
     let mut total = [0.0; 3];
     if model != IlluminationModel::Lambert {
@@ -68,7 +74,7 @@ pub fn shade_with_visibility(
             } else {
                 base
             };
-            let lit = model_term(model, &s, j, n, v, mat, v_index, specular, &mut i_max, &mut total);
+            let lit = model_term(model, &s, j, n, v, mat, v_index, ms_e, specular, &mut i_max, &mut total);
             if lit == [0.0; 3] {
                 continue;
             }
@@ -103,6 +109,7 @@ fn model_term(
     v: DVec3,
     mat: &Material,
     v_index: [f64; 3],
+    ms_e: f64,
     specular: SpecularModel,
     i_max: &mut [f64; 3],
     total: &mut [f64; 3],
@@ -124,6 +131,6 @@ fn model_term(
             }
             sum_contribution(radiance, s.form, n.dot(v), c, mat.r_d, mat.r_s)
         }
-        IlluminationModel::Phong => light_contribution(s, n, v, mat, v_index, specular),
+        IlluminationModel::Phong => light_contribution(s, n, v, mat, v_index, specular, ms_e),
     }
 }

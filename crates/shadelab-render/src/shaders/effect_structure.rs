@@ -64,6 +64,10 @@ const MICROFACET: [Effect; 7] = shadelab_model::effects::MICROFACET_EFFECTS;
 /// rather than doubling the product of the rest.
 const PHONG_OPTIONS: [Effect; 1] = [Effect::PhongNormalized];
 
+/// The microfacet lobe's compensation: a factor inside Cook–Torrance's specular and a table read
+/// in `shade`, validated on a few bases.
+const MS_OPTIONS: [Effect; 1] = [Effect::MultipleScattering];
+
 /// The keys of every subset of `effects`.
 fn subsets(effects: &[Effect]) -> Vec<EffectKey> {
     (0..1u32 << effects.len())
@@ -85,7 +89,7 @@ fn every_permutation_validates_in_naga() {
     let outside: Vec<Effect> = Effect::ALL
         .into_iter()
         .filter(|e| {
-            let groups = [&INSIDE_SHADOWS[..], &SURFACE, &AREA, &GLASS, &MICROFACET, &PHONG_OPTIONS];
+            let groups = [&INSIDE_SHADOWS[..], &SURFACE, &AREA, &GLASS, &MICROFACET, &PHONG_OPTIONS, &MS_OPTIONS];
             !groups.iter().any(|group| group.contains(e))
         })
         .collect();
@@ -150,6 +154,18 @@ fn every_permutation_validates_in_naga() {
     for base in phong_bases {
         let base = PHONG_OPTIONS.into_iter().fold(base, |k, e| k.without(e));
         keys.extend(subsets(&PHONG_OPTIONS).into_iter().map(|k| union(k, base)));
+    }
+    // The compensation on every other effect, on Cook–Torrance with GGX and Smith, and on none.
+    let ms_bases: [EffectKey; 3] = [
+        EffectKey::UBER,
+        [Effect::PointLights, Effect::SpecularCookTorrance, Effect::DistributionGgx, Effect::MaskingSmithCorrelated]
+            .into_iter()
+            .collect(),
+        EffectKey::NONE,
+    ];
+    for base in ms_bases {
+        let base = MS_OPTIONS.into_iter().fold(base, |k, e| k.without(e));
+        keys.extend(subsets(&MS_OPTIONS).into_iter().map(|k| union(k, base)));
     }
     for key in keys {
         let src = lighting_source_for(&raw, key).unwrap();

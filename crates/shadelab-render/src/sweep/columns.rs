@@ -5,7 +5,7 @@
 
 use super::inputs::ShadowCase;
 use glam::DVec3;
-use shadelab_model::guards::{D0_MIN, H_MAX, M_MIN, N_DOT_V_MIN};
+use shadelab_model::guards::{D0_MIN, H_MAX, M_MIN, MS_ALBEDO_MIN, N_DOT_V_MIN};
 use shadelab_model::lighting::area::{self, AreaLight, AreaShape};
 use shadelab_model::lighting::area_points::{area_emitter, area_point_sample};
 use shadelab_model::lighting::microfacet::{self, Microfacet};
@@ -33,7 +33,7 @@ pub struct Column {
 const D_MAX: f64 = 1.0 / (4.0 * M_MIN * M_MIN);
 
 /// Every column in the order the kernel writes them (and the report lists them).
-pub const COLUMNS: [Column; 52] = [
+pub const COLUMNS: [Column; 53] = [
     col("diffuse_lambert", "DIFFUSE_LAMBERT", 1, 1.0, "N·L of unit vectors"),
     col("specular_phong", "SPECULAR_PHONG", 1, 1.0, "(V·R)^h with V·R clamped to [0, 1]"),
     col(
@@ -63,6 +63,13 @@ pub const COLUMNS: [Column; 52] = [
         3,
         D_MAX / N_DOT_V_MIN,
         "F·D·G/(N·V) ≤ 1 · 1/(4 M_MIN²) · 1 / N_DOT_V_MIN",
+    ),
+    col(
+        "ms_compensation (E = m)",
+        "MS_COMPENSATION",
+        3,
+        1.0 / MS_ALBEDO_MIN,
+        "1 + F0 (1 − E)/E ≤ 1/MS_ALBEDO_MIN, F0 ≤ 1",
     ),
     col("falloff_quadratic", "FALLOFF_QUADRATIC", 1, 1.0, "1/(1 + α d²), α ≥ 0"),
     col("falloff_linear", "FALLOFF_LINEAR", 1, 1.0 / D0_MIN, "1/(d + d0), d0 ≥ D0_MIN"),
@@ -239,6 +246,7 @@ const G_SMITH_SEPARABLE: usize = offset("G_SMITH_SEPARABLE");
 const G_SMITH_CORRELATED: usize = offset("G_SMITH_CORRELATED");
 const MICROFACET_F_SCHLICK: usize = offset("MICROFACET_F_SCHLICK");
 const SPECULAR_MICROFACET_GLTF: usize = offset("SPECULAR_MICROFACET_GLTF");
+const MS_COMPENSATION: usize = offset("MS_COMPENSATION");
 const FALLOFF_QUADRATIC: usize = offset("FALLOFF_QUADRATIC");
 const FALLOFF_LINEAR: usize = offset("FALLOFF_LINEAR");
 const CONTRIBUTION_PHONG: usize = offset("CONTRIBUTION_PHONG");
@@ -382,9 +390,9 @@ fn light_columns(out: &mut [f64; OUTPUTS], inp: &Combination) {
     rgb(out, SPECULAR_COOK_TORRANCE, brdf::specular_cook_torrance(n, v, l, m, v_index));
     out[FALLOFF_QUADRATIC] = lights::falloff_quadratic(d, alpha);
     out[FALLOFF_LINEAR] = lights::falloff_linear(d, d0);
-    let cp = brdf::light_contribution(&quadratic, n, v, &mat, v_index, SpecularModel::Phong);
+    let cp = brdf::light_contribution(&quadratic, n, v, &mat, v_index, SpecularModel::Phong, 1.0);
     rgb(out, CONTRIBUTION_PHONG, cp);
-    let cc = brdf::light_contribution(&linear, n, v, &mat, v_index, SpecularModel::CookTorrance);
+    let cc = brdf::light_contribution(&linear, n, v, &mat, v_index, SpecularModel::CookTorrance, 1.0);
     rgb(out, CONTRIBUTION_COOK_TORRANCE, cc);
     // The other models at the linear falloff's sample; m in [0, 1] doubles as the share 1 − t.
     let (nl, nv) = (linear.form, n.dot(v));
@@ -410,7 +418,9 @@ fn microfacet_columns(out: &mut [f64; OUTPUTS], inp: &Combination) {
     out[G_SMITH_CORRELATED] = microfacet::g_smith_correlated(Ggx, nv, nl, m);
     out[G_SMITH_CORRELATED + 1] = microfacet::g_smith_correlated(Beckmann, nv, nl, m);
     rgb(out, MICROFACET_F_SCHLICK, microfacet::microfacet_f(Microfacet::GLTF, v.dot(half), v_index));
-    rgb(out, SPECULAR_MICROFACET_GLTF, microfacet::specular_microfacet(n, v, l, m, v_index, Microfacet::GLTF));
+    rgb(out, SPECULAR_MICROFACET_GLTF, microfacet::specular_microfacet(n, v, l, m, v_index, Microfacet::GLTF, 1.0));
+    // The compensation over E = m (0 to 1, the floor at 0 included).
+    rgb(out, MS_COMPENSATION, shadelab_model::lighting::multiscatter::ms_compensation(m, v_index));
 }
 
 /// The shadow-map columns: the cube face, the texel's world size and the map coordinate.

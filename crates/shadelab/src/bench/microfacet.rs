@@ -55,7 +55,7 @@ pub fn combinations() -> Vec<Microfacet> {
     for &(_, d) in Distribution::ALL {
         for &(_, g) in Masking::ALL {
             for &(_, f) in Fresnel::ALL {
-                out.push(Microfacet { d, g, f });
+                out.push(Microfacet { d, g, f, ..Microfacet::CHAPTER });
             }
         }
     }
@@ -218,28 +218,31 @@ pub fn schlick_rows() -> Vec<SchlickRow> {
 pub const FURNACE_M: [f64; 5] = [0.1, 0.3, 0.5, 0.7, 1.0];
 pub const FURNACE_VIEW_DEG: [f64; 6] = [0.0, 30.0, 60.0, 75.0, 85.0, 89.0];
 
-/// One D × G pair's albedo `E` (F = 1) at each roughness (rows) and view angle (columns).
+/// One D × G pair's albedo `E` (F = 1) at each roughness (rows) and view angle (columns), and
+/// the same with the multiple-scattering compensation (its table's E put back, F0 = 1).
 pub struct FurnaceRow {
     pub terms: Microfacet,
     pub albedo: Vec<Vec<f64>>,
+    pub compensated: Vec<Vec<f64>>,
 }
 
 /// The white furnace over every D × G pair, roughness and view angle (f64, no GPU).
 pub fn furnace_rows() -> Vec<FurnaceRow> {
     use shadelab_model::furnace::{FURNACE_SAMPLES, directional_albedo, pairs};
+    use shadelab_model::lighting::multiscatter::{ms_albedo, ms_compensation};
+    let grid = |f: &dyn Fn(f64, f64) -> f64| -> Vec<Vec<f64>> {
+        FURNACE_M.iter().map(|&m| FURNACE_VIEW_DEG.iter().map(|deg| f(m, deg.to_radians().cos())).collect()).collect()
+    };
     pairs()
         .into_iter()
-        .map(|terms| FurnaceRow {
-            terms,
-            albedo: FURNACE_M
-                .iter()
-                .map(|&m| {
-                    FURNACE_VIEW_DEG
-                        .iter()
-                        .map(|deg: &f64| directional_albedo(terms, m, deg.to_radians().cos(), FURNACE_SAMPLES / 2))
-                        .collect()
-                })
-                .collect(),
+        .map(|terms| {
+            let albedo = grid(&|m, c| directional_albedo(terms, m, c, FURNACE_SAMPLES / 2));
+            // F0 = 1: a white furnace for the compensated lobe too.
+            let compensated = grid(&|m, c| {
+                directional_albedo(terms, m, c, FURNACE_SAMPLES / 2)
+                    * ms_compensation(ms_albedo(terms, c, m), [1e9; 3])[0]
+            });
+            FurnaceRow { terms, albedo, compensated }
         })
         .collect()
 }
@@ -276,6 +279,14 @@ fn furnace_markdown(s: &mut String, rows: &[FurnaceRow]) {
         least.1,
         least.0
     );
+    let _ = writeln!(s, "\nWith the multiple-scattering compensation (F0 = 1), over the same grid:\n");
+    let _ = writeln!(s, "| D / G | smallest E | largest E |");
+    let _ = writeln!(s, "|---|---:|---:|");
+    for r in rows {
+        let all = r.compensated.iter().flatten();
+        let (lo, hi) = all.fold((f64::INFINITY, 0.0f64), |(lo, hi), e| (lo.min(*e), hi.max(*e)));
+        let _ = writeln!(s, "| {} / {} | {lo:.4} | {hi:.4} |", r.terms.d, r.terms.g);
+    }
 }
 
 /// How far above 1 an albedo counts as gaining energy: the quadrature's error at
@@ -305,7 +316,10 @@ pub fn markdown(
             r.terms, r.median_ms, r.ratio_to_null, r.mean_change, r.max_change, r.gpu_error
         );
     }
-    let _ = writeln!(s, "\nWhere one term's change lies (|reference − the chapter's reference|, magma scale, white at the value given):\n");
+    let _ = writeln!(
+        s,
+        "\nWhere one term's change lies (|reference − the chapter's reference|, magma scale, white at the value given):\n"
+    );
     for m in maps {
         let _ = writeln!(s, "- `{}.png`: {}, white at {}", m.stem, m.caption, m.full);
     }
@@ -345,11 +359,12 @@ pub fn schlick_csv(rows: &[SchlickRow]) -> String {
 }
 
 pub fn furnace_csv(rows: &[FurnaceRow]) -> String {
-    let mut s = String::from("d,g,m,view_deg,albedo\n");
+    let mut s = String::from("d,g,m,view_deg,albedo,albedo_compensated\n");
     for r in rows {
         for (mi, m) in FURNACE_M.iter().enumerate() {
             for (vi, deg) in FURNACE_VIEW_DEG.iter().enumerate() {
-                let _ = writeln!(s, "{},{},{m},{deg},{}", r.terms.d, r.terms.g, r.albedo[mi][vi]);
+                let (e, c) = (r.albedo[mi][vi], r.compensated[mi][vi]);
+                let _ = writeln!(s, "{},{},{m},{deg},{e},{c}", r.terms.d, r.terms.g);
             }
         }
     }

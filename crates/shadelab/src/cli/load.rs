@@ -30,7 +30,8 @@ pub fn load(args: &SceneArgs) -> Result<LoadedScene, Failure> {
             warnings: Vec::new(),
         },
         None if is_file && std::path::Path::new(name).exists() => {
-            let loaded = gltf_io::load_scene_with(std::path::Path::new(name), args.allow_outside_paths).map_err(|e| Failure::Usage(e.to_string()))?;
+            let loaded = gltf_io::load_scene_with(std::path::Path::new(name), args.allow_outside_paths)
+                .map_err(|e| Failure::Usage(e.to_string()))?;
             for w in &loaded.warnings {
                 log::warn!("{name}: {w}");
             }
@@ -92,5 +93,6 @@ pub fn overrides(a: &SceneArgs) -> Overrides {
         masking: a.masking,
         fresnel: a.fresnel,
         phong_normalized: a.phong_normalized,
+        multiple_scattering: a.multiple_scattering,
     }
 }

@@ -12,8 +12,8 @@ pub use values::{FRAMES, MESH_TRIANGLES, WARMUP, one_line, within};
 use crate::Failure;
 use clap::{Args, Parser, Subcommand};
 use shadelab_model::gltf_io::{LoadedScene, SceneSettings};
-use shadelab_model::params::{self, PhongExponent};
 use shadelab_model::lighting::microfacet::{Distribution, Fresnel, Masking, Microfacet};
+use shadelab_model::params::{self, PhongExponent};
 use shadelab_model::scene::BUILTIN_SCENES;
 use shadelab_model::shadows::{PCSS_TAPS, SHADOW_RESOLUTION, ShadowFilter};
 use shadelab_model::{
@@ -364,6 +364,11 @@ pub struct SceneArgs {
     /// normal view (on), or the chapter's (V·R)^h (off) [default: the scene file's, else off]
     #[arg(long, value_name = "ON|OFF", value_parser = values::on_off())]
     pub phong_normalized: Option<bool>,
+    /// Every material's Cook–Torrance lobe compensated for the light its single scattering
+    /// loses (on, Turquin's 1 + F0·(1 − E)/E), or not (off), after --microfacet [default: the
+    /// scene file's, else off]
+    #[arg(long, value_name = "ON|OFF", value_parser = values::on_off())]
+    pub multiple_scattering: Option<bool>,
     #[arg(long, value_name = "ALPHA", value_parser = values::real(params::FALLOFF),
           help = within("Falloff factor α of every point and spot light, I0/(1 + α d²)", params::FALLOFF))]
     pub falloff: Option<f64>,

@@ -76,6 +76,7 @@ fn extras_are_written_and_read_by_the_same_types() {
     scene.materials[0].phong_normalized = true;
     scene.materials[1].microfacet = crate::lighting::microfacet::Microfacet {
         d: crate::lighting::microfacet::Distribution::Ggx,
+        multiple_scattering: true,
         ..crate::lighting::microfacet::Microfacet::CHAPTER
     };
     scene.lights[0].shadow = crate::shadows::ShadowSettings {
@@ -93,7 +94,10 @@ fn extras_are_written_and_read_by_the_same_types() {
         keys(&doc["materials"][0]),
         "C I_e a d distribution fresnel h m masking mu mu_t phong_normalized r_a r_d r_s t"
     );
-    assert_eq!(keys(&doc["materials"][1]), "C a d distribution fresnel h m masking mu mu_t r_a r_d r_s t");
+    assert_eq!(
+        keys(&doc["materials"][1]),
+        "C a d distribution fresnel h m masking mu mu_t multiple_scattering r_a r_d r_s t"
+    );
     assert_eq!(doc["materials"][1]["extras"]["shadelab"]["h"], json!("mirror"));
     assert_eq!(doc["materials"][1]["extras"]["shadelab"]["distribution"], json!("ggx"));
     assert_eq!(doc["materials"][1]["extras"]["shadelab"]["masking"], json!("v-groove"));

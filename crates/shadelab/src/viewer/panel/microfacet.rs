@@ -24,7 +24,8 @@ fn term_menu<T: NamedValue + PartialEq + std::fmt::Display>(ui: &mut egui::Ui, l
 pub(super) fn microfacet_ui(ui: &mut egui::Ui, materials: &mut [Material], selected: usize, active: bool) {
     let t = materials[selected].microfacet;
     let title = format!("Cook–Torrance terms: {t}");
-    let header = egui::CollapsingHeader::new(title).id_salt("microfacet terms").show(ui, |ui| terms_ui(ui, materials, selected));
+    let header =
+        egui::CollapsingHeader::new(title).id_salt("microfacet terms").show(ui, |ui| terms_ui(ui, materials, selected));
     header.header_response.on_hover_text(if active {
         "Cook–Torrance's D, G and F for this material"
     } else {
@@ -45,7 +46,15 @@ fn terms_ui(ui: &mut egui::Ui, materials: &mut [Material], selected: usize) {
     let t = &mut materials[selected].microfacet;
     ui.horizontal_wrapped(|ui| {
         term_menu::<Distribution>(ui, "D", "facet distribution: beckmann (the chapter's) or ggx", &mut t.d);
-        term_menu::<Masking>(ui, "G", "masking–shadowing: v-groove (the chapter's), smith or smith-correlated", &mut t.g);
+        term_menu::<Masking>(
+            ui,
+            "G",
+            "masking–shadowing: v-groove (the chapter's), smith or smith-correlated",
+            &mut t.g,
+        );
         term_menu::<Fresnel>(ui, "F", "Fresnel factor: exact (the chapter's) or schlick", &mut t.f);
     });
+    ui.checkbox(&mut t.multiple_scattering, "multiple scattering").on_hover_text(
+        "the light single scattering loses between facets put back, 1 + F0·(1 − E)/E (docs/microfacet.md)",
+    );
 }

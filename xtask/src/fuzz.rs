@@ -34,11 +34,11 @@ const HOST: &str = "x86_64-unknown-linux-gnu";
 pub fn main(args: &[String]) -> Result<(), String> {
     let seconds = match args {
         [] => 60,
-        [flag, n] if flag == "--seconds" => {
-            n.parse::<u32>().ok().filter(|n| (1..=86_400).contains(n)).ok_or_else(|| {
-                format!("--seconds: '{n}' is not a whole number of seconds in [1, 86400]")
-            })?
-        }
+        [flag, n] if flag == "--seconds" => n
+            .parse::<u32>()
+            .ok()
+            .filter(|n| (1..=86_400).contains(n))
+            .ok_or_else(|| format!("--seconds: '{n}' is not a whole number of seconds in [1, 86400]"))?,
         _ => return Err("usage: cargo xtask fuzz [--seconds N]".into()),
     };
     run(seconds)
@@ -63,7 +63,9 @@ pub fn run(seconds: u32) -> Result<(), String> {
     for (name, seeds) in TARGETS {
         let corpus = target_dir.join("corpus").join(name);
         let artifacts = target_dir.join("artifacts").join(name);
-        std::fs::create_dir_all(&corpus).and_then(|_| std::fs::create_dir_all(&artifacts)).map_err(|e| e.to_string())?;
+        std::fs::create_dir_all(&corpus)
+            .and_then(|_| std::fs::create_dir_all(&artifacts))
+            .map_err(|e| e.to_string())?;
         let mut cmd = Command::new(target_dir.join(HOST).join("release").join(name));
         cmd.current_dir(root).arg(&corpus).args(seeds);
         cmd.arg(format!("-max_total_time={seconds}"))

@@ -5,9 +5,9 @@
 
 use crate::guards::N_DOT_V_MIN;
 use crate::lighting::brdf::{fresnel_v_from_mu, specular_phong};
-use crate::lighting::microfacet::{microfacet_d, microfacet_f, microfacet_g};
 use crate::lighting::common::safe_normalize;
 use crate::lighting::lights::light_sample;
+use crate::lighting::microfacet::{microfacet_d, microfacet_f, microfacet_g};
 use crate::scene::{MAX_LIGHTS, Material, Scene};
 use glam::{DMat4, DVec3};
 

@@ -15,8 +15,8 @@ use glam::{DMat4, DVec3, DVec4};
 mod cascades;
 pub use cascades::{
     SHADOW_CASCADE_DEPTH_RATIO, SHADOW_CASCADE_MARGIN_TEXELS, SHADOW_CASCADES_MAX, cascade_count, cascade_layers,
-    cascade_projection,
-    cascade_splits, cascades_for_depths, shadow_cascade, shadow_ortho_texel_world, view_depth_range,
+    cascade_projection, cascade_splits, cascades_for_depths, shadow_cascade, shadow_ortho_texel_world,
+    view_depth_range,
 };
 
 pub use crate::shadow_settings::{
@@ -79,7 +79,6 @@ pub const SHADOW_BOUNDS_RADIUS_MIN: f64 = 1e-3;
 /// a point light's centre, w = 0) or behind it has no coordinate there and counts as outside the
 /// map, lit. 1e-20 keeps `c.xyz / w` finite in f32 for any |c.xyz| below 3e18.
 pub const SHADOW_CLIP_W_MIN: f64 = 1e-20;
-
 
 /// The nearest blocker PCSS searches for, as a share of the receiver's distance from the light:
 /// a blocker nearer than a tenth casts a penumbra over 9 light sizes wide, more than 16 search

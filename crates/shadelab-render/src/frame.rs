@@ -11,7 +11,6 @@ use crate::upload::SceneGpu;
 use shadelab_model::Scene;
 use shadelab_model::effects::Effect;
 
-
 impl Renderer {
     /// Write a scene's parameters (materials, lights, camera) into its uniforms. Cheap: the
     /// viewer calls it whenever a parameter changes; geometry stays.

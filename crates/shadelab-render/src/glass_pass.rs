@@ -300,8 +300,10 @@ impl Renderer {
         let front = glass_pipeline(&mut self.pipelines, program, target.format, false).clone();
         // The back-face pipeline only where some object in the pass is a mesh.
         let needs_back = |i: &usize| exits.get(*i).copied() == Some(shadelab_model::lighting::transmission::SHAPE_MESH);
-        let back =
-            order.iter().any(needs_back).then(|| glass_pipeline(&mut self.pipelines, program, target.format, true).clone());
+        let back = order
+            .iter()
+            .any(needs_back)
+            .then(|| glass_pipeline(&mut self.pipelines, program, target.format, true).clone());
         let g = self.glass.as_ref().expect("made above");
         for (n, &i) in order.iter().enumerate() {
             let Some(mesh) = gpu_scene.objects.get(i).and_then(|k| gpu_scene.meshes.get(k)) else { continue };

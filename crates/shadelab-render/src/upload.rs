@@ -49,7 +49,9 @@ impl MeshGpu {
                 FlatSource::File { meshes, index, surfaces } => {
                     let m = meshes.get(*index).expect("the mesh was uploaded from this index");
                     let corners = buffer_from_pieces(device, queue, "flat vertices", usage, count, |r, out| {
-                        out.extend((r.start / 3..r.end / 3).flat_map(|k| m.flat_corners(k).map(|c| FlatVertex::from(&c))))
+                        out.extend(
+                            (r.start / 3..r.end / 3).flat_map(|k| m.flat_corners(k).map(|c| FlatVertex::from(&c))),
+                        )
                     });
                     // Corner 3k + c of the flat mesh is corner c of triangle k.
                     let surface = surfaces.then(|| {

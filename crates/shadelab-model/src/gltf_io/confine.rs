@@ -43,10 +43,9 @@ pub(super) fn local_path(cx: &Cx, what: &str, uri: &str, dir: &Path, confined: b
     if let (Ok(real), Ok(root)) = (path.canonicalize(), dir.canonicalize())
         && !real.starts_with(&root)
     {
-        return Err(cx.invalid(format!(
-            "{what}: '{uri}' is a link to {}, outside the scene's folder {allow}",
-            real.display()
-        )));
+        return Err(
+            cx.invalid(format!("{what}: '{uri}' is a link to {}, outside the scene's folder {allow}", real.display()))
+        );
     }
     Ok(path)
 }

@@ -36,7 +36,10 @@ pub(super) fn read<T: DeserializeOwned + Default>(cx: &Cx, extras: &json::Extras
 /// Whether `extras` hold a `shadelab` object at all (a file shadelab wrote, or one that states the
 /// chapter's parameters).
 pub(super) fn has_shadelab(extras: &json::Extras) -> bool {
-    extras.as_ref().and_then(|raw| serde_json::from_str::<Value>(raw.get()).ok()).is_some_and(|v| v.get("shadelab").is_some())
+    extras
+        .as_ref()
+        .and_then(|raw| serde_json::from_str::<Value>(raw.get()).ok())
+        .is_some_and(|v| v.get("shadelab").is_some())
 }
 
 /// `extras` holding `{ "shadelab": value }`, for a JSON document being written.

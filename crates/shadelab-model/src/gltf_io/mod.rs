@@ -80,8 +80,8 @@ mod textures;
 pub(crate) use container::glb_container;
 pub use container::{Externals, percent_decode};
 pub use scene_file::{
-    load_scene, load_scene_from_bytes, load_scene_with, load_scene_from_files, load_scene_from_slice, save_scene, scene_to_glb,
-    scene_to_gltf_json,
+    load_scene, load_scene_from_bytes, load_scene_from_files, load_scene_from_slice, load_scene_with, save_scene,
+    scene_to_glb, scene_to_gltf_json,
 };
 pub use textures::{MAX_IMAGE_FILE_BYTES, MAX_TEXTURE_BYTES, MAX_TEXTURE_SIDE};
 

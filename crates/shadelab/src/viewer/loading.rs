@@ -26,7 +26,10 @@ enum Report {
 pub enum Source {
     /// A file and whether its URIs may lead outside its folder.
     Path(PathBuf, bool),
-    Files { main: String, files: Vec<(String, Vec<u8>)> },
+    Files {
+        main: String,
+        files: Vec<(String, Vec<u8>)>,
+    },
 }
 
 impl Source {

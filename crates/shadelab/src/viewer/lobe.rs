@@ -48,7 +48,13 @@ pub struct LobeView {
 
 impl Default for LobeView {
     fn default() -> Self {
-        LobeView { pick: None, light: 0, open: false, slice: None, overlays: vec![Microfacet::CHAPTER, Microfacet::GLTF] }
+        LobeView {
+            pick: None,
+            light: 0,
+            open: false,
+            slice: None,
+            overlays: vec![Microfacet::CHAPTER, Microfacet::GLTF],
+        }
     }
 }
 
@@ -91,8 +97,9 @@ impl LobeView {
             self.overlay_menu(ui, &pick.material);
             ui.horizontal(|ui| {
                 ui.vertical(|ui| {
-                    ui.label(format!("plane of incidence of L{} (dashed: other terms)", self.light + 1))
-                        .on_hover_text("each curve over its own maximum; other terms' Cook–Torrance over the material's");
+                    ui.label(format!("plane of incidence of L{} (dashed: other terms)", self.light + 1)).on_hover_text(
+                        "each curve over its own maximum; other terms' Cook–Torrance over the material's",
+                    );
                     polar_plot(ui, &pick, l, &self.overlays);
                 });
                 ui.vertical(|ui| {
@@ -106,7 +113,11 @@ impl LobeView {
 
     /// The checkboxes of the terms drawn beside the material's own, in a collapsed section.
     fn overlay_menu(&mut self, ui: &mut egui::Ui, material: &Material) {
-        let title = format!("material's terms {}; other terms beside them ({} chosen)", material.microfacet, self.overlays.len());
+        let title = format!(
+            "material's terms {}; other terms beside them ({} chosen)",
+            material.microfacet,
+            self.overlays.len()
+        );
         egui::CollapsingHeader::new(title).id_salt("lobe overlays").show(ui, |ui| {
             for terms in shadelab_model::furnace::pairs().into_iter().flat_map(|t| {
                 use shadelab_model::params::NamedValue;

@@ -6,6 +6,7 @@
 
 mod analyze;
 mod declared;
+mod effect;
 mod key;
 mod small_area_lights;
 mod specular_terms;

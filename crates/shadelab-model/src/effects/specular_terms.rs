@@ -38,31 +38,33 @@ pub fn microfacet_effects(t: crate::lighting::microfacet::Microfacet) -> [Effect
 
 /// Phong's normalized lobe: on when Phong specular is and a material with r_s > 0 asks for it.
 pub(super) fn decide_phong_normalization(a: &mut Analysis, used: &[&crate::scene::Material], phong: bool) {
-    let normalized: Vec<&str> =
-        used.iter().filter(|m| m.phong_normalized && m.r_s > 0.0).map(|m| m.name.as_str()).collect();
-    let why = if !phong {
-        "Phong specular is off".to_string()
-    } else if let Some(first) = normalized.first() {
-        format!("{} material(s) with r_s > 0 ask for it, '{first}' first", normalized.len())
-    } else {
-        "no material with r_s > 0 asks for it".to_string()
-    };
-    a.decide(Effect::PhongNormalized, phong && !normalized.is_empty(), why);
+    decide_asked(a, used, (Effect::PhongNormalized, "Phong specular", phong), |m| m.phong_normalized);
 }
 
 /// The lobe's multiple-scattering compensation: on when Cook–Torrance is and a material with
 /// r_s > 0 asks for it.
 pub(super) fn decide_multiple_scattering(a: &mut Analysis, used: &[&crate::scene::Material], cook_torrance: bool) {
-    let asking: Vec<&str> =
-        used.iter().filter(|m| m.microfacet.multiple_scattering && m.r_s > 0.0).map(|m| m.name.as_str()).collect();
-    let why = if !cook_torrance {
-        "Cook–Torrance specular is off".to_string()
+    let effect = (Effect::MultipleScattering, "Cook–Torrance specular", cook_torrance);
+    decide_asked(a, used, effect, |m| m.microfacet.multiple_scattering);
+}
+
+/// A material option's effect: on when its specular model (`model`, named, `on`) is and some
+/// material with r_s > 0 `asks`; the reason names the first.
+fn decide_asked(
+    a: &mut Analysis,
+    used: &[&crate::scene::Material],
+    (effect, model, on): (Effect, &str, bool),
+    asks: impl Fn(&crate::scene::Material) -> bool,
+) {
+    let asking: Vec<&str> = used.iter().filter(|m| asks(m) && m.r_s > 0.0).map(|m| m.name.as_str()).collect();
+    let why = if !on {
+        format!("{model} is off")
     } else if let Some(first) = asking.first() {
         format!("{} material(s) with r_s > 0 ask for it, '{first}' first", asking.len())
     } else {
         "no material with r_s > 0 asks for it".to_string()
     };
-    a.decide(Effect::MultipleScattering, cook_torrance && !asking.is_empty(), why);
+    a.decide(effect, on && !asking.is_empty(), why);
 }
 
 /// Each microfacet D, G and F: on when Cook–Torrance is and a material with r_s > 0 uses it.

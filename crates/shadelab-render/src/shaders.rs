@@ -87,25 +87,6 @@ pub fn preprocess(source: &str, defines: &[&str]) -> Result<String, String> {
     }
 }
 
-/// How many of [`FILES`] hold the terms alone (up to `types.wgsl`).
-const TERM_FILES: usize = 11;
-const _: () = assert!(same_name(FILES[TERM_FILES].0, "types.wgsl"), "the terms end where the types begin");
-
-const fn same_name(a: &str, b: &str) -> bool {
-    let (a, b) = (a.as_bytes(), b.as_bytes());
-    if a.len() != b.len() {
-        return false;
-    }
-    let mut i = 0;
-    while i < a.len() {
-        if a[i] != b[i] {
-            return false;
-        }
-        i += 1;
-    }
-    true
-}
-
 fn uber_defines() -> Vec<&'static str> {
     EffectKey::UBER.defines()
 }
@@ -115,7 +96,8 @@ fn uber_defines() -> Vec<&'static str> {
 /// `common`, `brdf`, `microfacet`, `multiscatter`, `models`, `lights`, `area_lights`, `area_points`,
 /// `shadow_math`, `surface` and `transmission`: the files before `types.wgsl`.
 pub fn terms_source() -> String {
-    let raw = FILES[..TERM_FILES].iter().map(|(_, s)| *s).collect::<Vec<_>>().join("\n");
+    let terms = FILES.iter().position(|(name, _)| *name == "types.wgsl").expect("types.wgsl is shipped");
+    let raw = FILES[..terms].iter().map(|(_, s)| *s).collect::<Vec<_>>().join("\n");
     preprocess(&raw, &uber_defines()).expect("the shipped WGSL preprocesses")
 }
 

@@ -15,7 +15,6 @@ use shadelab_render::image_error::error_over;
 use shadelab_render::timing::{FrameTimer, TimedDraw, median};
 use shadelab_render::{Gpu, LinearImage, Program, RenderSettings, Renderer, SceneGpu, Specialization, Target};
 use std::fmt::Write as _;
-use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 /// The absorbing cylinder's largest a·d in the rule's rows: both sides of each threshold.
@@ -278,12 +277,6 @@ pub fn rule_csv(rules: &[RuleRow]) -> String {
     s
 }
 
-fn write(dir: &Path, name: &str, bytes: &[u8]) -> anyhow::Result<PathBuf> {
-    let p = dir.join(name);
-    std::fs::write(&p, bytes).with_context(|| format!("writing {}", p.display()))?;
-    Ok(p)
-}
-
 /// `shadelab bench glass`.
 pub fn run(args: &cli::BenchGlassArgs) -> Result<(), Failure> {
     std::fs::create_dir_all(&args.output)
@@ -296,9 +289,9 @@ pub fn run(args: &cli::BenchGlassArgs) -> Result<(), Failure> {
     let (rules, maps) = rule(&gpu, size, frames, warmup, &OPTICAL_DEPTHS)?;
     let md = markdown(&methods, &rules, &gpu.describe(), &command);
     let mut paths = vec![
-        write(&args.output, "glass.md", md.as_bytes())?,
-        write(&args.output, "glass-methods.csv", methods_csv(&methods).as_bytes())?,
-        write(&args.output, "glass-rule.csv", rule_csv(&rules).as_bytes())?,
+        super::write(&args.output, "glass.md", md.as_bytes())?,
+        super::write(&args.output, "glass-methods.csv", methods_csv(&methods).as_bytes())?,
+        super::write(&args.output, "glass-rule.csv", rule_csv(&rules).as_bytes())?,
     ];
     for (ad, map) in maps {
         let p = args.output.join(format!("absorption-rule-error-{:03}.png", (ad * 100.0).round() as u32));

@@ -17,7 +17,6 @@ use shadelab_render::image_error::error_over;
 use shadelab_render::timing::{FrameTimer, TimedDraw, median};
 use shadelab_render::{Gpu, Program, RenderSettings, Renderer, Target};
 use std::fmt::Write as _;
-use std::path::{Path, PathBuf};
 
 /// Steps of c = cos θ in Schlick's table (its largest gap is found to 1e-4 in c).
 const SCHLICK_STEPS: usize = 10_000;
@@ -371,12 +370,6 @@ pub fn furnace_csv(rows: &[FurnaceRow]) -> String {
     s
 }
 
-fn write(dir: &Path, name: &str, bytes: &[u8]) -> anyhow::Result<PathBuf> {
-    let p = dir.join(name);
-    std::fs::write(&p, bytes).with_context(|| format!("writing {}", p.display()))?;
-    Ok(p)
-}
-
 /// `shadelab bench microfacet`.
 pub fn run(args: &cli::BenchMicrofacetArgs) -> Result<(), Failure> {
     std::fs::create_dir_all(&args.output)
@@ -389,10 +382,10 @@ pub fn run(args: &cli::BenchMicrofacetArgs) -> Result<(), Failure> {
     let furnace = furnace_rows();
     let md = markdown(&rows, null_ms, &maps, &schlick, &furnace, &gpu.describe(), &command);
     let mut paths = vec![
-        write(&args.output, "microfacet.md", md.as_bytes())?,
-        write(&args.output, "microfacet-combos.csv", combos_csv(&rows).as_bytes())?,
-        write(&args.output, "microfacet-schlick.csv", schlick_csv(&schlick).as_bytes())?,
-        write(&args.output, "microfacet-furnace.csv", furnace_csv(&furnace).as_bytes())?,
+        super::write(&args.output, "microfacet.md", md.as_bytes())?,
+        super::write(&args.output, "microfacet-combos.csv", combos_csv(&rows).as_bytes())?,
+        super::write(&args.output, "microfacet-schlick.csv", schlick_csv(&schlick).as_bytes())?,
+        super::write(&args.output, "microfacet-furnace.csv", furnace_csv(&furnace).as_bytes())?,
     ];
     let plot = args.output.join("microfacet-furnace.png");
     plot::furnace(&furnace, &FURNACE_M, &FURNACE_VIEW_DEG, &plot)?;

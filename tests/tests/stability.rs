@@ -119,6 +119,14 @@ fn the_normalized_phong_lobe_matches_the_f64_reference() {
     assert!(max < 4e-3 * 8.5, "max |error| {max} at {worst:?}");
 }
 
+/// The fine sphere under one rim light from behind and to the side: its highlight lies where N·L
+/// and N·V are small, where the microfacet terms differ most between their forms.
+fn rim_lit_sphere() -> Scene {
+    let mut scene = single_shape_scene("sphere", Shape::Sphere, 256);
+    scene.lights = vec![Light::directional(DVec3::new(-1.0, -0.3, 1.2).normalize(), [1.0; 3], 1.0)];
+    scene
+}
+
 /// Every combination of the microfacet terms (2 D × 3 G × 2 F) on the fine sphere, GPU against
 /// the f64 reference with the same terms, at the roughness the glTF preset meets most.
 #[test]
@@ -126,11 +134,8 @@ fn every_microfacet_combination_matches_the_f64_reference() {
     use shadelab_model::lighting::microfacet::{Distribution, Fresnel, Masking, Microfacet};
     use shadelab_model::params::NamedValue;
     let (w, h) = (320, 180);
-    // A rim light from behind and to the side: its highlight lies where N·L and N·V are small,
-    // where G and F differ most between the forms.
-    let mut base = single_shape_scene("sphere", Shape::Sphere, 256);
+    let mut base = rim_lit_sphere();
     base.materials.iter_mut().for_each(|m| m.m = 0.4);
-    base.lights = vec![Light::directional(DVec3::new(-1.0, -0.3, 1.2).normalize(), [1.0; 3], 1.0)];
     let chapter = render_reference(&base, SpecularModel::CookTorrance, w, h);
     let mut worst_mean: f64 = 0.0;
     for &(_, d) in Distribution::ALL {
@@ -175,8 +180,7 @@ fn every_microfacet_combination_matches_the_f64_reference() {
 fn the_compensated_lobe_matches_the_f64_reference() {
     use shadelab_model::lighting::microfacet::Microfacet;
     let (w, h) = (320, 180);
-    let mut scene = single_shape_scene("sphere", Shape::Sphere, 256);
-    scene.lights = vec![Light::directional(DVec3::new(-1.0, -0.3, 1.2).normalize(), [1.0; 3], 1.0)];
+    let mut scene = rim_lit_sphere();
     scene.materials.iter_mut().for_each(|m| {
         m.m = 0.6;
         m.mu = [0.9, 0.6, 0.3];

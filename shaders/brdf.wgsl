@@ -51,7 +51,8 @@ fn specular_cook_torrance(n: vec3<f32>, v: vec3<f32>, l: vec3<f32>, m: f32, v_in
 // specular is zero where N·L ≤ 0 (the point's own shadow).
 // `specular_model` is SPECULAR_PHONG or SPECULAR_COOK_TORRANCE; `v_index` is per channel;
 // `terms` the material's microfacet terms (Microfacet::code); `phong_normalized` scales Phong's
-// lobe by phong_normalization; `ms_e` is the lobe's albedo for its compensation (1: none).
+// lobe by phong_normalization; `ms_e` is the lobe's albedo for its compensation (1: none);
+// `mix` the dielectric layer (F0, weight) that weights the diffuse (weight 0: none).
 fn light_contribution(
     s: LightSample,
     n: vec3<f32>,
@@ -67,6 +68,7 @@ fn light_contribution(
     terms: u32,
     phong_normalized: bool,
     ms_e: f32,
+    mix: vec2<f32>,
 ) -> vec3<f32> {
     let n_dot_l = dot(n, s.l);
     let l = s.l;
@@ -88,7 +90,13 @@ fn light_contribution(
 #endif
     var lit = select(vec3(0.0), spec * s.spec_scale, n_dot_l > 0.0);
 #if EFFECT_DIFFUSE
-    lit += r_d * color * diffuse_lambert(s.form);
+    var kd = 1.0;
+#if EFFECT_SPECULAR_COOK_TORRANCE
+#if EFFECT_FRESNEL_MIX
+    kd = select(1.0, fresnel_mix_weight(terms, n, v, l, mix.x, mix.y), mix.y > 0.0);
+#endif
+#endif
+    lit += r_d * color * kd * diffuse_lambert(s.form);
 #endif
     return s.radiance * lit;
 }

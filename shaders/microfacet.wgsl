@@ -19,9 +19,11 @@ const FRESNEL_EXACT: u32 = 0u;
 const FRESNEL_SCHLICK: u32 = 1u;
 // The multiple-scattering compensation's bit (MICROFACET_MULTIPLE_SCATTERING, multiscatter.wgsl).
 const MICROFACET_MULTIPLE_SCATTERING: u32 = 16777216u;
+// The Fresnel-weighted diffuse's bit (MICROFACET_FRESNEL_MIX).
+const MICROFACET_FRESNEL_MIX: u32 = 33554432u;
 // The chapter's three terms, packed (Microfacet::CHAPTER), and glTF's (Microfacet::GLTF).
 const MICROFACET_CHAPTER: u32 = 0u;
-const MICROFACET_GLTF: u32 = 66049u;
+const MICROFACET_GLTF: u32 = 33620481u;
 
 // docs/model.md §5: Beckmann facet distribution in the chapter's form
 // D = 1/(4 m² (N·H)⁴) · exp((1 − 1/(N·H)²)/m²), which is π/4 × the normalized Beckmann D.
@@ -127,6 +129,55 @@ fn fresnel_schlick(c_in: f32, v_in: f32) -> f32 {
     return f0 + (1.0 - f0) * x2 * x2 * x;
 }
 
+// 1 − fresnel_dielectric(c, v), summed from positive parts to keep its precision where F → 1:
+// 1 − F = (1 − a²) + ½a²(1 − b²), 1 − a² = 4gc/(g + c)², 1 − b² = 4cg·sin²θ/(cg + sin²θ)².
+fn fresnel_dielectric_complement(c_in: f32, v_in: f32) -> f32 {
+    let c = clamp(c_in, 0.0, 1.0);
+    let v = max(v_in, 0.0);
+    let sin2 = (1.0 - c) * (1.0 + c);
+    let g2 = select(v * v - sin2, (v - 1.0) * (v + 1.0) + c * c, c < 0.5);
+    if (g2 < 0.0) {
+        return 0.0;
+    }
+    let g = sqrt(g2);
+    let gpc = max(g + c, FRESNEL_G_PLUS_C_MIN);
+    let a = (g - c) / gpc;
+    let den = max(c * g + sin2, FRESNEL_G_PLUS_C_MIN);
+    let b = (c * g - sin2) / den;
+    // Where a guard holds a denominator (g + c → 0 at v = 1 grazing, cg + sin²θ → 0 at v = 0 and
+    // c = 1) the identity does not: there 1 − a² and 1 − b² themselves.
+    let one_minus_a2 = select(4.0 * g * c / (gpc * gpc), (1.0 - a) * (1.0 + a), g + c < FRESNEL_G_PLUS_C_MIN);
+    let guarded = c * g + sin2 < FRESNEL_G_PLUS_C_MIN;
+    let one_minus_b2 = select(4.0 * c * g * sin2 / (den * den), (1.0 - b) * (1.0 + b), guarded);
+    return clamp(one_minus_a2 + 0.5 * a * a * one_minus_b2, 0.0, 1.0);
+}
+
+// 1 − fresnel_schlick(c, v) as (1 − F0)(1 − (1 − c)⁵), 1 − F0 = 4v/(v + 1)² and
+// 1 − x⁵ = c(1 + x + x² + x³ + x⁴), x = 1 − c: no cancellation where F → 1.
+fn fresnel_schlick_complement(c_in: f32, v_in: f32) -> f32 {
+    let c = clamp(c_in, 0.0, 1.0);
+    let v = max(v_in, 0.0);
+    let t0 = 4.0 * v / ((v + 1.0) * (v + 1.0));
+    let x = 1.0 - c;
+    return t0 * c * (1.0 + x * (1.0 + x * (1.0 + x * (1.0 + x))));
+}
+
+// The material's 1 − F (field 2 of `terms`) at c = V·H for index v (microfacet_f's complement).
+fn microfacet_f_complement(terms: u32, c: f32, v: f32) -> f32 {
+    let f = (terms >> (2u * MICROFACET_FIELD_BITS)) & MICROFACET_FIELD_MASK;
+#if EFFECT_F_EXACT
+    if (f == FRESNEL_EXACT) {
+        return fresnel_dielectric_complement(c, v);
+    }
+#endif
+#if EFFECT_F_SCHLICK
+    if (f == FRESNEL_SCHLICK) {
+        return fresnel_schlick_complement(c, v);
+    }
+#endif
+    return 1.0;
+}
+
 // The material's distribution D (field 0 of `terms`); 0 for a D this pipeline does not hold.
 fn microfacet_d(terms: u32, n_dot_h: f32, sin2_nh: f32, m: f32) -> f32 {
     let d = terms & MICROFACET_FIELD_MASK;
@@ -179,6 +230,17 @@ fn microfacet_f(terms: u32, c: f32, v_index: vec3<f32>) -> vec3<f32> {
     }
 #endif
     return vec3(0.0);
+}
+
+// docs/model.md §5: the share of a light's diffuse that the dielectric layer above it passes,
+// glTF 2.0's fresnel_mix: 1 − w·F(V·H), F being the material's Fresnel term at the layer's F0
+// `f0` (through its index, as μ's) and `w` its weight; H the half vector of `l` and `v`.
+// Summed as (1 − w) + w·(1 − F) from 1 − F itself, which keeps its precision where F → 1.
+fn fresnel_mix_weight(terms: u32, n: vec3<f32>, v: vec3<f32>, l: vec3<f32>, f0: f32, w_in: f32) -> f32 {
+    let h = safe_normalize(l + v, n);
+    let t = microfacet_f_complement(terms, clamp(dot(v, h), 0.0, 1.0), fresnel_v_from_mu(vec3(f0)).x);
+    let w = clamp(w_in, 0.0, 1.0);
+    return (1.0 - w) + w * t;
 }
 
 // docs/model.md §5: the Cook–Torrance form as it enters the sum, π·ρ_s·(N·L) = F·D·G/(N·V), with

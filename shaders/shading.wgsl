@@ -143,9 +143,19 @@ fn model_term(
 #if EFFECT_PHONG_NORMALIZED
         normalized = object.phong_normalized != 0u;
 #endif
+        // The dielectric layer that weights the diffuse, for a material with a specular layer.
+        var mix = vec2(0.0);
+#if EFFECT_SPECULAR_COOK_TORRANCE
+#if EFFECT_FRESNEL_MIX
+        let asks = (terms & MICROFACET_FRESNEL_MIX) != 0u && object.r_s > 0.0;
+        if (globals.specular_model == SPECULAR_COOK_TORRANCE && asks) {
+            mix = object.fresnel_mix.xy;
+        }
+#endif
+#endif
         out.lit = light_contribution(
             s, n, v, c, object.r_s, object.r_d, surface.m, surface.h, surface.mirror,
-            v_index, globals.specular_model, terms, normalized, ms_e,
+            v_index, globals.specular_model, terms, normalized, ms_e, mix,
         );
     }
     return out;

@@ -115,6 +115,8 @@ fn microfacet_columns(base: u32, inp: SweepCombination) {
     put_rgb(base + COL_SPECULAR_MICROFACET_GLTF, specular_microfacet(n, v, l, m, inp.v_index, MICROFACET_GLTF, 1.0));
     // The compensation over E = m (0 to 1, the floor at 0 included).
     put_rgb(base + COL_MS_COMPENSATION, ms_compensation(m, inp.v_index));
+    outputs[base + COL_FRESNEL_MIX_WEIGHT] = fresnel_mix_weight(MICROFACET_GLTF, n, v, l, inp.mu.x, 1.0);
+    outputs[base + COL_FRESNEL_MIX_WEIGHT + 1u] = fresnel_mix_weight(MICROFACET_CHAPTER, n, v, l, inp.mu.x, 1.0);
 }
 
 // The BRDF, falloff, per-light contribution, other-model and spot-and-window columns.
@@ -146,11 +148,11 @@ fn light_columns(base: u32, inp: SweepCombination) {
     let f = microfacet_f(MICROFACET_CHAPTER, dot(v, half), v_index);
     let ct = specular_cook_torrance(n, v, l, m, v_index);
     let c_phong = light_contribution(
-        quadratic, n, v, SWEEP_COLOR, 1.0, 1.0, m, h_row.x, mirror, v_index, SPECULAR_PHONG, MICROFACET_CHAPTER, false, 1.0,
+        quadratic, n, v, SWEEP_COLOR, 1.0, 1.0, m, h_row.x, mirror, v_index, SPECULAR_PHONG, MICROFACET_CHAPTER, false, 1.0, vec2(0.0),
     );
     let c_ct = light_contribution(
         linear, n, v, SWEEP_COLOR, 1.0, 1.0, m, h_row.x, mirror, v_index,
-        SPECULAR_COOK_TORRANCE, MICROFACET_CHAPTER, false, 1.0,
+        SPECULAR_COOK_TORRANCE, MICROFACET_CHAPTER, false, 1.0, vec2(0.0),
     );
 
     outputs[base + COL_DIFFUSE_LAMBERT] = diffuse_lambert(dot(n, l));

@@ -77,6 +77,9 @@ struct Object {
     longest_chord: f32,
     // The material's D, G and F (Microfacet::code; microfacet.wgsl).
     microfacet: u32,
+    // The dielectric layer of the Fresnel-weighted diffuse (Material::fresnel_mix): x its F0,
+    // y its weight.
+    fresnel_mix: vec4<f32>,
 }
 
 const FLAG_DEBUG_NONFINITE: u32 = 1u;

@@ -205,6 +205,41 @@ fn the_compensated_lobe_matches_the_f64_reference() {
     assert!(max < 4e-3, "max |error| {max} at {worst:?}");
 }
 
+/// The Fresnel-weighted diffuse (glTF's fresnel_mix, F0 0.04) on the rim-lit sphere, GPU against
+/// the f64 reference; the weight can only take light away, most where V·H is small.
+#[test]
+fn the_fresnel_weighted_diffuse_matches_the_f64_reference() {
+    use shadelab_model::lighting::microfacet::Microfacet;
+    let (w, h) = (320, 180);
+    let mut scene = rim_lit_sphere();
+    scene.materials.iter_mut().for_each(|m| {
+        m.m = 0.3;
+        m.microfacet = Microfacet { fresnel_mix: false, ..Microfacet::GLTF };
+    });
+    let plain = render_reference(&scene, SpecularModel::CookTorrance, w, h);
+    scene.materials.iter_mut().for_each(|m| m.microfacet.fresnel_mix = true);
+    let settings = RenderSettings::new(ShadingMode::Phong, SpecularModel::CookTorrance);
+    let gpu_img = render_image(gpu(), &scene, w, h, &settings).expect("upload");
+    let reference = render_reference(&scene, SpecularModel::CookTorrance, w, h);
+    let pixels = interior(&reference, 1);
+    let (mean, max, worst) = error(&gpu_img, &reference, &pixels);
+    let diffs: Vec<f64> = pixels
+        .iter()
+        .flat_map(|&(x, y)| (0..3).map(move |c| (x, y, c)))
+        .map(|(x, y, c)| plain.get(x, y)[c] - reference.get(x, y)[c])
+        .collect();
+    let taken = diffs.iter().sum::<f64>() / diffs.len() as f64;
+    let most = diffs.iter().cloned().fold(0.0, f64::max);
+    eprintln!(
+        "fresnel_mix: mean |error| {mean:.2e}, max {max:.2e} at {worst:?}; takes {taken:.2e} on average, {most:.3} at most"
+    );
+    assert!(diffs.iter().all(|d| *d >= -1e-12), "the weight added light");
+    assert!(taken > 10.0 * mean, "the weight takes only {taken}");
+    // The thresholds of the chapter's terms above.
+    assert!(mean < 1e-4, "mean |error| {mean}");
+    assert!(max < 4e-3, "max |error| {max} at {worst:?}");
+}
+
 /// One 8-bit sRGB step at linear 1, in linear units: d(linear)/d(sRGB) at 1 is 2.4/1.055.
 const ONE_STEP_AT_WHITE: f64 = 2.4 / 1.055 / 255.0;
 

@@ -268,6 +268,7 @@ fn dielectric_material(p: &MaterialPreset) -> Material {
         maps: Default::default(),
         microfacet: Default::default(),
         phong_normalized: false,
+        fresnel_mix: Default::default(),
     }
 }
 

@@ -16,8 +16,8 @@ pub use builtin::{
 };
 pub use camera::{COMPOSED_ASPECT, Camera};
 pub use material::{
-    Material, MaterialMaps, MetalRoughnessMap, NormalMap, OcclusionMap, SurfacePoint, emitted, metallic_scaled,
-    normal_mapped, occluded, phong_h_from_m, roughness_scaled, tinted_surface, vertex_tint,
+    FresnelMix, Material, MaterialMaps, MetalRoughnessMap, NormalMap, OcclusionMap, SurfacePoint, emitted,
+    metallic_scaled, normal_mapped, occluded, phong_h_from_m, roughness_scaled, tinted_surface, vertex_tint,
 };
 pub use texture::{
     ColorSpace, Filter, Level, MipCache, Sampler, Texture, TextureRef, UvFootprint, UvTransform, Wrap, linear_to_srgb,
@@ -185,6 +185,9 @@ pub struct Overrides {
     /// Every material's microfacet lobe compensated for multiple scattering
     /// (`--multiple-scattering on|off`), after `microfacet`.
     pub multiple_scattering: Option<bool>,
+    /// Every material's diffuse weighted by its dielectric layer's Fresnel (`--fresnel-mix
+    /// on|off`), after `microfacet`.
+    pub fresnel_mix: Option<bool>,
 }
 
 /// The microfacet overrides on one material's terms: the preset, then each term given.
@@ -196,6 +199,7 @@ fn apply_terms(t: &mut Microfacet, o: &Overrides) {
     t.g = o.masking.unwrap_or(t.g);
     t.f = o.fresnel.unwrap_or(t.f);
     t.multiple_scattering = o.multiple_scattering.unwrap_or(t.multiple_scattering);
+    t.fresnel_mix = o.fresnel_mix.unwrap_or(t.fresnel_mix);
 }
 
 impl Overrides {

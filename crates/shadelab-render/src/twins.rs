@@ -249,6 +249,7 @@ fn wgsl_codes_equal_rust_codes() {
         "MICROFACET_MULTIPLE_SCATTERING".into(),
         shadelab_model::lighting::microfacet::MICROFACET_MULTIPLE_SCATTERING,
     ));
+    rust.push(("MICROFACET_FRESNEL_MIX".into(), shadelab_model::lighting::microfacet::MICROFACET_FRESNEL_MIX));
     let field_bits = shadelab_model::lighting::microfacet::MICROFACET_FIELD_BITS;
     rust.push(("MICROFACET_FIELD_BITS".into(), field_bits));
     rust.push(("MICROFACET_FIELD_MASK".into(), (1 << field_bits) - 1));

@@ -111,6 +111,8 @@ pub struct ObjectUniform {
     pub longest_chord: f32,
     /// `Microfacet::code`: the material's D, G and F.
     pub microfacet: u32,
+    /// The Fresnel-weighted diffuse's layer (`Material::fresnel_mix`): its F0 and weight (xy).
+    pub fresnel_mix: [f32; 4],
 }
 
 /// One light's shadow map as `shadows.wgsl`'s `ShadowLight` reads it (zeroed: no shadow).
@@ -282,6 +284,7 @@ impl ObjectUniform {
             absorption_form: shadelab_model::effects::absorption_form(scene, index).code(),
             longest_chord: shadelab_model::effects::longest_chord(scene, index) as f32,
             microfacet: material.microfacet.code(),
+            fresnel_mix: [material.fresnel_mix.f0 as f32, material.fresnel_mix.weight as f32, 0.0, 0.0],
         }
     }
 }

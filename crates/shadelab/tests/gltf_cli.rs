@@ -146,6 +146,21 @@ fn a_gltf_file_opens_with_the_gltf_brdf_and_the_chapters_is_one_switch_away() {
     assert!(gltf.contains("multiple scattering 1 + F0·(1 − E)/E: off"), "{gltf}");
     let ms = run(&["--multiple-scattering", "on"], &b);
     assert!(ms.contains("multiple scattering 1 + F0·(1 − E)/E: on") && ms.contains("+schlick+ms+"), "{ms}");
+    // glTF's fresnel_mix comes with the preset and goes with the chapter's terms or its own flag.
+    assert!(
+        gltf.contains("diffuse weighted by 1 − F (glTF's fresnel_mix): on") && gltf.contains("+schlick+fmix+"),
+        "{gltf}"
+    );
+    assert!(!chapter.contains("fmix"), "{chapter}");
+    let (c, d) = (out("box-gltf-unmixed.png"), out("box-chapter-mixed.png"));
+    let unmixed = run(&["--fresnel-mix", "off"], &c);
+    assert!(
+        unmixed.contains("diffuse weighted by 1 − F (glTF's fresnel_mix): off") && !unmixed.contains("fmix"),
+        "{unmixed}"
+    );
+    assert!(std::fs::read(&a).unwrap() != std::fs::read(&c).unwrap(), "the weight changes nothing");
+    let mixed = run(&["--microfacet", "chapter", "--fresnel-mix", "on"], &d);
+    assert!(mixed.contains("+exact-f+fmix+"), "{mixed}");
     let o = shadelab(&["render", "--scene", scene, "--masking", "smiths", "--output", &b]);
     assert_eq!(o.status.code(), Some(2));
     let e = String::from_utf8_lossy(&o.stderr);

@@ -95,6 +95,10 @@ fn the_terms_section_switches_each_term_live() {
     h.run_steps(3);
     let materials = h.state_mut().scene_mut().materials.clone();
     assert_eq!(materials.iter().filter(|m| m.microfacet.multiple_scattering).count(), 1);
+    h.get_by_label("diffuse × (1 − F)").click();
+    h.run_steps(3);
+    let materials = h.state_mut().scene_mut().materials.clone();
+    assert_eq!(materials.iter().filter(|m| m.microfacet.fresnel_mix).count(), 1);
 }
 
 /// The h row's "normalized" box scales the selected material's Phong lobe: with Phong specular

@@ -205,6 +205,7 @@ fn decide_diffuse_specular(
     a.decide(Effect::SpecularCookTorrance, on, why);
     super::specular_terms::decide_microfacet_terms(a, used, on);
     super::specular_terms::decide_multiple_scattering(a, used, on);
+    super::specular_terms::decide_fresnel_mix(a, used, on);
 }
 
 /// The ambient term, the Lambert rule, and the four-term sum with its transmitted term.

@@ -162,8 +162,9 @@ declare_effects! {
         label: "exact-f",
         define: Some("EFFECT_F_EXACT"),
         // fresnel_dielectric is the glass's Fresnel too: a glass pass reaches it without this
-        // effect, so only the specular's call is this effect's (effect_structure checks it).
-        functions: &[],
+        // effect, so only the specular's call is this effect's (effect_structure checks it); its
+        // complement serves the Fresnel-weighted diffuse.
+        functions: &["fresnel_dielectric_complement"],
         members: &[],
     },
     /// Schlick's F (docs/model.md §5).
@@ -172,7 +173,7 @@ declare_effects! {
         name: "Schlick F",
         label: "schlick",
         define: Some("EFFECT_F_SCHLICK"),
-        functions: &["fresnel_schlick"],
+        functions: &["fresnel_schlick", "fresnel_schlick_complement"],
         members: &[],
     },
     /// The microfacet lobe's multiple-scattering compensation (docs/microfacet.md).
@@ -183,6 +184,16 @@ declare_effects! {
         define: Some("EFFECT_MULTIPLE_SCATTERING"),
         functions: &["ms_compensation", "ms_albedo"],
         members: &[("Globals", "ms_albedo")],
+    },
+    /// The diffuse weighted by what the dielectric layer's Fresnel leaves it, glTF's
+    /// `fresnel_mix` (docs/model.md §5).
+    FresnelMix {
+        explain: "diffuse weighted by 1 − F (glTF's fresnel_mix)",
+        name: "Fresnel-weighted diffuse",
+        label: "fmix",
+        define: Some("EFFECT_FRESNEL_MIX"),
+        functions: &["fresnel_mix_weight"],
+        members: &[("Object", "fresnel_mix")],
     },
     /// Ambient `I_amb·r_a·C` (docs/model.md §2).
     Ambient {

@@ -48,6 +48,13 @@ pub(super) fn decide_multiple_scattering(a: &mut Analysis, used: &[&crate::scene
     decide_asked(a, used, effect, |m| m.microfacet.multiple_scattering);
 }
 
+/// The Fresnel-weighted diffuse: on when Cook–Torrance is and a material with r_s > 0 and r_d > 0
+/// asks for it (with no specular layer or no diffuse there is nothing to weigh).
+pub(super) fn decide_fresnel_mix(a: &mut Analysis, used: &[&crate::scene::Material], cook_torrance: bool) {
+    let effect = (Effect::FresnelMix, "Cook–Torrance specular", cook_torrance);
+    decide_asked(a, used, effect, |m| m.microfacet.fresnel_mix && m.r_d > 0.0);
+}
+
 /// A material option's effect: on when its specular model (`model`, named, `on`) is and some
 /// material with r_s > 0 `asks`; the reason names the first.
 fn decide_asked(
@@ -109,6 +116,18 @@ mod tests {
         let a = analyze(&s, SpecularModel::CookTorrance);
         assert!(a.key.has(Effect::MultipleScattering), "{:?}", a.lines());
         assert!(!analyze(&s, SpecularModel::Phong).key.has(Effect::MultipleScattering));
+    }
+
+    #[test]
+    fn the_fresnel_mix_is_in_only_with_cook_torrance_and_a_diffuse_material_asking() {
+        let mut s = Scene::builtin("default").unwrap();
+        assert!(!analyze(&s, SpecularModel::CookTorrance).key.has(Effect::FresnelMix));
+        s.materials[1].microfacet.fresnel_mix = true;
+        let a = analyze(&s, SpecularModel::CookTorrance);
+        assert!(a.key.has(Effect::FresnelMix), "{:?}", a.lines());
+        assert!(!analyze(&s, SpecularModel::Phong).key.has(Effect::FresnelMix));
+        s.materials[1].r_d = 0.0;
+        assert!(!analyze(&s, SpecularModel::CookTorrance).key.has(Effect::FresnelMix));
     }
 
     #[test]

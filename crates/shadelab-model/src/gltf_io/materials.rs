@@ -7,7 +7,7 @@ use super::scene_file::{Reader, num, rgb};
 use super::{ATTENUATION_COLOR_MIN, DEFAULT_IOR, DIELECTRIC_MU_MAX, GltfError, dielectric_f0, m_from_roughness};
 use crate::lighting::microfacet::{Distribution, Fresnel, Masking, Microfacet};
 use crate::params::{ParamRange, PhongExponent};
-use crate::scene::{Material, MetalRoughnessMap, NormalMap, OcclusionMap, Scene};
+use crate::scene::{FresnelMix, Material, MetalRoughnessMap, NormalMap, OcclusionMap, Scene};
 use gltf::json;
 use gltf::json::validation::Checked;
 use serde::{Deserialize, Serialize};
@@ -73,6 +73,16 @@ struct MaterialExtras {
     /// written only when true.
     #[serde(skip_serializing_if = "Option::is_none")]
     multiple_scattering: Option<Flag>,
+    /// The diffuse weighted by the dielectric layer's Fresnel (`Microfacet::fresnel_mix`); absent:
+    /// as `distribution`. Its layer's F0 and weight (`Material::fresnel_mix`), each written
+    /// where it is not the default (0.04, 1); without `extras.shadelab` they come from the
+    /// file's ior and specular extensions.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    fresnel_mix: Option<Flag>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    mix_f0: Option<Num<Mu>>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    mix_weight: Option<Num<Unit>>,
 }
 
 impl Reader<'_> {
@@ -230,14 +240,25 @@ impl Reader<'_> {
             g: ex.masking.map_or(terms.g, |n| n.0),
             f: ex.fresnel.map_or(terms.f, |n| n.0),
             multiple_scattering: ex.multiple_scattering.is_some_and(|f| f.0),
+            fresnel_mix: ex.fresnel_mix.map_or(terms.fresnel_mix, |f| f.0),
         };
+        // A material that states the chapter's parameters states its layer where it is not the
+        // default one.
+        if extras::has_shadelab(&m.extras) {
+            mat.fresnel_mix = FresnelMix::default();
+        }
+        if let Some(v) = ex.mix_f0 {
+            mat.fresnel_mix.f0 = v.0;
+        }
+        set(&mut mat.fresnel_mix.weight, ex.mix_weight);
         mat.phong_normalized = ex.phong_normalized.is_some_and(|f| f.0);
         Ok((mat, mf0))
     }
 }
 
-/// glTF's F0 of a material's dielectric part (ior and `KHR_materials_specular`).
-fn material_f0(m: &json::Material) -> [f64; 3] {
+/// glTF's dielectric layer of a material: its index (`KHR_materials_ior`), and the factor and
+/// colour of `KHR_materials_specular`, each read as its default where out of range.
+fn dielectric_layer(m: &json::Material) -> (f64, f64, [f64; 3]) {
     let ext = m.extensions.as_ref();
     let ior = ext.and_then(|e| e.ior.as_ref()).map_or(DEFAULT_IOR, |i| i.ior.0 as f64);
     // KHR_materials_ior: ior ≥ 1, or 0 (F0 = 1); anything else is read as the default.
@@ -246,7 +267,21 @@ fn material_f0(m: &json::Material) -> [f64; 3] {
         .and_then(|e| e.specular.as_ref())
         .map_or((1.0, [1.0; 3]), |s| (s.specular_factor.0 as f64, s.specular_color_factor.0.map(f64::from)));
     let sane = |x: f64| if x.is_finite() { x.max(0.0) } else { 1.0 };
-    dielectric_f0(ior, sane(spec), spec_color.map(sane))
+    (ior, sane(spec), spec_color.map(sane))
+}
+
+/// glTF's F0 of a material's dielectric part (ior and `KHR_materials_specular`).
+fn material_f0(m: &json::Material) -> [f64; 3] {
+    let (ior, spec, spec_color) = dielectric_layer(m);
+    dielectric_f0(ior, spec, spec_color)
+}
+
+/// The layer of glTF's `fresnel_mix`: the largest channel of its F0 before the factor, which
+/// weighs it apart (`weight·max(F)` in KHR_materials_specular), and that factor.
+fn fresnel_mix_layer(m: &json::Material) -> FresnelMix {
+    let (ior, spec, spec_color) = dielectric_layer(m);
+    let f0 = dielectric_f0(ior, 1.0, spec_color).into_iter().fold(0.0, f64::max);
+    FresnelMix { f0, weight: spec.min(1.0) }
 }
 
 /// `M·F0`: the share of μ the metallic factor took from the dielectric F0, which a
@@ -308,6 +343,7 @@ pub(super) fn pbr_material(m: &json::Material) -> Material {
         maps: Default::default(),
         microfacet: Default::default(),
         phong_normalized: false,
+        fresnel_mix: fresnel_mix_layer(m),
     }
 }
 
@@ -337,6 +373,9 @@ pub(super) fn write_material(m: &Material, extensions_used: &mut Vec<&'static st
         fresnel: Some(Named(m.microfacet.f)),
         phong_normalized: m.phong_normalized.then_some(Flag(true)),
         multiple_scattering: m.microfacet.multiple_scattering.then_some(Flag(true)),
+        fresnel_mix: m.microfacet.fresnel_mix.then_some(Flag(true)),
+        mix_f0: (m.fresnel_mix.f0 != FresnelMix::default().f0).then(|| m.fresnel_mix.f0.into()),
+        mix_weight: (m.fresnel_mix.weight != FresnelMix::default().weight).then(|| m.fresnel_mix.weight.into()),
     };
     let mut out = json!({
         "name": m.name,

@@ -11,7 +11,7 @@ pub use super::microfacet::{
 };
 use crate::guards::*;
 use crate::params::NamedValue;
-use crate::scene::Material;
+use crate::scene::{FresnelMix, Material};
 use glam::DVec3;
 
 /// Which specular term the illumination model uses (docs/model.md §3, §5).
@@ -100,6 +100,16 @@ pub(crate) fn rho_s_forms(n: DVec3, v: DVec3, l: DVec3, m: f64, v_index: f64) ->
     (seed, modern)
 }
 
+/// The share of the diffuse the dielectric layer passes (`microfacet::fresnel_mix_weight`): only
+/// under Cook–Torrance, for a material with a specular layer (r_s > 0) whose terms ask for it.
+fn diffuse_weight(s: &super::lights::LightSample, n: DVec3, v: DVec3, mat: &Material, specular: SpecularModel) -> f64 {
+    if specular != SpecularModel::CookTorrance || !mat.microfacet.fresnel_mix || mat.r_s <= 0.0 {
+        return 1.0;
+    }
+    let FresnelMix { f0, weight } = mat.fresnel_mix;
+    super::microfacet::fresnel_mix_weight(mat.microfacet, n, v, s.l, f0, weight)
+}
+
 /// docs/model.md §3: what one light adds, `I_L · (r_d·C·max(form, 0) + r_s·S(L)·spec_scale)`
 /// for the light's sample `s` ([`super::lights::light_sample`]; `form` is `N·L` for a point
 /// light), the specular zero where `N·L ≤ 0` (the point's own shadow).
@@ -130,7 +140,8 @@ pub fn light_contribution(
             }
         }
     };
+    let kd = diffuse_weight(s, n, v, mat, specular);
     std::array::from_fn(|i| {
-        s.radiance[i] * (mat.r_d * mat.color[i] * diffuse_lambert(s.form) + mat.r_s * spec[i] * s.spec_scale)
+        s.radiance[i] * (mat.r_d * mat.color[i] * kd * diffuse_lambert(s.form) + mat.r_s * spec[i] * s.spec_scale)
     })
 }

@@ -103,10 +103,12 @@ macro_rules! named_term {
 }
 named_term!(Distribution, Masking, Fresnel);
 
-/// `d/g/f`, e.g. `ggx/smith-correlated/schlick`, with `+ms` when compensated.
+/// `d/g/f`, e.g. `ggx/smith-correlated/schlick`, with `+ms` when compensated and `+mix` when the
+/// diffuse is weighted by the Fresnel factor.
 impl std::fmt::Display for Microfacet {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        write!(f, "{}/{}/{}{}", self.d, self.g, self.f, if self.multiple_scattering { "+ms" } else { "" })
+        write!(f, "{}/{}/{}", self.d, self.g, self.f)?;
+        write!(f, "{}{}", if self.multiple_scattering { "+ms" } else { "" }, if self.fresnel_mix { "+mix" } else { "" })
     }
 }
 
@@ -118,32 +120,46 @@ pub struct Microfacet {
     pub f: Fresnel,
     /// The multiple-scattering compensation on top (`multiscatter.rs`); neither set has it.
     pub multiple_scattering: bool,
+    /// The diffuse weighted by what the dielectric layer's Fresnel leaves it, glTF's
+    /// `fresnel_mix` ([`fresnel_mix_weight`]); the glTF set has it, the chapter's does not.
+    pub fresnel_mix: bool,
 }
 
 /// Bits of each field of [`Microfacet::code`] (WGSL `MICROFACET_FIELD_BITS`).
 pub const MICROFACET_FIELD_BITS: u32 = 8;
 /// The compensation's bit of [`Microfacet::code`], after the three fields.
 pub const MICROFACET_MULTIPLE_SCATTERING: u32 = 1 << (3 * MICROFACET_FIELD_BITS);
+/// The Fresnel-weighted diffuse's bit of [`Microfacet::code`], after the compensation's.
+pub const MICROFACET_FRESNEL_MIX: u32 = 1 << (3 * MICROFACET_FIELD_BITS + 1);
 
 impl Microfacet {
     /// The chapter's terms: Beckmann D, the V-groove G, the exact dielectric F.
-    pub const CHAPTER: Microfacet =
-        Microfacet { d: Distribution::Beckmann, g: Masking::VGroove, f: Fresnel::Exact, multiple_scattering: false };
+    pub const CHAPTER: Microfacet = Microfacet {
+        d: Distribution::Beckmann,
+        g: Masking::VGroove,
+        f: Fresnel::Exact,
+        multiple_scattering: false,
+        fresnel_mix: false,
+    };
     /// The glTF 2.0 specification's terms (its Appendix B), also Filament's: GGX D, the
-    /// height-correlated Smith G and Schlick's F, with α = m (docs/model.md §5).
+    /// height-correlated Smith G and Schlick's F, with α = m, and its diffuse weighted by the
+    /// dielectric's Fresnel (docs/model.md §5).
     pub const GLTF: Microfacet = Microfacet {
         d: Distribution::Ggx,
         g: Masking::SmithCorrelated,
         f: Fresnel::Schlick,
         multiple_scattering: false,
+        fresnel_mix: true,
     };
 
     /// `object.microfacet` in WGSL: D in bits 0–7, G in 8–15, F in 16–23, the compensation in
-    /// bit 24 (`MICROFACET_MULTIPLE_SCATTERING`).
+    /// bit 24 (`MICROFACET_MULTIPLE_SCATTERING`), the Fresnel-weighted diffuse in bit 25
+    /// (`MICROFACET_FRESNEL_MIX`).
     pub fn code(self) -> u32 {
         let terms =
             self.d.code() | self.g.code() << MICROFACET_FIELD_BITS | self.f.code() << (2 * MICROFACET_FIELD_BITS);
-        terms | if self.multiple_scattering { MICROFACET_MULTIPLE_SCATTERING } else { 0 }
+        let ms = if self.multiple_scattering { MICROFACET_MULTIPLE_SCATTERING } else { 0 };
+        terms | ms | if self.fresnel_mix { MICROFACET_FRESNEL_MIX } else { 0 }
     }
 }
 
@@ -278,6 +294,49 @@ pub fn fresnel_schlick(c: f64, v: f64) -> f64 {
     f0 + (1.0 - f0) * x2 * x2 * x
 }
 
+/// `1 − fresnel_dielectric(c, v)`, the transmitted share, summed from positive parts so that it
+/// keeps its precision where F → 1 (grazing `c`, or μ → 1): with F = ½a²(1 + b²),
+/// `1 − F = (1 − a²) + ½a²(1 − b²)`, `1 − a² = 4gc/(g + c)²`, `1 − b² = 4cg·sin²θ/(cg + sin²θ)²`.
+pub fn fresnel_dielectric_complement(c: f64, v: f64) -> f64 {
+    let c = c.clamp(0.0, 1.0);
+    let v = v.max(0.0);
+    let sin2 = (1.0 - c) * (1.0 + c);
+    let g2 = if c < 0.5 { (v - 1.0) * (v + 1.0) + c * c } else { v * v - sin2 };
+    if g2 < 0.0 {
+        return 0.0;
+    }
+    let g = g2.sqrt();
+    let gpc = (g + c).max(FRESNEL_G_PLUS_C_MIN);
+    let a = (g - c) / gpc;
+    let den = (c * g + sin2).max(FRESNEL_G_PLUS_C_MIN);
+    let b = (c * g - sin2) / den;
+    // Where a guard holds a denominator (g + c → 0 at v = 1 grazing, cg + sin²θ → 0 at v = 0 and
+    // c = 1) the identity does not: there 1 − a² and 1 − b² themselves.
+    let one_minus_a2 = if g + c < FRESNEL_G_PLUS_C_MIN { (1.0 - a) * (1.0 + a) } else { 4.0 * g * c / (gpc * gpc) };
+    let guarded = c * g + sin2 < FRESNEL_G_PLUS_C_MIN;
+    let one_minus_b2 = if guarded { (1.0 - b) * (1.0 + b) } else { 4.0 * c * g * sin2 / (den * den) };
+    (one_minus_a2 + 0.5 * a * a * one_minus_b2).clamp(0.0, 1.0)
+}
+
+/// `1 − fresnel_schlick(c, v)` as the product `(1 − F0)(1 − (1 − c)⁵)` of its two small factors,
+/// `1 − F0 = 4v/(v + 1)²` and `1 − (1 − c)⁵ = c(1 + x + x² + x³ + x⁴)` with `x = 1 − c`, so that it
+/// keeps its precision where F → 1.
+pub fn fresnel_schlick_complement(c: f64, v: f64) -> f64 {
+    let c = c.clamp(0.0, 1.0);
+    let v = v.max(0.0);
+    let t0 = 4.0 * v / ((v + 1.0) * (v + 1.0));
+    let x = 1.0 - c;
+    t0 * c * (1.0 + x * (1.0 + x * (1.0 + x * (1.0 + x))))
+}
+
+/// The material's `1 − F` at `c` = V·H for index `v` (the complement of [`microfacet_f`]).
+pub fn microfacet_f_complement(terms: Microfacet, c: f64, v: f64) -> f64 {
+    match terms.f {
+        Fresnel::Exact => fresnel_dielectric_complement(c, v),
+        Fresnel::Schlick => fresnel_schlick_complement(c, v),
+    }
+}
+
 /// The material's distribution D.
 pub fn microfacet_d(terms: Microfacet, n_dot_h: f64, sin2_nh: f64, m: f64) -> f64 {
     match terms.d {
@@ -301,6 +360,18 @@ pub fn microfacet_f(terms: Microfacet, c: f64, v_index: [f64; 3]) -> [f64; 3] {
         Fresnel::Exact => v_index.map(|v| fresnel_dielectric(c, v)),
         Fresnel::Schlick => v_index.map(|v| fresnel_schlick(c, v)),
     }
+}
+
+/// docs/model.md §5: the share of a light's diffuse that the dielectric layer above it passes,
+/// glTF 2.0's `fresnel_mix`: `1 − w·F(V·H)`, F being the material's Fresnel term at the layer's
+/// normal-incidence reflectance `f0` (through its index, as μ's) and `w` the layer's weight
+/// (`KHR_materials_specular`'s factor, 1 without it). H is the half vector of `l` and `v`.
+/// It is summed as `(1 − w) + w·(1 − F)` from `1 − F` itself, which keeps its precision where F → 1.
+pub fn fresnel_mix_weight(terms: Microfacet, n: DVec3, v: DVec3, l: DVec3, f0: f64, w: f64) -> f64 {
+    let h = safe_normalize(l + v, n);
+    let t = microfacet_f_complement(terms, v.dot(h).clamp(0.0, 1.0), fresnel_v_from_mu(f0));
+    let w = w.clamp(0.0, 1.0);
+    (1.0 - w) + w * t
 }
 
 /// docs/model.md §5: the Cook–Torrance form as it enters the sum, `π ρ_s (N·L) = F·D·G/(N·V)`,
@@ -336,6 +407,43 @@ pub fn specular_microfacet(
 mod tests {
     use super::*;
     use std::f64::consts::PI;
+
+    /// Each complement is 1 − F where that keeps its digits, and stays in [0, 1] everywhere.
+    #[test]
+    fn the_fresnel_complements_are_one_minus_f() {
+        for v in [0.0, 0.5, 1.0, 1.0 + 1e-9, 1.33, 1.5, 2.4, 40.0, 1e4] {
+            for i in 0..=1000 {
+                let c = i as f64 / 1000.0;
+                let (e, s) = (fresnel_dielectric_complement(c, v), fresnel_schlick_complement(c, v));
+                assert!((e - (1.0 - fresnel_dielectric(c, v))).abs() < 1e-12, "exact c {c} v {v}: {e}");
+                assert!((s - (1.0 - fresnel_schlick(c, v))).abs() < 1e-12, "schlick c {c} v {v}: {s}");
+                assert!((0.0..=1.0).contains(&e) && (0.0..=1.0).contains(&s));
+            }
+        }
+    }
+
+    /// glTF's fresnel_mix weight: 1 − F0 at normal incidence (both F), 0 at grazing V·H, 1 with no
+    /// weight, and never outside [0, 1] between.
+    #[test]
+    fn the_fresnel_mix_weight_is_one_minus_f_of_the_layer() {
+        let n = DVec3::Z;
+        for terms in [Microfacet::GLTF, Microfacet::CHAPTER] {
+            assert!((fresnel_mix_weight(terms, n, n, n, 0.04, 1.0) - 0.96).abs() < 1e-9, "{terms}");
+            assert_eq!(fresnel_mix_weight(terms, n, n, n, 0.04, 0.0), 1.0);
+            // V and L nearly opposite: H ⟂ V, F = 1.
+            let v = DVec3::new(1.0, 0.0, 1e-6).normalize();
+            let l = DVec3::new(-1.0, 0.0, 1e-6).normalize();
+            assert!(fresnel_mix_weight(terms, n, v, l, 0.04, 1.0) < 1e-3, "{terms}");
+            for i in 0..=90 {
+                let t = (i as f64).to_radians();
+                let v = DVec3::new(t.sin(), 0.0, t.cos());
+                for f0 in [0.0, 0.04, 0.5, 1.0] {
+                    let k = fresnel_mix_weight(terms, n, v, n, f0, 0.7);
+                    assert!((0.0..=1.0).contains(&k), "{terms} θ {i}° F0 {f0}: {k}");
+                }
+            }
+        }
+    }
 
     /// ∫ D·(N·H) dω_h over the hemisphere by the midpoint rule in θ (D depends on θ only).
     fn projected_area(d: impl Fn(f64, f64) -> f64) -> f64 {
@@ -430,7 +538,7 @@ mod tests {
             assert_eq!(name.parse::<Fresnel>().unwrap(), f);
         }
         assert!("blinn".parse::<Distribution>().unwrap_err().to_string().contains("beckmann, ggx"));
-        assert_eq!(Microfacet::GLTF.to_string(), "ggx/smith-correlated/schlick");
+        assert_eq!(Microfacet::GLTF.to_string(), "ggx/smith-correlated/schlick+mix");
         assert_eq!(Microfacet::parse_named("gltf").unwrap(), Microfacet::GLTF);
         assert_eq!(Microfacet::CHAPTER.code(), 0);
         assert_ne!(Microfacet::GLTF.code(), 0);

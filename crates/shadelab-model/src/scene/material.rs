@@ -55,6 +55,26 @@ pub struct Material {
     /// Phong's lobe scaled to reflect all the light it receives at normal view
     /// (`brdf::phong_normalization`, docs/model.md §3); off in the chapter's model.
     pub phong_normalized: bool,
+    /// The dielectric layer whose Fresnel factor weights the diffuse when the terms ask for it
+    /// (`Microfacet::fresnel_mix`, docs/model.md §5).
+    pub fresnel_mix: FresnelMix,
+}
+
+/// The dielectric layer of glTF's `fresnel_mix`: its own normal-incidence reflectance, apart from
+/// the μ its metallic part mixes in, and its weight.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct FresnelMix {
+    /// The layer's F0, in [0, 1]: glTF's from `KHR_materials_ior` and the largest channel of
+    /// `KHR_materials_specular`'s colour; 0.04 (index 1.5) by default.
+    pub f0: f64,
+    /// `KHR_materials_specular`'s factor, in [0, 1]; 1 by default.
+    pub weight: f64,
+}
+
+impl Default for FresnelMix {
+    fn default() -> Self {
+        FresnelMix { f0: 0.04, weight: 1.0 }
+    }
 }
 
 /// A material's textures beyond the base colour. Each is optional; a point without one uses the
@@ -128,6 +148,7 @@ impl Default for Material {
             maps: MaterialMaps::default(),
             microfacet: crate::lighting::microfacet::Microfacet::CHAPTER,
             phong_normalized: false,
+            fresnel_mix: FresnelMix::default(),
         }
     }
 }

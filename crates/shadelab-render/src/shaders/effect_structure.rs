@@ -64,9 +64,10 @@ const MICROFACET: [Effect; 7] = shadelab_model::effects::MICROFACET_EFFECTS;
 /// rather than doubling the product of the rest.
 const PHONG_OPTIONS: [Effect; 1] = [Effect::PhongNormalized];
 
-/// The microfacet lobe's compensation: a factor inside Cook–Torrance's specular and a table read
-/// in `shade`, validated on a few bases.
-const MS_OPTIONS: [Effect; 1] = [Effect::MultipleScattering];
+/// The microfacet lobe's compensation (a factor inside Cook–Torrance's specular and a table read
+/// in `shade`) and the Fresnel-weighted diffuse (a factor on the diffuse), validated on a few
+/// bases.
+const MS_OPTIONS: [Effect; 2] = [Effect::MultipleScattering, Effect::FresnelMix];
 
 /// The keys of every subset of `effects`.
 fn subsets(effects: &[Effect]) -> Vec<EffectKey> {
@@ -155,12 +156,19 @@ fn every_permutation_validates_in_naga() {
         let base = PHONG_OPTIONS.into_iter().fold(base, |k, e| k.without(e));
         keys.extend(subsets(&PHONG_OPTIONS).into_iter().map(|k| union(k, base)));
     }
-    // The compensation on every other effect, on Cook–Torrance with GGX and Smith, and on none.
+    // Both on every other effect, on glTF's terms with the diffuse, and on none.
     let ms_bases: [EffectKey; 3] = [
         EffectKey::UBER,
-        [Effect::PointLights, Effect::SpecularCookTorrance, Effect::DistributionGgx, Effect::MaskingSmithCorrelated]
-            .into_iter()
-            .collect(),
+        [
+            Effect::PointLights,
+            Effect::Diffuse,
+            Effect::SpecularCookTorrance,
+            Effect::DistributionGgx,
+            Effect::MaskingSmithCorrelated,
+            Effect::FresnelSchlick,
+        ]
+        .into_iter()
+        .collect(),
         EffectKey::NONE,
     ];
     for base in ms_bases {

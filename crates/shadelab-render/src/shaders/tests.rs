@@ -60,7 +60,7 @@ fn uniform_layouts_match_wgsl() {
     );
     assert_eq!(
         wgsl_layout(&module, "Object"),
-        rust_layout!(ObjectUniform: model, normal_matrix, color, mu, r_s, r_d, r_a, m, h, mirror, transmission, uv_rotation, mu_tinted, uv_offset_scale, metallic_f0, emission, metal_roughness_uv, occlusion_uv, emissive_uv, uv_rotations, maps, occlusion_strength, normal_scale, phong_normalized, normal_uv, inverse_model, ior, absorption, exit_shape, absorption_form, longest_chord, microfacet)
+        rust_layout!(ObjectUniform: model, normal_matrix, color, mu, r_s, r_d, r_a, m, h, mirror, transmission, uv_rotation, mu_tinted, uv_offset_scale, metallic_f0, emission, metal_roughness_uv, occlusion_uv, emissive_uv, uv_rotations, maps, occlusion_strength, normal_scale, phong_normalized, normal_uv, inverse_model, ior, absorption, exit_shape, absorption_form, longest_chord, microfacet, fresnel_mix)
     );
     assert_eq!(
         wgsl_layout(&module, "ShadowLight"),

@@ -33,7 +33,7 @@ pub struct Column {
 const D_MAX: f64 = 1.0 / (4.0 * M_MIN * M_MIN);
 
 /// Every column in the order the kernel writes them (and the report lists them).
-pub const COLUMNS: [Column; 53] = [
+pub const COLUMNS: [Column; 54] = [
     col("diffuse_lambert", "DIFFUSE_LAMBERT", 1, 1.0, "N·L of unit vectors"),
     col("specular_phong", "SPECULAR_PHONG", 1, 1.0, "(V·R)^h with V·R clamped to [0, 1]"),
     col(
@@ -70,6 +70,13 @@ pub const COLUMNS: [Column; 53] = [
         3,
         1.0 / MS_ALBEDO_MIN,
         "1 + F0 (1 − E)/E ≤ 1/MS_ALBEDO_MIN, F0 ≤ 1",
+    ),
+    col(
+        "fresnel_mix_weight (F0 = μ.x, w = 1; glTF's F, the chapter's)",
+        "FRESNEL_MIX_WEIGHT",
+        2,
+        1.0,
+        "1 − w·F, F and w in [0, 1]",
     ),
     col("falloff_quadratic", "FALLOFF_QUADRATIC", 1, 1.0, "1/(1 + α d²), α ≥ 0"),
     col("falloff_linear", "FALLOFF_LINEAR", 1, 1.0 / D0_MIN, "1/(d + d0), d0 ≥ D0_MIN"),
@@ -247,6 +254,7 @@ const G_SMITH_CORRELATED: usize = offset("G_SMITH_CORRELATED");
 const MICROFACET_F_SCHLICK: usize = offset("MICROFACET_F_SCHLICK");
 const SPECULAR_MICROFACET_GLTF: usize = offset("SPECULAR_MICROFACET_GLTF");
 const MS_COMPENSATION: usize = offset("MS_COMPENSATION");
+const FRESNEL_MIX_WEIGHT: usize = offset("FRESNEL_MIX_WEIGHT");
 const FALLOFF_QUADRATIC: usize = offset("FALLOFF_QUADRATIC");
 const FALLOFF_LINEAR: usize = offset("FALLOFF_LINEAR");
 const CONTRIBUTION_PHONG: usize = offset("CONTRIBUTION_PHONG");
@@ -421,6 +429,9 @@ fn microfacet_columns(out: &mut [f64; OUTPUTS], inp: &Combination) {
     rgb(out, SPECULAR_MICROFACET_GLTF, microfacet::specular_microfacet(n, v, l, m, v_index, Microfacet::GLTF, 1.0));
     // The compensation over E = m (0 to 1, the floor at 0 included).
     rgb(out, MS_COMPENSATION, shadelab_model::lighting::multiscatter::ms_compensation(m, v_index));
+    for (k, terms) in [Microfacet::GLTF, Microfacet::CHAPTER].into_iter().enumerate() {
+        out[FRESNEL_MIX_WEIGHT + k] = microfacet::fresnel_mix_weight(terms, n, v, l, inp.mu[0], 1.0);
+    }
 }
 
 /// The shadow-map columns: the cube face, the texel's world size and the map coordinate.

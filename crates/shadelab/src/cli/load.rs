@@ -94,5 +94,6 @@ pub fn overrides(a: &SceneArgs) -> Overrides {
         fresnel: a.fresnel,
         phong_normalized: a.phong_normalized,
         multiple_scattering: a.multiple_scattering,
+        fresnel_mix: a.fresnel_mix,
     }
 }

@@ -369,6 +369,11 @@ pub struct SceneArgs {
     /// scene file's, else off]
     #[arg(long, value_name = "ON|OFF", value_parser = values::on_off())]
     pub multiple_scattering: Option<bool>,
+    /// Every material's diffuse weighted by what its dielectric layer's Fresnel leaves it (on,
+    /// glTF's fresnel_mix 1 − F), or not (off), after --microfacet [default: the scene file's;
+    /// on with --microfacet gltf]
+    #[arg(long, value_name = "ON|OFF", value_parser = values::on_off())]
+    pub fresnel_mix: Option<bool>,
     #[arg(long, value_name = "ALPHA", value_parser = values::real(params::FALLOFF),
           help = within("Falloff factor α of every point and spot light, I0/(1 + α d²)", params::FALLOFF))]
     pub falloff: Option<f64>,

@@ -54,6 +54,23 @@ fn a_plain_gltf_material_opens_with_the_gltf_brdf_and_extras_keep_the_chapters()
     let try_load = |bytes: &[u8]| load_scene_from_slice(bytes);
     let plain = load(&material(json!({ "other": 1 })));
     assert_eq!(plain.scene.materials[0].microfacet, Microfacet::GLTF);
+    let mix = plain.scene.materials[0].fresnel_mix;
+    assert!((mix.f0 - 0.04).abs() < 1e-15 && mix.weight == 1.0, "{mix:?}");
+    // The layer of fresnel_mix is the dielectric's own: ior 2 gives F0 1/9, the specular factor
+    // its weight, the colour's largest channel scales F0.
+    let layer = load(&triangle(json!({
+        "extensionsUsed": ["KHR_materials_ior", "KHR_materials_specular"],
+        "materials": [{
+            "pbrMetallicRoughness": { "metallicFactor": 0.5 },
+            "extensions": {
+                "KHR_materials_ior": { "ior": 2.0 },
+                "KHR_materials_specular": { "specularFactor": 0.5, "specularColorFactor": [0.5, 2.0, 1.0] }
+            }
+        }],
+        "meshes": [{ "primitives": [{ "attributes": { "POSITION": 0 }, "material": 0 }] }],
+    })));
+    let mix = layer.scene.materials[0].fresnel_mix;
+    assert!((mix.f0 - 2.0 / 9.0).abs() < 1e-12 && mix.weight == 0.5, "{mix:?}");
     // extras.shadelab without terms: the chapter's; one term named: that one, the others the chapter's.
     let stated = load(&material(json!({ "shadelab": { "m": 0.3 } })));
     assert_eq!(stated.scene.materials[0].microfacet, Microfacet::CHAPTER);
@@ -77,8 +94,10 @@ fn extras_are_written_and_read_by_the_same_types() {
     scene.materials[1].microfacet = crate::lighting::microfacet::Microfacet {
         d: crate::lighting::microfacet::Distribution::Ggx,
         multiple_scattering: true,
+        fresnel_mix: true,
         ..crate::lighting::microfacet::Microfacet::CHAPTER
     };
+    scene.materials[1].fresnel_mix = crate::scene::FresnelMix { f0: 0.0625, weight: 0.75 };
     scene.lights[0].shadow = crate::shadows::ShadowSettings {
         casts: false,
         resolution: 300,
@@ -96,7 +115,7 @@ fn extras_are_written_and_read_by_the_same_types() {
     );
     assert_eq!(
         keys(&doc["materials"][1]),
-        "C a d distribution fresnel h m masking mu mu_t multiple_scattering r_a r_d r_s t"
+        "C a d distribution fresnel fresnel_mix h m masking mix_f0 mix_weight mu mu_t multiple_scattering r_a r_d r_s t"
     );
     assert_eq!(doc["materials"][1]["extras"]["shadelab"]["h"], json!("mirror"));
     assert_eq!(doc["materials"][1]["extras"]["shadelab"]["distribution"], json!("ggx"));

@@ -57,4 +57,7 @@ fn terms_ui(ui: &mut egui::Ui, materials: &mut [Material], selected: usize) {
     ui.checkbox(&mut t.multiple_scattering, "multiple scattering").on_hover_text(
         "the light single scattering loses between facets put back, 1 + F0·(1 − E)/E (docs/microfacet.md)",
     );
+    ui.checkbox(&mut t.fresnel_mix, "diffuse × (1 − F)").on_hover_text(
+        "the diffuse weighted by what the dielectric layer's Fresnel leaves it, glTF's fresnel_mix (docs/model.md §5)",
+    );
 }

@@ -11,7 +11,7 @@ use shadelab_render::{AdapterChoice, Gpu};
 fn every_combination_changes_the_model_and_the_gpu_follows_each() {
     let gpu = Gpu::headless(AdapterChoice::from_env()).expect("a GPU adapter (lavapipe)");
     let (rows, null_ms, maps) = combos(&gpu, (160, 90), 1, 1).expect("measured");
-    assert_eq!(rows.len(), 12);
+    assert_eq!(rows.len(), 13);
     assert!(null_ms > 0.0 && rows.iter().all(|r| r.median_ms.is_finite() && r.ratio_to_null > 1.0), "{rows:?}");
     let chapter = &rows[0];
     assert_eq!((chapter.terms, chapter.mean_change, chapter.max_change), (Microfacet::CHAPTER, 0.0, 0.0));
@@ -25,6 +25,11 @@ fn every_combination_changes_the_model_and_the_gpu_follows_each() {
     // A different D moves the image far more than a different G or F on this scene.
     let d = rows.iter().find(|r| r.terms == Microfacet { d: Distribution::Ggx, ..Microfacet::CHAPTER }).unwrap();
     assert!(rows[1..6].iter().all(|r| r.mean_change < d.mean_change / 5.0), "{rows:?}");
+    // glTF's set differs from the row before only by the Fresnel-weighted diffuse, which takes
+    // light away from the diffuse: a change of its own.
+    let (plain, mixed) = (&rows[11], &rows[12]);
+    assert_eq!((mixed.terms, plain.terms), (Microfacet::GLTF, Microfacet { fresnel_mix: false, ..Microfacet::GLTF }));
+    assert!(mixed.mean_change != plain.mean_change, "{mixed:?} vs {plain:?}");
     assert_eq!(maps.len(), MAPS.len());
     for m in &maps {
         assert!(m.pixels.iter().any(|v| *v > 128), "{}: the map shows no change", m.stem);

@@ -1,6 +1,6 @@
 //! `shadelab bench microfacet`: what each Cook–Torrance term costs against what it changes
 //! (docs/microfacet.md). The default scene drawn with each of the 12 combinations of D, G and F,
-//! timed side by side against the null shader; each combination's f64 reference against the
+//! and with glTF's whole set (its terms and the Fresnel-weighted diffuse), timed side by side against the null shader; each combination's f64 reference against the
 //! chapter's (a different model, not an error) and the GPU against its own reference (the
 //! error); maps of where one term's change lies; and Schlick's F against the exact factor per μ,
 //! the metals' presets included (an approximation of the same quantity).
@@ -58,6 +58,14 @@ pub fn combinations() -> Vec<Microfacet> {
             }
         }
     }
+    out
+}
+
+/// The study's rows: every combination, then glTF's set, whose only difference from the
+/// combination before it is the Fresnel-weighted diffuse.
+pub fn studied() -> Vec<Microfacet> {
+    let mut out = combinations();
+    out.push(Microfacet::GLTF);
     out
 }
 
@@ -128,7 +136,7 @@ pub struct MapImage {
     pub pixels: Vec<u8>,
 }
 
-/// The 12 combinations on the default scene: timed side by side with the null shader, and each
+/// The [`studied`] terms on the default scene: timed side by side with the null shader, and each
 /// reference against the chapter's; with the maps of [`MAPS`].
 pub fn combos(
     gpu: &Gpu,
@@ -138,7 +146,7 @@ pub fn combos(
 ) -> anyhow::Result<(Vec<ComboRow>, f64, Vec<MapImage>)> {
     let scene = Scene::builtin("default").expect("built in");
     let settings = RenderSettings::new(ShadingMode::Phong, SpecularModel::CookTorrance);
-    let all = combinations();
+    let all = studied();
     let scenes: Vec<Scene> = all.iter().map(|t| with_terms(&scene, *t)).collect();
     let mut r = Renderer::new(&gpu.device, &gpu.queue);
     let gs = r.upload(&scene)?;
@@ -306,7 +314,10 @@ pub fn markdown(
         s,
         "# What each microfacet term costs against what it changes\n\n    {command}\n\nDevice: {device}. The default scene, Phong shading, Cook–Torrance, every material with the terms of the row. GPU times are medians of frames drawn side by side (interleaved) with the null shader ({null_ms:.3} ms). *Change*: |f64 reference with these terms − f64 reference with the chapter's| over the objects' pixels (a different model, not an error). *GPU error*: |GPU − f64 reference with the same terms|.\n"
     );
-    let _ = writeln!(s, "| D / G / F | median ms | × null | mean change | max change | GPU mean error |");
+    let _ = writeln!(
+        s,
+        "| D / G / F (+mix: the Fresnel-weighted diffuse) | median ms | × null | mean change | max change | GPU mean error |"
+    );
     let _ = writeln!(s, "|---|---:|---:|---:|---:|---:|");
     for r in rows {
         let _ = writeln!(
@@ -337,13 +348,13 @@ pub fn markdown(
 }
 
 pub fn combos_csv(rows: &[ComboRow]) -> String {
-    let mut s = String::from("d,g,f,median_ms,ratio_to_null,mean_change,max_change,gpu_mean_error\n");
+    let mut s = String::from("d,g,f,fresnel_mix,median_ms,ratio_to_null,mean_change,max_change,gpu_mean_error\n");
     for r in rows {
         let t = r.terms;
         let _ = writeln!(
             s,
-            "{},{},{},{},{},{},{},{}",
-            t.d, t.g, t.f, r.median_ms, r.ratio_to_null, r.mean_change, r.max_change, r.gpu_error
+            "{},{},{},{},{},{},{},{},{}",
+            t.d, t.g, t.f, t.fresnel_mix, r.median_ms, r.ratio_to_null, r.mean_change, r.max_change, r.gpu_error
         );
     }
     s
@@ -423,6 +434,7 @@ mod tests {
         assert_eq!(rows.len(), 6 + 3 * shadelab_model::presets::PRESETS.iter().filter(|p| p.metal).count());
         assert_eq!(combinations().len(), 12);
         assert_eq!(combinations()[0], Microfacet::CHAPTER);
+        assert_eq!(studied()[12], Microfacet::GLTF);
         assert_eq!(nice_ceil(0.0139), 0.02);
         assert_eq!(nice_ceil(0.3347), 0.5);
         assert_eq!(nice_ceil(0.001), 0.001);

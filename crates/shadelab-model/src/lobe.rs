@@ -9,7 +9,7 @@ use crate::lighting::common::safe_normalize;
 use crate::lighting::lights::light_sample;
 use crate::lighting::microfacet::{microfacet_d, microfacet_f, microfacet_g};
 use crate::scene::{MAX_LIGHTS, Material, Scene};
-use glam::{DMat4, DVec3};
+use glam::DVec3;
 
 /// The point a pixel sees: the object, the material, the position, the shading normal N, the
 /// unit view vector V, and per light its unit L and the radiance that reaches the point.
@@ -57,9 +57,9 @@ pub fn pick(scene: &Scene, (x, y): (u32, u32), (width, height): (u32, u32)) -> O
     if x >= width || y >= height {
         return None;
     }
-    let inverses: Vec<DMat4> = scene.objects.iter().map(|o| o.transform.matrix().inverse()).collect();
+    let geo = crate::reference::Geometry::new(scene);
     let (o, dir) = scene.camera.ray(x, y, width, height);
-    let hit = crate::reference::trace_ray(scene, &inverses, o, dir)?;
+    let hit = crate::reference::trace_ray(scene, &geo, o, dir)?;
     let material = scene.materials.get(scene.objects[hit.object].material)?.clone();
     let e = scene.camera.eye_h();
     let v = safe_normalize(e.truncate() - hit.point * e.w, DVec3::Y);

@@ -2,6 +2,7 @@
 //! the *analytic* shapes (exact normals, no tessellation), shaded by the f64 model, with exact
 //! hard cast shadows from shadow rays. The ground truth for tests and for the accuracy study.
 
+mod bvh;
 mod glass;
 mod intersect;
 mod shadow_rays;
@@ -16,18 +17,31 @@ use crate::lighting::area_points::area_emitter;
 use crate::lighting::shading::{shade, shade_with_visibility};
 use crate::params::SpecularModel;
 use crate::scene::{Material, Scene, UvFootprint};
-use glam::DMat4;
+pub(crate) use intersect::Geometry;
 use intersect::trace;
+use rayon::prelude::*;
 use shadow_rays::ShadowRays;
 
 /// The nearest surface a ray from `o` along `dir` sees (the pick of `lobe.rs`).
 pub(crate) fn trace_ray(
     scene: &Scene,
-    inverses: &[DMat4],
+    geo: &Geometry,
     o: glam::DVec3,
     dir: glam::DVec3,
 ) -> Option<intersect::SurfaceHit> {
-    trace(scene, inverses, o, dir)
+    trace(scene, geo, o, dir)
+}
+
+/// The threads the reference traces rows on: every core (`RAYON_NUM_THREADS` sets it), one where
+/// the target has no threads (the browser).
+pub fn reference_threads() -> usize {
+    rayon::current_num_threads()
+}
+
+/// Builds the hierarchies of the scene's meshes, as a reference image does before its first ray,
+/// and returns the bytes they hold (`bench reference` times and reports it).
+pub fn hierarchy_bytes(scene: &Scene) -> usize {
+    Geometry::new(scene).bvhs.iter().map(bvh::Bvh::bytes).sum()
 }
 
 /// A linear RGB image in f64, rows top to bottom.
@@ -108,7 +122,7 @@ pub fn render_reference(scene: &Scene, specular: SpecularModel, width: u32, heig
 /// [`render_reference`].
 pub fn render_drawn(scene: &Scene, specular: SpecularModel, width: u32, height: u32) -> ReferenceImage {
     let mut img = ReferenceImage::empty(width, height, scene.background);
-    trace_rows(scene, specular, &mut img, 0..height);
+    trace_rows(scene, &Geometry::new(scene), specular, &mut img, 0..height);
     img
 }
 
@@ -116,6 +130,8 @@ pub fn render_drawn(scene: &Scene, specular: SpecularModel, width: u32, height: 
 /// spreads it over frames so the page keeps drawing). The image is the same, row for row.
 pub struct ReferenceJob {
     scene: Scene,
+    /// Its transforms and hierarchies, built once for every step.
+    geo: Geometry,
     specular: SpecularModel,
     img: ReferenceImage,
     next_row: u32,
@@ -126,13 +142,14 @@ impl ReferenceJob {
         let exact: Vec<Light> = scene.lights.iter().map(|l| Light { area_points: 0, ..l.clone() }).collect();
         let scene = Scene { lights: exact, ..scene.clone() };
         let img = ReferenceImage::empty(width, height, scene.background);
-        ReferenceJob { scene, specular, img, next_row: 0 }
+        let geo = Geometry::new(&scene);
+        ReferenceJob { scene, geo, specular, img, next_row: 0 }
     }
 
     /// Trace up to `rows` more rows; true once every row is traced.
     pub fn step(&mut self, rows: u32) -> bool {
         let end = self.next_row.saturating_add(rows).min(self.img.height);
-        trace_rows(&self.scene, self.specular, &mut self.img, self.next_row..end);
+        trace_rows(&self.scene, &self.geo, self.specular, &mut self.img, self.next_row..end);
         self.next_row = end;
         self.done()
     }
@@ -169,60 +186,88 @@ impl ReferenceImage {
 }
 
 /// Trace the rows `rows` of `img`'s size, appending their pixels (rows come in order).
-fn trace_rows(scene: &Scene, specular: SpecularModel, img: &mut ReferenceImage, rows: std::ops::Range<u32>) {
+fn trace_rows(
+    scene: &Scene,
+    geo: &Geometry,
+    specular: SpecularModel,
+    img: &mut ReferenceImage,
+    rows: std::ops::Range<u32>,
+) {
+    let rays = ShadowRays::new(scene, geo);
+    let ctx = Context { scene, geo, rays: &rays, specular };
+    // Rows on every core, each into its own buffer, appended in order: the same image as one
+    // thread would trace.
     let (width, height) = (img.width, img.height);
-    let inverses: Vec<DMat4> = scene.objects.iter().map(|o| o.transform.matrix().inverse()).collect();
-    let rays = ShadowRays::new(scene, &inverses);
-    let ctx = Context { scene, inverses: &inverses, rays: &rays, specular };
+    let traced: Vec<RowPixels> = rows.into_par_iter().map(|y| trace_row(&ctx, y, width, height)).collect();
+    for row in traced {
+        img.pixels.extend(row.pixels);
+        img.unshadowed.extend(row.unshadowed);
+        img.object.extend(row.object);
+        img.hidden.extend(row.hidden);
+    }
+}
+
+/// One row's pixels, as [`ReferenceImage`] holds them.
+#[derive(Default)]
+struct RowPixels {
+    pixels: Vec<[f64; 3]>,
+    unshadowed: Vec<[f64; 3]>,
+    object: Vec<Option<usize>>,
+    hidden: Vec<u8>,
+}
+
+/// Row `y` of a `width × height` image, traced in `ctx`.
+fn trace_row(ctx: &Context, y: u32, width: u32, height: u32) -> RowPixels {
+    let (scene, geo) = (ctx.scene, ctx.geo);
+    let mut img = RowPixels::default();
     let mut tinted: Vec<Material> = scene.materials.clone();
-    for y in rows {
-        for x in 0..width {
-            let (o, dir) = scene.camera.ray(x, y, width, height);
-            let Some(hit) = trace(scene, &inverses, o, dir) else {
-                let background = scene.background.unwrap_or([0.0; 3]);
-                img.pixels.push(background);
-                img.unshadowed.push(background);
-                img.object.push(None);
-                img.hidden.push(0);
-                continue;
-            };
-            let eye = scene.camera.eye_h();
-            if scene.drawn_as_glass(hit.object) {
-                // A transparent object: its surface and what the traced paths bring through it.
-                let shaded = ctx.glass(&hit, dir, eye);
-                img.pixels.push(shaded.lit);
-                img.unshadowed.push(shaded.unshadowed);
-                img.object.push(Some(hit.object));
-                img.hidden.push(shaded.hidden);
-                continue;
-            }
-            let mi = scene.objects[hit.object].material;
-            let material = &scene.materials[mi];
-            // The pixel's footprint in texture coordinates, as the GPU's derivatives take it: the
-            // differences across the 2×2 quad's pair of pixels in x and in y, on the same plane.
-            let footprint = hit.triangle.filter(|_| material.varies([1.0; 3])).and_then(|k| {
-                let uv_at = |px: u32, py: u32| {
-                    let (o, d) = scene.camera.ray(px, py, width, height);
-                    intersect::uv_on_triangle_plane(scene, &inverses, hit.object, k, o, d)
-                };
-                let (x0, y0) = (x & !1, y & !1);
-                let (a, b, c, d) = (uv_at(x0, y)?, uv_at(x0 + 1, y)?, uv_at(x, y0)?, uv_at(x, y0 + 1)?);
-                Some(UvFootprint { dx: [b[0] - a[0], b[1] - a[1]], dy: [d[0] - c[0], d[1] - c[1]] })
-            });
-            let shaded = ctx.shade_hit(&hit, eye, &mut tinted, footprint.as_ref(), None);
+    for x in 0..width {
+        let (o, dir) = scene.camera.ray(x, y, width, height);
+        let Some(hit) = trace(scene, geo, o, dir) else {
+            let background = scene.background.unwrap_or([0.0; 3]);
+            img.pixels.push(background);
+            img.unshadowed.push(background);
+            img.object.push(None);
+            img.hidden.push(0);
+            continue;
+        };
+        let eye = scene.camera.eye_h();
+        if scene.drawn_as_glass(hit.object) {
+            // A transparent object: its surface and what the traced paths bring through it.
+            let shaded = ctx.glass(&hit, dir, eye);
             img.pixels.push(shaded.lit);
             img.unshadowed.push(shaded.unshadowed);
             img.object.push(Some(hit.object));
             img.hidden.push(shaded.hidden);
+            continue;
         }
+        let mi = scene.objects[hit.object].material;
+        let material = &scene.materials[mi];
+        // The pixel's footprint in texture coordinates, as the GPU's derivatives take it: the
+        // differences across the 2×2 quad's pair of pixels in x and in y, on the same plane.
+        let footprint = hit.triangle.filter(|_| material.varies([1.0; 3])).and_then(|k| {
+            let uv_at = |px: u32, py: u32| {
+                let (o, d) = scene.camera.ray(px, py, width, height);
+                intersect::uv_on_triangle_plane(scene, &geo.inverses, hit.object, k, o, d)
+            };
+            let (x0, y0) = (x & !1, y & !1);
+            let (a, b, c, d) = (uv_at(x0, y)?, uv_at(x0 + 1, y)?, uv_at(x, y0)?, uv_at(x, y0 + 1)?);
+            Some(UvFootprint { dx: [b[0] - a[0], b[1] - a[1]], dy: [d[0] - c[0], d[1] - c[1]] })
+        });
+        let shaded = ctx.shade_hit(&hit, eye, &mut tinted, footprint.as_ref(), None);
+        img.pixels.push(shaded.lit);
+        img.unshadowed.push(shaded.unshadowed);
+        img.object.push(Some(hit.object));
+        img.hidden.push(shaded.hidden);
     }
+    img
 }
 
 /// What the reference needs to shade any point: the scene, its inverse transforms, its shadow
 /// rays and the specular model.
 struct Context<'a> {
     pub scene: &'a Scene,
-    pub inverses: &'a [DMat4],
+    pub geo: &'a Geometry,
     pub rays: &'a ShadowRays<'a>,
     pub specular: SpecularModel,
 }

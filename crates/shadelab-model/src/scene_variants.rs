@@ -18,9 +18,10 @@ pub fn is_analytic(scene: &Scene) -> bool {
         .all(|o| matches!(o.shape, Shape::Sphere | Shape::Cylinder | Shape::Cube | Shape::Plane | Shape::Pyramid))
 }
 
-/// Most file-mesh triangles a scene may have for the reference to render it: the ray-caster tests
-/// every triangle per ray, so 10⁴ triangles at 640×360 are about 2·10⁹ ray–triangle tests.
-pub const REFERENCE_MESH_TRIANGLES: usize = 10_000;
+/// Most file-mesh triangles a scene may have for the reference to render it: the loader's own
+/// limit (`gltf_io::MAX_TRIANGLES`). A ray meets a mesh through its hierarchy (`reference/bvh.rs`,
+/// about 36 bytes a triangle, 0.6 GB at this limit), so its cost grows with log n, not n.
+pub const REFERENCE_MESH_TRIANGLES: usize = crate::gltf_io::MAX_TRIANGLES;
 
 /// Whether the f64 reference renders the scene: analytic shapes exactly, and file meshes (their
 /// triangles are the file's exact surface) of at most `REFERENCE_MESH_TRIANGLES` in all.

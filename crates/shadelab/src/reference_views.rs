@@ -5,15 +5,45 @@
 use crate::render::{ImageKind, save};
 use crate::{Failure, cli};
 use anyhow::Context;
-use shadelab_model::reference::render_reference;
+use shadelab_model::reference::{ReferenceImage, ReferenceJob};
 use shadelab_model::terms::{Term, shadow_factor};
 use shadelab_render::image_error::{compare_images, reference_image};
 use shadelab_render::{Gpu, LinearImage, RenderSettings};
+use std::io::{IsTerminal, Write};
+
+/// Rows a progress step traces: a fiftieth of the image, so the bar moves in 2 % steps.
+const PROGRESS_STEPS: u32 = 50;
+
+/// The reference traced as the viewer traces it (`ReferenceJob`, the same code path), a fiftieth
+/// of its rows at a time, with a progress bar on standard error when that is a terminal.
+fn traced_with_progress(scene: &shadelab_model::Scene, settings: &RenderSettings, size: (u32, u32)) -> ReferenceImage {
+    let mut job = ReferenceJob::new(scene, settings.specular, size.0, size.1);
+    let rows = size.1.div_ceil(PROGRESS_STEPS).max(1);
+    let mut err = std::io::stderr();
+    let bar = err.is_terminal();
+    while !job.step(rows) {
+        if bar {
+            let done = (job.progress() * 40.0).round() as usize;
+            let _ = write!(
+                err,
+                "\rf64 reference [{}{}] {:3.0} %",
+                "#".repeat(done),
+                " ".repeat(40 - done.min(40)),
+                job.progress() * 100.0
+            );
+            let _ = err.flush();
+        }
+    }
+    if bar {
+        let _ = write!(err, "\r{}\r", " ".repeat(60));
+    }
+    job.finish()
+}
 
 /// The reference of `scene` at `size` as a linear image: its pixels, or with `--term shadow`
 /// its exact cast-shadow factor as grey (the background kept), as the GPU's factor is drawn.
 fn reference_of(scene: &shadelab_model::Scene, size: (u32, u32), settings: &RenderSettings, term: Term) -> LinearImage {
-    let r = render_reference(scene, settings.specular, size.0, size.1);
+    let r = traced_with_progress(scene, settings, size);
     if term != Term::Shadow {
         return reference_image(&r);
     }
@@ -43,9 +73,10 @@ pub fn run(
     let start = web_time::Instant::now();
     let reference = reference_of(scene, size, settings, args.term);
     if args.reference {
-        // Its time on one thread: the web page's reference is measured against it (docs/web.md).
+        // Its time and threads (RAYON_NUM_THREADS=1: one, as the web page's, docs/web.md).
         let ms = start.elapsed().as_secs_f64() * 1e3;
-        println!("f64 reference of {} ({}×{}) in {ms:.1} ms, one thread", scene.name, size.0, size.1);
+        let threads = shadelab_model::reference::reference_threads();
+        println!("f64 reference of {} ({}×{}) in {ms:.1} ms, {threads} thread(s)", scene.name, size.0, size.1);
         save(&reference, &args.output, kind).with_context(|| format!("writing {}", args.output.display()))?;
         return Ok(());
     }

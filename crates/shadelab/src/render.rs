@@ -146,7 +146,7 @@ fn check_difference_flags(
 ) -> Result<(), Failure> {
     if (args.reference || args.difference) && !shadelab_model::scene_variants::reference_covers(scene) {
         return Err(Failure::Usage(format!(
-            "--reference, --difference: only for scenes of analytic shapes and file meshes of at most {} triangles in all (REFERENCE_MESH_TRIANGLES: the reference tests every triangle per ray)",
+            "--reference, --difference: only for scenes of analytic shapes and file meshes of at most {} triangles in all (REFERENCE_MESH_TRIANGLES, the loader's limit)",
             shadelab_model::scene_variants::REFERENCE_MESH_TRIANGLES
         )));
     }

@@ -88,7 +88,7 @@ impl<'a, L: Leaves> Tracer<'a, L> {
     /// the pixel's light; `channel`: the one channel a dispersing path follows.
     pub fn radiance(&self, o: DVec3, dir: DVec3, depth: u32, w: [f64; 3], channel: Option<usize>) -> [f64; 3] {
         let ctx = self.ctx;
-        let Some(hit) = trace(ctx.scene, ctx.inverses, o + dir * self.offset, dir) else {
+        let Some(hit) = trace(ctx.scene, ctx.geo, o + dir * self.offset, dir) else {
             return self.leaves.background();
         };
         if ctx.scene.drawn_as_glass(hit.object) {
@@ -167,7 +167,7 @@ impl<'a, L: Leaves> Tracer<'a, L> {
         }
         let ctx = self.ctx;
         // A mesh's exit is searched past the point the path starts on.
-        let Some((p2, n2)) = glass_exit(ctx.scene, ctx.inverses, obj, p + t * self.offset, t) else {
+        let Some((p2, n2)) = glass_exit(ctx.scene, ctx.geo, obj, p + t * self.offset, t) else {
             self.drop_path(w);
             return [0.0; 3];
         };
@@ -200,9 +200,9 @@ impl Context<'_> {
 mod tests {
     use super::*;
     use crate::params::SpecularModel;
+    use crate::reference::Geometry;
     use crate::reference::shadow_rays::ShadowRays;
     use crate::scene::{Object, Scene, Shape, Transform};
-    use glam::DMat4;
 
     /// Every leaf returns 1 and glass has no light of its own: what a pixel returns is the share
     /// of its light the paths carried out.
@@ -243,10 +243,9 @@ mod tests {
             for ior in [[1.0; 3], [1.5; 3], [2.4; 3], [3.0; 3], [1.45, 1.5, 1.6]] {
                 for absorb in [[0.0; 3], [0.3, 1.0, 4.0]] {
                     let scene = glass_scene(shape, ior, absorb);
-                    let inverses: Vec<DMat4> = scene.objects.iter().map(|o| o.transform.matrix().inverse()).collect();
-                    let rays = ShadowRays::new(&scene, &inverses);
-                    let ctx =
-                        Context { scene: &scene, inverses: &inverses, rays: &rays, specular: SpecularModel::Phong };
+                    let geo = Geometry::new(&scene);
+                    let rays = ShadowRays::new(&scene, &geo);
+                    let ctx = Context { scene: &scene, geo: &geo, rays: &rays, specular: SpecularModel::Phong };
                     for k in 0..200 {
                         // Rays from a sphere of radius 4 around the object, aimed at points inside it.
                         let (u, w) = ((k as f64 * 0.618034).fract(), (k as f64 * 0.414214).fract());
@@ -258,7 +257,7 @@ mod tests {
                             (k % 3) as f64 / 3.0 - 0.5,
                         );
                         let dir = (aim * 0.9 - o).normalize();
-                        let Some(hit) = trace(&scene, &inverses, o, dir) else { continue };
+                        let Some(hit) = trace(&scene, &geo, o, dir) else { continue };
                         let tracer = Tracer::new(&ctx, &Furnace);
                         let out = tracer.glass_color(&hit, dir, o.extend(1.0), 0, [1.0; 3], None).lit;
                         let lost = tracer.lost.get();

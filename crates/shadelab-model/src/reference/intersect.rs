@@ -2,11 +2,28 @@
 //! triangles, the nearest hit of a camera ray, and whether anything lies on a shadow ray's
 //! segment.
 
+use super::bvh::Bvh;
 use crate::lighting::common::safe_normalize;
 use crate::lighting::transmission::{CUBE_PLANES, PYRAMID_PLANES};
 use crate::mesh::{TriangleMesh, face_normal};
 use crate::scene::{Scene, Shape};
 use glam::{DMat4, DVec3};
+
+/// What a ray needs beside the scene: each object's inverse transform and each mesh's hierarchy,
+/// made once per image.
+pub(crate) struct Geometry {
+    pub inverses: Vec<DMat4>,
+    pub bvhs: Vec<Bvh>,
+}
+
+impl Geometry {
+    pub fn new(scene: &Scene) -> Geometry {
+        Geometry {
+            inverses: scene.objects.iter().map(|o| o.transform.matrix().inverse()).collect(),
+            bvhs: scene.meshes.iter().map(Bvh::build).collect(),
+        }
+    }
+}
 
 /// Rays starting closer than this (in object-space ray parameter) do not count as hits: the
 /// camera is outside every shape.
@@ -183,40 +200,43 @@ fn intersect_triangle(t: &[DVec3; 3], o: DVec3, dir: DVec3) -> Option<(f64, f64,
     ((0.0..=1.0).contains(&u) && v >= 0.0 && u + v <= 1.0 && tt > RAY_T_MIN).then_some((tt, u, v))
 }
 
-/// Intersect a ray (object space) with a file's triangle mesh by brute force (every triangle:
-/// fine for the small meshes the reference is used on): ray parameter, shading normal (the
-/// file's corner normals interpolated, or the face normal; it faces the ray's origin side as the
-/// face's winding says, no flipping) and face normal.
-fn intersect_mesh(mesh: &TriangleMesh, o: DVec3, dir: DVec3) -> Option<MeshHit> {
-    let mut best: Option<MeshHit> = None;
-    for k in 0..mesh.triangle_count() {
-        let t = &mesh.triangle(k);
-        let Some((tt, u, v)) = intersect_triangle(t, o, dir) else { continue };
-        if best.is_some_and(|b| tt >= b.0) {
-            continue;
+/// Intersect a ray (object space) with a file's triangle mesh through its hierarchy: ray
+/// parameter, shading normal (the file's corner normals interpolated, or the face normal; it faces
+/// the ray's origin side as the face's winding says, no flipping) and face normal. Of triangles
+/// hit at the same parameter, the lowest index wins, as a walk over every triangle in order would.
+fn intersect_mesh(mesh: &TriangleMesh, bvh: &Bvh, o: DVec3, dir: DVec3) -> Option<MeshHit> {
+    let mut best: Option<(f64, usize, f64, f64)> = None;
+    bvh.walk(o, dir, f64::INFINITY, |k, t_max| {
+        if let Some((tt, u, v)) = intersect_triangle(&mesh.triangle(k), o, dir)
+            && tt <= t_max
+            && best.is_none_or(|b| tt < b.0 || (tt == b.0 && k < b.1))
+        {
+            best = Some((tt, k, u, v));
+            return Some(tt);
         }
-        let face = face_normal(t).unwrap_or(DVec3::Y);
-        let n = match mesh.corner_normals(k) {
-            Some(c) => safe_normalize(c[0] * (1.0 - u - v) + c[1] * u + c[2] * v, face),
-            None => face,
-        };
-        best = Some((tt, n, face, k, u, v));
-    }
-    best
+        Some(t_max)
+    });
+    let (tt, k, u, v) = best?;
+    let face = face_normal(&mesh.triangle(k)).unwrap_or(DVec3::Y);
+    let n = match mesh.corner_normals(k) {
+        Some(c) => safe_normalize(c[0] * (1.0 - u - v) + c[1] * u + c[2] * v, face),
+        None => face,
+    };
+    Some((tt, n, face, k, u, v))
 }
 
 /// The nearest hit of a world ray among the scene's objects (`inverses`: each object's inverse
 /// transform).
-pub(super) fn trace(scene: &Scene, inverses: &[DMat4], o: DVec3, dir: DVec3) -> Option<SurfaceHit> {
+pub(super) fn trace(scene: &Scene, geo: &Geometry, o: DVec3, dir: DVec3) -> Option<SurfaceHit> {
     // Ray parameter, object, shading and face normals, texture coordinates, vertex colour,
     // object-space tangent, mesh triangle.
     type Best = (f64, usize, DVec3, DVec3, [f64; 2], [f64; 3], [f64; 4], Option<usize>);
     let mut best: Option<Best> = None;
-    for (i, (obj, inv)) in scene.objects.iter().zip(inverses).enumerate() {
+    for (i, (obj, inv)) in scene.objects.iter().zip(&geo.inverses).enumerate() {
         let (lo, ld) = (inv.transform_point3(o), inv.transform_vector3(dir));
         let hit = match obj.shape {
             Shape::Mesh(m) => scene.meshes.get(m).and_then(|mesh| {
-                let (t, n, face, k, u, v) = intersect_mesh(mesh, lo, ld)?;
+                let (t, n, face, k, u, v) = intersect_mesh(mesh, geo.bvhs.get(m)?, lo, ld)?;
                 let tri = mesh.indices[k];
                 let uv = mesh
                     .uvs
@@ -262,12 +282,13 @@ pub(super) fn trace(scene: &Scene, inverses: &[DMat4], o: DVec3, dir: DVec3) -> 
 /// Where a world ray from `o` inside object `i` along `dir` leaves it: the point and the outward
 /// world unit normal there. An analytic shape's exit is exact (`shape_exit`); a mesh's is its
 /// nearest triangle ahead, its face normal turned along the ray. `None` when nothing is ahead.
-pub(super) fn glass_exit(scene: &Scene, inverses: &[DMat4], i: usize, o: DVec3, dir: DVec3) -> Option<(DVec3, DVec3)> {
+pub(super) fn glass_exit(scene: &Scene, geo: &Geometry, i: usize, o: DVec3, dir: DVec3) -> Option<(DVec3, DVec3)> {
     let obj = &scene.objects[i];
-    let (lo, ld) = (inverses[i].transform_point3(o), inverses[i].transform_vector3(dir));
+    let inv = geo.inverses[i];
+    let (lo, ld) = (inv.transform_point3(o), inv.transform_vector3(dir));
     let (t, n) = match obj.shape {
         Shape::Mesh(m) => {
-            let (t, _, face, ..) = intersect_mesh(scene.meshes.get(m)?, lo, ld)?;
+            let (t, _, face, ..) = intersect_mesh(scene.meshes.get(m)?, geo.bvhs.get(m)?, lo, ld)?;
             (t, if face.dot(ld) < 0.0 { -face } else { face })
         }
         shape => crate::lighting::transmission::shape_exit(shape.exit_code(), lo, ld)?,
@@ -316,12 +337,17 @@ const RAY_PLANE_DENOM_MIN: f64 = 1e-12;
 
 /// Whether any object's surface crosses the world ray `o + t·dir` for `t` in (`RAY_T_MIN`,
 /// `t_max`): the shadow ray's test, stopping at the first occluder found.
-pub(super) fn occluded(scene: &Scene, inverses: &[DMat4], o: DVec3, dir: DVec3, t_max: f64) -> bool {
-    scene.objects.iter().zip(inverses).any(|(obj, inv)| {
+pub(super) fn occluded(scene: &Scene, geo: &Geometry, o: DVec3, dir: DVec3, t_max: f64) -> bool {
+    scene.objects.iter().zip(&geo.inverses).any(|(obj, inv)| {
         let (lo, ld) = (inv.transform_point3(o), inv.transform_vector3(dir));
         match obj.shape {
-            Shape::Mesh(m) => scene.meshes.get(m).is_some_and(|mesh| {
-                mesh.triangles().any(|t| intersect_triangle(&t, lo, ld).is_some_and(|(tt, _, _)| tt < t_max))
+            Shape::Mesh(m) => scene.meshes.get(m).zip(geo.bvhs.get(m)).is_some_and(|(mesh, bvh)| {
+                let mut hit = false;
+                bvh.walk(lo, ld, t_max, |k, t| {
+                    hit = intersect_triangle(&mesh.triangle(k), lo, ld).is_some_and(|(tt, _, _)| tt < t_max);
+                    (!hit).then_some(t)
+                });
+                hit
             }),
             shape => first_crossing(shape, lo, ld).is_some_and(|t| t < t_max),
         }

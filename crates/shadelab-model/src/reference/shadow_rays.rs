@@ -2,12 +2,12 @@
 //! ray from it to the light crosses a surface. Exact hard shadows of point, spot and directional
 //! lights, against the analytic shapes and file meshes.
 
-use super::intersect::occluded;
+use super::intersect::{Geometry, occluded};
 use crate::guards::LIGHT_DIST_MIN;
 use crate::lighting::area::area_visible_share;
 use crate::lighting::lights::{Light, LightKind};
 use crate::scene::{Scene, Shape};
-use glam::{DMat4, DVec3};
+use glam::DVec3;
 use std::cmp::Ordering;
 
 /// How far a shadow ray's ends are moved off the surfaces they lie on, relative to the scene's
@@ -60,14 +60,14 @@ fn box_corners(lo: DVec3, hi: DVec3) -> [DVec3; 8] {
 /// ends.
 pub(super) struct ShadowRays<'a> {
     scene: &'a Scene,
-    inverses: &'a [DMat4],
+    geo: &'a Geometry,
     /// `SHADOW_RAY_OFFSET_REL` × the scene's scale, world units.
     offset: f64,
 }
 
 impl<'a> ShadowRays<'a> {
-    pub fn new(scene: &'a Scene, inverses: &'a [DMat4]) -> Self {
-        ShadowRays { scene, inverses, offset: SHADOW_RAY_OFFSET_REL * scene_scale(scene) }
+    pub fn new(scene: &'a Scene, geo: &'a Geometry) -> Self {
+        ShadowRays { scene, geo, offset: SHADOW_RAY_OFFSET_REL * scene_scale(scene) }
     }
 
     /// Whether `light` is hidden from surface point `p` (world unit geometric normal `ng`) by
@@ -80,7 +80,7 @@ impl<'a> ShadowRays<'a> {
         let side = if ng.dot(l) >= 0.0 { 1.0 } else { -1.0 };
         let o = p + ng * (side * self.offset);
         match light.kind {
-            LightKind::Directional => occluded(self.scene, self.inverses, o, l, f64::INFINITY),
+            LightKind::Directional => occluded(self.scene, self.geo, o, l, f64::INFINITY),
             // An area light's hard shadow from its centre; `area_visibility` has its soft one.
             LightKind::Point | LightKind::Spot | LightKind::Rect | LightKind::Disk | LightKind::Sphere => {
                 // Also a non-finite distance: no ray to trace.
@@ -92,7 +92,7 @@ impl<'a> ShadowRays<'a> {
                 let d = to_light.length();
                 let end_offset = self.offset.max(SHADOW_RAY_OFFSET_REL * light.position.abs().max_element());
                 let t_max = d - end_offset;
-                t_max > 0.0 && occluded(self.scene, self.inverses, o, to_light / d, t_max)
+                t_max > 0.0 && occluded(self.scene, self.geo, o, to_light / d, t_max)
             }
         }
     }
@@ -104,7 +104,13 @@ impl<'a> ShadowRays<'a> {
     /// without an area.
     pub fn area_visibility(&self, light: &Light, p: DVec3, n: DVec3, ng: DVec3, k: usize) -> Option<f64> {
         let area = light.area_light()?;
-        let visible = |from: DVec3, x: DVec3| {
+        Some(area_visible_share(&area, p, n, k, &self.cell_visible(ng)))
+    }
+
+    /// Whether the segment from a surface point (geometric normal `ng`) to a point on a light is
+    /// clear: `visible(from, x)`, the ray leaving and ending as in [`ShadowRays::hidden`].
+    pub fn cell_visible(&self, ng: DVec3) -> impl Fn(DVec3, DVec3) -> bool + '_ {
+        move |from: DVec3, x: DVec3| {
             let to = x - from;
             let side = if ng.dot(to) >= 0.0 { 1.0 } else { -1.0 };
             let o = from + ng * (side * self.offset);
@@ -112,8 +118,7 @@ impl<'a> ShadowRays<'a> {
             let d = to.length();
             let end_offset = self.offset.max(SHADOW_RAY_OFFSET_REL * x.abs().max_element());
             let t_max = d - end_offset;
-            !(t_max > 0.0 && occluded(self.scene, self.inverses, o, to / d, t_max))
-        };
-        Some(area_visible_share(&area, p, n, k, &visible))
+            !(t_max > 0.0 && occluded(self.scene, self.geo, o, to / d, t_max))
+        }
     }
 }

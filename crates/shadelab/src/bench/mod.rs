@@ -8,6 +8,7 @@ pub mod load;
 pub mod mesh;
 pub mod microfacet;
 pub mod penumbra;
+pub mod reference;
 pub mod render;
 pub mod shadows;
 

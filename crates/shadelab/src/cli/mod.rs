@@ -3,9 +3,11 @@
 //! `--help` shows what each allows and a mistake is one line naming the flag (exit code 2). The
 //! scene the flags ask for is built in [`load`].
 
+mod bench_reference;
 mod load;
 pub mod values;
 
+pub use bench_reference::BenchReferenceArgs;
 pub use load::{load, overrides, scene};
 pub use values::{FRAMES, MESH_TRIANGLES, WARMUP, one_line, within};
 
@@ -164,6 +166,9 @@ pub enum BenchCommand {
     /// against its own; maps of where a term's change lies; Schlick's F against the exact factor
     /// per μ. Writes a Markdown report, CSVs and the maps.
     Microfacet(BenchMicrofacetArgs),
+    /// What the f64 reference costs on a scene: its meshes' hierarchy (build time, memory) and
+    /// the image on every core and on one.
+    Reference(BenchReferenceArgs),
 }
 
 #[derive(Args, Debug)]

@@ -13,14 +13,18 @@ pub use glass::{GLASS_MAX_DEPTH, GLASS_MIN_WEIGHT, SECONDARY_RAY_OFFSET};
 pub use shadow_rays::SHADOW_RAY_OFFSET_REL;
 
 use crate::Light;
+use crate::lighting::area_exact::area_term_exact;
 use crate::lighting::area_points::area_emitter;
-use crate::lighting::shading::{shade, shade_with_visibility};
+use crate::lighting::shading::{AreaAt, ShadePoint, shade_exact};
 use crate::params::SpecularModel;
 use crate::scene::{Material, Scene, UvFootprint};
+use glam::DVec3;
 pub(crate) use intersect::Geometry;
 use intersect::trace;
 use rayon::prelude::*;
 use shadow_rays::ShadowRays;
+use std::cell::Cell;
+use std::sync::atomic::{AtomicU64, Ordering};
 
 /// The nearest surface a ray from `o` along `dir` sees (the pick of `lobe.rs`).
 pub(crate) fn trace_ray(
@@ -60,6 +64,10 @@ pub struct ReferenceImage {
     /// The scene's background (`Scene::background`): `None`, pixels with no object are black
     /// with alpha 0.
     pub background: Option<[f64; 3]>,
+    /// The largest estimated error of an area light's integral at any pixel
+    /// (`area_exact::AreaTerm::error`); 0 without area lights, or where the image draws them as
+    /// the GPU does ([`render_drawn`]).
+    pub area_error: f64,
 }
 
 impl ReferenceImage {
@@ -98,6 +106,7 @@ impl ReferenceImage {
             hidden: vec![0; n],
             unshadowed: vec![color; n],
             background: Some(color),
+            area_error: 0.0,
         }
     }
 }
@@ -109,8 +118,10 @@ pub const REFERENCE_AREA_CELLS: usize = 16;
 
 /// Render the scene by ray casting in f64 at any resolution. A light whose `shadow.casts` is
 /// false lights every point its term reaches, exactly as without shadow rays.
-/// An area light drawn as k point sources is integrated exactly here: the reference is what the
-/// approximation is measured against ([`render_drawn`] draws the approximation in f64).
+/// An area light is integrated exactly here, its diffuse and its specular over its whole area
+/// (`area_exact`), also where the GPU draws it as k point sources or takes its specular at a
+/// representative point: the reference is what those approximations are measured against
+/// ([`render_drawn`] draws them in f64).
 pub fn render_reference(scene: &Scene, specular: SpecularModel, width: u32, height: u32) -> ReferenceImage {
     let mut job = ReferenceJob::new(scene, specular, width, height);
     job.step(height);
@@ -118,11 +129,12 @@ pub fn render_reference(scene: &Scene, specular: SpecularModel, width: u32, heig
 }
 
 /// The scene as the GPU draws it, in f64: an area light drawn as k point sources is k point
-/// sources with a hard shadow ray each (the f64 twin of that approximation); otherwise
+/// sources with a hard shadow ray each, and an area light's specular is taken at its
+/// representative point (the f64 twins of those approximations); the rest as
 /// [`render_reference`].
 pub fn render_drawn(scene: &Scene, specular: SpecularModel, width: u32, height: u32) -> ReferenceImage {
     let mut img = ReferenceImage::empty(width, height, scene.background);
-    trace_rows(scene, &Geometry::new(scene), specular, &mut img, 0..height);
+    trace_rows(scene, &Geometry::new(scene), specular, &mut img, 0..height, false);
     img
 }
 
@@ -149,7 +161,7 @@ impl ReferenceJob {
     /// Trace up to `rows` more rows; true once every row is traced.
     pub fn step(&mut self, rows: u32) -> bool {
         let end = self.next_row.saturating_add(rows).min(self.img.height);
-        trace_rows(&self.scene, &self.geo, self.specular, &mut self.img, self.next_row..end);
+        trace_rows(&self.scene, &self.geo, self.specular, &mut self.img, self.next_row..end, true);
         self.next_row = end;
         self.done()
     }
@@ -181,20 +193,23 @@ impl ReferenceImage {
             hidden: Vec::with_capacity(n),
             unshadowed: Vec::with_capacity(n),
             background,
+            area_error: 0.0,
         }
     }
 }
 
-/// Trace the rows `rows` of `img`'s size, appending their pixels (rows come in order).
+/// Trace the rows `rows` of `img`'s size, appending their pixels (rows come in order); `exact`:
+/// area lights integrated exactly ([`render_reference`]), else as drawn ([`render_drawn`]).
 fn trace_rows(
     scene: &Scene,
     geo: &Geometry,
     specular: SpecularModel,
     img: &mut ReferenceImage,
     rows: std::ops::Range<u32>,
+    exact: bool,
 ) {
     let rays = ShadowRays::new(scene, geo);
-    let ctx = Context { scene, geo, rays: &rays, specular };
+    let ctx = Context { scene, geo, rays: &rays, specular, exact, area_error: Default::default() };
     // Rows on every core, each into its own buffer, appended in order: the same image as one
     // thread would trace.
     let (width, height) = (img.width, img.height);
@@ -205,6 +220,7 @@ fn trace_rows(
         img.object.extend(row.object);
         img.hidden.extend(row.hidden);
     }
+    img.area_error = img.area_error.max(f64::from_bits(ctx.area_error.load(Ordering::Relaxed)));
 }
 
 /// One row's pixels, as [`ReferenceImage`] holds them.
@@ -264,12 +280,16 @@ fn trace_row(ctx: &Context, y: u32, width: u32, height: u32) -> RowPixels {
 }
 
 /// What the reference needs to shade any point: the scene, its inverse transforms, its shadow
-/// rays and the specular model.
+/// rays, the specular model, and whether area lights are integrated exactly (with the largest
+/// error estimate met so far).
 struct Context<'a> {
     pub scene: &'a Scene,
     pub geo: &'a Geometry,
     pub rays: &'a ShadowRays<'a>,
     pub specular: SpecularModel,
+    pub exact: bool,
+    /// The bits of a non-negative f64, whose order is theirs as integers.
+    pub area_error: AtomicU64,
 }
 
 /// A point shaded with and without cast shadows, and the lights hidden from it.
@@ -311,51 +331,67 @@ impl Context<'_> {
         };
         let emit = |c: [f64; 3]| -> [f64; 3] { std::array::from_fn(|i| c[i] + emission[i]) };
         let (rays, specular) = (self.rays, self.specular);
-        let mut hidden = 0u8;
-        let mut dimmed = false;
-        let lit = shade_with_visibility(
-            p,
-            n,
-            eye,
-            mat,
+        let (hidden, dimmed) = (Cell::new(0u8), Cell::new(false));
+        let at = ShadePoint { p, n_in: n, eye, mat, ambient: scene.ambient, specular, model: scene.illumination };
+        let ng = hit.geometric_normal;
+        let visible = rays.cell_visible(ng);
+        // An area light's exact term, shadowed; its unshadowed term kept for the image without
+        // cast shadows.
+        let clear = Cell::new([None::<[f64; 3]>; crate::scene::MAX_LIGHTS]);
+        let mut exact = |a: &AreaAt| -> Option<[f64; 3]> {
+            if !self.exact {
+                return None;
+            }
+            let shadow = a.light.shadow.casts.then_some(&visible as &dyn Fn(DVec3, DVec3) -> bool);
+            let term = area_term_exact(a, shadow)?;
+            self.area_error.fetch_max(term.error.max(0.0).to_bits(), Ordering::Relaxed);
+            let mut kept = clear.get();
+            kept[a.index] = Some(term.clear);
+            clear.set(kept);
+            dimmed.set(dimmed.get() || term.lit != term.clear);
+            // Hidden as a soft shadow is: more than half of its diffuse light blocked.
+            if term.diffuse_share < 0.5 {
+                hidden.set(hidden.get() | 1 << a.index);
+            }
+            Some(term.lit)
+        };
+        let lit = shade_exact(
+            &at,
             &scene.lights,
-            scene.ambient,
-            specular,
-            scene.illumination,
             |i, light, j, l| {
                 // A point source of an area light drawn as points: its own hard shadow.
                 if light.drawn_as_points() {
                     let at = Light { position: area_emitter(light, j).position, area_points: 0, ..light.clone() };
-                    let blocked = light.shadow.casts && rays.hidden(&at, p, hit.geometric_normal, l);
-                    dimmed |= blocked;
+                    let blocked = light.shadow.casts && rays.hidden(&at, p, ng, l);
+                    dimmed.set(dimmed.get() || blocked);
                     return if blocked { 0.0 } else { 1.0 };
                 }
                 // An area light's soft shadow: the share of its cells a ray reaches; the
                 // pixel counts as hidden from it when more than half of its light is blocked.
-                let soft = light
-                    .shadow
-                    .casts
-                    .then(|| rays.area_visibility(light, p, n, hit.geometric_normal, REFERENCE_AREA_CELLS))
-                    .flatten();
+                let soft =
+                    light.shadow.casts.then(|| rays.area_visibility(light, p, n, ng, REFERENCE_AREA_CELLS)).flatten();
                 if let Some(v) = soft {
                     if v < 0.5 {
-                        hidden |= 1 << i;
+                        hidden.set(hidden.get() | 1 << i);
                     }
-                    dimmed |= v < 1.0;
+                    dimmed.set(dimmed.get() || v < 1.0);
                     return v;
                 }
-                if light.shadow.casts && rays.hidden(light, p, hit.geometric_normal, l) {
-                    hidden |= 1 << i;
+                if light.shadow.casts && rays.hidden(light, p, ng, l) {
+                    hidden.set(hidden.get() | 1 << i);
                     0.0
                 } else {
                     1.0
                 }
             },
+            &mut exact,
         );
-        let unshadowed = if hidden == 0 && !dimmed {
+        let hidden = hidden.get();
+        let unshadowed = if hidden == 0 && !dimmed.get() {
             lit
         } else {
-            shade(p, n, eye, mat, &scene.lights, scene.ambient, specular, scene.illumination)
+            let kept = clear.get();
+            shade_exact(&at, &scene.lights, |_, _, _, _| 1.0, &mut |a| kept[a.index])
         };
         Shaded { lit: emit(lit), unshadowed: emit(unshadowed), hidden }
     }

@@ -125,6 +125,7 @@ pub fn compare_images(image: &LinearImage, against: &LinearImage) -> Comparison 
         object: vec![None; n],
         hidden: vec![0; n],
         background: None,
+        area_error: 0.0,
     };
     compare(image, &reference)
 }

@@ -398,7 +398,7 @@ fn seen_cells<'a>(
 
 /// The light's cells whose front `p` faces: each cell's point, the unit direction `l` to it and
 /// its weight cos θ_l ΔA / r², visible or not.
-fn front_cells(light: &AreaLight, p: DVec3, k: usize) -> impl Iterator<Item = (DVec3, DVec3, f64)> + use<> {
+pub(crate) fn front_cells(light: &AreaLight, p: DVec3, k: usize) -> impl Iterator<Item = (DVec3, DVec3, f64)> + use<> {
     samples(light, p, k).into_iter().filter_map(move |(x, nx, da)| {
         let to = x - p;
         let r2 = to.length_squared();

@@ -102,12 +102,44 @@ pub(crate) fn rho_s_forms(n: DVec3, v: DVec3, l: DVec3, m: f64, v_index: f64) ->
 
 /// The share of the diffuse the dielectric layer passes (`microfacet::fresnel_mix_weight`): only
 /// under Cook–Torrance, for a material with a specular layer (r_s > 0) whose terms ask for it.
-fn diffuse_weight(s: &super::lights::LightSample, n: DVec3, v: DVec3, mat: &Material, specular: SpecularModel) -> f64 {
-    if specular != SpecularModel::CookTorrance || !mat.microfacet.fresnel_mix || mat.r_s <= 0.0 {
+pub fn diffuse_weight(l: DVec3, n: DVec3, v: DVec3, mat: &Material, specular: SpecularModel) -> f64 {
+    if !diffuse_weighted(mat, specular) {
         return 1.0;
     }
     let FresnelMix { f0, weight } = mat.fresnel_mix;
-    super::microfacet::fresnel_mix_weight(mat.microfacet, n, v, s.l, f0, weight)
+    super::microfacet::fresnel_mix_weight(mat.microfacet, n, v, l, f0, weight)
+}
+
+/// Whether [`diffuse_weight`] can be below 1: Cook–Torrance, a specular layer, and terms asking.
+pub fn diffuse_weighted(mat: &Material, specular: SpecularModel) -> bool {
+    specular == SpecularModel::CookTorrance && mat.microfacet.fresnel_mix && mat.r_s > 0.0
+}
+
+/// The specular `S(L)` of one light along unit `l` at unit normal `n` and view `v`, before `r_s`,
+/// the light's intensity and its `spec_scale`: 0 where `N·L ≤ 0` (the point's own shadow).
+pub fn light_specular(
+    l: DVec3,
+    n: DVec3,
+    v: DVec3,
+    mat: &Material,
+    v_index: [f64; 3],
+    specular: SpecularModel,
+    ms_e: f64,
+) -> [f64; 3] {
+    let n_dot_l = n.dot(l);
+    if n_dot_l <= 0.0 {
+        return [0.0; 3];
+    }
+    match specular {
+        SpecularModel::CookTorrance => specular_microfacet(n, v, l, mat.m, v_index, mat.microfacet, ms_e),
+        SpecularModel::Phong => {
+            let r = 2.0 * n_dot_l * n - l;
+            let (h, mirror) = (mat.h.value(), mat.h.is_mirror());
+            let k = if mat.phong_normalized { phong_normalization(h, mirror) } else { 1.0 };
+            let x = if n.dot(v) > 0.0 { k * specular_phong(v.dot(r), h, mirror) } else { 0.0 };
+            [x; 3]
+        }
+    }
 }
 
 /// docs/model.md §3: what one light adds, `I_L · (r_d·C·max(form, 0) + r_s·S(L)·spec_scale)`
@@ -122,25 +154,11 @@ pub fn light_contribution(
     specular: SpecularModel,
     ms_e: f64,
 ) -> [f64; 3] {
-    let n_dot_l = n.dot(s.l);
-    if n_dot_l <= 0.0 && s.form <= 0.0 {
+    if n.dot(s.l) <= 0.0 && s.form <= 0.0 {
         return [0.0; 3];
     }
-    let spec = if n_dot_l <= 0.0 {
-        [0.0; 3]
-    } else {
-        match specular {
-            SpecularModel::CookTorrance => specular_microfacet(n, v, s.l, mat.m, v_index, mat.microfacet, ms_e),
-            SpecularModel::Phong => {
-                let r = 2.0 * n_dot_l * n - s.l;
-                let (h, mirror) = (mat.h.value(), mat.h.is_mirror());
-                let k = if mat.phong_normalized { phong_normalization(h, mirror) } else { 1.0 };
-                let x = if n.dot(v) > 0.0 { k * specular_phong(v.dot(r), h, mirror) } else { 0.0 };
-                [x; 3]
-            }
-        }
-    };
-    let kd = diffuse_weight(s, n, v, mat, specular);
+    let spec = light_specular(s.l, n, v, mat, v_index, specular, ms_e);
+    let kd = diffuse_weight(s.l, n, v, mat, specular);
     std::array::from_fn(|i| {
         s.radiance[i] * (mat.r_d * mat.color[i] * kd * diffuse_lambert(s.form) + mat.r_s * spec[i] * s.spec_scale)
     })

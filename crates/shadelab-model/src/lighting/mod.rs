@@ -19,6 +19,7 @@
 //! The test `every_wgsl_function_has_a_rust_twin` (in `shadelab-render`) holds the pairing.
 
 pub mod area;
+pub mod area_exact;
 pub mod area_points;
 pub mod brdf;
 pub mod common;

@@ -46,8 +46,51 @@ pub fn shade_with_visibility(
     ambient: [f64; 3],
     specular: SpecularModel,
     model: IlluminationModel,
-    mut visibility: impl FnMut(usize, &Light, u32, DVec3) -> f64,
+    visibility: impl FnMut(usize, &Light, u32, DVec3) -> f64,
 ) -> [f64; 3] {
+    let at = ShadePoint { p, n_in, eye, mat, ambient, specular, model };
+    shade_exact(&at, lights, visibility, &mut |_| None)
+}
+
+/// Where and how [`shade_exact`] shades.
+pub struct ShadePoint<'a> {
+    pub p: DVec3,
+    pub n_in: DVec3,
+    pub eye: DVec4,
+    pub mat: &'a Material,
+    pub ambient: [f64; 3],
+    pub specular: SpecularModel,
+    pub model: IlluminationModel,
+}
+
+/// One area light at one point, as [`shade_exact`] hands it to the reference's exact integral.
+pub struct AreaAt<'a> {
+    /// The light's index and the light.
+    pub index: usize,
+    pub light: &'a Light,
+    /// Its sample (the GPU's representative point), for its incident intensity and form.
+    pub sample: &'a LightSample,
+    pub p: DVec3,
+    /// Unit shading normal and unit view vector.
+    pub n: DVec3,
+    pub v: DVec3,
+    pub mat: &'a Material,
+    pub v_index: [f64; 3],
+    pub ms_e: f64,
+    pub specular: SpecularModel,
+}
+
+/// [`shade_with_visibility`], where `exact` may give an area light's whole term, shadowed, in
+/// place of its drawn one: for an area light with its exact form under the Phong model, a `Some`
+/// is added as it is (the visibility is not asked), a `None` keeps the drawn term. The reference
+/// passes [`super::area_exact`]'s integral.
+pub fn shade_exact(
+    at: &ShadePoint,
+    lights: &[Light],
+    mut visibility: impl FnMut(usize, &Light, u32, DVec3) -> f64,
+    exact: &mut dyn FnMut(&AreaAt) -> Option<[f64; 3]>,
+) -> [f64; 3] {
+    let ShadePoint { p, n_in, eye, mat, ambient, specular, model } = *at;
     // The view vector: toward the eye (w = 1), or the orthographic camera's one direction (w = 0).
     let v = safe_normalize(eye.truncate() - p * eye.w, DVec3::Y);
     let n = safe_normalize(n_in, v);
@@ -74,6 +117,15 @@ pub fn shade_with_visibility(
             } else {
                 base
             };
+            if model == IlluminationModel::Phong && light.kind.is_area() && !light.drawn_as_points() {
+                let area = AreaAt { index: k, light, sample: &s, p, n, v, mat, v_index, ms_e, specular };
+                if let Some(lit) = exact(&area) {
+                    for i in 0..3 {
+                        total[i] += lit[i];
+                    }
+                    continue;
+                }
+            }
             let lit = model_term(model, &s, j, n, v, mat, v_index, ms_e, specular, &mut i_max, &mut total);
             if lit == [0.0; 3] {
                 continue;

@@ -245,7 +245,14 @@ mod tests {
                     let scene = glass_scene(shape, ior, absorb);
                     let geo = Geometry::new(&scene);
                     let rays = ShadowRays::new(&scene, &geo);
-                    let ctx = Context { scene: &scene, geo: &geo, rays: &rays, specular: SpecularModel::Phong };
+                    let ctx = Context {
+                        scene: &scene,
+                        geo: &geo,
+                        rays: &rays,
+                        specular: SpecularModel::Phong,
+                        exact: true,
+                        area_error: Default::default(),
+                    };
                     for k in 0..200 {
                         // Rays from a sphere of radius 4 around the object, aimed at points inside it.
                         let (u, w) = ((k as f64 * 0.618034).fract(), (k as f64 * 0.414214).fract());

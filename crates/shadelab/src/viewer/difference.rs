@@ -13,6 +13,7 @@ use shadelab_model::{Scene, ShadingMode, SpecularModel};
 use shadelab_render::image_error::{self, ErrorStats, ShadowStats};
 use shadelab_render::{RenderSettings, Renderer, SceneGpu, Target, target};
 use std::sync::Arc;
+use std::sync::atomic::{AtomicU32, Ordering};
 use std::sync::mpsc::{Receiver, channel};
 use target::PendingReadBack;
 
@@ -53,8 +54,8 @@ struct Shown {
 /// A reference being traced: on a worker thread, or in the browser (no threads) a few rows a
 /// frame ([`ROW_BUDGET_MS`]).
 enum Tracing {
-    /// The image and the time its tracing took, ms.
-    Worker(Receiver<(ReferenceImage, f64)>),
+    /// The image and the time its tracing took, ms; the share traced so far, in ten-thousandths.
+    Worker(Receiver<(ReferenceImage, f64)>, Arc<AtomicU32>),
     /// The job and the time its steps have taken so far, ms.
     #[cfg_attr(not(target_arch = "wasm32"), allow(dead_code))]
     Steps(Box<ReferenceJob>, f64),
@@ -79,7 +80,7 @@ pub struct DifferenceView {
     pub enabled: bool,
     pub kind: DifferenceKind,
     reference: Option<(ReferenceKey, Arc<ReferenceImage>)>,
-    /// How long the last reference took to trace, ms (on one thread, the page's or a worker).
+    /// How long the last reference took to trace, ms (on the page's one thread, or a worker on every core).
     pub traced_ms: Option<f64>,
     pending: Option<(ReferenceKey, Tracing)>,
     reading: Option<Reading>,
@@ -119,11 +120,12 @@ impl DifferenceView {
         self.pending.is_some()
     }
 
-    /// The share of the reference traced so far, where it is traced in steps (the browser).
+    /// The share of the reference traced so far, 0 to 1, while it is traced.
     pub fn progress(&self) -> Option<f32> {
         match &self.pending {
             Some((_, Tracing::Steps(job, _))) => Some(job.progress()),
-            _ => None,
+            Some((_, Tracing::Worker(_, done))) => Some(done.load(Ordering::Relaxed) as f32 / 1e4),
+            None => None,
         }
     }
 
@@ -196,12 +198,12 @@ impl DifferenceView {
     fn trace(&mut self, ctx: &egui::Context, scene: &Scene, specular: SpecularModel, key: &ReferenceKey) {
         if let Some((k, tracing)) = self.pending.take() {
             match tracing {
-                Tracing::Worker(rx) => match rx.try_recv() {
+                Tracing::Worker(rx, done) => match rx.try_recv() {
                     Ok((img, ms)) => {
                         self.reference = Some((k, Arc::new(img)));
                         self.traced_ms = Some(ms);
                     }
-                    Err(std::sync::mpsc::TryRecvError::Empty) => self.pending = Some((k, Tracing::Worker(rx))),
+                    Err(std::sync::mpsc::TryRecvError::Empty) => self.pending = Some((k, Tracing::Worker(rx, done))),
                     // The worker is gone without an image: trace again below.
                     Err(std::sync::mpsc::TryRecvError::Disconnected) => {}
                 },
@@ -226,14 +228,21 @@ impl DifferenceView {
             } else {
                 let (tx, rx) = channel();
                 let repaint = ctx.clone();
+                let done = Arc::new(AtomicU32::new(0));
+                let shared = done.clone();
                 std::thread::spawn(move || {
                     let (mut job, start) = (job, web_time::Instant::now());
-                    job.step(h);
+                    // A fiftieth of the rows a step (each step on every core), so the view can
+                    // show how far it is.
+                    while !job.step(h.div_ceil(50).max(1)) {
+                        shared.store((job.progress() * 1e4) as u32, Ordering::Relaxed);
+                        repaint.request_repaint();
+                    }
                     // A send fails only when the viewer has been closed: nothing to do.
                     let _ = tx.send((job.finish(), start.elapsed().as_secs_f64() * 1e3));
                     repaint.request_repaint();
                 });
-                Tracing::Worker(rx)
+                Tracing::Worker(rx, done)
             };
             self.pending = Some((key.clone(), tracing));
         }

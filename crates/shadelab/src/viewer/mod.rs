@@ -286,6 +286,11 @@ impl Viewer {
         self.difference.enabled = on;
     }
 
+    /// The share of the f64 reference traced so far, 0 to 1, while the difference view traces it.
+    pub fn reference_progress(&self) -> Option<f32> {
+        self.difference.progress()
+    }
+
     /// The error of the current mode against the reference, once the map on show is current.
     pub fn difference(&self) -> Option<shadelab_render::image_error::ErrorStats> {
         self.difference.stats()

@@ -117,8 +117,12 @@ pub(super) fn difference_legend(
         }
         (None, true) => match difference.progress() {
             // In the browser it is traced a few rows a frame, on the page's one thread.
-            Some(p) => {
+            Some(p) if cfg!(target_arch = "wasm32") => {
                 format!("computing the f64 reference… {:.0} % (in this page's thread, a few rows a frame)", p * 100.0)
+            }
+            Some(p) => {
+                let threads = shadelab_model::reference::reference_threads();
+                format!("computing the f64 reference… {:.0} % (on {threads} thread(s))", p * 100.0)
             }
             None => "computing the f64 reference…".into(),
         },

@@ -1,0 +1,34 @@
+//! The viewer's difference view while its reference is traced (docs/reference.md): on a worker,
+//! on every core, a fiftieth of the rows a step, with the share traced on show.
+
+use egui_kittest::Harness;
+use shadelab::viewer::Viewer;
+
+mod common;
+
+/// Turned on, the difference view reports the share of its reference traced, within [0, 1],
+/// until the error map with its numbers is in.
+#[test]
+fn the_difference_view_reports_how_far_its_reference_is() {
+    let mut h = Harness::builder()
+        .with_size(egui::vec2(1100.0, 640.0))
+        .wgpu()
+        .build_eframe(|cc| Viewer::new(cc, None, None).expect("viewer"));
+    h.run_steps(2);
+    assert_eq!(h.state().reference_progress(), None, "nothing traced before the view is on");
+    h.state_mut().set_difference_view(true);
+    let (mut seen, start) = (Vec::new(), std::time::Instant::now());
+    let stats = loop {
+        h.run_steps(1);
+        seen.extend(h.state().reference_progress());
+        if let Some(s) = h.state().difference() {
+            break s;
+        }
+        assert!(start.elapsed().as_secs() < 60, "no reference after 60 s");
+        std::thread::sleep(std::time::Duration::from_millis(5));
+    };
+    assert!(!seen.is_empty() && seen.iter().all(|p| (0.0..=1.0).contains(p)), "{seen:?}");
+    assert!(seen.windows(2).all(|w| w[1] >= w[0]), "the share went back: {seen:?}");
+    assert!(stats.rmse.is_finite() && stats.rmse > 0.0, "{stats:?}");
+    assert_eq!(h.state().reference_progress(), None, "still tracing after the map is in");
+}

@@ -79,6 +79,8 @@ fn the_terms_section_switches_each_term_live() {
     h.run_steps(3);
     let materials = h.state_mut().scene_mut().materials.clone();
     assert!(materials.iter().all(|m| m.microfacet == Microfacet::GLTF));
+    // The header names a preset by its name, short enough to keep the panel's width.
+    assert!(h.query_by_label("Cook–Torrance terms: gltf").is_some());
     let after = h.render().expect("render");
     let changed = changed_view_pixels(&before, &after);
     assert!(changed > 2000, "only {changed} pixels of the view changed");

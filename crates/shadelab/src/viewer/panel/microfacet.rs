@@ -19,11 +19,23 @@ fn term_menu<T: NamedValue + PartialEq + std::fmt::Display>(ui: &mut egui::Ui, l
         .on_hover_text(tip);
 }
 
+/// The header's name of a set: a preset by its name (`gltf`, `chapter`, with `+ms` when
+/// compensated), any other set as `d/g/f` with its options. Short, so that the panel keeps its
+/// width and the view its 16:9 whichever preset a file opens with.
+fn set_name(t: Microfacet) -> String {
+    let plain = Microfacet { multiple_scattering: false, ..t };
+    let ms = if t.multiple_scattering { "+ms" } else { "" };
+    match [("gltf", Microfacet::GLTF), ("chapter", Microfacet::CHAPTER)].iter().find(|(_, p)| *p == plain) {
+        Some((name, _)) => format!("{name}{ms}"),
+        None => t.to_string(),
+    }
+}
+
 /// The terms row: D, G and F of `selected`, and the sets for all of `materials`. Only
 /// Cook–Torrance specular reads them, which `active` says.
 pub(super) fn microfacet_ui(ui: &mut egui::Ui, materials: &mut [Material], selected: usize, active: bool) {
     let t = materials[selected].microfacet;
-    let title = format!("Cook–Torrance terms: {t}");
+    let title = format!("Cook–Torrance terms: {}", set_name(t));
     let header =
         egui::CollapsingHeader::new(title).id_salt("microfacet terms").show(ui, |ui| terms_ui(ui, materials, selected));
     header.header_response.on_hover_text(if active {

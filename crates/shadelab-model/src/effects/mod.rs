@@ -10,6 +10,7 @@ mod effect;
 mod key;
 mod small_area_lights;
 mod specular_terms;
+mod surface_terms;
 mod transparency;
 
 pub use analyze::{ABSORPTION_LINEAR_BELOW, ABSORPTION_NEGLECT_BELOW, Analysis, Decision, analyze};

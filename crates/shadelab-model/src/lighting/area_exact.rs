@@ -35,43 +35,34 @@ pub struct AreaTerm {
     pub diffuse_share: f64,
 }
 
-/// The integrand's sums over `k`×`k` cells, per unit radiance: the diffuse `Σ kd·(N·L)⁺·w` and
-/// the specular `Σ S(L)·w` per channel, `w = cos θ_l ΔA/r²`.
-fn sums(area: &AreaLight, a: &AreaAt, k: usize, weighted: bool) -> (f64, [f64; 3]) {
-    let (mut d, mut s) = (0.0, [0.0; 3]);
-    for (_, l, w) in front_cells(area, a.p, k) {
-        if weighted {
-            d += diffuse_weight(l, a.n, a.v, a.mat, a.specular) * a.n.dot(l).max(0.0) * w;
-        }
-        let spec = light_specular(l, a.n, a.v, a.mat, a.v_index, a.specular, a.ms_e);
-        for c in 0..3 {
-            s[c] += spec[c] * w;
-        }
-    }
-    (d, s)
+/// One walk over `k`×`k` cells, per unit radiance: the diffuse `Σ kd·(N·L)⁺·w` and the specular
+/// `Σ S(L)·w` per channel, `w = cos θ_l ΔA/r²`; with `visible(p, x)`, also the share of each part
+/// that reaches the point (1 where a part delivers nothing).
+struct Sums {
+    d: f64,
+    s: [f64; 3],
+    shares: (f64, f64),
 }
 
-/// The shares of the diffuse and of the specular that reach the point: each part's integrand over
-/// [`AREA_EXACT_CELLS_MIN`]² cells with `visible(p, x)` to each, over the same without it; 1
-/// where a part delivers nothing.
-fn shares(area: &AreaLight, a: &AreaAt, visible: &dyn Fn(DVec3, DVec3) -> bool) -> (f64, f64) {
-    let (mut d, mut d_seen, mut s, mut s_seen) = (0.0, 0.0, 0.0, 0.0);
-    for (x, l, w) in front_cells(area, a.p, AREA_EXACT_CELLS_MIN) {
-        let dd = a.n.dot(l).max(0.0) * w;
-        let ss: f64 = light_specular(l, a.n, a.v, a.mat, a.v_index, a.specular, a.ms_e).iter().sum::<f64>() * w;
-        if dd <= 0.0 && ss <= 0.0 {
-            continue;
-        }
-        let seen = visible(a.p, x);
+fn sums(area: &AreaLight, a: &AreaAt, k: usize, visible: Option<&dyn Fn(DVec3, DVec3) -> bool>) -> Sums {
+    let (mut d, mut s, mut d_seen, mut s_seen) = (0.0, [0.0; 3], 0.0, 0.0);
+    for (x, l, w) in front_cells(area, a.p, k) {
+        let dd = diffuse_weight(l, a.n, a.v, a.mat, a.specular) * a.n.dot(l).max(0.0) * w;
+        let spec = light_specular(l, a.n, a.v, a.mat, a.v_index, a.specular, a.ms_e).map(|x| x * w);
         d += dd;
-        s += ss;
-        if seen {
+        for c in 0..3 {
+            s[c] += spec[c];
+        }
+        if let Some(seen) = visible
+            && (dd > 0.0 || spec.iter().any(|x| *x > 0.0))
+            && seen(a.p, x)
+        {
             d_seen += dd;
-            s_seen += ss;
+            s_seen += spec.iter().sum::<f64>();
         }
     }
-    let share = |seen: f64, all: f64| if all > 0.0 { seen / all } else { 1.0 };
-    (share(d_seen, d), share(s_seen, s))
+    let share = |seen: f64, all: f64| if visible.is_none() || all <= 0.0 { 1.0 } else { seen / all };
+    Sums { d, s, shares: (share(d_seen, d), share(s_seen, s.iter().sum())) }
 }
 
 /// The exact term of `a.light` at `a.p`: `I·f(d)·(d²/A_emit)·(r_d·C·E_d + r_s·E_s)`, the point
@@ -88,20 +79,22 @@ pub fn area_term_exact(a: &AreaAt, visible: Option<&dyn Fn(DVec3, DVec3) -> bool
     }
     let weighted = diffuse_weighted(a.mat, a.specular);
     let closed = if weighted { None } else { area_irradiance_exact(&area, a.p, a.n) };
+    // The shadow's shares come from the first walk, on the shadow's 16² grid.
     let mut k = AREA_EXACT_CELLS_MIN;
-    let (mut d, mut s) = sums(&area, a, k, closed.is_none());
+    let first = sums(&area, a, k, visible);
+    let (share_d, share_s) = first.shares;
+    let (mut d, mut s) = (first.d, first.s);
     let mut error = f64::INFINITY;
     while k < AREA_EXACT_CELLS_MAX {
-        let (d2k, s2k) = sums(&area, a, 2 * k, closed.is_none());
-        let change = (0..3).map(|c| (s2k[c] - s[c]).abs()).fold((d2k - d).abs(), f64::max);
-        let size = s2k.iter().copied().fold(closed.unwrap_or(d2k), f64::max);
-        (d, s, k, error) = (d2k, s2k, 2 * k, change);
+        let next = sums(&area, a, 2 * k, None);
+        let change = (0..3).map(|c| (next.s[c] - s[c]).abs()).fold((next.d - d).abs(), f64::max);
+        let size = next.s.iter().copied().fold(closed.unwrap_or(next.d), f64::max);
+        (d, s, k, error) = (next.d, next.s, 2 * k, change);
         if change <= AREA_EXACT_TOLERANCE * size {
             break;
         }
     }
     let e_d = closed.unwrap_or(d);
-    let (share_d, share_s) = visible.map_or((1.0, 1.0), |v| shares(&area, a, v));
     let scale = d2 / emitting;
     let (mat, radiance) = (a.mat, a.sample.radiance);
     let term = |sd: f64, ss: f64| -> [f64; 3] {

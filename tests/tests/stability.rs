@@ -2,7 +2,7 @@
 //! agreement, extreme but legal parameters, and the non-finite debug view.
 
 use glam::DVec3;
-use shadelab_model::reference::render_reference;
+use shadelab_model::reference::{ReferenceImage, render_reference};
 use shadelab_model::scene::{Light, MAX_LIGHTS, Scene, single_shape_scene};
 use shadelab_model::scene_variants;
 use shadelab_model::{LightKind, Overrides, PhongExponent, ShadingMode, Shape, SpecularModel};
@@ -127,6 +127,20 @@ fn rim_lit_sphere() -> Scene {
     scene
 }
 
+/// The sphere of `scene` drawn by the GPU (Phong shading, Cook–Torrance) at 320×180 against its
+/// f64 reference: the reference, the sphere's interior pixels, and the mean and largest error
+/// there with the worst pixel.
+#[allow(clippy::type_complexity)]
+fn sphere_against_reference(scene: &Scene) -> (ReferenceImage, Vec<(u32, u32)>, (f64, f64, (u32, u32))) {
+    let (w, h) = (320, 180);
+    let settings = RenderSettings::new(ShadingMode::Phong, SpecularModel::CookTorrance);
+    let gpu_img = render_image(gpu(), scene, w, h, &settings).expect("upload");
+    let reference = render_reference(scene, SpecularModel::CookTorrance, w, h);
+    let pixels = interior(&reference, 1);
+    let err = error(&gpu_img, &reference, &pixels);
+    (reference, pixels, err)
+}
+
 /// Every combination of the microfacet terms (2 D × 3 G × 2 F) on the fine sphere, GPU against
 /// the f64 reference with the same terms, at the roughness the glTF preset meets most.
 #[test]
@@ -143,11 +157,7 @@ fn every_microfacet_combination_matches_the_f64_reference() {
             for &(_, f) in Fresnel::ALL {
                 let mut scene = base.clone();
                 scene.materials.iter_mut().for_each(|m| m.microfacet = Microfacet { d, g, f, ..Microfacet::CHAPTER });
-                let settings = RenderSettings::new(ShadingMode::Phong, SpecularModel::CookTorrance);
-                let gpu_img = render_image(gpu(), &scene, w, h, &settings).expect("upload");
-                let reference = render_reference(&scene, SpecularModel::CookTorrance, w, h);
-                let pixels = interior(&reference, 1);
-                let (mean, max, worst) = error(&gpu_img, &reference, &pixels);
+                let (reference, pixels, (mean, max, worst)) = sphere_against_reference(&scene);
                 // How far the terms move the image, so that the check could fail.
                 let moved = pixels
                     .iter()
@@ -188,11 +198,7 @@ fn the_compensated_lobe_matches_the_f64_reference() {
     });
     let single = render_reference(&scene, SpecularModel::CookTorrance, w, h);
     scene.materials.iter_mut().for_each(|m| m.microfacet.multiple_scattering = true);
-    let settings = RenderSettings::new(ShadingMode::Phong, SpecularModel::CookTorrance);
-    let gpu_img = render_image(gpu(), &scene, w, h, &settings).expect("upload");
-    let reference = render_reference(&scene, SpecularModel::CookTorrance, w, h);
-    let pixels = interior(&reference, 1);
-    let (mean, max, worst) = error(&gpu_img, &reference, &pixels);
+    let (reference, pixels, (mean, max, worst)) = sphere_against_reference(&scene);
     let moved = pixels
         .iter()
         .map(|&(x, y)| (0..3).map(|c| reference.get(x, y)[c] - single.get(x, y)[c]).sum::<f64>())
@@ -218,11 +224,7 @@ fn the_fresnel_weighted_diffuse_matches_the_f64_reference() {
     });
     let plain = render_reference(&scene, SpecularModel::CookTorrance, w, h);
     scene.materials.iter_mut().for_each(|m| m.microfacet.fresnel_mix = true);
-    let settings = RenderSettings::new(ShadingMode::Phong, SpecularModel::CookTorrance);
-    let gpu_img = render_image(gpu(), &scene, w, h, &settings).expect("upload");
-    let reference = render_reference(&scene, SpecularModel::CookTorrance, w, h);
-    let pixels = interior(&reference, 1);
-    let (mean, max, worst) = error(&gpu_img, &reference, &pixels);
+    let (reference, pixels, (mean, max, worst)) = sphere_against_reference(&scene);
     let diffs: Vec<f64> = pixels
         .iter()
         .flat_map(|&(x, y)| (0..3).map(move |c| (x, y, c)))

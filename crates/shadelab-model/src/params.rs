@@ -335,3 +335,16 @@ mod tests {
         }
     }
 }
+
+/// Surface vertices a path-traced reference path has (docs/reference.md): 1 is the direct light
+/// alone; 64 carries a furnace of albedo 0.5 to within 1e-19 of its limit.
+pub const BOUNCES: ParamRange = ParamRange {
+    flag: "--bounces",
+    symbol: "N",
+    meaning: "surface vertices a path has (1: the direct light alone)",
+    min: 1.0,
+    max: 64.0,
+};
+/// Paths per pixel of the path-traced reference: 65 536 brings a pixel's noise 256 times under
+/// one path's.
+pub const SPP: ParamRange = ParamRange { flag: "--spp", symbol: "spp", meaning: "paths per pixel", min: 1.0, max: 65536.0 };

@@ -5,11 +5,15 @@
 mod bvh;
 mod glass;
 mod intersect;
+mod path;
 mod shadow_rays;
+#[cfg(test)]
+mod path_tests;
 #[cfg(test)]
 mod tests;
 
 pub use glass::{GLASS_MAX_DEPTH, GLASS_MIN_WEIGHT, SECONDARY_RAY_OFFSET};
+pub use path::{FIREFLY_MIN_SPP, FIREFLY_SHARE, PATH_COS_MIN, PathSettings};
 pub use shadow_rays::SHADOW_RAY_OFFSET_REL;
 
 use crate::Light;
@@ -68,6 +72,12 @@ pub struct ReferenceImage {
     /// (`area_exact::AreaTerm::error`); 0 without area lights, or where the image draws them as
     /// the GPU does ([`render_drawn`]).
     pub area_error: f64,
+    /// Path traced (`ReferenceJob::with_paths`): how, the standard error of each pixel's
+    /// estimated indirect light, and the pixels with a firefly (`path::FIREFLY_SHARE`); `None`
+    /// and empty for the direct light alone.
+    pub paths: Option<PathSettings>,
+    pub std_error: Vec<[f64; 3]>,
+    pub fireflies: usize,
 }
 
 impl ReferenceImage {
@@ -107,6 +117,9 @@ impl ReferenceImage {
             unshadowed: vec![color; n],
             background: Some(color),
             area_error: 0.0,
+            paths: None,
+            std_error: Vec::new(),
+            fireflies: 0,
         }
     }
 }
@@ -134,7 +147,7 @@ pub fn render_reference(scene: &Scene, specular: SpecularModel, width: u32, heig
 /// [`render_reference`].
 pub fn render_drawn(scene: &Scene, specular: SpecularModel, width: u32, height: u32) -> ReferenceImage {
     let mut img = ReferenceImage::empty(width, height, scene.background);
-    trace_rows(scene, &Geometry::new(scene), specular, &mut img, 0..height, false);
+    trace_rows(scene, &Geometry::new(scene), specular, &mut img, 0..height, false, None);
     img
 }
 
@@ -145,6 +158,7 @@ pub struct ReferenceJob {
     /// Its transforms and hierarchies, built once for every step.
     geo: Geometry,
     specular: SpecularModel,
+    paths: Option<PathSettings>,
     img: ReferenceImage,
     next_row: u32,
 }
@@ -155,13 +169,36 @@ impl ReferenceJob {
         let scene = Scene { lights: exact, ..scene.clone() };
         let img = ReferenceImage::empty(width, height, scene.background);
         let geo = Geometry::new(&scene);
-        ReferenceJob { scene, geo, specular, img, next_row: 0 }
+        ReferenceJob { scene, geo, specular, paths: None, img, next_row: 0 }
+    }
+
+    /// The scene's light between surfaces, path traced (`path.rs`): the exact direct light as
+    /// [`ReferenceJob::new`] traces it, without the constant ambient, plus the indirect light of
+    /// `paths`. Only for the chapter's Phong model, the one whose ambient stands for that light.
+    pub fn with_paths(
+        scene: &Scene,
+        specular: SpecularModel,
+        width: u32,
+        height: u32,
+        paths: PathSettings,
+    ) -> Result<ReferenceJob, String> {
+        if scene.illumination != crate::IlluminationModel::Phong {
+            return Err("path tracing: only for the Phong illumination model (--model phong or cook-torrance), whose I_a stands for the light between surfaces".into());
+        }
+        for (range, value) in [(crate::params::BOUNCES, paths.bounces), (crate::params::SPP, paths.spp)] {
+            range.check(f64::from(value)).map_err(|e| e.to_string())?;
+        }
+        let mut job = ReferenceJob::new(&Scene { ambient: [0.0; 3], ..scene.clone() }, specular, width, height);
+        job.paths = Some(paths);
+        job.img.paths = Some(paths);
+        Ok(job)
     }
 
     /// Trace up to `rows` more rows; true once every row is traced.
     pub fn step(&mut self, rows: u32) -> bool {
         let end = self.next_row.saturating_add(rows).min(self.img.height);
-        trace_rows(&self.scene, &self.geo, self.specular, &mut self.img, self.next_row..end, true);
+        let paths = self.paths;
+        trace_rows(&self.scene, &self.geo, self.specular, &mut self.img, self.next_row..end, true, paths.as_ref());
         self.next_row = end;
         self.done()
     }
@@ -194,12 +231,16 @@ impl ReferenceImage {
             unshadowed: Vec::with_capacity(n),
             background,
             area_error: 0.0,
+            paths: None,
+            std_error: Vec::new(),
+            fireflies: 0,
         }
     }
 }
 
 /// Trace the rows `rows` of `img`'s size, appending their pixels (rows come in order); `exact`:
-/// area lights integrated exactly ([`render_reference`]), else as drawn ([`render_drawn`]).
+/// area lights integrated exactly ([`render_reference`]), else as drawn ([`render_drawn`]);
+/// `paths`: the indirect light path traced and added.
 fn trace_rows(
     scene: &Scene,
     geo: &Geometry,
@@ -207,14 +248,35 @@ fn trace_rows(
     img: &mut ReferenceImage,
     rows: std::ops::Range<u32>,
     exact: bool,
+    paths: Option<&PathSettings>,
 ) {
     let rays = ShadowRays::new(scene, geo);
     let ctx = Context { scene, geo, rays: &rays, specular, exact, area_error: Default::default() };
     // Rows on every core, each into its own buffer, appended in order: the same image as one
     // thread would trace.
     let (width, height) = (img.width, img.height);
-    let traced: Vec<RowPixels> = rows.into_par_iter().map(|y| trace_row(&ctx, y, width, height)).collect();
+    let traced: Vec<RowPixels> = rows
+        .into_par_iter()
+        .map(|y| {
+            let mut row = trace_row(&ctx, y, width, height);
+            if let Some(paths) = paths {
+                let more = path::indirect_row(&ctx, paths, y, width, height);
+                // The indirect light is the same with and without the direct light's cast shadows.
+                for (k, m) in more.light.iter().enumerate() {
+                    for i in 0..3 {
+                        row.pixels[k][i] += m[i];
+                        row.unshadowed[k][i] += m[i];
+                    }
+                }
+                row.std_error = more.std_error;
+                row.fireflies = more.fireflies;
+            }
+            row
+        })
+        .collect();
     for row in traced {
+        img.std_error.extend(row.std_error);
+        img.fireflies += row.fireflies;
         img.pixels.extend(row.pixels);
         img.unshadowed.extend(row.unshadowed);
         img.object.extend(row.object);
@@ -230,6 +292,8 @@ struct RowPixels {
     unshadowed: Vec<[f64; 3]>,
     object: Vec<Option<usize>>,
     hidden: Vec<u8>,
+    std_error: Vec<[f64; 3]>,
+    fireflies: usize,
 }
 
 /// Row `y` of a `width × height` image, traced in `ctx`.
@@ -301,6 +365,30 @@ struct Shaded {
 }
 
 impl Context<'_> {
+    /// The surface at `hit` with material `base`: its shading normal (perturbed by the material's
+    /// normal texture where it has one), its parameters (written into `slot` where textures or
+    /// vertex colours vary them; `fresh`: `slot` is not a copy of `base` yet) and its emission.
+    pub fn surface<'m>(
+        &self,
+        hit: &intersect::SurfaceHit,
+        base: &'m Material,
+        slot: &'m mut Material,
+        fresh: bool,
+        footprint: Option<&UvFootprint>,
+    ) -> (DVec3, &'m Material, [f64; 3]) {
+        let textures = &self.scene.textures;
+        let n = base.normal_at(textures, hit.uv, footprint, hit.normal, hit.tangent);
+        if !base.varies(hit.vertex_color) {
+            return (n, base, base.emission);
+        }
+        let at = base.surface_at(textures, hit.uv, footprint, hit.vertex_color);
+        if fresh {
+            *slot = base.clone();
+        }
+        (slot.color, slot.mu, slot.m, slot.h, slot.r_a) = (at.color, at.mu, at.m, at.h, at.r_a);
+        (n, &*slot, at.emission)
+    }
+
     /// The model at `hit` seen from `eye` (homogeneous), with exact cast shadows: the point's
     /// parameters in a copy of its material (`tinted`, made once per image, not per pixel), or
     /// `material` when given (the glass surface's own); its emission added.
@@ -315,20 +403,8 @@ impl Context<'_> {
         let scene = self.scene;
         let mi = scene.objects[hit.object].material;
         let base = material.unwrap_or(&scene.materials[mi]);
-        // The shading normal, perturbed by the material's normal texture where it has one.
-        let n = base.normal_at(&scene.textures, hit.uv, footprint, hit.normal, hit.tangent);
+        let (n, mat, emission) = self.surface(hit, base, &mut tinted[mi], material.is_some(), footprint);
         let p = hit.point;
-        let (mat, emission) = if base.varies(hit.vertex_color) {
-            let at = base.surface_at(&scene.textures, hit.uv, footprint, hit.vertex_color);
-            let m = &mut tinted[mi];
-            if material.is_some() {
-                *m = base.clone();
-            }
-            (m.color, m.mu, m.m, m.h, m.r_a) = (at.color, at.mu, at.m, at.h, at.r_a);
-            (&*m, at.emission)
-        } else {
-            (base, base.emission)
-        };
         let emit = |c: [f64; 3]| -> [f64; 3] { std::array::from_fn(|i| c[i] + emission[i]) };
         let (rays, specular) = (self.rays, self.specular);
         let (hidden, dimmed) = (Cell::new(0u8), Cell::new(false));

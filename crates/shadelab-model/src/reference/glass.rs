@@ -5,7 +5,6 @@
 //! the shaded scene, or 1 for the energy check (no path returns more light than it received).
 
 use super::intersect::{SurfaceHit, glass_exit, trace};
-use super::shadow_rays::scene_scale;
 use super::{Context, Shaded};
 use crate::lighting::transmission::{absorption_exact, fresnel_dielectric, reflect_about, refract_snell};
 use crate::scene::{BACKGROUND, Material};
@@ -77,7 +76,7 @@ fn heaviest(w: [f64; 3]) -> f64 {
 
 impl<'a, L: Leaves> Tracer<'a, L> {
     pub fn new(ctx: &'a Context<'a>, leaves: &'a L) -> Self {
-        Tracer { ctx, leaves, lost: Cell::new(0.0), offset: SECONDARY_RAY_OFFSET * scene_scale(ctx.scene) }
+        Tracer { ctx, leaves, lost: Cell::new(0.0), offset: SECONDARY_RAY_OFFSET * ctx.rays.scale }
     }
 
     fn drop_path(&self, w: [f64; 3]) {

@@ -63,11 +63,14 @@ pub(super) struct ShadowRays<'a> {
     geo: &'a Geometry,
     /// `SHADOW_RAY_OFFSET_REL` × the scene's scale, world units.
     offset: f64,
+    /// The scene's scale ([`scene_scale`]), measured once for every ray of an image.
+    pub scale: f64,
 }
 
 impl<'a> ShadowRays<'a> {
     pub fn new(scene: &'a Scene, geo: &'a Geometry) -> Self {
-        ShadowRays { scene, geo, offset: SHADOW_RAY_OFFSET_REL * scene_scale(scene) }
+        let scale = scene_scale(scene);
+        ShadowRays { scene, geo, offset: SHADOW_RAY_OFFSET_REL * scale, scale }
     }
 
     /// Whether `light` is hidden from surface point `p` (world unit geometric normal `ng`) by

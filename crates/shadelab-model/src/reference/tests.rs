@@ -20,13 +20,13 @@ fn reference_render_sees_the_scene() {
 const GROUND: usize = 0;
 const WHITE: [f64; 3] = [1.0; 3];
 
-fn object(name: &str, shape: Shape, translation: DVec3, scale: DVec3) -> Object {
+pub(super) fn object(name: &str, shape: Shape, translation: DVec3, scale: DVec3) -> Object {
     Object { name: name.into(), shape, tessellation: 16, transform: Transform::new(translation, scale), material: 0 }
 }
 
 /// A 4 × 4 ground plane at y = 0 (object 0), the given objects and lights, seen obliquely from
 /// the front and above.
-fn stage(objects: Vec<Object>, lights: Vec<Light>) -> Scene {
+pub(super) fn stage(objects: Vec<Object>, lights: Vec<Light>) -> Scene {
     let mut all = vec![object("ground", Shape::Plane, DVec3::ZERO, DVec3::new(4.0, 1.0, 4.0))];
     all.extend(objects);
     Scene {
@@ -52,7 +52,7 @@ fn stage(objects: Vec<Object>, lights: Vec<Light>) -> Scene {
     }
 }
 
-fn all_finite(img: &ReferenceImage) -> bool {
+pub(super) fn all_finite(img: &ReferenceImage) -> bool {
     img.pixels.iter().chain(&img.unshadowed).all(|p| p.iter().all(|c| c.is_finite() && *c >= 0.0))
 }
 

@@ -1,0 +1,237 @@
+//! The reference's path tracer (docs/reference.md, "Light between surfaces"): the rendering
+//! equation over the scene, with the chapter's models as BRDFs and its lights as emitters. The
+//! image is the exact direct light of [`super::render_reference`] without the constant ambient,
+//! plus the indirect light estimated by paths of cosine-distributed bounces.
+//!
+//! Units: the chapter's light carries no 1/π, so a light of intensity `I_L` stands for the
+//! irradiance `π·I_L`, and the model's term for a direction `ω` (cosine included) is `π·f_r·cos`.
+//! Light `L_i` arriving from `ω` then adds `f_r·L_i·cos dω = term(ω)·L_i·dω/π`; with `ω` drawn with
+//! density `cos/π` one sample is `term(ω)·L_i/cos`, which is `r_d·C·L_i` for the diffuse term.
+
+use super::glass::{Leaves, Tracer};
+use super::intersect::{SurfaceHit, trace};
+use super::{Context, Shaded};
+use crate::Light;
+use crate::lighting::common::safe_normalize;
+use crate::lighting::shading::{ShadePoint, shade_exact};
+use crate::scene::{BACKGROUND, Material};
+use glam::{DVec3, DVec4};
+use std::cell::RefCell;
+
+/// A sampled direction this close to the surface's plane (its cosine) is dropped: its density
+/// `cos/π` is under 3e-10, so the light it would bring is below 1e-9 of the pixel's, and the
+/// division by the cosine would overflow near 0.
+pub const PATH_COS_MIN: f64 = 1e-9;
+
+/// A pixel has a firefly when one of its paths alone brings more than this share of its indirect
+/// light (with at least [`FIREFLY_MIN_SPP`] paths): reported, never clamped.
+pub const FIREFLY_SHARE: f64 = 0.25;
+/// Paths a pixel needs before one path's share says anything: with 8, an even share is 1/8.
+pub const FIREFLY_MIN_SPP: u32 = 8;
+
+/// How the path tracer samples: surface vertices per path and paths per pixel (within
+/// `params::BOUNCES` and `params::SPP`), and the seed every
+/// pixel's random numbers derive from (the same seed gives the same image on any number of
+/// threads).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct PathSettings {
+    pub bounces: u32,
+    pub spp: u32,
+    pub seed: u64,
+}
+
+impl Default for PathSettings {
+    fn default() -> Self {
+        PathSettings { bounces: 4, spp: 64, seed: 1 }
+    }
+}
+
+/// SplitMix64: the pixel's stream of random numbers, seeded from the seed and the pixel.
+struct Rng(u64);
+
+impl Rng {
+    fn new(seed: u64, x: u32, y: u32) -> Rng {
+        let mut r = Rng(seed ^ (u64::from(y) << 32 | u64::from(x)).wrapping_mul(0xA24B_AED4_963E_E407));
+        r.next();
+        r
+    }
+    fn next(&mut self) -> u64 {
+        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        z ^ (z >> 31)
+    }
+    /// Uniform in [0, 1), 53 bits.
+    fn uniform(&mut self) -> f64 {
+        (self.next() >> 11) as f64 * (1.0 / (1u64 << 53) as f64)
+    }
+}
+
+/// A direction drawn with density `cos/π` about unit `n` (Malley: the unit disk lifted).
+fn cosine_direction(n: DVec3, u1: f64, u2: f64) -> DVec3 {
+    let (r, phi) = (u1.sqrt(), std::f64::consts::TAU * u2);
+    let (t, b) = n.any_orthonormal_pair();
+    safe_normalize(t * (r * phi.cos()) + b * (r * phi.sin()) + n * (1.0 - u1).max(0.0).sqrt(), n)
+}
+
+/// One row's indirect light: its mean per pixel, the standard error of that mean, and the pixels
+/// with a firefly.
+#[derive(Default)]
+pub(super) struct RowIndirect {
+    pub light: Vec<[f64; 3]>,
+    pub std_error: Vec<[f64; 3]>,
+    pub fireflies: usize,
+}
+
+/// What a path's leaves are: the whole light at a vertex, or (the camera's own vertex through
+/// glass, whose direct light the exact image holds) only its indirect part.
+#[derive(Clone, Copy)]
+struct PathLeaves<'a> {
+    paths: &'a PathSettings,
+    rng: &'a RefCell<Rng>,
+    /// The vertex a leaf is: 1 for the camera's surface.
+    depth: u32,
+    whole: bool,
+    /// The scene's materials, where a point's textured parameters are written (one per row).
+    tinted: &'a RefCell<Vec<Material>>,
+}
+
+impl Leaves for PathLeaves<'_> {
+    fn opaque(&self, ctx: &Context, hit: &SurfaceHit, from: DVec3) -> [f64; 3] {
+        let depth = self.depth;
+        let mut light = if self.whole {
+            ctx.shade_hit(hit, from.extend(1.0), &mut self.tinted.borrow_mut(), None, None).lit
+        } else {
+            [0.0; 3]
+        };
+        let more = indirect_at(ctx, self, hit, from, depth);
+        for (l, m) in light.iter_mut().zip(more) {
+            *l += m;
+        }
+        light
+    }
+    fn background(&self) -> [f64; 3] {
+        // The background is the picture's, not an emitter: only the camera's paths see it.
+        if self.whole && self.depth == 1 { BACKGROUND } else { [0.0; 3] }
+    }
+    fn glass_surface(&self, ctx: &Context, hit: &SurfaceHit, eye: DVec4, material: &Material) -> Shaded {
+        if self.whole {
+            ctx.shade_hit(hit, eye, &mut self.tinted.borrow_mut(), None, Some(material))
+        } else {
+            Shaded::default()
+        }
+    }
+}
+
+/// The indirect light at vertex `depth` of a path, seen from `from`: one bounce drawn with density
+/// `cos/π` about the shading normal, and the whole light that comes back along it.
+fn indirect_at(ctx: &Context, leaves: &PathLeaves, hit: &SurfaceHit, from: DVec3, depth: u32) -> [f64; 3] {
+    if depth >= leaves.paths.bounces {
+        return [0.0; 3];
+    }
+    let scene = ctx.scene;
+    let mi = scene.objects[hit.object].material;
+    let (u1, u2) = {
+        let mut rng = leaves.rng.borrow_mut();
+        (rng.uniform(), rng.uniform())
+    };
+    let p = hit.point;
+    let (term, w, cos) = {
+        let mut tinted = leaves.tinted.borrow_mut();
+        let (n_in, mat, _) = ctx.surface(hit, &scene.materials[mi], &mut tinted[mi], false, None);
+        let n = safe_normalize(n_in, hit.geometric_normal);
+        let w = cosine_direction(n, u1, u2);
+        let cos = w.dot(n);
+        if cos < PATH_COS_MIN {
+            return [0.0; 3];
+        }
+        (model_term_towards(ctx, p, n_in, from, mat, w), w, cos)
+    };
+    if term == [0.0; 3] {
+        return [0.0; 3];
+    }
+    let ng = hit.geometric_normal;
+    let side = if ng.dot(w) >= 0.0 { 1.0 } else { -1.0 };
+    let o = p + ng * (side * super::SECONDARY_RAY_OFFSET * ctx.rays.scale);
+    let incoming = match trace(scene, ctx.geo, o, w) {
+        None => [0.0; 3],
+        Some(next) => {
+            let whole = PathLeaves { depth: depth + 1, whole: true, ..*leaves };
+            if scene.drawn_as_glass(next.object) {
+                Tracer::new(ctx, &whole).glass_color(&next, w, p.extend(1.0), 0, [1.0; 3], None).lit
+            } else {
+                whole.opaque(ctx, &next, p)
+            }
+        }
+    };
+    std::array::from_fn(|i| term[i] * incoming[i] / cos)
+}
+
+/// The model's term (cosine included) at `p` seen from `from` for a unit light arriving from unit
+/// `w`: the chapter's models taken as a BRDF, the same function the direct light calls.
+fn model_term_towards(ctx: &Context, p: DVec3, n: DVec3, from: DVec3, mat: &Material, w: DVec3) -> [f64; 3] {
+    let probe = Light::directional(-w, [1.0; 3], 1.0);
+    let at = ShadePoint {
+        p,
+        n_in: n,
+        eye: from.extend(1.0),
+        mat,
+        ambient: [0.0; 3],
+        specular: ctx.specular,
+        model: ctx.scene.illumination,
+    };
+    shade_exact(&at, std::slice::from_ref(&probe), |_, _, _, _| 1.0, &mut |_| None)
+}
+
+/// Row `y`'s indirect light, `paths.spp` paths a pixel, each pixel with its own random numbers.
+pub(super) fn indirect_row(ctx: &Context, paths: &PathSettings, y: u32, width: u32, height: u32) -> RowIndirect {
+    let mut row = RowIndirect::default();
+    let eye = ctx.scene.camera.eye_h();
+    let tinted = RefCell::new(ctx.scene.materials.clone());
+    for x in 0..width {
+        let rng = RefCell::new(Rng::new(paths.seed, x, y));
+        let (o, dir) = ctx.scene.camera.ray(x, y, width, height);
+        let Some(hit) = trace(ctx.scene, ctx.geo, o, dir) else {
+            row.light.push([0.0; 3]);
+            row.std_error.push([0.0; 3]);
+            continue;
+        };
+        let leaves = PathLeaves { paths, rng: &rng, depth: 1, whole: false, tinted: &tinted };
+        let glass = ctx.scene.drawn_as_glass(hit.object);
+        let (mut sum, mut sum_sq, mut largest) = ([0.0; 3], [0.0; 3], 0.0f64);
+        for _ in 0..paths.spp {
+            let s = if glass {
+                Tracer::new(ctx, &leaves).glass_color(&hit, dir, eye, 0, [1.0; 3], None).lit
+            } else {
+                indirect_at(ctx, &leaves, &hit, eye.truncate(), 1)
+            };
+            for i in 0..3 {
+                sum[i] += s[i];
+                sum_sq[i] += s[i] * s[i];
+            }
+            largest = largest.max(luminance(s));
+        }
+        let k = f64::from(paths.spp);
+        let mean = sum.map(|s| s / k);
+        // The standard error of the mean: the samples' variance over k (0 with one sample).
+        let std_error = std::array::from_fn(|i| {
+            if paths.spp < 2 {
+                return 0.0;
+            }
+            let var = (sum_sq[i] / k - mean[i] * mean[i]).max(0.0) * k / (k - 1.0);
+            (var / k).sqrt()
+        });
+        if paths.spp >= FIREFLY_MIN_SPP && largest > FIREFLY_SHARE * luminance(sum) && largest > 0.0 {
+            row.fireflies += 1;
+        }
+        row.light.push(mean);
+        row.std_error.push(std_error);
+    }
+    row
+}
+
+/// Rec. 709 luminance of linear RGB.
+fn luminance(c: [f64; 3]) -> f64 {
+    0.2126 * c[0] + 0.7152 * c[1] + 0.0722 * c[2]
+}

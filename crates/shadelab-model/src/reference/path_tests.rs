@@ -1,0 +1,131 @@
+//! Tests of the path tracer: its one-bounce image is the exact reference's, a closed furnace
+//! converges to `L_e/(1 − ρ)`, its images do not depend on the threads, its estimate of the noise
+//! holds, and the hard cases stay finite.
+
+use super::tests::{all_finite, object, stage};
+use super::*;
+use crate::lighting::lights::Light;
+use crate::mesh::{TriangleMesh, triangles};
+use crate::scene::{Camera, Material, Shape};
+use glam::DVec3;
+
+fn path_traced(scene: &Scene, w: u32, h: u32, paths: PathSettings) -> ReferenceImage {
+    let mut job = ReferenceJob::with_paths(scene, SpecularModel::CookTorrance, w, h, paths).unwrap();
+    job.step(h);
+    job.finish()
+}
+
+/// At one bounce the path tracer is the exact reference without the constant ambient, bit for bit,
+/// with no noise: the same estimator of the direct light.
+#[test]
+fn one_bounce_is_the_exact_reference_without_ambient() {
+    for name in ["default", "glass", "penumbra"] {
+        let scene = Scene::builtin(name).unwrap();
+        let paths = PathSettings { bounces: 1, spp: 4, seed: 7 };
+        let traced = path_traced(&scene, 64, 36, paths);
+        let exact = render_reference(&Scene { ambient: [0.0; 3], ..scene.clone() }, SpecularModel::CookTorrance, 64, 36);
+        assert_eq!(traced.pixels, exact.pixels, "{name}");
+        assert!(traced.std_error.iter().all(|e| *e == [0.0; 3]), "{name}");
+        assert_eq!(traced.fireflies, 0, "{name}");
+    }
+}
+
+/// A camera inside a closed sphere whose inside emits `L_e` and reflects ρ diffusely: after `N`
+/// bounces every pixel is `L_e·(1 − ρ^N)/(1 − ρ)`, with no noise, since every path sees the same
+/// radiance; at 64 bounces that is `L_e/(1 − ρ)`.
+#[test]
+fn a_white_furnace_converges_to_emission_over_one_minus_albedo() {
+    for (rho, le) in [(0.5, 0.2), (0.8, 0.05), (0.95, 0.01)] {
+        // A tessellated sphere wound inside out: its face normals point in, toward the camera.
+        let inside_out: Vec<[DVec3; 3]> = triangles(Shape::Sphere, 24).into_iter().map(|[a, b, c]| [a, c, b]).collect();
+        let mut scene = stage(vec![], vec![]);
+        scene.meshes = vec![TriangleMesh::from_soup("furnace", &inside_out, None)].into();
+        scene.objects = vec![object("furnace", Shape::Mesh(0), DVec3::ZERO, DVec3::splat(5.0))];
+        scene.camera = Camera { eye: DVec3::new(0.3, -0.2, 0.1), target: DVec3::new(1.0, 0.0, 0.5), ..scene.camera };
+        scene.materials =
+            vec![Material { color: [rho; 3], r_d: 1.0, r_s: 0.0, r_a: 0.0, emission: [le; 3], ..Material::default() }];
+        for bounces in [1, 3, 64] {
+            let img = path_traced(&scene, 8, 6, PathSettings { bounces, spp: 3, seed: 2 });
+            let want = le * (1.0 - rho.powi(bounces as i32)) / (1.0 - rho);
+            for p in &img.pixels {
+                for c in p {
+                    assert!((c - want).abs() <= 1e-12 * want, "ρ {rho}, {bounces} bounces: {c} against {want}");
+                }
+            }
+        }
+    }
+}
+
+/// The same seed gives the same image on one thread and on several, and in steps; another seed
+/// gives another image.
+#[test]
+fn the_seed_alone_decides_the_image() {
+    let scene = Scene::builtin("default").unwrap();
+    let paths = PathSettings { bounces: 3, spp: 2, seed: 11 };
+    let one = rayon::ThreadPoolBuilder::new().num_threads(1).build().unwrap().install(|| path_traced(&scene, 48, 27, paths));
+    let many = path_traced(&scene, 48, 27, paths);
+    assert_eq!(one.pixels, many.pixels);
+    let mut job = ReferenceJob::with_paths(&scene, SpecularModel::CookTorrance, 48, 27, paths).unwrap();
+    while !job.step(5) {}
+    assert_eq!(job.finish().pixels, many.pixels);
+    let other = path_traced(&scene, 48, 27, PathSettings { seed: 12, ..paths });
+    assert_ne!(other.pixels, many.pixels);
+}
+
+/// The estimated standard error is honest: two images with different seeds differ by about
+/// √2 times it, and more paths shrink it by about √(ratio). On the default scene made diffuse,
+/// whose paths' light is bounded; a glossy lobe's rare bright paths are the fireflies' count.
+#[test]
+fn the_noise_estimate_matches_the_noise() {
+    let mut scene = Scene::builtin("default").unwrap();
+    for m in &mut scene.materials {
+        m.r_s = 0.0;
+    }
+    let paths = PathSettings { bounces: 2, spp: 16, seed: 3 };
+    let (w, h) = (40, 24);
+    let a = path_traced(&scene, w, h, paths);
+    let b = path_traced(&scene, w, h, PathSettings { seed: 4, ..paths });
+    let (mut diff_sq, mut var, mut n) = (0.0, 0.0, 0);
+    for i in 0..a.pixels.len() {
+        for c in 0..3 {
+            diff_sq += (a.pixels[i][c] - b.pixels[i][c]).powi(2);
+            var += a.std_error[i][c].powi(2) + b.std_error[i][c].powi(2);
+            n += 1;
+        }
+    }
+    assert!(var > 0.0, "the default scene has indirect light");
+    let ratio = (diff_sq / var).sqrt();
+    assert!((0.8..1.25).contains(&ratio), "measured over estimated noise: {ratio} ({n} values)");
+    let more = path_traced(&scene, w, h, PathSettings { spp: 64, ..paths });
+    let mean = |img: &ReferenceImage| img.std_error.iter().map(|e| e[1]).sum::<f64>();
+    let shrink = mean(&a) / mean(&more);
+    assert!((1.6..2.5).contains(&shrink), "16 → 64 paths: the error shrinks {shrink}×, about 2 expected");
+}
+
+/// The hard cases stay finite and non-negative: grazing light, a light on a surface, a
+/// zero-area triangle, the camera inside glass, glossy surfaces that make fireflies.
+#[test]
+fn hard_cases_stay_finite() {
+    let ball = || object("ball", Shape::Sphere, DVec3::new(0.0, 0.5, 0.0), DVec3::splat(0.5));
+    let lights = [
+        Light::directional(DVec3::new(1.0, -1e-12, 0.3), [1.0; 3], 1.0),
+        Light::point(DVec3::new(0.0, 1.0, 0.0), [1.0; 3], 1.0, 0.0),
+        Light::point(DVec3::ZERO, [1.0; 3], 1.0, 0.0),
+    ];
+    let paths = PathSettings { bounces: 4, spp: 4, seed: 5 };
+    for light in lights {
+        let mut scene = stage(vec![ball()], vec![light.clone()]);
+        scene.materials[0].m = 0.02;
+        assert!(all_finite(&path_traced(&scene, 32, 18, paths)), "{light:?}");
+    }
+    let flat = crate::mesh::TriangleMesh::from_soup("flat", &[[DVec3::ZERO, DVec3::X, DVec3::X * 2.0]], None);
+    let mut scene = stage(vec![object("flat", Shape::Mesh(0), DVec3::new(0.0, 0.5, 0.0), DVec3::ONE)], vec![]);
+    scene.lights = vec![Light::point(DVec3::new(0.0, 2.0, 0.0), [1.0; 3], 1.0, 0.0)];
+    scene.meshes = vec![flat].into();
+    assert!(all_finite(&path_traced(&scene, 32, 18, paths)), "zero-area triangle");
+    let mut glass = Scene::builtin("glass").unwrap();
+    if let Some(o) = glass.objects.iter().find(|o| glass.drawn_as_glass(glass.objects.iter().position(|p| p.name == o.name).unwrap())) {
+        glass.camera.eye = o.transform.translation;
+    }
+    assert!(all_finite(&path_traced(&glass, 32, 18, paths)), "camera inside glass");
+}

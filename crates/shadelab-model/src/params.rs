@@ -347,4 +347,5 @@ pub const BOUNCES: ParamRange = ParamRange {
 };
 /// Paths per pixel of the path-traced reference: 65 536 brings a pixel's noise 256 times under
 /// one path's.
-pub const SPP: ParamRange = ParamRange { flag: "--spp", symbol: "spp", meaning: "paths per pixel", min: 1.0, max: 65536.0 };
+pub const SPP: ParamRange =
+    ParamRange { flag: "--spp", symbol: "spp", meaning: "paths per pixel", min: 1.0, max: 65536.0 };

@@ -2,16 +2,18 @@
 //! the *analytic* shapes (exact normals, no tessellation), shaded by the f64 model, with exact
 //! hard cast shadows from shadow rays. The ground truth for tests and for the accuracy study.
 
+mod ambient;
 mod bvh;
 mod glass;
 mod intersect;
 mod path;
-mod shadow_rays;
 #[cfg(test)]
 mod path_tests;
+mod shadow_rays;
 #[cfg(test)]
 mod tests;
 
+pub use ambient::{AO_RADIUS_REL, AmbientLadder, ambient_occlusion};
 pub use glass::{GLASS_MAX_DEPTH, GLASS_MIN_WEIGHT, SECONDARY_RAY_OFFSET};
 pub use path::{FIREFLY_MIN_SPP, FIREFLY_SHARE, PATH_COS_MIN, PathSettings};
 pub use shadow_rays::SHADOW_RAY_OFFSET_REL;
@@ -72,10 +74,11 @@ pub struct ReferenceImage {
     /// (`area_exact::AreaTerm::error`); 0 without area lights, or where the image draws them as
     /// the GPU does ([`render_drawn`]).
     pub area_error: f64,
-    /// Path traced (`ReferenceJob::with_paths`): how, the standard error of each pixel's
-    /// estimated indirect light, and the pixels with a firefly (`path::FIREFLY_SHARE`); `None`
-    /// and empty for the direct light alone.
+    /// Path traced (`ReferenceJob::with_paths`): how, each pixel's estimated indirect light
+    /// (included in `pixels`) and its standard error, and the pixels with a firefly
+    /// (`path::FIREFLY_SHARE`); `None` and empty for the direct light alone.
     pub paths: Option<PathSettings>,
+    pub indirect: Vec<[f64; 3]>,
     pub std_error: Vec<[f64; 3]>,
     pub fireflies: usize,
 }
@@ -118,6 +121,7 @@ impl ReferenceImage {
             background: Some(color),
             area_error: 0.0,
             paths: None,
+            indirect: Vec::new(),
             std_error: Vec::new(),
             fireflies: 0,
         }
@@ -232,6 +236,7 @@ impl ReferenceImage {
             background,
             area_error: 0.0,
             paths: None,
+            indirect: Vec::new(),
             std_error: Vec::new(),
             fireflies: 0,
         }
@@ -268,6 +273,7 @@ fn trace_rows(
                         row.unshadowed[k][i] += m[i];
                     }
                 }
+                row.indirect = more.light;
                 row.std_error = more.std_error;
                 row.fireflies = more.fireflies;
             }
@@ -275,6 +281,7 @@ fn trace_rows(
         })
         .collect();
     for row in traced {
+        img.indirect.extend(row.indirect);
         img.std_error.extend(row.std_error);
         img.fireflies += row.fireflies;
         img.pixels.extend(row.pixels);
@@ -292,6 +299,7 @@ struct RowPixels {
     unshadowed: Vec<[f64; 3]>,
     object: Vec<Option<usize>>,
     hidden: Vec<u8>,
+    indirect: Vec<[f64; 3]>,
     std_error: Vec<[f64; 3]>,
     fireflies: usize,
 }

@@ -47,10 +47,10 @@ impl Default for PathSettings {
 }
 
 /// SplitMix64: the pixel's stream of random numbers, seeded from the seed and the pixel.
-struct Rng(u64);
+pub(super) struct Rng(u64);
 
 impl Rng {
-    fn new(seed: u64, x: u32, y: u32) -> Rng {
+    pub(super) fn new(seed: u64, x: u32, y: u32) -> Rng {
         let mut r = Rng(seed ^ (u64::from(y) << 32 | u64::from(x)).wrapping_mul(0xA24B_AED4_963E_E407));
         r.next();
         r
@@ -63,13 +63,13 @@ impl Rng {
         z ^ (z >> 31)
     }
     /// Uniform in [0, 1), 53 bits.
-    fn uniform(&mut self) -> f64 {
+    pub(super) fn uniform(&mut self) -> f64 {
         (self.next() >> 11) as f64 * (1.0 / (1u64 << 53) as f64)
     }
 }
 
 /// A direction drawn with density `cos/π` about unit `n` (Malley: the unit disk lifted).
-fn cosine_direction(n: DVec3, u1: f64, u2: f64) -> DVec3 {
+pub(super) fn cosine_direction(n: DVec3, u1: f64, u2: f64) -> DVec3 {
     let (r, phi) = (u1.sqrt(), std::f64::consts::TAU * u2);
     let (t, b) = n.any_orthonormal_pair();
     safe_normalize(t * (r * phi.cos()) + b * (r * phi.sin()) + n * (1.0 - u1).max(0.0).sqrt(), n)

@@ -23,7 +23,8 @@ fn one_bounce_is_the_exact_reference_without_ambient() {
         let scene = Scene::builtin(name).unwrap();
         let paths = PathSettings { bounces: 1, spp: 4, seed: 7 };
         let traced = path_traced(&scene, 64, 36, paths);
-        let exact = render_reference(&Scene { ambient: [0.0; 3], ..scene.clone() }, SpecularModel::CookTorrance, 64, 36);
+        let exact =
+            render_reference(&Scene { ambient: [0.0; 3], ..scene.clone() }, SpecularModel::CookTorrance, 64, 36);
         assert_eq!(traced.pixels, exact.pixels, "{name}");
         assert!(traced.std_error.iter().all(|e| *e == [0.0; 3]), "{name}");
         assert_eq!(traced.fireflies, 0, "{name}");
@@ -62,7 +63,8 @@ fn a_white_furnace_converges_to_emission_over_one_minus_albedo() {
 fn the_seed_alone_decides_the_image() {
     let scene = Scene::builtin("default").unwrap();
     let paths = PathSettings { bounces: 3, spp: 2, seed: 11 };
-    let one = rayon::ThreadPoolBuilder::new().num_threads(1).build().unwrap().install(|| path_traced(&scene, 48, 27, paths));
+    let one =
+        rayon::ThreadPoolBuilder::new().num_threads(1).build().unwrap().install(|| path_traced(&scene, 48, 27, paths));
     let many = path_traced(&scene, 48, 27, paths);
     assert_eq!(one.pixels, many.pixels);
     let mut job = ReferenceJob::with_paths(&scene, SpecularModel::CookTorrance, 48, 27, paths).unwrap();
@@ -124,8 +126,72 @@ fn hard_cases_stay_finite() {
     scene.meshes = vec![flat].into();
     assert!(all_finite(&path_traced(&scene, 32, 18, paths)), "zero-area triangle");
     let mut glass = Scene::builtin("glass").unwrap();
-    if let Some(o) = glass.objects.iter().find(|o| glass.drawn_as_glass(glass.objects.iter().position(|p| p.name == o.name).unwrap())) {
+    if let Some(o) = glass
+        .objects
+        .iter()
+        .find(|o| glass.drawn_as_glass(glass.objects.iter().position(|p| p.name == o.name).unwrap()))
+    {
         glass.camera.eye = o.transform.translation;
     }
     assert!(all_finite(&path_traced(&glass, 32, 18, paths)), "camera inside glass");
+}
+
+/// The ladder's constant rung is the exact reference with the scene's `I_a`; the fitted `I_a`
+/// recovers a scale the indirect light was made with, and fits the real indirect light at least
+/// as well as the scene's own `I_a`.
+#[test]
+fn the_ambient_ladder_rebuilds_the_reference_and_fits_i_a() {
+    let scene = Scene::builtin("default").unwrap();
+    let (w, h) = (48, 27);
+    let traced = path_traced(&scene, w, h, PathSettings { bounces: 3, spp: 8, seed: 9 });
+    let unit = render_reference(&Scene { ambient: [1.0; 3], ..scene.clone() }, SpecularModel::CookTorrance, w, h);
+    let mut ladder = AmbientLadder::new(&traced, &unit, scene.ambient).unwrap();
+    let exact = render_reference(&scene, SpecularModel::CookTorrance, w, h);
+    for (a, b) in ladder.constant().iter().zip(&exact.pixels) {
+        for c in 0..3 {
+            assert!((a[c] - b[c]).abs() <= 1e-12, "{a:?} against {b:?}");
+        }
+    }
+    let fitted = ladder.fitted_ambient();
+    assert!(ladder.rmse(&ladder.fitted()) <= ladder.rmse(&ladder.constant()) + 1e-15);
+    assert!(fitted.iter().all(|k| k.is_finite() && *k > 0.0), "{fitted:?}");
+    ladder.indirect = ladder.per_ambient.iter().map(|a| [0.3 * a[0], 0.5 * a[1], 0.7 * a[2]]).collect();
+    let k = ladder.fitted_ambient();
+    for (c, want) in [0.3, 0.5, 0.7].into_iter().enumerate() {
+        assert!((k[c] - want).abs() < 1e-12, "channel {c}: {} against {want}", k[c]);
+    }
+    assert!(ladder.rmse(&ladder.fitted()) < 1e-12);
+}
+
+/// Ambient occlusion is 1 on open ground beyond its radius from the sphere resting on it, and
+/// well under 1 beside the sphere's contact.
+#[test]
+fn ambient_occlusion_darkens_contact_only() {
+    let ball = object("ball", Shape::Sphere, DVec3::new(0.0, 0.5, 0.0), DVec3::splat(0.5));
+    let scene = stage(vec![ball], vec![Light::point(DVec3::new(0.0, 3.0, 0.0), [1.0; 3], 1.0, 0.0)]);
+    let (w, h) = (96, 54);
+    let ao = ambient_occlusion(&scene, w, h, 64, 3);
+    let seen = render_reference(&scene, SpecularModel::Phong, w, h);
+    // The scene's size is the camera's 6 m: occluders count within 0.6 m.
+    let radius = AO_RADIUS_REL * 6.0;
+    let (mut open, mut contact) = (0, 0);
+    for y in 0..h {
+        for x in 0..w {
+            let Some(p) = (seen.object_at(x, y) == Some(0))
+                .then(|| super::tests::ground_point(&scene.camera, x, y, w, h))
+                .flatten()
+            else {
+                continue;
+            };
+            let (d, a) = (DVec3::new(p.x, 0.0, p.z).length(), ao[(y * w + x) as usize]);
+            if d > 0.5 + radius + 0.05 {
+                assert_eq!(a, 1.0, "open ground {d:.2} m from the axis");
+                open += 1;
+            } else if d < 0.55 {
+                assert!(a < 0.9, "beside the contact, {d:.2} m from the axis: {a}");
+                contact += 1;
+            }
+        }
+    }
+    assert!(open > 100 && contact > 3, "{open} open and {contact} contact pixels");
 }

@@ -57,7 +57,7 @@ pub(super) fn all_finite(img: &ReferenceImage) -> bool {
 }
 
 /// Where the camera ray of pixel `(x, y)` meets the plane y = 0.
-fn ground_point(cam: &Camera, x: u32, y: u32, w: u32, h: u32) -> Option<DVec3> {
+pub(super) fn ground_point(cam: &Camera, x: u32, y: u32, w: u32, h: u32) -> Option<DVec3> {
     let (o, d) = cam.ray(x, y, w, h);
     (d.y < 0.0).then(|| o - d * (o.y / d.y))
 }

@@ -57,6 +57,69 @@ fn a_white_furnace_converges_to_emission_over_one_minus_albedo() {
     }
 }
 
+/// Inside a furnace of glossy surfaces every bounce sees the same radiance `L_e`, so two bounces
+/// give `L_e·(1 + A)`, with `A = ∫ term(ω) dω/π` the model's albedo toward the camera: the
+/// mixture of lobe and cosine sampling converges to the quadrature of `A`, within 4 standard
+/// errors.
+#[test]
+fn glossy_bounces_converge_to_the_albedo_integral() {
+    let inside_out: Vec<[DVec3; 3]> = triangles(Shape::Sphere, 24).into_iter().map(|[a, b, c]| [a, c, b]).collect();
+    for (specular, m) in [(SpecularModel::CookTorrance, 0.15), (SpecularModel::Phong, 0.3)] {
+        let mut scene = stage(vec![], vec![]);
+        scene.meshes = vec![TriangleMesh::from_soup("furnace", &inside_out, None)].into();
+        scene.objects = vec![object("furnace", Shape::Mesh(0), DVec3::ZERO, DVec3::splat(5.0))];
+        scene.camera = Camera { eye: DVec3::new(0.3, -0.2, 0.1), target: DVec3::new(1.0, 0.0, 0.5), ..scene.camera };
+        let le = 0.1;
+        let material = Material {
+            color: [0.6; 3],
+            r_d: 0.5,
+            r_s: 0.5,
+            m,
+            h: crate::params::PhongExponent::from_m(m),
+            emission: [le; 3],
+            ..Material::default()
+        };
+        scene.materials = vec![material.clone()];
+        let paths = PathSettings { bounces: 2, spp: 20_000, seed: 8 };
+        let mut job = ReferenceJob::with_paths(&scene, specular, 1, 1, paths).unwrap();
+        job.step(1);
+        let img = job.finish();
+        // The albedo by a midpoint quadrature over the hemisphere, the same probe the tracer uses.
+        let (o, dir) = scene.camera.ray(0, 0, 1, 1);
+        let geo = Geometry::new(&scene);
+        let hit = trace_ray(&scene, &geo, o, dir).unwrap();
+        let (n, steps) = (hit.normal, 600);
+        let (t, b) = n.any_orthonormal_pair();
+        let mut albedo = 0.0;
+        for i in 0..steps {
+            let theta = (i as f64 + 0.5) / steps as f64 * std::f64::consts::FRAC_PI_2;
+            for j in 0..2 * steps {
+                let phi = (j as f64 + 0.5) / (2 * steps) as f64 * std::f64::consts::TAU;
+                let w = t * (theta.sin() * phi.cos()) + b * (theta.sin() * phi.sin()) + n * theta.cos();
+                let probe = Light::directional(-w, [1.0; 3], 1.0);
+                let at = crate::lighting::shading::ShadePoint {
+                    p: hit.point,
+                    n_in: n,
+                    eye: o.extend(1.0),
+                    mat: &material,
+                    ambient: [0.0; 3],
+                    specular,
+                    model: scene.illumination,
+                };
+                let term = crate::lighting::shading::shade_exact(&at, &[probe], |_, _, _, _| 1.0, &mut |_| None)[1];
+                let dw = theta.sin()
+                    * (std::f64::consts::FRAC_PI_2 / steps as f64)
+                    * (std::f64::consts::TAU / (2 * steps) as f64);
+                albedo += term * dw / std::f64::consts::PI;
+            }
+        }
+        let want = le * (1.0 + albedo);
+        let (got, sigma) = (img.pixels[0][1], img.std_error[0][1]);
+        assert!(sigma < 0.01 * want, "{specular:?}: noise {sigma} too large to test");
+        assert!((got - want).abs() < 4.0 * sigma, "{specular:?}: {got} against {want} (σ {sigma}, albedo {albedo})");
+    }
+}
+
 /// The same seed gives the same image on one thread and on several, and in steps; another seed
 /// gives another image.
 #[test]

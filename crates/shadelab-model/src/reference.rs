@@ -108,6 +108,20 @@ impl ReferenceImage {
         out
     }
 
+    /// Another image's pixels as a reference to compare with: no objects, no shadows, no
+    /// background.
+    pub fn from_pixels(width: u32, height: u32, pixels: Vec<[f64; 3]>) -> ReferenceImage {
+        let n = pixels.len();
+        ReferenceImage {
+            background: None,
+            unshadowed: pixels.clone(),
+            pixels,
+            object: vec![None; n],
+            hidden: vec![0; n],
+            ..ReferenceImage::empty(width, height, None)
+        }
+    }
+
     /// A reference image of one colour with nothing in it (for tests of the metrics).
     pub fn uniform(width: u32, height: u32, color: [f64; 3]) -> ReferenceImage {
         let n = (width * height) as usize;

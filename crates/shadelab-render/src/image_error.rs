@@ -116,17 +116,7 @@ fn flip_rgb8(reference: &[u8], test: &[u8], w: u32, h: u32) -> (f64, Vec<u8>) {
 pub fn compare_images(image: &LinearImage, against: &LinearImage) -> Comparison {
     assert_eq!((image.width, image.height), (against.width, against.height), "image sizes differ");
     let pixels: Vec<[f64; 3]> = against.pixels.iter().map(|p| [p[0] as f64, p[1] as f64, p[2] as f64]).collect();
-    let n = pixels.len();
-    let reference = ReferenceImage {
-        width: against.width,
-        height: against.height,
-        unshadowed: pixels.clone(),
-        pixels,
-        object: vec![None; n],
-        hidden: vec![0; n],
-        background: None,
-        area_error: 0.0,
-    };
+    let reference = ReferenceImage::from_pixels(against.width, against.height, pixels);
     compare(image, &reference)
 }
 

@@ -3,6 +3,7 @@
 
 // The command-line tools write files and plots; the browser build (`shadelab-web`) is the viewer.
 #[cfg(not(target_arch = "wasm32"))]
+pub mod ambient_views;
 pub mod bench;
 pub mod cli;
 #[cfg(not(target_arch = "wasm32"))]

@@ -5,7 +5,7 @@
 use crate::render::{ImageKind, save};
 use crate::{Failure, cli};
 use anyhow::Context;
-use shadelab_model::reference::{ReferenceImage, ReferenceJob};
+use shadelab_model::reference::{PathSettings, ReferenceImage, ReferenceJob};
 use shadelab_model::terms::{Term, shadow_factor};
 use shadelab_render::image_error::{compare_images, reference_image};
 use shadelab_render::{Gpu, LinearImage, RenderSettings};
@@ -16,9 +16,8 @@ const PROGRESS_STEPS: u32 = 50;
 
 /// The reference traced as the viewer traces it (`ReferenceJob`, the same code path), a fiftieth
 /// of its rows at a time, with a progress bar on standard error when that is a terminal.
-fn traced_with_progress(scene: &shadelab_model::Scene, settings: &RenderSettings, size: (u32, u32)) -> ReferenceImage {
-    let mut job = ReferenceJob::new(scene, settings.specular, size.0, size.1);
-    let rows = size.1.div_ceil(PROGRESS_STEPS).max(1);
+pub fn traced_with_progress(mut job: ReferenceJob, label: &str, height: u32) -> ReferenceImage {
+    let rows = height.div_ceil(PROGRESS_STEPS).max(1);
     let mut err = std::io::stderr();
     let bar = err.is_terminal();
     while !job.step(rows) {
@@ -26,7 +25,7 @@ fn traced_with_progress(scene: &shadelab_model::Scene, settings: &RenderSettings
             let done = (job.progress() * 40.0).round() as usize;
             let _ = write!(
                 err,
-                "\rf64 reference [{}{}] {:3.0} %",
+                "\r{label} [{}{}] {:3.0} %",
                 "#".repeat(done),
                 " ".repeat(40 - done.min(40)),
                 job.progress() * 100.0
@@ -35,17 +34,30 @@ fn traced_with_progress(scene: &shadelab_model::Scene, settings: &RenderSettings
         }
     }
     if bar {
-        let _ = write!(err, "\r{}\r", " ".repeat(60));
+        let _ = write!(err, "\r{}\r", " ".repeat(60 + label.len()));
     }
     job.finish()
 }
 
+/// The job `render` traces: the exact reference, or with `paths` the path-traced one (one clear
+/// line where the scene's model has no light between surfaces to trace).
+pub fn reference_job(
+    scene: &shadelab_model::Scene,
+    settings: &RenderSettings,
+    size: (u32, u32),
+    paths: Option<PathSettings>,
+) -> Result<ReferenceJob, Failure> {
+    match paths {
+        None => Ok(ReferenceJob::new(scene, settings.specular, size.0, size.1)),
+        Some(p) => ReferenceJob::with_paths(scene, settings.specular, size.0, size.1, p).map_err(Failure::Usage),
+    }
+}
+
 /// The reference of `scene` at `size` as a linear image: its pixels, or with `--term shadow`
 /// its exact cast-shadow factor as grey (the background kept), as the GPU's factor is drawn.
-fn reference_of(scene: &shadelab_model::Scene, size: (u32, u32), settings: &RenderSettings, term: Term) -> LinearImage {
-    let r = traced_with_progress(scene, settings, size);
+fn reference_of(r: &ReferenceImage, term: Term) -> LinearImage {
     if term != Term::Shadow {
-        return reference_image(&r);
+        return reference_image(r);
     }
     let pixels = (0..r.pixels.len())
         .map(|i| match r.object[i] {
@@ -59,7 +71,7 @@ fn reference_of(scene: &shadelab_model::Scene, size: (u32, u32), settings: &Rend
             }
         })
         .collect();
-    LinearImage { width: size.0, height: size.1, pixels }
+    LinearImage { width: r.width, height: r.height, pixels }
 }
 
 pub fn run(
@@ -71,12 +83,16 @@ pub fn run(
     kind: ImageKind,
 ) -> Result<(), Failure> {
     let start = web_time::Instant::now();
-    let reference = reference_of(scene, size, settings, args.term);
+    let paths = args.paths();
+    let label = if paths.is_some() { "path-traced reference" } else { "f64 reference" };
+    let traced = traced_with_progress(reference_job(scene, settings, size, paths)?, label, size.1);
+    let reference = reference_of(&traced, args.term);
+    let noise = paths.map(|p| noise_line(&traced, p)).unwrap_or_default();
     if args.reference {
         // Its time and threads (RAYON_NUM_THREADS=1: one, as the web page's, docs/web.md).
         let ms = start.elapsed().as_secs_f64() * 1e3;
         let threads = shadelab_model::reference::reference_threads();
-        println!("f64 reference of {} ({}×{}) in {ms:.1} ms, {threads} thread(s)", scene.name, size.0, size.1);
+        println!("{label} of {} ({}×{}) in {ms:.1} ms, {threads} thread(s){noise}", scene.name, size.0, size.1);
         save(&reference, &args.output, kind).with_context(|| format!("writing {}", args.output.display()))?;
         return Ok(());
     }
@@ -92,7 +108,7 @@ pub fn run(
         .save(&args.output)
         .with_context(|| format!("writing {}", args.output.display()))?;
     println!(
-        "{} against the f64 reference ({} shading, term {}): RMSE {:.3e}, max {:.3}, mean FLIP {:.5}, {:.2} % of pixels visibly off",
+        "{} against the {label} ({} shading, term {}): RMSE {:.3e}, max {:.3}, mean FLIP {:.5}, {:.2} % of pixels visibly off{noise}",
         scene.name,
         settings.shading,
         shadelab_model::params::NamedValue::name(args.term),
@@ -102,4 +118,19 @@ pub fn run(
         100.0 * cmp.stats.share_off
     );
     Ok(())
+}
+
+/// The path tracer's settings and its noise, for the printed line: the root mean square of the
+/// pixels' standard error (a difference under it is not measured) and the fireflies.
+fn noise_line(traced: &ReferenceImage, p: PathSettings) -> String {
+    let n = traced.std_error.len().max(1) as f64 * 3.0;
+    let rms = (traced.std_error.iter().flatten().map(|e| e * e).sum::<f64>() / n).sqrt();
+    format!(
+        "; {} bounces, {} paths a pixel, seed {}: noise (RMS standard error) {rms:.3e}, {} pixels with a firefly (one path over {:.0} % of the pixel's indirect light)",
+        p.bounces,
+        p.spp,
+        p.seed,
+        traced.fireflies,
+        shadelab_model::reference::FIREFLY_SHARE * 100.0
+    )
 }

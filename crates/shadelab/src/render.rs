@@ -113,6 +113,10 @@ pub fn run(args: &cli::RenderArgs) -> Result<(), Failure> {
         print!("{}", explain(&scene, &settings));
     }
     check_difference_flags(args, &scene, &settings, kind)?;
+    if args.ambient_error {
+        // The f64 reference alone: no GPU.
+        return crate::ambient_views::run(&scene, (width, height), &settings, args, kind);
+    }
     let gpu = Gpu::headless(AdapterChoice::from_env()).context("opening a GPU adapter")?;
     log::info!("adapter: {}", gpu.describe());
     if args.interpolation_difference {
@@ -147,6 +151,23 @@ fn check_difference_flags(
     if (args.reference || args.difference) && !shadelab_model::scene_variants::reference_covers(scene) {
         return Err(Failure::Usage(format!(
             "--reference, --difference: only for scenes of analytic shapes and file meshes of at most {} triangles in all (REFERENCE_MESH_TRIANGLES, the loader's limit)",
+            shadelab_model::scene_variants::REFERENCE_MESH_TRIANGLES
+        )));
+    }
+    let traced = args.reference || args.difference || args.ambient_error;
+    if !traced && (args.bounces.is_some() || args.spp.is_some() || args.seed.is_some()) {
+        return Err(Failure::Usage(
+            "--bounces, --spp, --seed: only with --reference, --difference or --ambient-error".into(),
+        ));
+    }
+    if args.paths().is_some() && args.term != shadelab_model::terms::Term::All {
+        return Err(Failure::Usage(
+            "--bounces, --ambient-error: the path-traced reference draws every term (--term all)".into(),
+        ));
+    }
+    if args.ambient_error && !shadelab_model::scene_variants::reference_covers(scene) {
+        return Err(Failure::Usage(format!(
+            "--ambient-error: only for scenes of analytic shapes and file meshes of at most {} triangles in all (REFERENCE_MESH_TRIANGLES)",
             shadelab_model::scene_variants::REFERENCE_MESH_TRIANGLES
         )));
     }

@@ -352,12 +352,43 @@ pub struct RenderArgs {
     /// the image (PNG; scenes of analytic shapes), and print RMSE, FLIP and the share off.
     #[arg(long, conflicts_with_all = ["interpolation_difference", "overlay"])]
     pub difference: bool,
+    /// With --reference or --difference: path trace the reference, the light between surfaces
+    /// taking the place of the constant ambient (the Phong model; docs/reference.md). N surface
+    /// vertices a path: 1 is the exact direct light alone, 2 adds one bounce.
+    #[arg(long, value_name = "N", value_parser = values::count(params::BOUNCES),
+          help = within("Path-traced reference: surface vertices a path has (1: the direct light alone)", params::BOUNCES))]
+    pub bounces: Option<u32>,
+    /// Paths per pixel of the path-traced reference [default: 64].
+    #[arg(long, value_parser = values::count(params::SPP), help = within("Paths per pixel of the path-traced reference [default: 64]", params::SPP))]
+    pub spp: Option<u32>,
+    /// The seed of the path tracer's random numbers: the same seed, the same image on any number
+    /// of threads [default: 1].
+    #[arg(long)]
+    pub seed: Option<u64>,
+    /// Write the ambient error instead of the image: the chapter's constant I_a·r_a·C against the
+    /// path-traced light between surfaces (--bounces, default 4; --spp), as signed linear RGB
+    /// (.exr) or a map from blue (too dark) to red (too bright) (.png); print the fitted I_a and
+    /// the error of the constant, the fitted and the occluded ambient.
+    #[arg(long, conflicts_with_all = ["reference", "difference", "interpolation_difference", "overlay"])]
+    pub ambient_error: bool,
     /// Draw over the image, comma-separated, depth-tested against the scene: terminator (the
     /// self-shadow boundary, cyan), normals (the smooth meshes' vertex normals, yellow), creases
     /// (the edges the crease-angle rule keeps sharp, orange).
     #[arg(long, value_name = "NAME,...", value_delimiter = ',',
           value_parser = values::named::<crate::render::Overlay>())]
     pub overlay: Vec<crate::render::Overlay>,
+}
+
+impl RenderArgs {
+    /// The path tracer's settings where `--bounces` or `--ambient-error` asks for it.
+    pub fn paths(&self) -> Option<shadelab_model::reference::PathSettings> {
+        let d = shadelab_model::reference::PathSettings::default();
+        (self.bounces.is_some() || self.ambient_error).then(|| shadelab_model::reference::PathSettings {
+            bounces: self.bounces.unwrap_or(d.bounces),
+            spp: self.spp.unwrap_or(d.spp),
+            seed: self.seed.unwrap_or(d.seed),
+        })
+    }
 }
 
 /// The image size (`render` and every `bench`).

@@ -79,6 +79,9 @@ pub struct ReferenceImage {
     /// (`path::FIREFLY_SHARE`); `None` and empty for the direct light alone.
     pub paths: Option<PathSettings>,
     pub indirect: Vec<[f64; 3]>,
+    /// Path traced: each pixel's constant ambient term for `I_a = 1` (the chapter's stand-in for
+    /// the indirect light, from the exact image; through glass too).
+    pub per_ambient: Vec<[f64; 3]>,
     pub std_error: Vec<[f64; 3]>,
     pub fireflies: usize,
 }
@@ -136,6 +139,7 @@ impl ReferenceImage {
             area_error: 0.0,
             paths: None,
             indirect: Vec::new(),
+            per_ambient: Vec::new(),
             std_error: Vec::new(),
             fireflies: 0,
         }
@@ -177,6 +181,9 @@ pub struct ReferenceJob {
     geo: Geometry,
     specular: SpecularModel,
     paths: Option<PathSettings>,
+    /// With `paths`: the scene with `I_a = 1`, whose exact image gives each pixel's constant
+    /// ambient term per unit of `I_a`.
+    unit: Option<Scene>,
     img: ReferenceImage,
     next_row: u32,
 }
@@ -187,7 +194,7 @@ impl ReferenceJob {
         let scene = Scene { lights: exact, ..scene.clone() };
         let img = ReferenceImage::empty(width, height, scene.background);
         let geo = Geometry::new(&scene);
-        ReferenceJob { scene, geo, specular, paths: None, img, next_row: 0 }
+        ReferenceJob { scene, geo, specular, paths: None, unit: None, img, next_row: 0 }
     }
 
     /// The scene's light between surfaces, path traced (`path.rs`): the exact direct light as
@@ -208,6 +215,7 @@ impl ReferenceJob {
         }
         let mut job = ReferenceJob::new(&Scene { ambient: [0.0; 3], ..scene.clone() }, specular, width, height);
         job.paths = Some(paths);
+        job.unit = Some(Scene { ambient: [1.0; 3], ..job.scene.clone() });
         job.img.paths = Some(paths);
         Ok(job)
     }
@@ -215,8 +223,8 @@ impl ReferenceJob {
     /// Trace up to `rows` more rows; true once every row is traced.
     pub fn step(&mut self, rows: u32) -> bool {
         let end = self.next_row.saturating_add(rows).min(self.img.height);
-        let paths = self.paths;
-        trace_rows(&self.scene, &self.geo, self.specular, &mut self.img, self.next_row..end, true, paths.as_ref());
+        let paths = self.paths.as_ref().zip(self.unit.as_ref());
+        trace_rows(&self.scene, &self.geo, self.specular, &mut self.img, self.next_row..end, true, paths);
         self.next_row = end;
         self.done()
     }
@@ -251,6 +259,7 @@ impl ReferenceImage {
             area_error: 0.0,
             paths: None,
             indirect: Vec::new(),
+            per_ambient: Vec::new(),
             std_error: Vec::new(),
             fireflies: 0,
         }
@@ -259,7 +268,8 @@ impl ReferenceImage {
 
 /// Trace the rows `rows` of `img`'s size, appending their pixels (rows come in order); `exact`:
 /// area lights integrated exactly ([`render_reference`]), else as drawn ([`render_drawn`]);
-/// `paths`: the indirect light path traced and added.
+/// `paths`: the indirect light path traced and added, and the constant ambient per unit of `I_a`
+/// from the exact image of the scene given with `I_a = 1`.
 fn trace_rows(
     scene: &Scene,
     geo: &Geometry,
@@ -267,10 +277,14 @@ fn trace_rows(
     img: &mut ReferenceImage,
     rows: std::ops::Range<u32>,
     exact: bool,
-    paths: Option<&PathSettings>,
+    paths: Option<(&PathSettings, &Scene)>,
 ) {
     let rays = ShadowRays::new(scene, geo);
     let ctx = Context { scene, geo, rays: &rays, specular, exact, area_error: Default::default() };
+    let unit_rays = paths.map(|(_, unit)| ShadowRays::new(unit, geo));
+    let unit_ctx = paths.zip(unit_rays.as_ref()).map(|((p, unit), rays)| {
+        (p, Context { scene: unit, geo, rays, specular, exact, area_error: Default::default() })
+    });
     // Rows on every core, each into its own buffer, appended in order: the same image as one
     // thread would trace.
     let (width, height) = (img.width, img.height);
@@ -278,24 +292,15 @@ fn trace_rows(
         .into_par_iter()
         .map(|y| {
             let mut row = trace_row(&ctx, y, width, height);
-            if let Some(paths) = paths {
-                let more = path::indirect_row(&ctx, paths, y, width, height);
-                // The indirect light is the same with and without the direct light's cast shadows.
-                for (k, m) in more.light.iter().enumerate() {
-                    for i in 0..3 {
-                        row.pixels[k][i] += m[i];
-                        row.unshadowed[k][i] += m[i];
-                    }
-                }
-                row.indirect = more.light;
-                row.std_error = more.std_error;
-                row.fireflies = more.fireflies;
+            if let Some((paths, unit)) = &unit_ctx {
+                path::add_paths(&ctx, unit, paths, y, width, height, &mut row);
             }
             row
         })
         .collect();
     for row in traced {
         img.indirect.extend(row.indirect);
+        img.per_ambient.extend(row.per_ambient);
         img.std_error.extend(row.std_error);
         img.fireflies += row.fireflies;
         img.pixels.extend(row.pixels);
@@ -314,6 +319,7 @@ struct RowPixels {
     object: Vec<Option<usize>>,
     hidden: Vec<u8>,
     indirect: Vec<[f64; 3]>,
+    per_ambient: Vec<[f64; 3]>,
     std_error: Vec<[f64; 3]>,
     fireflies: usize,
 }

@@ -16,7 +16,7 @@ pub struct AmbientStudy {
     pub ladder: AmbientLadder,
     pub ao: Vec<f64>,
     pub paths: PathSettings,
-    /// Milliseconds: the path-traced truth, the exact image with `I_a = 1` (the constant and the
+    /// Milliseconds: the path-traced truth, the chapter's exact image (the constant and the
     /// fitted rungs' whole cost), and the ambient occlusion rays.
     pub truth_ms: f64,
     pub constant_ms: f64,
@@ -31,8 +31,8 @@ fn timed<T>(f: impl FnOnce() -> T) -> (T, f64) {
     (out, start.elapsed().as_secs_f64() * 1e3)
 }
 
-/// Trace the ladder of `scene` at `size`: the truth with `paths`, the exact image with `I_a = 1`,
-/// and the occlusion with as many rays a pixel as the truth has paths.
+/// Trace the ladder of `scene` at `size`: the truth with `paths` (which holds the constant
+/// ambient's terms), the chapter's exact image for its time, and the occlusion with as many rays a pixel as the truth has paths.
 pub fn ambient_study(
     scene: &Scene,
     settings: &RenderSettings,
@@ -41,22 +41,22 @@ pub fn ambient_study(
 ) -> Result<AmbientStudy, Failure> {
     let job = reference_job(scene, settings, size, Some(paths))?;
     let (traced, truth_ms) = timed(|| traced_with_progress(job, "path-traced reference", size.1));
-    let unit_scene = Scene { ambient: [1.0; 3], ..scene.clone() };
-    let unit_job = ReferenceJob::new(&unit_scene, settings.specular, size.0, size.1);
-    let (unit, constant_ms) = timed(|| traced_with_progress(unit_job, "f64 reference", size.1));
+    // The chapter's image on its own, for its time: the exact reference with the constant ambient.
+    let exact = ReferenceJob::new(scene, settings.specular, size.0, size.1);
+    let (_, constant_ms) = timed(|| traced_with_progress(exact, "f64 reference", size.1));
     let (ao, ao_ms) = timed(|| ambient_occlusion(scene, size.0, size.1, paths.spp, paths.seed));
-    let ladder = AmbientLadder::new(&traced, &unit, scene.ambient).context("the ladder's images differ in size")?;
+    let ladder = AmbientLadder::new(&traced, scene.ambient).context("the path-traced image has no ambient terms")?;
     Ok(AmbientStudy { ladder, ao, paths, truth_ms, constant_ms, ao_ms, object: traced.object })
 }
 
 /// Rec. 709 luminance.
-fn luminance(c: [f64; 3]) -> f64 {
+pub fn luminance(c: [f64; 3]) -> f64 {
     0.2126 * c[0] + 0.7152 * c[1] + 0.0722 * c[2]
 }
 
 /// The signed error as a picture: luminance error `e` from blue (`e = −scale`, too dark) through
 /// white (0) to red (`+scale`, too bright); black where the camera sees nothing.
-fn diverging_map(error: &[[f64; 3]], object: &[Option<usize>], scale: f64, size: (u32, u32)) -> LinearImage {
+pub fn diverging_map(error: &[[f64; 3]], object: &[Option<usize>], scale: f64, size: (u32, u32)) -> LinearImage {
     const BLUE: [f64; 3] = [0.02, 0.08, 0.6];
     const RED: [f64; 3] = [0.6, 0.01, 0.02];
     let pixels = error
@@ -77,7 +77,7 @@ fn diverging_map(error: &[[f64; 3]], object: &[Option<usize>], scale: f64, size:
 
 /// The 99th percentile of the luminance error's size over the pixels that see something: the
 /// map's full colour, so that a few extreme pixels do not wash it out.
-fn map_scale(error: &[[f64; 3]], object: &[Option<usize>]) -> f64 {
+pub fn map_scale(error: &[[f64; 3]], object: &[Option<usize>]) -> f64 {
     let mut e: Vec<f64> =
         error.iter().zip(object).filter(|(_, o)| o.is_some()).map(|(e, _)| luminance(*e).abs()).collect();
     if e.is_empty() {

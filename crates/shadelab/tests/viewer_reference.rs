@@ -32,3 +32,32 @@ fn the_difference_view_reports_how_far_its_reference_is() {
     assert!(stats.rmse.is_finite() && stats.rmse > 0.0, "{stats:?}");
     assert_eq!(h.state().reference_progress(), None, "still tracing after the map is in");
 }
+
+/// The ambient error view traces the light between surfaces and shows the chapter's constant
+/// ambient against it, with the I_a that fits: on the default scene the fit is dimmer than the
+/// scene's grey I_a in green and blue, since the light between its surfaces is mostly the red
+/// spheres' (docs/reference.md).
+#[test]
+fn the_ambient_error_view_fits_i_a() {
+    let mut h = Harness::builder()
+        .with_size(egui::vec2(1100.0, 640.0))
+        .wgpu()
+        .build_eframe(|cc| Viewer::new(cc, None, None).expect("viewer"));
+    h.run_steps(2);
+    h.state_mut().set_difference_view(true);
+    h.state_mut().set_difference_kind(shadelab::viewer::difference::DifferenceKind::Ambient);
+    let start = std::time::Instant::now();
+    let fit = loop {
+        h.run_steps(1);
+        if let Some(f) = h.state().ambient_fit() {
+            break f;
+        }
+        assert!(start.elapsed().as_secs() < 120, "no ambient error map after 120 s");
+        std::thread::sleep(std::time::Duration::from_millis(20));
+    };
+    let stats = h.state().difference().expect("the map's numbers");
+    assert!(stats.rmse.is_finite() && stats.rmse > fit.noise, "{stats:?} against noise {}", fit.noise);
+    assert!(fit.scale > 0.0 && fit.noise > 0.0, "{fit:?}");
+    assert!(fit.fitted[0] > fit.fitted[1] && fit.fitted[0] > fit.fitted[2], "the bounce is red: {fit:?}");
+    assert!(fit.fitted[1] < fit.ambient[1] && fit.fitted[2] < fit.ambient[2], "{fit:?}");
+}

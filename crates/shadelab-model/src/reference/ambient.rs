@@ -1,7 +1,8 @@
 //! The chapter's constant ambient against the light between surfaces (docs/reference.md, "The
 //! chapter's I_a against the truth"). The chapter's `I_a·r_a·C` stands for the light that reaches
 //! a surface after reflections off the others; the path tracer computes that light. From one
-//! path-traced image and one exact image with `I_a = 1` this builds each rung of the ladder:
+//! path-traced image, which also holds each pixel's constant ambient per unit of `I_a`, this
+//! builds each rung of the ladder:
 //! the constant ambient, the `I_a` that fits the scene best, ambient occlusion, and the truth.
 
 use super::intersect::{occluded, trace};
@@ -67,21 +68,20 @@ pub struct AmbientLadder {
 }
 
 impl AmbientLadder {
-    /// From `traced` (`ReferenceJob::with_paths`) and `unit`, the exact reference of the same
-    /// view with `I_a = 1`; `None` when `traced` is not path traced or the sizes differ.
-    pub fn new(traced: &ReferenceImage, unit: &ReferenceImage, ambient: [f64; 3]) -> Option<AmbientLadder> {
+    /// From `traced` (`ReferenceJob::with_paths`), which holds the truth and each pixel's
+    /// constant ambient per unit of `I_a`; `None` when it is not path traced.
+    pub fn new(traced: &ReferenceImage, ambient: [f64; 3]) -> Option<AmbientLadder> {
         let n = traced.pixels.len();
-        if traced.indirect.len() != n || unit.pixels.len() != n {
+        if traced.indirect.len() != n || traced.per_ambient.len() != n {
             return None;
         }
         let direct: Vec<[f64; 3]> =
             traced.pixels.iter().zip(&traced.indirect).map(|(p, i)| std::array::from_fn(|c| p[c] - i[c])).collect();
-        let per_ambient = unit.pixels.iter().zip(&direct).map(|(u, d)| std::array::from_fn(|c| u[c] - d[c])).collect();
         Some(AmbientLadder {
             width: traced.width,
             height: traced.height,
             direct,
-            per_ambient,
+            per_ambient: traced.per_ambient.clone(),
             indirect: traced.indirect.clone(),
             std_error: traced.std_error.clone(),
             ambient,

@@ -231,7 +231,7 @@ fn model_term_towards(ctx: &Context, p: DVec3, n: DVec3, from: DVec3, mat: &Mate
 }
 
 /// Row `y`'s indirect light, `paths.spp` paths a pixel, each pixel with its own random numbers.
-pub(super) fn indirect_row(ctx: &Context, paths: &PathSettings, y: u32, width: u32, height: u32) -> RowIndirect {
+fn indirect_row(ctx: &Context, paths: &PathSettings, y: u32, width: u32, height: u32) -> RowIndirect {
     let mut row = RowIndirect::default();
     let eye = ctx.scene.camera.eye_h();
     let tinted = RefCell::new(ctx.scene.materials.clone());
@@ -275,6 +275,34 @@ pub(super) fn indirect_row(ctx: &Context, paths: &PathSettings, y: u32, width: u
         row.std_error.push(std_error);
     }
     row
+}
+
+/// Row `y` of a path-traced image: `row`, the exact direct light without ambient, gains the
+/// indirect light with its noise, and the constant ambient per unit of `I_a` (the row traced in
+/// `unit`, the same scene with `I_a = 1`, less `row`).
+pub(super) fn add_paths(
+    ctx: &Context,
+    unit: &Context,
+    paths: &PathSettings,
+    y: u32,
+    width: u32,
+    height: u32,
+    row: &mut super::RowPixels,
+) {
+    let with_unit = super::trace_row(unit, y, width, height);
+    row.per_ambient =
+        with_unit.pixels.iter().zip(&row.pixels).map(|(u, d)| std::array::from_fn(|i| u[i] - d[i])).collect();
+    let more = indirect_row(ctx, paths, y, width, height);
+    // The indirect light is the same with and without the direct light's cast shadows.
+    for (k, m) in more.light.iter().enumerate() {
+        for i in 0..3 {
+            row.pixels[k][i] += m[i];
+            row.unshadowed[k][i] += m[i];
+        }
+    }
+    row.indirect = more.light;
+    row.std_error = more.std_error;
+    row.fireflies = more.fireflies;
 }
 
 /// Rec. 709 luminance of linear RGB.

@@ -8,7 +8,7 @@
 //! with the reference's cast shadows, with the shares of false and missed shadow.
 
 use eframe::egui;
-use shadelab_model::reference::{ReferenceImage, ReferenceJob};
+use shadelab_model::reference::{PathSettings, ReferenceImage, ReferenceJob};
 use shadelab_model::{Scene, ShadingMode, SpecularModel};
 use shadelab_render::image_error::{self, ErrorStats, ShadowStats};
 use shadelab_render::{RenderSettings, Renderer, SceneGpu, Target, target};
@@ -22,12 +22,18 @@ use target::PendingReadBack;
 /// scaled up.
 pub const DIFFERENCE_MAX_WIDTH: u32 = 480;
 
-/// What a reference image depends on.
+/// The ambient error map's truth: 4 surface vertices a path carry all but (1 − ρ)·ρ³ of the
+/// light between surfaces, and 32 paths a pixel bring its noise under the default scene's
+/// ambient error (docs/reference.md) in about 2 s on two cores at the map's 480 px.
+pub const VIEWER_PATHS: PathSettings = PathSettings { bounces: 4, spp: 32, seed: 1 };
+
+/// What a reference image depends on: with `paths`, it is path traced.
 #[derive(Clone, PartialEq)]
 struct ReferenceKey {
     scene: Scene,
     specular: SpecularModel,
     size: (u32, u32),
+    paths: Option<PathSettings>,
 }
 
 /// Which error map the difference view shows.
@@ -38,6 +44,19 @@ pub enum DifferenceKind {
     Flip,
     /// Where the lit/shadowed state disagrees with the reference (`image_error::ShadowPixel`).
     Shadow,
+    /// The chapter's constant ambient against the path-traced light between surfaces
+    /// ([`VIEWER_PATHS`]), both in f64: the signed error, blue too dark, red too bright.
+    Ambient,
+}
+
+/// The ambient error map's numbers: the error at its full colour, the truth's noise, and the
+/// `I_a` that fits the scene best beside the scene's own.
+#[derive(Clone, Copy, Debug)]
+pub struct AmbientFit {
+    pub scale: f64,
+    pub noise: f64,
+    pub fitted: [f64; 3],
+    pub ambient: [f64; 3],
 }
 
 /// The map on show: what it is of, its texture, its numbers (the shadow numbers with the
@@ -49,6 +68,7 @@ struct Shown {
     texture: egui::TextureHandle,
     stats: ErrorStats,
     shadow: Option<ShadowStats>,
+    ambient: Option<AmbientFit>,
 }
 
 /// A reference being traced: on a worker thread, or in the browser (no threads) a few rows a
@@ -87,6 +107,8 @@ pub struct DifferenceView {
     shown: Option<Shown>,
     /// Whether `shown` matches the state of the last update.
     current: bool,
+    /// Why the last reference could not be traced (shown in the legend).
+    pub error: Option<String>,
 }
 
 /// The comparison size for a view size.
@@ -107,6 +129,11 @@ impl DifferenceView {
     /// The shadow numbers of the map on show, if it is the current shadow error map.
     pub fn shadow_stats(&self) -> Option<ShadowStats> {
         self.shown.as_ref().filter(|_| self.current).and_then(|s| s.shadow)
+    }
+
+    /// The ambient error map's numbers, if it is the current map.
+    pub fn ambient_fit(&self) -> Option<AmbientFit> {
+        self.shown.as_ref().filter(|_| self.current).and_then(|s| s.ambient)
     }
 
     /// The size of the reference on hand, if any (the page's state publishes it).
@@ -141,7 +168,8 @@ impl DifferenceView {
         view_size: (u32, u32),
     ) -> Option<egui::TextureId> {
         let size = difference_size(view_size.0, view_size.1);
-        let key = ReferenceKey { scene: scene.clone(), specular: settings.specular, size };
+        let paths = (self.kind == DifferenceKind::Ambient).then_some(VIEWER_PATHS);
+        let key = ReferenceKey { scene: scene.clone(), specular: settings.specular, size, paths };
         self.current = false;
         if let Some(s) = &self.shown
             && s.key == key
@@ -175,19 +203,27 @@ impl DifferenceView {
         let reading = self.reading.take()?;
         let image = lit.ok()?;
         let cmp = image_error::compare(&image, &reference);
-        let (rgb, shadow) = match unshadowed.flatten() {
+        let (mut rgb, shadow) = match unshadowed.flatten() {
             None => (cmp.flip_map_rgb8, None),
             Some(unshadowed) => {
                 let s = image_error::shadow_disagreement(&image, &unshadowed.ok()?, &reference);
                 (s.map_rgb8(), Some(s.stats))
             }
         };
+        let mut stats = cmp.stats;
+        let ambient = if reading.kind == DifferenceKind::Ambient {
+            let (map, constant, fit) = ambient_map(&reference, scene.ambient)?;
+            (rgb, stats) = (map, constant);
+            Some(fit)
+        } else {
+            None
+        };
         let size = (image.width, image.height);
         let color = egui::ColorImage::from_rgb([size.0 as usize, size.1 as usize], &rgb);
         let texture = ctx.load_texture("difference from reference", color, egui::TextureOptions::LINEAR);
         let id = texture.id();
         let Reading { key, shading, kind, .. } = reading;
-        self.shown = Some(Shown { key, shading, kind, texture, stats: cmp.stats, shadow });
+        self.shown = Some(Shown { key, shading, kind, texture, stats, shadow, ambient });
         self.current = true;
         Some(id)
     }
@@ -222,7 +258,18 @@ impl DifferenceView {
         }
         if self.pending.is_none() && self.reference.as_ref().is_none_or(|(k, _)| k != key) {
             let (w, h) = key.size;
-            let job = ReferenceJob::new(scene, specular, w, h);
+            let job = match key.paths {
+                None => ReferenceJob::new(scene, specular, w, h),
+                Some(p) => match ReferenceJob::with_paths(scene, specular, w, h, p) {
+                    Ok(job) => job,
+                    Err(e) => {
+                        // Shown in the legend; the view keeps drawing the scene.
+                        self.error = Some(e);
+                        return;
+                    }
+                },
+            };
+            self.error = None;
             let tracing = if cfg!(target_arch = "wasm32") {
                 Tracing::Steps(Box::new(job), 0.0)
             } else {
@@ -283,6 +330,24 @@ impl DifferenceView {
         let _ = renderer.device.poll(wgpu::PollType::wait_indefinitely());
         Reading { key, shading: settings.shading, kind: self.kind, lit, unshadowed }
     }
+}
+
+/// The ambient error map: the chapter's constant ambient against the path-traced `truth`, both
+/// in f64 (`AmbientLadder`), as RGB8, with the constant image's error numbers and the fit.
+fn ambient_map(truth: &ReferenceImage, ambient: [f64; 3]) -> Option<(Vec<u8>, ErrorStats, AmbientFit)> {
+    let ladder = shadelab_model::reference::AmbientLadder::new(truth, ambient)?;
+    let constant = ladder.constant();
+    let error = ladder.error(&constant);
+    let scale = crate::ambient_views::map_scale(&error, &truth.object);
+    let map = crate::ambient_views::diverging_map(&error, &truth.object, scale, (truth.width, truth.height));
+    let image = shadelab_render::LinearImage {
+        width: truth.width,
+        height: truth.height,
+        pixels: constant.iter().map(|c| [c[0] as f32, c[1] as f32, c[2] as f32, 1.0]).collect(),
+    };
+    let stats = image_error::compare(&image, truth).stats;
+    let fit = AmbientFit { scale, noise: ladder.noise(), fitted: ladder.fitted_ambient(), ambient };
+    Some((map.to_srgb8(), stats, fit))
 }
 
 #[cfg(test)]

@@ -8,7 +8,7 @@
 
 mod blit;
 mod derive;
-mod difference;
+pub mod difference;
 mod files;
 mod link;
 mod loading;
@@ -284,6 +284,16 @@ impl Viewer {
     /// Show or hide the "difference from reference" view.
     pub fn set_difference_view(&mut self, on: bool) {
         self.difference.enabled = on;
+    }
+
+    /// Which map the difference view shows (its "error map" buttons).
+    pub fn set_difference_kind(&mut self, kind: difference::DifferenceKind) {
+        self.difference.kind = kind;
+    }
+
+    /// The ambient error map's numbers, once that map is current.
+    pub fn ambient_fit(&self) -> Option<difference::AmbientFit> {
+        self.difference.ambient_fit()
     }
 
     /// The share of the f64 reference traced so far, 0 to 1, while the difference view traces it.

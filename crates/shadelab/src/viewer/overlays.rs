@@ -90,7 +90,20 @@ pub(super) fn difference_legend(
     match difference.kind {
         DifferenceKind::Flip => magma_legend(painter, rect, &font),
         DifferenceKind::Shadow => shadow_legend(painter, rect, &font),
+        DifferenceKind::Ambient => ambient_legend(painter, rect, &font, difference.ambient_fit().map(|f| f.scale)),
     }
+    let against = if difference.kind == DifferenceKind::Ambient {
+        let p = crate::viewer::difference::VIEWER_PATHS;
+        format!(
+            "the chapter's constant I_a·r_a·C (f64) against the path-traced light between surfaces ({} bounces, {} paths a pixel)",
+            p.bounces, p.spp
+        )
+    } else {
+        "against the f64 reference of the exact surface".to_string()
+    };
+    let label = if difference.kind == DifferenceKind::Ambient { "path-traced truth" } else { "f64 reference" };
+    // The ambient map's longer heading takes its own line.
+    let sep = if difference.kind == DifferenceKind::Ambient { "\n" } else { " " };
     let text = match (difference.stats(), difference.computing()) {
         (Some(s), _) => {
             let time = match gpu_ms {
@@ -107,8 +120,15 @@ pub(super) fn difference_legend(
                 ),
                 None => String::new(),
             };
+            let fit = match difference.ambient_fit() {
+                Some(f) => format!(
+                    "\ntruth's noise {:.1e} · I_a that fits best [{:.3}, {:.3}, {:.3}], the scene's [{:.3}, {:.3}, {:.3}]",
+                    f.noise, f.fitted[0], f.fitted[1], f.fitted[2], f.ambient[0], f.ambient[1], f.ambient[2]
+                ),
+                None => String::new(),
+            };
             format!(
-                "{mode}{time}\nagainst the f64 reference of the exact surface: FLIP mean {:.4} · RMSE {:.2e} · max {:.3} · {:.1} % of pixels off by > 1/255{shadow}",
+                "{mode}{time}\n{against}:{sep}FLIP mean {:.4} · RMSE {:.2e} · max {:.3} · {:.1} % of pixels off by > 1/255{shadow}{fit}",
                 s.flip_mean,
                 s.rmse,
                 s.max_abs,
@@ -118,15 +138,15 @@ pub(super) fn difference_legend(
         (None, true) => match difference.progress() {
             // In the browser it is traced a few rows a frame, on the page's one thread.
             Some(p) if cfg!(target_arch = "wasm32") => {
-                format!("computing the f64 reference… {:.0} % (in this page's thread, a few rows a frame)", p * 100.0)
+                format!("computing the {label}… {:.0} % (in this page's thread, a few rows a frame)", p * 100.0)
             }
             Some(p) => {
                 let threads = shadelab_model::reference::reference_threads();
-                format!("computing the f64 reference… {:.0} % (on {threads} thread(s))", p * 100.0)
+                format!("computing the {label}… {:.0} % (on {threads} thread(s))", p * 100.0)
             }
-            None => "computing the f64 reference…".into(),
+            None => format!("computing the {label}…"),
         },
-        (None, false) => String::new(),
+        (None, false) => difference.error.clone().unwrap_or_default(),
     };
     painter.text(rect.left_top() + vec2(10.0, 8.0), egui::Align2::LEFT_TOP, text, font, Color32::WHITE);
 }
@@ -148,6 +168,25 @@ fn magma_legend(painter: &egui::Painter, rect: Rect, font: &egui::FontId) {
         font.clone(),
         Color32::WHITE,
     );
+}
+
+/// The ambient error map's scale at the view's bottom left: blue (too dark) through white to red
+/// (too bright), at ± its full colour when known.
+fn ambient_legend(painter: &egui::Painter, rect: Rect, font: &egui::FontId, scale: Option<f64>) {
+    let bar = Rect::from_min_size(pos2(rect.left() + 12.0, rect.bottom() - 34.0), vec2(256.0, 12.0));
+    let steps = 64;
+    for i in 0..steps {
+        let t = (i as f64 + 0.5) / steps as f64 * 2.0 - 1.0;
+        let map = crate::ambient_views::diverging_map(&[[t, t, t]], &[Some(0)], 1.0, (1, 1)).to_srgb8();
+        let x = bar.left() + i as f32 * bar.width() / steps as f32;
+        let r = Rect::from_min_max(pos2(x, bar.top()), pos2(x + bar.width() / steps as f32 + 0.5, bar.bottom()));
+        painter.rect_filled(r, 0.0, Color32::from_rgb(map[0], map[1], map[2]));
+    }
+    let s = scale.map_or(String::new(), |s| format!("{s:.3} "));
+    let left = format!("−{s}too dark");
+    painter.text(bar.left_bottom() + vec2(0.0, 2.0), egui::Align2::LEFT_TOP, left, font.clone(), Color32::WHITE);
+    let right = format!("too bright +{s}");
+    painter.text(bar.right_bottom() + vec2(0.0, 2.0), egui::Align2::RIGHT_TOP, right, font.clone(), Color32::WHITE);
 }
 
 /// The shadow error map's four colours, each with what it means, at the view's bottom left.

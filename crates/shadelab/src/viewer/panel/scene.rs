@@ -158,6 +158,25 @@ impl Viewer {
                      cyan missed shadow",
                 );
             });
+            // Its own row, so the panel keeps its width.
+            ui.horizontal(|ui| {
+                ui.label("against the truth");
+                let phong = self.scene.illumination == shadelab_model::IlluminationModel::Phong;
+                let r = ui.add_enabled(
+                    phong,
+                    egui::Button::selectable(self.difference.kind == DifferenceKind::Ambient, "ambient error"),
+                );
+                if r.clicked() {
+                    self.difference.kind = DifferenceKind::Ambient;
+                }
+                self.mark("ambient error", &r);
+                r.on_hover_text(
+                    "this image, with the chapter's constant ambient I_a·r_a·C, against the light that \
+                     really passes between the surfaces (path traced): blue too dark, red too bright, \
+                     with the I_a that fits the scene best",
+                )
+                .on_disabled_hover_text("only for the Phong illumination model, whose I_a stands for that light");
+            });
         }
     }
 }

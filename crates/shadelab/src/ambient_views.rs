@@ -11,6 +11,10 @@ use shadelab_model::Scene;
 use shadelab_model::reference::{AmbientLadder, PathSettings, ReferenceJob, ambient_occlusion};
 use shadelab_render::{LinearImage, RenderSettings};
 
+/// Rays a pixel of the ambient occlusion rung: its share's own noise is at most
+/// `√(1/4/64) = 6 %`, a few thousandths of the default scene's ambient term, under its error.
+pub const AO_RAYS: u32 = 64;
+
 /// The ladder of one view, each rung's time, and the occlusion it used.
 pub struct AmbientStudy {
     pub ladder: AmbientLadder,
@@ -44,7 +48,7 @@ pub fn ambient_study(
     // The chapter's image on its own, for its time: the exact reference with the constant ambient.
     let exact = ReferenceJob::new(scene, settings.specular, size.0, size.1);
     let (_, constant_ms) = timed(|| traced_with_progress(exact, "f64 reference", size.1));
-    let (ao, ao_ms) = timed(|| ambient_occlusion(scene, size.0, size.1, paths.spp, paths.seed));
+    let (ao, ao_ms) = timed(|| ambient_occlusion(scene, size.0, size.1, AO_RAYS, paths.seed));
     let ladder = AmbientLadder::new(&traced, scene.ambient).context("the path-traced image has no ambient terms")?;
     Ok(AmbientStudy { ladder, ao, paths, truth_ms, constant_ms, ao_ms, object: traced.object })
 }

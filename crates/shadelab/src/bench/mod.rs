@@ -2,6 +2,7 @@
 //! and the command; never asserted.
 
 pub mod accuracy;
+pub mod ambient;
 pub mod effects;
 pub mod glass;
 pub mod load;

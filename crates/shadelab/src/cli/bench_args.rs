@@ -189,3 +189,22 @@ pub struct BenchReferenceArgs {
           help = within("Timed runs of each row (the median is reported)", REFERENCE_RUNS))]
     pub runs: u32,
 }
+
+#[derive(Args, Debug)]
+pub struct BenchAmbientArgs {
+    #[command(flatten)]
+    pub scene: SceneArgs,
+    /// The image size [default: 320×180].
+    #[arg(long, default_value = "320", value_parser = values::count(params::WIDTH), help = within("Width in pixels", params::WIDTH))]
+    pub width: u32,
+    #[arg(long, default_value = "180", value_parser = values::count(params::HEIGHT), help = within("Height in pixels", params::HEIGHT))]
+    pub height: u32,
+    #[arg(long, default_value = "4", value_parser = values::count(params::BOUNCES),
+          help = within("Surface vertices a path has", params::BOUNCES))]
+    pub bounces: u32,
+    /// Paths a pixel of the truth every row is measured against; the path-traced rows take 1, 4,
+    /// 16, … paths, up to a quarter of it.
+    #[arg(long, default_value = "1024", value_parser = values::count(params::SPP),
+          help = within("Paths a pixel of the truth", params::SPP))]
+    pub truth_spp: u32,
+}

@@ -169,6 +169,10 @@ pub enum BenchCommand {
     /// What the f64 reference costs on a scene: its meshes' hierarchy (build time, memory) and
     /// the image on every core and on one.
     Reference(BenchReferenceArgs),
+    /// The chapter's constant ambient against the path-traced light between surfaces: the error
+    /// against a high-sample truth and the time of the constant I_a, the fitted I_a, ambient
+    /// occlusion and path tracing at 1, 4, 16, … paths a pixel.
+    Ambient(BenchAmbientArgs),
 }
 
 /// The scene and the parameters that override it (shared by `render` and `bench`).

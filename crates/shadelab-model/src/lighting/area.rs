@@ -322,54 +322,70 @@ type Sample = (DVec3, DVec3, f64);
 /// sampled at its centre.
 fn samples(light: &AreaLight, p: DVec3, k: usize) -> Vec<Sample> {
     let k = k.max(1);
-    let t = light.tangent;
-    let b = light.normal.cross(t);
     let mid = |i: usize| (i as f64 + 0.5) / k as f64;
-    let mut out = Vec::with_capacity(k * k);
+    let cells = (0..k).flat_map(|i| (0..k).map(move |j| (i, j)));
+    cells
+        .filter_map(|(i, j)| point_on(light, p, mid(i), mid(j)))
+        .map(|(x, normal, area)| (x, normal, area / (k * k) as f64))
+        .collect()
+}
+
+/// The point of the light's surface at parameters `(s, t)` in [0, 1)², its unit normal, and the
+/// area the parameters cover (uniform `(s, t)` is uniform over it): the rectangle's grid, the
+/// disk's rings equal in r² times sectors, and the cap of a sphere that `p` sees (rings equal
+/// in cos times sectors); `None` for a point inside a sphere light.
+fn point_on(light: &AreaLight, p: DVec3, s: f64, t: f64) -> Option<Sample> {
+    let tangent = light.tangent;
+    let b = light.normal.cross(tangent);
     match light.shape {
         AreaShape::Rect { half_x, half_y } => {
-            let da = 4.0 * half_x.abs() * half_y.abs() / (k * k) as f64;
-            for i in 0..k {
-                for j in 0..k {
-                    let at = light.center + t * ((2.0 * mid(i) - 1.0) * half_x) + b * ((2.0 * mid(j) - 1.0) * half_y);
-                    out.push((at, light.normal, da));
-                }
-            }
+            let at = light.center + tangent * ((2.0 * s - 1.0) * half_x) + b * ((2.0 * t - 1.0) * half_y);
+            Some((at, light.normal, 4.0 * half_x.abs() * half_y.abs()))
         }
         AreaShape::Disk { radius } => {
-            let da = PI * radius * radius / (k * k) as f64;
-            for i in 0..k {
-                let rho = radius * mid(i).sqrt();
-                for j in 0..k {
-                    let phi = TAU * mid(j);
-                    out.push((light.center + (t * phi.cos() + b * phi.sin()) * rho, light.normal, da));
-                }
-            }
+            let (rho, phi) = (radius * s.sqrt(), TAU * t);
+            Some((light.center + (tangent * phi.cos() + b * phi.sin()) * rho, light.normal, PI * radius * radius))
         }
         AreaShape::Sphere { radius } => {
             // Only the cap facing p can be seen from it: cos ψ ≥ r/d about the axis towards p.
             let to_p = p - light.center;
             let d = to_p.length();
             if d <= radius.abs() {
-                return out;
+                return None;
             }
             let axis = to_p / d;
             let u = if axis.x.abs() < 0.9 { DVec3::X } else { DVec3::Y }.cross(axis).normalize();
             let w = axis.cross(u);
             let c0 = radius.abs() / d;
-            let da = TAU * radius * radius * (1.0 - c0) / (k * k) as f64;
-            for i in 0..k {
-                let cos_psi = c0 + (1.0 - c0) * mid(i);
-                let sin_psi = (1.0 - cos_psi * cos_psi).max(0.0).sqrt();
-                for j in 0..k {
-                    let phi = TAU * mid(j);
-                    let normal = axis * cos_psi + (u * phi.cos() + w * phi.sin()) * sin_psi;
-                    out.push((light.center + normal * radius.abs(), normal, da));
-                }
-            }
+            let cos_psi = c0 + (1.0 - c0) * s;
+            let sin_psi = (1.0 - cos_psi * cos_psi).max(0.0).sqrt();
+            let phi = TAU * t;
+            let normal = axis * cos_psi + (u * phi.cos() + w * phi.sin()) * sin_psi;
+            Some((light.center + normal * radius.abs(), normal, TAU * radius * radius * (1.0 - c0)))
         }
     }
-    out
+}
+
+/// One point of the light drawn uniformly over the part of it `p` can see, at parameters
+/// `(s, t)` uniform in [0, 1)²: its position, the unit direction `l` to it and its weight
+/// `cos θ_l·A/r²`, whose mean over `(s, t)` is the light's E/L times the share `p` faces;
+/// `None` where `p` faces its back, touches it or is inside it.
+pub(crate) fn random_cell(light: &AreaLight, p: DVec3, s: f64, t: f64) -> Option<(DVec3, DVec3, f64)> {
+    let (x, nx, area) = point_on(light, p, s, t)?;
+    front_cell(p, x, nx, area)
+}
+
+/// A cell at `x` (unit normal `nx`, area `da`) as `p` sees it: the direction `l` to it and its
+/// weight `cos θ_l·da/r²`; `None` behind it or touching it.
+fn front_cell(p: DVec3, x: DVec3, nx: DVec3, da: f64) -> Option<(DVec3, DVec3, f64)> {
+    let to = x - p;
+    let r2 = to.length_squared();
+    if r2 <= LIGHT_DIST_MIN * LIGHT_DIST_MIN {
+        return None;
+    }
+    let l = to / r2.sqrt();
+    let cos_l = -nx.dot(l);
+    (cos_l > 0.0).then_some((x, l, cos_l * da / r2))
 }
 
 /// The reference: E/L = Σ cos θ_p⁺ cos θ_l⁺ / r² ΔA · V over `k`×`k` equal-area cells of the
@@ -399,16 +415,7 @@ fn seen_cells<'a>(
 /// The light's cells whose front `p` faces: each cell's point, the unit direction `l` to it and
 /// its weight cos θ_l ΔA / r², visible or not.
 pub(crate) fn front_cells(light: &AreaLight, p: DVec3, k: usize) -> impl Iterator<Item = (DVec3, DVec3, f64)> + use<> {
-    samples(light, p, k).into_iter().filter_map(move |(x, nx, da)| {
-        let to = x - p;
-        let r2 = to.length_squared();
-        if r2 <= LIGHT_DIST_MIN * LIGHT_DIST_MIN {
-            return None;
-        }
-        let l = to / r2.sqrt();
-        let cos_l = -nx.dot(l);
-        (cos_l > 0.0).then_some((x, l, cos_l * da / r2))
-    })
+    samples(light, p, k).into_iter().filter_map(move |(x, nx, da)| front_cell(p, x, nx, da))
 }
 
 /// The share of the light's E/L over `k`×`k` cells that reaches `p`, the cells `visible` hides

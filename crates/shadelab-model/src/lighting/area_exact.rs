@@ -4,7 +4,7 @@
 //! over the light's equal-area cells, refined until two refinements agree, and each part is
 //! shadowed by its own share of the light that reaches the point.
 
-use super::area::{AreaLight, area_irradiance_exact, front_cells};
+use super::area::{AreaLight, area_irradiance_exact, front_cells, random_cell};
 use super::brdf::{diffuse_weight, diffuse_weighted, light_specular};
 use super::shading::AreaAt;
 use crate::guards::LIGHT_DIST_MIN;
@@ -104,6 +104,37 @@ pub fn area_term_exact(a: &AreaAt, visible: Option<&dyn Fn(DVec3, DVec3) -> bool
     Some(AreaTerm { lit: term(share_d, share_s), clear: term(1.0, 1.0), error, cells: k, diffuse_share: share_d })
 }
 
+/// One random point's estimate of the same term: a point `(s, t)` drawn uniformly over the
+/// part of the light the point can see ([`random_cell`]), its integrand times that area, and
+/// binary visibility by `visible`. Its mean over `(s, t)` is the light's whole shadowed
+/// integral; the path tracer's bounces take it in place of the refined integral, which would
+/// cost some 10⁵ evaluations at every vertex. `None` as [`area_term_exact`].
+pub fn area_term_sampled(
+    a: &AreaAt,
+    visible: Option<&dyn Fn(DVec3, DVec3) -> bool>,
+    s: f64,
+    t: f64,
+) -> Option<AreaTerm> {
+    let area = a.light.area_light()?;
+    let d2 = (area.center - a.p).length_squared();
+    let emitting = area.emitting_area();
+    if d2 <= LIGHT_DIST_MIN * LIGHT_DIST_MIN || emitting <= 0.0 || !emitting.is_finite() {
+        return None;
+    }
+    let Some((x, l, w)) = random_cell(&area, a.p, s, t) else {
+        let none = [0.0; 3];
+        return Some(AreaTerm { lit: none, clear: none, error: 0.0, cells: 1, diffuse_share: 1.0 });
+    };
+    let dd = diffuse_weight(l, a.n, a.v, a.mat, a.specular) * a.n.dot(l).max(0.0) * w;
+    let spec = light_specular(l, a.n, a.v, a.mat, a.v_index, a.specular, a.ms_e).map(|x| x * w);
+    let (scale, mat, radiance) = (d2 / emitting, a.mat, a.sample.radiance);
+    let clear: [f64; 3] =
+        std::array::from_fn(|c| radiance[c] * scale * (mat.r_d * mat.color[c] * dd + mat.r_s * spec[c]));
+    let seen = visible.is_none_or(|v| clear == [0.0; 3] || v(a.p, x));
+    let lit = if seen { clear } else { [0.0; 3] };
+    Some(AreaTerm { lit, clear, error: 0.0, cells: 1, diffuse_share: if seen { 1.0 } else { 0.0 } })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -153,6 +184,47 @@ mod tests {
         }
         assert!(term.error < 1e-3 * term.lit[0] && term.cells >= 32, "{term:?}");
         assert_eq!(term.lit, term.clear);
+    }
+
+    /// The one-point estimate's mean over a fine grid of `(s, t)` is the refined integral, for
+    /// each shape, unshadowed and half shadowed.
+    #[test]
+    fn the_sampled_term_averages_to_the_integral() {
+        let v = DVec3::new(-0.5, 0.0, 0.9).normalize();
+        let mat = Material { m: 0.3, ..Material::default() };
+        for kind in [LightKind::Rect, LightKind::Disk, LightKind::Sphere] {
+            let c = DVec3::new(0.8, 0.1, 1.5);
+            let light = Light::area(kind, c, -c, [1.2, 0.8], [1.0; 3], 2.0, 0.1);
+            let s = light_sample(&light, DVec3::ZERO, DVec3::Z, v, mat.m);
+            let a = at(&light, &s, &mat, v);
+            let tangent = light.area_tangent();
+            let half = move |_: DVec3, x: DVec3| (x - c).dot(tangent) > 0.0;
+            for shadow in [None, Some(&half as &dyn Fn(DVec3, DVec3) -> bool)] {
+                let n = 256;
+                let mut mean = [0.0; 3];
+                for i in 0..n {
+                    for j in 0..n {
+                        let (u, w) = ((i as f64 + 0.5) / n as f64, (j as f64 + 0.5) / n as f64);
+                        let t = area_term_sampled(&a, shadow, u, w).unwrap();
+                        for ch in 0..3 {
+                            mean[ch] += t.lit[ch] / (n * n) as f64;
+                        }
+                    }
+                }
+                // The exact term's own shadow is each part's share of the light on its 16² grid,
+                // within a few thousandths of the integral for this half-plane occluder; without
+                // one, the two are the same integral (measured within 1e-4).
+                let exact = area_term_exact(&a, shadow).unwrap().lit;
+                let tolerance = if shadow.is_some() { 3e-3 } else { 2e-4 };
+                for ch in 0..3 {
+                    assert!(
+                        (mean[ch] - exact[ch]).abs() < tolerance * exact[ch],
+                        "{kind:?} {}: {mean:?} vs {exact:?}",
+                        shadow.is_some()
+                    );
+                }
+            }
+        }
     }
 
     /// A light a thousandth of a metre wide is its centre's point light, as drawn.

@@ -19,7 +19,7 @@ pub use path::{FIREFLY_MIN_SPP, FIREFLY_SHARE, PATH_COS_MIN, PathSettings};
 pub use shadow_rays::SHADOW_RAY_OFFSET_REL;
 
 use crate::Light;
-use crate::lighting::area_exact::area_term_exact;
+use crate::lighting::area_exact::{area_term_exact, area_term_sampled};
 use crate::lighting::area_points::area_emitter;
 use crate::lighting::shading::{AreaAt, ShadePoint, shade_exact};
 use crate::params::SpecularModel;
@@ -428,6 +428,21 @@ impl Context<'_> {
         footprint: Option<&UvFootprint>,
         material: Option<&Material>,
     ) -> Shaded {
+        self.shade_point(hit, eye, tinted, footprint, material, None)
+    }
+
+    /// [`Self::shade_hit`]; with `sampler`, each area light's term is one random point's
+    /// estimate of its integral (`area_term_sampled`, the path tracer's bounces) instead of the
+    /// refined integral.
+    fn shade_point(
+        &self,
+        hit: &intersect::SurfaceHit,
+        eye: glam::DVec4,
+        tinted: &mut [Material],
+        footprint: Option<&UvFootprint>,
+        material: Option<&Material>,
+        sampler: Option<&std::cell::RefCell<path::Rng>>,
+    ) -> Shaded {
         let scene = self.scene;
         let mi = scene.objects[hit.object].material;
         let base = material.unwrap_or(&scene.materials[mi]);
@@ -447,7 +462,16 @@ impl Context<'_> {
                 return None;
             }
             let shadow = a.light.shadow.casts.then_some(&visible as &dyn Fn(DVec3, DVec3) -> bool);
-            let term = area_term_exact(a, shadow)?;
+            let term = match sampler {
+                Some(rng) => {
+                    let (u, w) = {
+                        let mut rng = rng.borrow_mut();
+                        (rng.uniform(), rng.uniform())
+                    };
+                    area_term_sampled(a, shadow, u, w)?
+                }
+                None => area_term_exact(a, shadow)?,
+            };
             self.area_error.fetch_max(term.error.max(0.0).to_bits(), Ordering::Relaxed);
             let mut kept = clear.get();
             kept[a.index] = Some(term.clear);

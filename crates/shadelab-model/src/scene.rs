@@ -6,6 +6,7 @@
 
 mod builtin;
 mod camera;
+mod cornell;
 mod material;
 mod texture;
 
@@ -15,6 +16,10 @@ pub use builtin::{
     default_scene, penumbra_scene, single_shape_scene,
 };
 pub use camera::{COMPOSED_ASPECT, Camera};
+pub use cornell::{
+    CORNELL_FALLOFF, CORNELL_GREEN, CORNELL_LIGHT_CENTER, CORNELL_LIGHT_SIZE, CORNELL_RADIANCE, CORNELL_RED,
+    CORNELL_ROOM, CORNELL_WHITE, cornell_scene,
+};
 pub use material::{
     FresnelMix, Material, MaterialMaps, MetalRoughnessMap, NormalMap, OcclusionMap, SurfacePoint, emitted,
     metallic_scaled, normal_mapped, occluded, phong_h_from_m, roughness_scaled, tinted_surface, vertex_tint,

@@ -6,7 +6,8 @@ use crate::params::PhongExponent;
 use glam::DVec3;
 
 /// Names of the scenes compiled into the binary.
-pub const BUILTIN_SCENES: &[&str] = &["default", "sphere", "cylinder", "pyramid", "cube", "field", "penumbra", "glass"];
+pub const BUILTIN_SCENES: &[&str] =
+    &["default", "sphere", "cylinder", "pyramid", "cube", "field", "penumbra", "glass", "cornell"];
 
 impl Scene {
     /// A built-in scene by name (see [`BUILTIN_SCENES`]).
@@ -20,6 +21,7 @@ impl Scene {
             "field" => Some(field_scene()),
             "penumbra" => Some(penumbra_scene(PENUMBRA_PLATE_HEIGHT)),
             "glass" => Some(glass_scene()),
+            "cornell" => Some(super::cornell::cornell_scene()),
             _ => None,
         }
     }

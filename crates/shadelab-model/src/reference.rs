@@ -8,6 +8,8 @@ mod glass;
 mod intersect;
 mod path;
 #[cfg(test)]
+mod cornell_tests;
+#[cfg(test)]
 mod path_tests;
 mod shadow_rays;
 #[cfg(test)]

@@ -4,11 +4,11 @@
 
 mod ambient;
 mod bvh;
+#[cfg(test)]
+mod cornell_tests;
 mod glass;
 mod intersect;
 mod path;
-#[cfg(test)]
-mod cornell_tests;
 #[cfg(test)]
 mod path_tests;
 mod shadow_rays;

@@ -168,7 +168,8 @@ fn the_noise_estimate_matches_the_noise() {
 }
 
 /// The hard cases stay finite and non-negative: grazing light, a light on a surface, a
-/// zero-area triangle, the camera inside glass, glossy surfaces that make fireflies.
+/// zero-area triangle, the camera inside glass, glossy surfaces that make fireflies, area lights
+/// on a surface, edge-on to it and inside an object.
 #[test]
 fn hard_cases_stay_finite() {
     let ball = || object("ball", Shape::Sphere, DVec3::new(0.0, 0.5, 0.0), DVec3::splat(0.5));
@@ -176,6 +177,27 @@ fn hard_cases_stay_finite() {
         Light::directional(DVec3::new(1.0, -1e-12, 0.3), [1.0; 3], 1.0),
         Light::point(DVec3::new(0.0, 1.0, 0.0), [1.0; 3], 1.0, 0.0),
         Light::point(DVec3::ZERO, [1.0; 3], 1.0, 0.0),
+        // An area light lying on the ground, and one edge-on to it: the bounces' one-point
+        // estimate meets points on and beside its plane.
+        Light::area(crate::params::LightKind::Rect, DVec3::ZERO, DVec3::Y, [1.0, 1.0], [1.0; 3], 1.0, 0.0),
+        Light::area(
+            crate::params::LightKind::Disk,
+            DVec3::new(1.0, 0.5, 0.0),
+            DVec3::X,
+            [0.5, 0.5],
+            [1.0; 3],
+            1.0,
+            0.0,
+        ),
+        Light::area(
+            crate::params::LightKind::Sphere,
+            DVec3::new(0.0, 0.5, 0.0),
+            DVec3::Y,
+            [0.4, 0.4],
+            [1.0; 3],
+            1.0,
+            0.0,
+        ),
     ];
     let paths = PathSettings { bounces: 4, spp: 4, seed: 5 };
     for light in lights {

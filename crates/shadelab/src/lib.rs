@@ -2,8 +2,8 @@
 //! is a thin `main`; the modules live here so that tests can drive the viewer.
 
 // The command-line tools write files and plots; the browser build (`shadelab-web`) is the viewer.
-#[cfg(not(target_arch = "wasm32"))]
 pub mod ambient_views;
+#[cfg(not(target_arch = "wasm32"))]
 pub mod bench;
 pub mod cli;
 #[cfg(not(target_arch = "wasm32"))]

@@ -73,7 +73,8 @@ fn take(link: &mut Link, key: &str, value: &str) -> Result<(), String> {
             link.error_map = Some(match value {
                 "flip" => DifferenceKind::Flip,
                 "shadow" => DifferenceKind::Shadow,
-                _ => return Err(format!("error-map: '{value}' is not one of flip, shadow")),
+                "ambient" => DifferenceKind::Ambient,
+                _ => return Err(format!("error-map: '{value}' is not one of flip, shadow, ambient")),
             })
         }
         "difference" => match on_off(value) {
@@ -196,8 +197,10 @@ impl Viewer {
         }
         if self.difference.enabled {
             q.push(("difference".into(), "on".into()));
-            if self.difference.kind == DifferenceKind::Shadow {
-                q.push(("error-map".into(), "shadow".into()));
+            match self.difference.kind {
+                DifferenceKind::Flip => {}
+                DifferenceKind::Shadow => q.push(("error-map".into(), "shadow".into())),
+                DifferenceKind::Ambient => q.push(("error-map".into(), "ambient".into())),
             }
         }
         let on = [
@@ -228,6 +231,8 @@ mod tests {
         assert_eq!(l.term, Some(Term::Diffuse));
         assert_eq!(l.error_map, Some(DifferenceKind::Shadow));
         assert_eq!(l.switches, [("boundary", true)]);
+        assert_eq!(parse_query("difference=on&error-map=ambient").error_map, Some(DifferenceKind::Ambient));
+        assert_eq!(parse_query("error-map=sky").errors.len(), 1);
     }
 
     #[test]

@@ -314,6 +314,9 @@ impl DifferenceView {
         key: ReferenceKey,
     ) -> Reading {
         let size = key.size;
+        // The mode's own pipeline, built now if it is not yet: the uber pipeline that draws the
+        // view meanwhile is not what the map measures.
+        let background = std::mem::replace(&mut renderer.pipelines.build_in_background, false);
         let target = Target::new(&renderer.device, size.0, size.1, target::HDR_FORMAT);
         renderer.render(gpu_scene, scene, &target, settings);
         let lit = target::start_read_back(&renderer.device, &renderer.queue, &target);
@@ -326,6 +329,7 @@ impl DifferenceView {
             renderer.render(gpu_scene, &unshadowed_scene, &target, settings);
             target::start_read_back(&renderer.device, &renderer.queue, &target)
         });
+        renderer.pipelines.build_in_background = background;
         #[cfg(not(target_arch = "wasm32"))]
         let _ = renderer.device.poll(wgpu::PollType::wait_indefinitely());
         Reading { key, shading: settings.shading, kind: self.kind, lit, unshadowed }

@@ -106,7 +106,8 @@ impl Viewer {
         self.shadow_maps.update(ui.ctx(), &self.renderer, &self.gpu_scene, &drawn.scene);
         // Another picture in the view's place (an egui texture), or the scene itself.
         let mut shown = None;
-        let analytic = shadelab_model::scene_variants::is_analytic(&self.scene);
+        // The scenes the f64 reference renders: analytic shapes and file meshes within its limit.
+        let covered = shadelab_model::scene_variants::reference_covers(&self.scene);
         let factor = self.term == shadelab_model::terms::Term::Shadow;
         if factor {
             let ctx = ui.ctx().clone();
@@ -118,12 +119,12 @@ impl Viewer {
                 &self.settings,
                 (w, h),
             ));
-        } else if self.difference.enabled && analytic {
+        } else if self.difference.enabled && covered {
             let ctx = ui.ctx().clone();
             shown =
                 self.difference.update(&ctx, &mut self.renderer, &self.gpu_scene, &drawn.scene, &self.settings, (w, h));
         }
-        (shown, self.difference.enabled && analytic && !factor)
+        (shown, self.difference.enabled && covered && !factor)
     }
 
     /// Paint the view: `shown` or the scene itself, then the difference view's legend when

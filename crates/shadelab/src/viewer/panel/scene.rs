@@ -137,17 +137,19 @@ impl Viewer {
 
     /// The difference view's checkbox and, when it is on, which error map it shows.
     fn difference_ui(&mut self, ui: &mut egui::Ui) {
-        let analytic = shadelab_model::scene_variants::is_analytic(&self.scene);
-        let r =
-            ui.add_enabled(analytic, egui::Checkbox::new(&mut self.difference.enabled, "difference from reference"));
+        let covered = shadelab_model::scene_variants::reference_covers(&self.scene);
+        let r = ui.add_enabled(covered, egui::Checkbox::new(&mut self.difference.enabled, "difference from reference"));
         self.mark("difference", &r);
         r.on_hover_text(format!(
             "FLIP error map of this mode against the f64 ray-cast reference of the exact surface \
-                 (at most {} px wide), with RMSE and the GPU time; only for scenes of analytic shapes",
+                 (at most {} px wide), with RMSE and the GPU time",
             crate::viewer::difference::DIFFERENCE_MAX_WIDTH
         ))
-        .on_disabled_hover_text("only for scenes made of analytic shapes (the reference knows their exact surface)");
-        if self.difference.enabled && analytic {
+        .on_disabled_hover_text(format!(
+            "only for scenes of analytic shapes and file meshes of at most {} triangles in all",
+            shadelab_model::scene_variants::REFERENCE_MESH_TRIANGLES
+        ));
+        if self.difference.enabled && covered {
             ui.horizontal(|ui| {
                 ui.label("error map");
                 ui.selectable_value(&mut self.difference.kind, DifferenceKind::Flip, "FLIP error")

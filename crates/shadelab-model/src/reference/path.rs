@@ -16,7 +16,7 @@ use crate::Light;
 use crate::lighting::common::safe_normalize;
 use crate::lighting::shading::{ShadePoint, shade_exact};
 use crate::params::{PhongExponent, SpecularModel};
-use crate::scene::{BACKGROUND, Material};
+use crate::scene::Material;
 use glam::{DVec3, DVec4};
 use std::cell::RefCell;
 
@@ -148,8 +148,9 @@ impl Leaves for PathLeaves<'_> {
         light
     }
     fn background(&self) -> [f64; 3] {
-        // The background is the picture's, not an emitter: only the camera's paths see it.
-        if self.whole && self.depth == 1 { BACKGROUND } else { [0.0; 3] }
+        // The background is the picture's, not an emitter: a bounce that leaves brings nothing,
+        // and the camera's own view of it through glass is in the exact image already.
+        [0.0; 3]
     }
     fn glass_surface(&self, ctx: &Context, hit: &SurfaceHit, eye: DVec4, material: &Material) -> Shaded {
         if self.whole {
@@ -160,8 +161,9 @@ impl Leaves for PathLeaves<'_> {
     }
 }
 
-/// The indirect light at vertex `depth` of a path, seen from `from`: one bounce drawn with density
-/// `cos/π` about the shading normal, and the whole light that comes back along it.
+/// The indirect light at vertex `depth` of a path, seen from `from`: one bounce drawn from the
+/// mixture of `cos/π` about the shading normal and the specular lobe ([`LOBE_SHARE`]), and the
+/// whole light that comes back along it.
 fn indirect_at(ctx: &Context, leaves: &PathLeaves, hit: &SurfaceHit, from: DVec3, depth: u32) -> [f64; 3] {
     if depth >= leaves.paths.bounces {
         return [0.0; 3];

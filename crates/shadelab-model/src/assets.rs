@@ -118,6 +118,7 @@ pub fn figure_7_3_pyramid() -> Scene {
         illumination: Default::default(),
         textures: Vec::new(),
         background: Some(crate::scene::BACKGROUND),
+        environment: None,
     }
 }
 
@@ -171,6 +172,7 @@ pub fn gouraud_vs_phong() -> Scene {
         illumination: Default::default(),
         textures: Vec::new(),
         background: Some(crate::scene::BACKGROUND),
+        environment: None,
     }
 }
 
@@ -222,6 +224,7 @@ pub fn material_board() -> Scene {
         illumination: Default::default(),
         textures: Vec::new(),
         background: Some(crate::scene::BACKGROUND),
+        environment: None,
     }
 }
 

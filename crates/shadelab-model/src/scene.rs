@@ -138,6 +138,8 @@ pub struct Scene {
     /// where such pixels are black with alpha 0, so that the term images add up to the whole
     /// image everywhere once the background is composited under them.
     pub background: Option<[f64; 3]>,
+    /// The environment light, one at most (docs/environment.md); it adds to `I_amb`.
+    pub environment: Option<crate::lighting::env_map::Environment>,
 }
 
 /// Background colour (linear RGB): dark enough for highlights to stand out, not black, so a blank

@@ -293,6 +293,7 @@ fn empty_scene(name: String) -> Scene {
         illumination: Default::default(),
         textures: Vec::new(),
         background: Some(crate::scene::BACKGROUND),
+        environment: None,
     }
 }
 

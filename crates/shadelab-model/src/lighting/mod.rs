@@ -14,6 +14,10 @@
 //! - [`transmission`] ↔ `transmission.wgsl`: light through a surface (Snell, absorption, the
 //!   exits of the analytic shapes); the Fresnel factor from either side is [`microfacet`]'s.
 //!
+//! - [`environment`] ↔ `environment.wgsl`: an environment's diffuse light from nine SH
+//!   coefficients; [`env_map`] (the environment light, its radiance and sampling), [`sky`]
+//!   (Preetham's sky) and [`env_file`] (HDR and EXR maps) have no WGSL twin.
+//!
 //! `shadows.rs` and `shadows/cascades.rs` at the crate root are the twins of `shadow_math.wgsl`
 //! and `shadows.wgsl`; `scene/material.rs` and `scene/texture.rs` those of `surface.wgsl`.
 //! The test `every_wgsl_function_has_a_rust_twin` (in `shadelab-render`) holds the pairing.
@@ -23,9 +27,13 @@ pub mod area_exact;
 pub mod area_points;
 pub mod brdf;
 pub mod common;
+pub mod env_file;
+pub mod env_map;
+pub mod environment;
 pub mod lights;
 pub mod microfacet;
 pub mod models;
 pub mod multiscatter;
 pub mod shading;
+pub mod sky;
 pub mod transmission;

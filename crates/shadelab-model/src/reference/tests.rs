@@ -49,6 +49,7 @@ pub(super) fn stage(objects: Vec<Object>, lights: Vec<Light>) -> Scene {
         illumination: Default::default(),
         textures: Vec::new(),
         background: Some(crate::scene::BACKGROUND),
+        environment: None,
     }
 }
 

@@ -284,6 +284,7 @@ pub fn default_scene() -> Scene {
         illumination: Default::default(),
         textures: Vec::new(),
         background: Some(crate::scene::BACKGROUND),
+        environment: None,
     }
 }
 
@@ -348,5 +349,6 @@ pub fn single_shape_scene(name: &str, shape: Shape, tessellation: u32) -> Scene 
         illumination: Default::default(),
         textures: Vec::new(),
         background: Some(crate::scene::BACKGROUND),
+        environment: None,
     }
 }

@@ -98,5 +98,6 @@ pub fn cornell_scene() -> Scene {
         textures: Vec::new(),
         // The default background: a scene file keeps none, so a saved scene loads the same.
         background: Some(super::BACKGROUND),
+        environment: None,
     }
 }

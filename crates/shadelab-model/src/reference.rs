@@ -6,6 +6,8 @@ mod ambient;
 mod bvh;
 #[cfg(test)]
 mod cornell_tests;
+#[cfg(test)]
+mod env_tests;
 mod glass;
 mod intersect;
 mod path;
@@ -23,6 +25,7 @@ pub use shadow_rays::SHADOW_RAY_OFFSET_REL;
 use crate::Light;
 use crate::lighting::area_exact::{area_term_exact, area_term_sampled};
 use crate::lighting::area_points::area_emitter;
+use crate::lighting::env_map::EnvLight;
 use crate::lighting::shading::{AreaAt, ShadePoint, shade_exact};
 use crate::params::SpecularModel;
 use crate::scene::{Material, Scene, UvFootprint};
@@ -171,7 +174,8 @@ pub fn render_reference(scene: &Scene, specular: SpecularModel, width: u32, heig
 /// [`render_reference`].
 pub fn render_drawn(scene: &Scene, specular: SpecularModel, width: u32, height: u32) -> ReferenceImage {
     let mut img = ReferenceImage::empty(width, height, scene.background);
-    trace_rows(scene, &Geometry::new(scene), specular, &mut img, 0..height, false, None);
+    let env = scene.environment.as_ref().map(|e| e.bake(&scene.lights));
+    trace_rows(scene, &Geometry::new(scene), specular, &mut img, 0..height, false, None, env.as_ref());
     img
 }
 
@@ -186,6 +190,8 @@ pub struct ReferenceJob {
     /// With `paths`: the scene with `I_a = 1`, whose exact image gives each pixel's constant
     /// ambient term per unit of `I_a`.
     unit: Option<Scene>,
+    /// The scene's environment light, baked once.
+    env: Option<EnvLight>,
     img: ReferenceImage,
     next_row: u32,
 }
@@ -196,7 +202,8 @@ impl ReferenceJob {
         let scene = Scene { lights: exact, ..scene.clone() };
         let img = ReferenceImage::empty(width, height, scene.background);
         let geo = Geometry::new(&scene);
-        ReferenceJob { scene, geo, specular, paths: None, unit: None, img, next_row: 0 }
+        let env = scene.environment.as_ref().map(|e| e.bake(&scene.lights));
+        ReferenceJob { scene, geo, specular, paths: None, unit: None, env, img, next_row: 0 }
     }
 
     /// The scene's light between surfaces, path traced (`path.rs`): the exact direct light as
@@ -226,7 +233,8 @@ impl ReferenceJob {
     pub fn step(&mut self, rows: u32) -> bool {
         let end = self.next_row.saturating_add(rows).min(self.img.height);
         let paths = self.paths.as_ref().zip(self.unit.as_ref());
-        trace_rows(&self.scene, &self.geo, self.specular, &mut self.img, self.next_row..end, true, paths);
+        let env = self.env.as_ref();
+        trace_rows(&self.scene, &self.geo, self.specular, &mut self.img, self.next_row..end, true, paths, env);
         self.next_row = end;
         self.done()
     }
@@ -280,12 +288,14 @@ fn trace_rows(
     rows: std::ops::Range<u32>,
     exact: bool,
     paths: Option<(&PathSettings, &Scene)>,
+    env: Option<&EnvLight>,
 ) {
     let rays = ShadowRays::new(scene, geo);
-    let ctx = Context { scene, geo, rays: &rays, specular, exact, area_error: Default::default() };
+    let env_use = if paths.is_some() { EnvUse::Traced } else { EnvUse::Sh };
+    let ctx = Context { scene, geo, rays: &rays, specular, exact, env, env_use, area_error: Default::default() };
     let unit_rays = paths.map(|(_, unit)| ShadowRays::new(unit, geo));
     let unit_ctx = paths.zip(unit_rays.as_ref()).map(|((p, unit), rays)| {
-        (p, Context { scene: unit, geo, rays, specular, exact, area_error: Default::default() })
+        (p, Context { scene: unit, geo, rays, specular, exact, env, env_use, area_error: Default::default() })
     });
     // Rows on every core, each into its own buffer, appended in order: the same image as one
     // thread would trace.
@@ -382,8 +392,20 @@ struct Context<'a> {
     pub rays: &'a ShadowRays<'a>,
     pub specular: SpecularModel,
     pub exact: bool,
+    /// The scene's environment light, baked once per image.
+    pub env: Option<&'a EnvLight>,
+    /// How the environment shades: its nine SH terms (`Sh`, the model's own f64 twin), or traced
+    /// by the path tracer (`Traced`, the truth), where the exact direct light holds none of it.
+    pub env_use: EnvUse,
     /// The bits of a non-negative f64, whose order is theirs as integers.
     pub area_error: AtomicU64,
+}
+
+/// How a [`Context`] treats the environment light.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum EnvUse {
+    Sh,
+    Traced,
 }
 
 /// A point shaded with and without cast shadows, and the lights hidden from it.
@@ -453,7 +475,9 @@ impl Context<'_> {
         let emit = |c: [f64; 3]| -> [f64; 3] { std::array::from_fn(|i| c[i] + emission[i]) };
         let (rays, specular) = (self.rays, self.specular);
         let (hidden, dimmed) = (Cell::new(0u8), Cell::new(false));
-        let at = ShadePoint { p, n_in: n, eye, mat, ambient: scene.ambient, specular, model: scene.illumination };
+        let env_sh = self.env.filter(|_| self.env_use == EnvUse::Sh).map(|e| &e.sh);
+        let at =
+            ShadePoint { p, n_in: n, eye, mat, ambient: scene.ambient, env_sh, specular, model: scene.illumination };
         let ng = hit.geometric_normal;
         let visible = rays.cell_visible(ng);
         // An area light's exact term, shadowed; its unshadowed term kept for the image without

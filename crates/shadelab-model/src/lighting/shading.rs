@@ -6,6 +6,7 @@
 use super::area_points::{area_emitter, area_point_count, area_point_sample};
 use super::brdf::{SpecularModel, fresnel_v_from_mu, light_contribution};
 use super::common::safe_normalize;
+use super::environment::{ShCoefficients, env_sh_radiance};
 use super::lights::{Light, LightSample, MAX_LIGHTS, light_sample};
 use super::models::{IlluminationModel, lambert_rule_fill, lambert_rule_lit, sum_contribution, transmitted_term};
 use crate::scene::Material;
@@ -48,7 +49,7 @@ pub fn shade_with_visibility(
     model: IlluminationModel,
     visibility: impl FnMut(usize, &Light, u32, DVec3) -> f64,
 ) -> [f64; 3] {
-    let at = ShadePoint { p, n_in, eye, mat, ambient, specular, model };
+    let at = ShadePoint { p, n_in, eye, mat, ambient, env_sh: None, specular, model };
     shade_exact(&at, lights, visibility, &mut |_| None)
 }
 
@@ -59,6 +60,8 @@ pub struct ShadePoint<'a> {
     pub eye: DVec4,
     pub mat: &'a Material,
     pub ambient: [f64; 3],
+    /// The environment light's nine SH terms, where it is drawn by them (docs/environment.md).
+    pub env_sh: Option<&'a ShCoefficients>,
     pub specular: SpecularModel,
     pub model: IlluminationModel,
 }
@@ -90,7 +93,7 @@ pub fn shade_exact(
     mut visibility: impl FnMut(usize, &Light, u32, DVec3) -> f64,
     exact: &mut dyn FnMut(&AreaAt) -> Option<[f64; 3]>,
 ) -> [f64; 3] {
-    let ShadePoint { p, n_in, eye, mat, ambient, specular, model } = *at;
+    let ShadePoint { p, n_in, eye, mat, ambient, env_sh, specular, model } = *at;
     // The view vector: toward the eye (w = 1), or the orthographic camera's one direction (w = 0).
     let v = safe_normalize(eye.truncate() - p * eye.w, DVec3::Y);
     let n = safe_normalize(n_in, v);
@@ -105,6 +108,13 @@ pub fn shade_exact(
     let mut total = [0.0; 3];
     if model != IlluminationModel::Lambert {
         total = std::array::from_fn(|i| ambient[i] * mat.r_a * c[i]);
+        // The environment's diffuse light, the chapter's I_a made directional.
+        if let Some(sh) = env_sh {
+            let e = env_sh_radiance(sh, n);
+            for i in 0..3 {
+                total[i] += e[i] * mat.r_a * c[i];
+            }
+        }
     }
     // The Lambert rule's I: the brightest light at the point, per channel, in [0, 1].
     let mut i_max = [0.0f64; 3];

@@ -250,6 +250,8 @@ mod tests {
                         rays: &rays,
                         specular: SpecularModel::Phong,
                         exact: true,
+                        env: None,
+                        env_use: super::super::EnvUse::Sh,
                         area_error: Default::default(),
                     };
                     for k in 0..200 {

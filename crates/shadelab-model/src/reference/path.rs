@@ -161,48 +161,73 @@ impl Leaves for PathLeaves<'_> {
     }
 }
 
-/// The indirect light at vertex `depth` of a path, seen from `from`: one bounce drawn from the
-/// mixture of `cos/π` about the shading normal and the specular lobe ([`LOBE_SHARE`]), and the
-/// whole light that comes back along it.
+/// The indirect light at vertex `depth` of a path, seen from `from`: the environment's light at
+/// the vertex (when the scene has one), and one bounce drawn from the mixture of `cos/π` about
+/// the shading normal and the specular lobe ([`LOBE_SHARE`]), with the whole light that comes
+/// back along it.
 fn indirect_at(ctx: &Context, leaves: &PathLeaves, hit: &SurfaceHit, from: DVec3, depth: u32) -> [f64; 3] {
-    if depth >= leaves.paths.bounces {
+    let env = ctx.env.filter(|_| ctx.env_use == super::EnvUse::Traced);
+    if depth >= leaves.paths.bounces && env.is_none() {
         return [0.0; 3];
     }
     let scene = ctx.scene;
     let mi = scene.objects[hit.object].material;
-    let (u0, u1, u2) = {
+    // Two more numbers only with an environment, so a scene without one keeps its images.
+    let [u0, u1, u2, u3, u4] = {
         let mut rng = leaves.rng.borrow_mut();
-        (rng.uniform(), rng.uniform(), rng.uniform())
+        let mut u: [f64; 5] = std::array::from_fn(|k| if k < 3 { rng.uniform() } else { 0.0 });
+        if env.is_some() {
+            u[3] = rng.uniform();
+            u[4] = rng.uniform();
+        }
+        u
     };
     let p = hit.point;
-    let (term, w, density) = {
-        let mut tinted = leaves.tinted.borrow_mut();
-        let (n_in, mat, _) = ctx.surface(hit, &scene.materials[mi], &mut tinted[mi], false, None);
-        let n = safe_normalize(n_in, hit.geometric_normal);
-        // The mirror of the view about the normal, the axis of the specular lobe.
-        let v = safe_normalize(from - p, n);
-        let r = safe_normalize(n * (2.0 * n.dot(v)) - v, n);
-        let lobe = lobe_exponent(mat, ctx.specular);
-        let share = if lobe.is_some() { LOBE_SHARE } else { 0.0 };
-        let w = match lobe {
-            Some(e) if u0 < share => lobe_direction(r, e, u1, u2),
-            _ => cosine_direction(n, u1, u2),
-        };
-        let cos = w.dot(n);
-        if cos < PATH_COS_MIN {
-            return [0.0; 3];
-        }
-        let density = (1.0 - share) * cos / std::f64::consts::PI + lobe.map_or(0.0, |e| share * lobe_density(w, r, e));
-        (model_term_towards(ctx, p, n_in, from, mat, w), w, density)
-    };
-    if term == [0.0; 3] {
-        return [0.0; 3];
-    }
+    let mut tinted = leaves.tinted.borrow_mut();
+    let (n_in, mat, _) = ctx.surface(hit, &scene.materials[mi], &mut tinted[mi], false, None);
+    let n = safe_normalize(n_in, hit.geometric_normal);
+    // The mirror of the view about the normal, the axis of the specular lobe.
+    let v = safe_normalize(from - p, n);
+    let r = safe_normalize(n * (2.0 * n.dot(v)) - v, n);
+    let bounce = Bounce { n, r, lobe: lobe_exponent(mat, ctx.specular) };
     let ng = hit.geometric_normal;
-    let side = if ng.dot(w) >= 0.0 { 1.0 } else { -1.0 };
-    let o = p + ng * (side * super::SECONDARY_RAY_OFFSET * ctx.rays.scale);
-    let incoming = match trace(scene, ctx.geo, o, w) {
-        None => [0.0; 3],
+    let origin = |w: DVec3| {
+        let side = if ng.dot(w) >= 0.0 { 1.0 } else { -1.0 };
+        p + ng * (side * super::SECONDARY_RAY_OFFSET * ctx.rays.scale)
+    };
+    let mut out = [0.0; 3];
+    // The environment sampled by its own density, weighed against the bounce's (power heuristic).
+    if let Some(env) = env {
+        let (w, p_env) = env.sample(u3, u4);
+        if w.dot(n) >= PATH_COS_MIN && p_env > 0.0 {
+            let term = model_term_towards(ctx, p, n_in, from, mat, w);
+            if term != [0.0; 3] && trace(scene, ctx.geo, origin(w), w).is_none() {
+                let weight = power_heuristic(p_env, bounce.density(w));
+                let l = env.radiance(w);
+                for i in 0..3 {
+                    out[i] += term[i] * l[i] * weight / (std::f64::consts::PI * p_env);
+                }
+            }
+        }
+    }
+    let w = bounce.direction(u0, u1, u2);
+    let cos = w.dot(n);
+    if cos < PATH_COS_MIN {
+        return out;
+    }
+    let density = bounce.density(w);
+    let term = model_term_towards(ctx, p, n_in, from, mat, w);
+    drop(tinted);
+    if term == [0.0; 3] {
+        return out;
+    }
+    let incoming = match trace(scene, ctx.geo, origin(w), w) {
+        // A bounce that leaves meets the environment, weighed against its own sampling.
+        None => env.map_or([0.0; 3], |e| {
+            let weight = power_heuristic(density, e.pdf(w));
+            e.radiance(w).map(|l| l * weight)
+        }),
+        Some(_) if depth >= leaves.paths.bounces => [0.0; 3],
         Some(next) => {
             let whole = PathLeaves { depth: depth + 1, whole: true, ..*leaves };
             if scene.drawn_as_glass(next.object) {
@@ -213,7 +238,41 @@ fn indirect_at(ctx: &Context, leaves: &PathLeaves, hit: &SurfaceHit, from: DVec3
         }
     };
     // term·L_i·dω/π over the density of ω.
-    std::array::from_fn(|i| term[i] * incoming[i] / (std::f64::consts::PI * density))
+    for i in 0..3 {
+        out[i] += term[i] * incoming[i] / (std::f64::consts::PI * density);
+    }
+    out
+}
+
+/// Veach's power heuristic: the weight of a sample drawn with density `a` where the other
+/// strategy's density is `b`.
+fn power_heuristic(a: f64, b: f64) -> f64 {
+    let (a2, b2) = (a * a, b * b);
+    if a2 + b2 > 0.0 { a2 / (a2 + b2) } else { 0.0 }
+}
+
+/// A bounce's sampling at one vertex: the mixture of `cos/π` about `n` and the lobe about `r`.
+struct Bounce {
+    n: DVec3,
+    r: DVec3,
+    lobe: Option<f64>,
+}
+
+impl Bounce {
+    fn share(&self) -> f64 {
+        if self.lobe.is_some() { LOBE_SHARE } else { 0.0 }
+    }
+    fn direction(&self, u0: f64, u1: f64, u2: f64) -> DVec3 {
+        match self.lobe {
+            Some(e) if u0 < self.share() => lobe_direction(self.r, e, u1, u2),
+            _ => cosine_direction(self.n, u1, u2),
+        }
+    }
+    fn density(&self, w: DVec3) -> f64 {
+        let share = self.share();
+        (1.0 - share) * w.dot(self.n).max(0.0) / std::f64::consts::PI
+            + self.lobe.map_or(0.0, |e| share * lobe_density(w, self.r, e))
+    }
 }
 
 /// The model's term (cosine included) at `p` seen from `from` for a unit light arriving from unit
@@ -226,6 +285,7 @@ fn model_term_towards(ctx: &Context, p: DVec3, n: DVec3, from: DVec3, mat: &Mate
         eye: from.extend(1.0),
         mat,
         ambient: [0.0; 3],
+        env_sh: None,
         specular: ctx.specular,
         model: ctx.scene.illumination,
     };

@@ -103,6 +103,7 @@ fn glossy_bounces_converge_to_the_albedo_integral() {
                     eye: o.extend(1.0),
                     mat: &material,
                     ambient: [0.0; 3],
+                    env_sh: None,
                     specular,
                     model: scene.illumination,
                 };

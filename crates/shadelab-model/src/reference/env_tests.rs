@@ -1,0 +1,117 @@
+//! Tests of the environment light in the reference: its nine SH terms stand in for `I_a` exactly
+//! where the environment is uniform, and the path tracer's sampling of it (the environment's own
+//! density and the bounce's, weighed by multiple importance sampling) meets the closed forms of
+//! an open plane under a uniform sky and under one bright texel.
+
+use super::tests::{all_finite, object, stage};
+use super::*;
+use crate::lighting::env_map::{EnvImage, EnvSource, Environment};
+use crate::scene::Shape;
+use glam::DVec3;
+use std::sync::Arc;
+
+fn image(w: u32, h: u32, f: impl Fn(u32, u32) -> [f32; 3]) -> EnvSource {
+    let texels = (0..h).flat_map(|y| (0..w).map(move |x| (x, y))).map(|(x, y)| f(x, y)).collect();
+    EnvSource::Image(Arc::new(EnvImage { name: "test".into(), width: w, height: h, texels }))
+}
+
+fn lit_by(scene: &Scene, source: EnvSource) -> Scene {
+    Scene { ambient: [0.0; 3], environment: Some(Environment::new(source)), ..scene.clone() }
+}
+
+/// A 1×1 environment, or a uniform one, is the uniform ambient it stands for: the exact
+/// reference (the SH terms) gives the image of `I_a` = its colour, to rounding.
+#[test]
+fn a_one_texel_environment_is_the_uniform_ambient() {
+    let scene = Scene::builtin("default").unwrap();
+    let l = [0.12, 0.09, 0.05];
+    let want = render_reference(&Scene { ambient: l, ..scene.clone() }, SpecularModel::CookTorrance, 48, 27);
+    for source in [EnvSource::Uniform(l), image(1, 1, |_, _| l.map(|v| v as f32))] {
+        let name = source.name();
+        let got = render_reference(&lit_by(&scene, source), SpecularModel::CookTorrance, 48, 27);
+        for (g, w) in got.pixels.iter().zip(&want.pixels) {
+            for c in 0..3 {
+                assert!((g[c] - w[c]).abs() <= 1e-7 * w[c].max(1.0), "{name}: {g:?} against {w:?}");
+            }
+        }
+    }
+}
+
+/// A black environment adds nothing to the exact reference.
+#[test]
+fn a_black_environment_adds_nothing() {
+    let scene = Scene { ambient: [0.0; 3], ..Scene::builtin("default").unwrap() };
+    let want = render_reference(&scene, SpecularModel::Phong, 32, 18);
+    let got = render_reference(&lit_by(&scene, EnvSource::Uniform([0.0; 3])), SpecularModel::Phong, 32, 18);
+    assert_eq!(got.pixels, want.pixels);
+}
+
+/// An open diffuse plane with no lights: every pixel on it is `r_d·C·E/π` for the environment's
+/// irradiance `E`, the mean of `spp` paths within four standard errors.
+fn plane_under(source: EnvSource, spp: u32) -> (Vec<[f64; 3]>, ReferenceImage) {
+    let mut scene = stage(vec![], vec![]);
+    scene.objects = vec![object("ground", Shape::Plane, DVec3::ZERO, DVec3::new(40.0, 1.0, 40.0))];
+    scene.materials = vec![Material { color: [0.6, 0.5, 0.4], r_d: 1.0, r_a: 1.0, r_s: 0.0, ..Material::default() }];
+    let scene = lit_by(&scene, source);
+    let paths = PathSettings { bounces: 1, spp, seed: 3 };
+    let mut job = ReferenceJob::with_paths(&scene, SpecularModel::Phong, 16, 9, paths).unwrap();
+    job.step(9);
+    let img = job.finish();
+    let on_plane = img.pixels.iter().zip(&img.object).filter(|(_, o)| o.is_some()).map(|(p, _)| *p).collect();
+    (on_plane, img)
+}
+
+fn assert_mean(pixels: &[[f64; 3]], want: [f64; 3], img: &ReferenceImage, what: &str) {
+    assert!(!pixels.is_empty() && all_finite(img), "{what}");
+    let k = pixels.len() as f64;
+    for c in 0..3 {
+        let mean = pixels.iter().map(|p| p[c]).sum::<f64>() / k;
+        let se = (img.std_error.iter().map(|e| e[c] * e[c]).sum::<f64>() / k).sqrt() / k.sqrt();
+        assert!((mean - want[c]).abs() <= 4.0 * se + 1e-12, "{what} channel {c}: {mean} against {want:?} (σ {se})");
+    }
+}
+
+/// Under a uniform environment `L` the plane's truth is `r_d·C·L`: the environment's samples and
+/// the bounces' escapes add up to it, neither counted twice.
+#[test]
+fn a_uniform_sky_over_a_plane_gives_its_ambient() {
+    let l = [0.3, 0.2, 0.1];
+    let (pixels, img) = plane_under(EnvSource::Uniform(l), 64);
+    assert_mean(&pixels, [0.6 * l[0], 0.5 * l[1], 0.4 * l[2]], &img, "uniform");
+}
+
+/// One bright texel in a black map: the plane's truth is `r_d·C·L·∫cos dω/π` over the texel's
+/// cell, found by the environment's own samples (a bounce hardly ever meets so small a cell).
+#[test]
+fn a_single_bright_texel_is_found() {
+    let (w, h, hot) = (16u32, 8u32, (5u32, 2u32));
+    let l = 40.0f32;
+    let (pixels, img) = plane_under(image(w, h, |x, y| if (x, y) == hot { [l; 3] } else { [0.0; 3] }), 32);
+    let t = |r: u32| std::f64::consts::PI * f64::from(r) / f64::from(h);
+    let (m0, m1) = (t(hot.1 + 1).cos(), t(hot.1).cos());
+    let cos_integral = (m1 * m1 - m0 * m0) / 2.0 * std::f64::consts::TAU / f64::from(w);
+    let e = f64::from(l) * cos_integral / std::f64::consts::PI;
+    assert_mean(&pixels, [0.6 * e, 0.5 * e, 0.4 * e], &img, "one texel");
+}
+
+/// Hard cases stay finite: a sun at the horizon, a black map, a single texel of 10⁶, each over
+/// the default scene with its shadows and glass-free objects, three bounces.
+#[test]
+fn hard_environments_stay_finite() {
+    let scene = Scene::builtin("default").unwrap();
+    for source in [
+        EnvSource::Sky { turbidity: 2.0, sun: Some(DVec3::X) },
+        EnvSource::Sky { turbidity: 10.0, sun: Some(DVec3::new(0.0, -1.0, 0.2)) },
+        image(8, 4, |_, _| [0.0; 3]),
+        image(8, 4, |x, y| if (x, y) == (3, 1) { [1e6; 3] } else { [0.0; 3] }),
+    ] {
+        let name = format!("{source:?}").chars().take(60).collect::<String>();
+        let lit = lit_by(&scene, source);
+        let exact = render_reference(&lit, SpecularModel::CookTorrance, 24, 14);
+        assert!(all_finite(&exact), "{name}");
+        let paths = PathSettings { bounces: 3, spp: 2, seed: 5 };
+        let mut job = ReferenceJob::with_paths(&lit, SpecularModel::CookTorrance, 24, 14, paths).unwrap();
+        job.step(14);
+        assert!(all_finite(&job.finish()), "{name}");
+    }
+}

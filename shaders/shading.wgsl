@@ -36,6 +36,12 @@ fn shade(p: vec3<f32>, n_in: vec3<f32>, surface: Surface, pixel: vec2<f32>) -> v
 #if EFFECT_AMBIENT
     total += globals.ambient.rgb * surface.r_a * c;
 #endif
+#if EFFECT_ENVIRONMENT_SH
+    // The environment's diffuse light, the chapter's I_a made directional.
+    if (globals.illumination != ILLUMINATION_LAMBERT) {
+        total += env_sh_radiance(n) * surface.r_a * c;
+    }
+#endif
     // The Lambert rule's I: the brightest light at the point, per channel, in [0, 1] (model_term
     // raises it; without the rule it stays 0, unread).
     var i_max = vec3(0.0);

@@ -21,6 +21,8 @@ struct Globals {
     // The multiple-scattering compensation's table (multiscatter.rs's ms_table), four floats a
     // slot; zero unless a material uses it.
     ms_albedo: array<vec4<f32>, MS_TABLE_VEC4S>,
+    // The environment's nine SH coefficients (rgb; environment.wgsl); zero without one.
+    env_sh: array<vec4<f32>, 9>,
 }
 
 struct Object {

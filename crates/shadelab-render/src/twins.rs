@@ -10,7 +10,7 @@ use shadelab_model::params::NamedValue;
 use shadelab_model::{FalloffForm, IlluminationModel, LightKind, SpecularModel};
 
 /// Each WGSL file and the source of its f64 twin.
-const TWINS: [(&str, &str); 19] = [
+const TWINS: [(&str, &str); 20] = [
     ("common.wgsl", include_str!("../../shadelab-model/src/lighting/common.rs")),
     ("brdf.wgsl", include_str!("../../shadelab-model/src/lighting/brdf.rs")),
     ("microfacet.wgsl", include_str!("../../shadelab-model/src/lighting/microfacet.rs")),
@@ -41,6 +41,7 @@ const TWINS: [(&str, &str); 19] = [
     ("bindings.wgsl", ""),
     // The table lookup of the compensation.
     ("ms_table.wgsl", include_str!("../../shadelab-model/src/lighting/multiscatter.rs")),
+    ("environment.wgsl", include_str!("../../shadelab-model/src/lighting/environment.rs")),
     (
         "shadows.wgsl",
         concat!(
@@ -289,6 +290,11 @@ fn wgsl_codes_equal_rust_codes() {
     assert_eq!(wgsl_constant(&lighting, "MS_PAIRS"), Some(MS_PAIRS as f64));
     assert_eq!(wgsl_constant(&lighting, "MS_TABLE_VEC4S"), Some(MS_TABLE_VEC4S as f64));
     assert!(MS_PAIRS * MS_TABLE_SIDE * MS_TABLE_SIDE <= 4 * MS_TABLE_VEC4S);
+    // The SH basis's factors, as environment.rs writes them, to f32.
+    use shadelab_model::lighting::environment::{SH_Y0, SH_Y1, SH_Y2, SH_Y20, SH_Y22};
+    for (name, v) in [("SH_Y0", SH_Y0), ("SH_Y1", SH_Y1), ("SH_Y2", SH_Y2), ("SH_Y20", SH_Y20), ("SH_Y22", SH_Y22)] {
+        assert_eq!(wgsl_constant(&lighting, name), Some(v as f32 as f64), "{name}: WGSL vs environment.rs");
+    }
     // Codes are distinct within a kind.
     for prefix in ["LIGHT_", "FALLOFF_", "SPECULAR_", "ILLUMINATION_", "DISTRIBUTION_", "MASKING_", "FRESNEL_"] {
         let mut codes: Vec<u32> = rust.iter().filter(|(n, _)| n.starts_with(prefix)).map(|(_, c)| *c).collect();

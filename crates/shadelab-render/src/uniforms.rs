@@ -55,6 +55,8 @@ pub struct GlobalsUniform {
     /// The multiple-scattering compensation's table (`multiscatter::ms_table_vec4s`); zero when
     /// no material uses it, so a scene without it never computes the table.
     pub ms_albedo: [[f32; 4]; MS_TABLE_VEC4S],
+    /// The environment's nine SH coefficients (`Environment::sh`); zero without one.
+    pub env_sh: [[f32; 4]; 9],
 }
 
 #[repr(C)]
@@ -230,6 +232,7 @@ impl GlobalsUniform {
             } else {
                 [[0.0; 4]; MS_TABLE_VEC4S]
             },
+            env_sh: scene.environment.as_ref().map_or([[0.0; 4]; 9], |e| e.sh(&scene.lights).map(|c| rgb(c, 0.0))),
         }
     }
 }

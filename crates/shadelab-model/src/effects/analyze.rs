@@ -226,6 +226,21 @@ fn decide_ambient_and_sum(a: &mut Analysis, scene: &Scene, used: &[&crate::scene
             format!("I_amb = {amb} and some material has r_a > 0")
         },
     );
+    let env = scene.environment.as_ref();
+    a.decide(
+        Effect::EnvironmentSh,
+        model != IlluminationModel::Lambert && env.is_some() && max_ra > 0.0,
+        match env {
+            None => "no environment light".into(),
+            Some(_) if model == IlluminationModel::Lambert => {
+                "the Lambert rule has no I_amb for it to stand for".into()
+            }
+            Some(_) if max_ra <= 0.0 => "an environment, but every material has r_a = 0".into(),
+            Some(e) => {
+                format!("the scene has an environment light ({}) and some material has r_a > 0", e.source.name())
+            }
+        },
+    );
     a.decide(Effect::LambertRule, model == IlluminationModel::Lambert, format!("the illumination model is {model}"));
     let sum = model == IlluminationModel::Sum;
     a.decide(

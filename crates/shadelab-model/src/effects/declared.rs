@@ -204,6 +204,16 @@ declare_effects! {
         functions: &[],
         members: &[("Globals", "ambient")],
     },
+    /// The environment light's diffuse term `r_a·C·E(n)/π` from nine SH coefficients
+    /// (docs/environment.md).
+    EnvironmentSh {
+        explain: "environment diffuse r_a·C·E(n)/π from nine SH terms",
+        name: "environment",
+        label: "env-sh",
+        define: Some("EFFECT_ENVIRONMENT_SH"),
+        functions: &["env_sh_radiance"],
+        members: &[("Globals", "env_sh")],
+    },
     /// The Lambert rule's lit part and fill (docs/model.md §1), the illumination model
     /// `IlluminationModel::Lambert`.
     LambertRule {

@@ -1,0 +1,78 @@
+//! The environment light on lavapipe (docs/environment.md): its nine SH terms drawn by the GPU
+//! against their f64 twin on a sky, and a 1×1 map against the uniform ambient it stands for.
+
+use shadelab_model::lighting::env_map::{EnvImage, EnvSource, Environment};
+use shadelab_model::reference::render_reference;
+use shadelab_model::scene::Scene;
+use shadelab_model::{ShadingMode, SpecularModel};
+use shadelab_render::{LinearImage, RenderSettings, render_image};
+use shadelab_tests::{error, gpu, interior};
+use std::sync::Arc;
+
+const W: u32 = 240;
+const H: u32 = 135;
+
+fn draw(scene: &Scene) -> LinearImage {
+    render_image(gpu(), scene, W, H, &RenderSettings::new(ShadingMode::Phong, SpecularModel::CookTorrance)).unwrap()
+}
+
+fn lit_by(scene: &Scene, source: EnvSource) -> Scene {
+    Scene { ambient: [0.0; 3], environment: Some(Environment::new(source)), ..scene.clone() }
+}
+
+/// A 1×1 map of `I_a`'s colour draws the default scene as `I_a` does, to f32 rounding: the
+/// environment's effect replaces the ambient's and gives the same light.
+#[test]
+fn a_one_texel_map_draws_the_uniform_ambient() {
+    let scene = Scene::builtin("default").unwrap();
+    let a = scene.ambient;
+    let one = EnvImage { name: "1×1".into(), width: 1, height: 1, texels: vec![a.map(|v| v as f32)] };
+    let env = draw(&lit_by(&scene, EnvSource::Image(Arc::new(one))));
+    let constant = draw(&scene);
+    let worst = env
+        .pixels
+        .iter()
+        .zip(&constant.pixels)
+        .flat_map(|(p, q)| (0..3).map(move |c| (p[c] - q[c]).abs()))
+        .fold(0.0f32, f32::max);
+    eprintln!("1×1 map against I_a: max |difference| {worst:.2e}");
+    assert!(worst < 1e-5, "{worst}");
+}
+
+/// Under the sky alone (no other light) the GPU's SH diffuse matches the f64 reference (the same
+/// nine terms) on every object's interior pixels as closely as a point light does on a fine
+/// sphere, and the sky changes the image by far more than that. The shapes are tessellated
+/// finely: the sky's light turns with the normal, and a coarse mesh's normals are not the
+/// reference's exact ones.
+#[test]
+fn the_sky_on_the_gpu_matches_its_f64_twin() {
+    // Without cast shadows, whose map edges are not what this compares.
+    let mut scene = Scene::builtin("default").unwrap();
+    scene.set_shadows(false);
+    let sun = glam::DVec3::new(0.5, 0.5, 0.3);
+    scene.lights.clear();
+    for o in &mut scene.objects {
+        o.tessellation = 256;
+    }
+    let sky = lit_by(&scene, EnvSource::Sky { turbidity: 3.0, sun: Some(sun) });
+    let img = draw(&sky);
+    let reference = render_reference(&sky, SpecularModel::CookTorrance, W, H);
+    let plain = draw(&Scene { ambient: [0.0; 3], ..scene.clone() });
+    // The ground and the spheres: the shapes whose meshes stability.rs bounds against the exact
+    // surfaces (the cylinder's side meets its caps in a crease the mesh rounds off).
+    let bounded = |name: &str| name == "ground" || name.starts_with("sphere");
+    for object in (0..scene.objects.len()).filter(|&o| bounded(&scene.objects[o].name)) {
+        let pixels = interior(&reference, object);
+        assert!(!pixels.is_empty(), "{}", scene.objects[object].name);
+        let (mean, max, worst) = error(&img, &reference, &pixels);
+        let apart = pixels
+            .iter()
+            .map(|&(x, y)| (0..3).map(|c| (img.get(x, y)[c] - plain.get(x, y)[c]).abs()).fold(0.0, f32::max))
+            .fold(0.0, f32::max);
+        let name = &scene.objects[object].name;
+        eprintln!("{name}: mean |error| {mean:.2e}, max {max:.2e} at {worst:?}; the sky adds up to {apart:.2e}");
+        // A point light's thresholds on a fine sphere (stability.rs).
+        assert!(mean < 1e-4 && max < 4e-3, "{name}: mean {mean}, max {max}");
+        assert!(apart > 0.02, "{name}: the sky adds only {apart}");
+    }
+}

@@ -295,6 +295,30 @@ case("points-only.gltf", "a mesh of points only: nothing to show", "the scene ha
      edited(lambda d: d["meshes"][0]["primitives"][0].update(mode=0)))
 
 
+def with_environment(env):
+    return edited(lambda d: d["scenes"][0].update(extras={"shadelab": {"environment": env}}))
+
+
+def hdr_uri(data):
+    return "data:image/vnd.radiance;base64," + base64.b64encode(data).decode()
+
+
+HDR_HEAD = b"#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n"
+case("env-huge-declared.gltf", "an environment map whose HDR header declares 100000 × 100000 texels",
+     "100000×100000 texels, outside 1..=8192 per side (MAX_ENV_SIDE)",
+     with_environment({"source": "image", "uri": hdr_uri(HDR_HEAD + b"-Y 100000 +X 100000\n")}))
+case("env-truncated-hdr.gltf", "an environment map whose HDR data stops after 3 of 8 texels",
+     "extras.shadelab.environment: environment map (a data URI): ",
+     with_environment({"source": "image", "uri": hdr_uri(HDR_HEAD + b"-Y 2 +X 4\n" + bytes([128, 64, 32, 129]) * 3)}))
+case("env-not-a-map.gltf", "an environment map that is a PNG", "is not a radiance map",
+     with_environment({"source": "image", "uri": "data:image/png;base64," + base64.b64encode(png_header(2, 1)).decode()}))
+case("env-image-without-uri.gltf", "an image environment without its uri", "source \"image\" needs a uri",
+     with_environment({"source": "image"}))
+case("env-turbidity-out-of-range.gltf", "a sky of turbidity 40",
+     "extras.shadelab.environment = ",
+     with_environment({"source": "sky", "turbidity": 40}))
+
+
 def main():
     for f in os.listdir(HERE):
         if f.endswith((".gltf", ".glb")):

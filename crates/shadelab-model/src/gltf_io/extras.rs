@@ -100,6 +100,14 @@ ranges! {
     PcssTaps = crate::shadows::PCSS_TAPS;
     /// A light's shadow map side in texels.
     ShadowSide = crate::shadows::SHADOW_RESOLUTION;
+    /// A uniform environment's radiance.
+    EnvRadiance = crate::lighting::env_map::ENV_RADIANCE;
+    /// The sky's turbidity.
+    Turbidity = crate::lighting::sky::TURBIDITY;
+    /// The environment's intensity.
+    EnvIntensity = crate::lighting::env_map::ENV_INTENSITY;
+    /// The environment's turn, degrees.
+    EnvRotation = crate::lighting::env_map::ENV_ROTATION;
 }
 
 /// What a field in `R`'s range takes, for the error line.

@@ -68,6 +68,7 @@ mod accessors;
 mod cameras;
 mod confine;
 mod container;
+mod environment;
 mod extras;
 mod lights;
 mod materials;

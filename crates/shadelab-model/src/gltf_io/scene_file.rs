@@ -47,6 +47,9 @@ struct SceneExtras {
     /// How transparent objects absorb; absent is the chapter's rule.
     #[serde(skip_serializing_if = "Option::is_none")]
     absorption: Option<Named<crate::lighting::transmission::AbsorptionChoice>>,
+    /// The environment light; absent: none.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    environment: Option<super::environment::EnvironmentExtras>,
 }
 
 /// Read a scene file (`.gltf` or `.glb`; external buffers and images inside the file's folder).
@@ -220,6 +223,9 @@ impl Reader<'_> {
             if let Some(a) = ex.absorption {
                 scene.absorption = a.0;
             }
+            if let Some(e) = ex.environment {
+                scene.environment = Some(super::environment::read_environment(&mut self.cx, e, self.externals)?);
+            }
         }
 
         let mut camera_nodes = Vec::new();
@@ -358,6 +364,7 @@ fn document(scene: &Scene, settings: &SceneSettings) -> (Value, Vec<u8>) {
         specular: settings.specular.map(Named),
         illumination: (scene.illumination != IlluminationModel::Phong).then_some(Named(scene.illumination)),
         absorption: (scene.absorption != Default::default()).then_some(Named(scene.absorption)),
+        environment: scene.environment.as_ref().map(super::environment::write_environment),
     };
     let mut root = json!({
         "asset": { "version": "2.0", "generator": concat!("shadelab ", env!("CARGO_PKG_VERSION")) },

@@ -28,6 +28,30 @@ pub const ENV_ROTATION: ParamRange = ParamRange {
     max: 360.0,
 };
 
+/// A uniform environment's radiance per channel: as `I_a`'s range, a little past 1 for a bright
+/// overcast sky.
+pub const ENV_RADIANCE: ParamRange = ParamRange {
+    flag: "--ambient",
+    symbol: "L_env",
+    meaning: "a uniform environment's radiance per channel",
+    min: 0.0,
+    max: 1e4,
+};
+
+/// The kinds of [`EnvSource`], by name (`extras.shadelab.environment.source`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum EnvKind {
+    Uniform,
+    Sky,
+    Image,
+}
+
+impl crate::params::NamedValue for EnvKind {
+    const FLAG: &'static str = "--environment";
+    const ALL: &'static [(&'static str, Self)] =
+        &[("uniform", EnvKind::Uniform), ("sky", EnvKind::Sky), ("image", EnvKind::Image)];
+}
+
 /// The analytic sky is sampled for its sampling density on a grid of this many columns and half
 /// as many rows: 1.4° cells, finer than the sky's features away from the sun.
 pub const SKY_GRID: u32 = 256;

@@ -4,6 +4,7 @@
 mod cameras;
 mod confine;
 mod container;
+mod environment;
 mod extras;
 mod lights;
 mod materials;

@@ -62,7 +62,60 @@ pub fn load(args: &SceneArgs) -> Result<LoadedScene, Failure> {
         loaded.scene.camera = loaded.cameras[range.parse_u32(text)? as usize].1;
     }
     loaded.scene.apply(&overrides(args));
+    environment(args, &mut loaded.scene)?;
     Ok(loaded)
+}
+
+/// The environment the flags ask for, in place of the scene's: `--environment` picks its source,
+/// the others set its intensity, turn and turbidity. An adjustment without an environment to
+/// adjust is the user's mistake.
+fn environment(args: &SceneArgs, scene: &mut Scene) -> Result<(), Failure> {
+    use shadelab_model::lighting::env_map::{EnvSource, Environment};
+    let sky = EnvSource::Sky { turbidity: args.turbidity.unwrap_or(3.0), sun: None };
+    match args.environment.as_deref() {
+        None => {}
+        Some("none") => scene.environment = None,
+        Some("uniform") => scene.environment = Some(Environment::new(EnvSource::Uniform(scene.ambient))),
+        Some("sky") => scene.environment = Some(Environment::new(sky)),
+        Some(path) => {
+            let (img, warnings) = shadelab_model::lighting::env_file::load_env_image(std::path::Path::new(path))
+                .map_err(|e| Failure::Usage(format!("--environment: {e}")))?;
+            for w in warnings {
+                log::warn!("{w}");
+            }
+            scene.environment = Some(Environment::new(EnvSource::Image(std::sync::Arc::new(img))));
+        }
+    }
+    // The environment takes the place of the constant ambient it stands for.
+    if args.environment.as_deref().is_some_and(|e| e != "none") {
+        scene.ambient = [0.0; 3];
+    }
+    let adjusts = [
+        ("--env-intensity", args.env_intensity.is_some()),
+        ("--env-rotation", args.env_rotation.is_some()),
+        ("--turbidity", args.turbidity.is_some()),
+    ];
+    let Some(env) = scene.environment.as_mut() else {
+        if let Some((flag, _)) = adjusts.iter().find(|(_, given)| *given) {
+            return Err(Failure::Usage(format!(
+                "{flag}: the scene has no environment; add --environment uniform, sky or a map file"
+            )));
+        }
+        return Ok(());
+    };
+    if let Some(v) = args.env_intensity {
+        env.intensity = v;
+    }
+    if let Some(v) = args.env_rotation {
+        env.rotation_deg = v;
+    }
+    if let Some(t) = args.turbidity {
+        match &mut env.source {
+            EnvSource::Sky { turbidity, .. } => *turbidity = t,
+            _ => return Err(Failure::Usage("--turbidity: only for --environment sky".into())),
+        }
+    }
+    Ok(())
 }
 
 /// The parameters the flags override (each checked by its value parser).

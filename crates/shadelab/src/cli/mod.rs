@@ -280,6 +280,21 @@ pub struct SceneArgs {
     /// depth ratio over 8 (on), or keep one map fitted to the scene (off) [default: on].
     #[arg(long, value_name = "ON|OFF", value_parser = values::on_off())]
     pub shadow_cascades: Option<bool>,
+    /// Light the scene by an environment in place of I_amb, which is set to 0
+    /// (docs/environment.md): uniform (I_amb's colour from every direction), sky (Preetham's,
+    /// the sun at the first directional light), an equirectangular .hdr or .exr file, or none
+    /// (drop the scene file's)
+    #[arg(long, value_name = "uniform|sky|none|FILE")]
+    pub environment: Option<String>,
+    #[arg(long, value_name = "X", value_parser = values::real(shadelab_model::lighting::env_map::ENV_INTENSITY),
+          help = within("The environment's intensity, a scale of its radiance", shadelab_model::lighting::env_map::ENV_INTENSITY))]
+    pub env_intensity: Option<f64>,
+    #[arg(long, value_name = "DEGREES", value_parser = values::real(shadelab_model::lighting::env_map::ENV_ROTATION),
+          help = within("The environment's turn about the up axis, in degrees", shadelab_model::lighting::env_map::ENV_ROTATION))]
+    pub env_rotation: Option<f64>,
+    #[arg(long, value_name = "T", value_parser = values::real(shadelab_model::lighting::sky::TURBIDITY),
+          help = within("The sky's turbidity, 2 clear to 10 hazy", shadelab_model::lighting::sky::TURBIDITY))]
+    pub turbidity: Option<f64>,
 }
 
 /// `render --small-area-lights`: how an area light too small on screen for its area to show

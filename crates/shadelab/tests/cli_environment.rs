@@ -1,0 +1,58 @@
+//! `render --environment` (docs/environment.md): the environment takes I_amb's place, its effect
+//! is explained, a map file is read, and bad flags and files are one line each.
+
+use common::{error_lines, out_dir, shadelab};
+
+mod common;
+
+/// The sky turns the environment's effect on and says why; a map file lights the scene, and a
+/// 1×1 map of I_amb's colour draws the image I_amb draws.
+#[test]
+fn the_environment_replaces_the_ambient() {
+    let dir = out_dir();
+    let o =
+        shadelab(&["render", "--environment", "sky", "--explain", "--output", dir.join("sky.png").to_str().unwrap()]);
+    let out = String::from_utf8_lossy(&o.stdout);
+    assert_eq!(o.status.code(), Some(0), "{:?}", error_lines(&o));
+    assert!(out.contains("env-sh") && out.contains("environment light (sky)"), "{out}");
+    // The default scene's I_amb is 0.12 grey: the same light as a 1×1 map.
+    let one = shadelab_model::lighting::env_map::EnvImage {
+        name: "one".into(),
+        width: 1,
+        height: 1,
+        texels: vec![[0.12; 3]],
+    };
+    let map = dir.join("one.exr");
+    std::fs::write(&map, shadelab_model::lighting::env_file::write_env_exr(&one).unwrap()).unwrap();
+    let draw = |extra: &[&str], name: &str| {
+        let path = dir.join(name);
+        let o = shadelab(
+            &[&["render", "--width", "96", "--height", "54", "--output", path.to_str().unwrap()][..], extra].concat(),
+        );
+        assert_eq!(o.status.code(), Some(0), "{extra:?}: {:?}", error_lines(&o));
+        image::open(path).unwrap().to_rgb8().into_raw()
+    };
+    let constant = draw(&[], "constant.png");
+    let mapped = draw(&["--environment", map.to_str().unwrap()], "mapped.png");
+    let worst = constant.iter().zip(&mapped).map(|(a, b)| a.abs_diff(*b)).max().unwrap();
+    assert!(worst <= 1, "a 1×1 map of I_amb differs by {worst} levels");
+}
+
+#[test]
+fn bad_environment_flags_are_one_line() {
+    let not_a_map = out_dir().join("not-a-map.hdr");
+    std::fs::write(&not_a_map, b"#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 2 +X 4\n\x80").unwrap();
+    for (args, says) in [
+        (vec!["--env-rotation", "10"], "--env-rotation: the scene has no environment"),
+        (vec!["--environment", "sky", "--turbidity", "40"], "--turbidity"),
+        (vec!["--environment", "uniform", "--turbidity", "3"], "--turbidity: only for --environment sky"),
+        (vec!["--environment", "sky", "--env-intensity", "-1"], "--env-intensity"),
+        (vec!["--environment", "/no/such/map.hdr"], "--environment: environment map /no/such/map.hdr"),
+        (vec!["--environment", not_a_map.to_str().unwrap()], "not-a-map.hdr"),
+    ] {
+        let o = shadelab(&[&["render", "--output", "/dev/null"][..], &args].concat());
+        let lines = error_lines(&o);
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {lines:?}");
+        assert!(lines.len() == 1 && lines[0].contains(says), "{args:?}: {lines:?}");
+    }
+}

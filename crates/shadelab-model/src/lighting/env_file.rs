@@ -40,7 +40,9 @@ pub fn read_env_image(bytes: &[u8], name: &str) -> Result<(EnvImage, Vec<String>
     let format = match image::guess_format(bytes) {
         Ok(f @ (image::ImageFormat::Hdr | image::ImageFormat::OpenExr)) => f,
         Ok(f) => {
-            return Err(fail(format!("{f:?} is not a radiance map: give a Radiance HDR (.hdr) or OpenEXR (.exr) file")));
+            return Err(fail(format!(
+                "{f:?} is not a radiance map: give a Radiance HDR (.hdr) or OpenEXR (.exr) file"
+            )));
         }
         Err(_) => return Err(fail("not a Radiance HDR (.hdr) or OpenEXR (.exr) file".into())),
     };

@@ -55,6 +55,7 @@ fn main() -> ExitCode {
         Some(cli::Command::Bench(cli::BenchCommand::Microfacet(args))) => bench::microfacet::run(&args),
         Some(cli::Command::Bench(cli::BenchCommand::Reference(args))) => bench::reference::run(&args),
         Some(cli::Command::Bench(cli::BenchCommand::Ambient(args))) => bench::ambient::run(&args),
+        Some(cli::Command::Bench(cli::BenchCommand::Environment(args))) => bench::environment::run(&args),
         Some(cli::Command::Sweep) => sweep::run(),
         Some(cli::Command::Figures(args)) => figures::run(&args),
         Some(cli::Command::Lobe(args)) => lobe::run(&args),

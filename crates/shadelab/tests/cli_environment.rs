@@ -56,3 +56,20 @@ fn bad_environment_flags_are_one_line() {
         assert!(lines.len() == 1 && lines[0].contains(says), "{args:?}: {lines:?}");
     }
 }
+
+/// `bench environment` prints each rung with its error against the truth, and the SH terms come
+/// closer to it than the constant on the default scene under the sky.
+#[test]
+fn the_study_prints_its_rungs() {
+    let o =
+        shadelab(&["bench", "environment", "--width", "48", "--height", "27", "--truth-spp", "16", "--bounces", "2"]);
+    assert_eq!(o.status.code(), Some(0), "{:?}", error_lines(&o));
+    let out = String::from_utf8_lossy(&o.stdout);
+    let rmse = |row: &str| -> f64 {
+        let line = out.lines().find(|l| l.starts_with(row)).unwrap_or_else(|| panic!("no row {row}: {out}"));
+        line.trim_end_matches('|').rsplit('|').next().unwrap().trim().parse().unwrap()
+    };
+    let (constant, sh) = (rmse("| constant I_a"), rmse("| nine SH terms |"));
+    assert!(sh < constant, "SH {sh} against constant {constant}: {out}");
+    assert!(out.contains("× ambient occlusion") && out.contains("sky environment"), "{out}");
+}

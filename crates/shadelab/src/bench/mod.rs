@@ -4,6 +4,7 @@
 pub mod accuracy;
 pub mod ambient;
 pub mod effects;
+pub mod environment;
 pub mod glass;
 pub mod load;
 pub mod mesh;

@@ -173,6 +173,10 @@ pub enum BenchCommand {
     /// against a high-sample truth and the time of the constant I_a, the fitted I_a, ambient
     /// occlusion and path tracing at 1, 4, 16, … paths a pixel.
     Ambient(BenchAmbientArgs),
+    /// The environment light's approximations against the path-traced truth: the constant I_a
+    /// of its mean radiance, the nine SH terms, and those terms times ambient occlusion, with
+    /// the GPU's frame time of each it draws (the sky unless --environment says otherwise).
+    Environment(BenchAmbientArgs),
 }
 
 /// The scene and the parameters that override it (shared by `render` and `bench`).

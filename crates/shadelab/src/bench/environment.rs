@@ -1,0 +1,124 @@
+//! `shadelab bench environment`: what each approximation of the environment light costs against
+//! the path-traced truth (docs/environment.md). The rungs, each as the f64 twin of what it draws
+//! (the GPU matches its twin to 1e-5, `tests/tests/environment.rs`): the constant `I_a` of the
+//! environment's mean radiance, the nine SH terms, and the nine terms times ambient occlusion
+//! (f64 only: the GPU has no occlusion yet); each GPU rung timed side by side with the others.
+
+use crate::reference_views::traced_with_progress;
+use crate::{Failure, cli};
+use anyhow::Context;
+use shadelab_model::lighting::env_map::{EnvSource, Environment};
+use shadelab_model::lighting::environment::SH_Y0;
+use shadelab_model::reference::{PathSettings, ReferenceJob, ambient_occlusion, reference_threads, render_reference};
+use shadelab_model::{Scene, ShadingMode, SpecularModel};
+use shadelab_render::timing::{FrameTimer, TimedDraw, median};
+use shadelab_render::{Gpu, Program, RenderSettings, Renderer, Target};
+
+/// Frames timed per rung, after this many unmeasured ones.
+const FRAMES: usize = 30;
+const WARMUP: usize = 5;
+
+/// RMSE of `a` against `b` over every pixel and channel.
+fn rmse(a: &[[f64; 3]], b: &[[f64; 3]]) -> f64 {
+    let sum: f64 = a.iter().zip(b).flat_map(|(p, q)| (0..3).map(move |c| (p[c] - q[c]).powi(2))).sum();
+    (sum / (3 * a.len().max(1)) as f64).sqrt()
+}
+
+/// The scene the study lights: the flags' environment, else the sky in place of `I_a`.
+fn lit(args: &cli::BenchAmbientArgs) -> Result<Scene, Failure> {
+    let mut scene = cli::scene(&args.scene)?;
+    if scene.environment.is_none() {
+        scene.environment = Some(Environment::new(EnvSource::Sky { turbidity: 3.0, sun: None }));
+        scene.ambient = [0.0; 3];
+    }
+    Ok(scene)
+}
+
+/// `shadelab bench environment`.
+pub fn run(args: &cli::BenchAmbientArgs) -> Result<(), Failure> {
+    let scene = lit(args)?;
+    let env = scene.environment.clone().expect("set above");
+    let (w, h) = (args.width, args.height);
+    let settings = RenderSettings::new(ShadingMode::Phong, SpecularModel::CookTorrance);
+    let paths = PathSettings { bounces: args.bounces, spp: args.truth_spp, seed: 1 };
+    let job = ReferenceJob::with_paths(&scene, settings.specular, w, h, paths).map_err(Failure::Usage)?;
+    let start = web_time::Instant::now();
+    let truth = traced_with_progress(job, "path-traced truth", h);
+    let truth_ms = start.elapsed().as_secs_f64() * 1e3;
+    // The constant that stands for the environment: its mean radiance, band 0 of its SH terms.
+    let sh = env.sh(&scene.lights);
+    let mean = sh[0].map(|c| c * SH_Y0);
+    let constant = Scene { ambient: mean, environment: None, ..scene.clone() };
+    let bare = Scene { ambient: [0.0; 3], environment: None, ..scene.clone() };
+    let sh_image = render_reference(&scene, settings.specular, w, h);
+    let constant_image = render_reference(&constant, settings.specular, w, h);
+    let bare_image = render_reference(&bare, settings.specular, w, h);
+    let start = web_time::Instant::now();
+    let ao = ambient_occlusion(&scene, w, h, crate::ambient_views::AO_RAYS, 1);
+    let ao_ms = start.elapsed().as_secs_f64() * 1e3;
+    let occluded: Vec<[f64; 3]> = (0..sh_image.pixels.len())
+        .map(|i| {
+            let (s, b) = (sh_image.pixels[i], bare_image.pixels[i]);
+            std::array::from_fn(|c| b[c] + ao[i] * (s[c] - b[c]))
+        })
+        .collect();
+    let [null_ms, constant_ms, sh_ms] = gpu_times(&scene, &constant, &settings, (w, h))?;
+    let noise = {
+        let n = truth.std_error.len().max(1) as f64;
+        (truth.std_error.iter().map(|e| e.iter().map(|v| v * v).sum::<f64>() / 3.0).sum::<f64>() / n).sqrt()
+    };
+    let command = std::iter::once("shadelab".to_string()).chain(std::env::args().skip(1)).collect::<Vec<_>>().join(" ");
+    println!(
+        "# shadelab bench environment — {}, {} environment, {w}×{h}, {} bounces, on {} thread(s)",
+        args.scene.scene,
+        env.source.name(),
+        args.bounces,
+        reference_threads()
+    );
+    println!("#     {command}");
+    println!(
+        "truth: {} paths a pixel in {truth_ms:.0} ms, its noise (RMS standard error) {noise:.2e}: an RMSE under {:.2e} is not measured",
+        args.truth_spp,
+        2.0 * noise
+    );
+    println!("the constant I_a (the mean radiance): [{:.4}, {:.4}, {:.4}]", mean[0], mean[1], mean[2]);
+    println!("| image | GPU frame ms (median of {FRAMES}) | RMSE against the truth |");
+    println!("|---|---:|---:|");
+    println!("| null shader | {null_ms:.3} | |");
+    println!("| constant I_a (the chapter) | {constant_ms:.3} | {:.3e} |", rmse(&constant_image.pixels, &truth.pixels));
+    println!("| nine SH terms | {sh_ms:.3} | {:.3e} |", rmse(&sh_image.pixels, &truth.pixels));
+    println!(
+        "| nine SH terms × ambient occlusion, {} rays (f64 only: {ao_ms:.0} ms on the CPU) | | {:.3e} |",
+        crate::ambient_views::AO_RAYS,
+        rmse(&occluded, &truth.pixels)
+    );
+    println!("| no environment light at all | | {:.3e} |", rmse(&bare_image.pixels, &truth.pixels));
+    Ok(())
+}
+
+/// The GPU's frame for the null shader, the constant ambient and the SH terms, drawn
+/// interleaved: medians in ms.
+fn gpu_times(
+    scene: &Scene,
+    constant: &Scene,
+    settings: &RenderSettings,
+    (w, h): (u32, u32),
+) -> anyhow::Result<[f64; 3]> {
+    let gpu = Gpu::headless(shadelab_render::AdapterChoice::from_env()).context("opening a GPU adapter")?;
+    let mut r = Renderer::new(&gpu.device, &gpu.queue);
+    let gs = r.upload(scene)?;
+    let target = Target::new(&gpu.device, w, h, shadelab_render::target::HDR_FORMAT);
+    let draws = [
+        TimedDraw { gpu_scene: &gs, scene, program: Program::NullBaseline, settings: RenderSettings::default() },
+        TimedDraw {
+            gpu_scene: &gs,
+            scene: constant,
+            program: Program::for_scene(constant, settings),
+            settings: *settings,
+        },
+        TimedDraw { gpu_scene: &gs, scene, program: Program::for_scene(scene, settings), settings: *settings },
+    ];
+    let timer = FrameTimer::new(&gpu.device, &gpu.queue);
+    let mut samples = timer.interleaved_draws(&mut r, &target, &draws, FRAMES, WARMUP);
+    Ok(std::array::from_fn(|i| median(&mut samples[i])))
+}

@@ -151,3 +151,14 @@ fn minified_textures_use_the_same_mipmaps_as_the_reference() {
     eprintln!("minified checker: RMSE {same:.2e} against the mipmapped reference, {without:.2e} against level 0");
     assert!(same < 1e-2 && without > 4.0 * same, "{same} vs {without}");
 }
+
+/// A textured file lit by the sky in place of its ambient (docs/environment.md): the GPU draws
+/// what the reference draws, and not what it would draw without the environment.
+#[test]
+fn box_textured_under_the_sky_matches_the_reference() {
+    use shadelab_model::lighting::env_map::{EnvSource, Environment};
+    let Some(mut s) = sample("BoxTextured.gltf") else { return };
+    s.scene.ambient = [0.0; 3];
+    s.scene.environment = Some(Environment::new(EnvSource::Sky { turbidity: 3.0, sun: None }));
+    matches_reference_and_needs(&s.scene, Effect::EnvironmentSh, |p| p.environment = None);
+}

@@ -86,7 +86,7 @@ impl EnvImage {
 }
 
 /// Where an environment's radiance comes from.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug)]
 pub enum EnvSource {
     /// The same radiance from every direction: the chapter's `I_a`, made occludable.
     Uniform([f64; 3]),
@@ -95,6 +95,19 @@ pub enum EnvSource {
     Sky { turbidity: f64, sun: Option<DVec3> },
     /// An equirectangular map (a file the user brings).
     Image(Arc<EnvImage>),
+}
+
+/// Maps compare by pointer first: the viewer compares its scene every frame, and a copy shares
+/// the map (an `Arc` of floats, which are not `Eq`, would compare every texel).
+impl PartialEq for EnvSource {
+    fn eq(&self, other: &Self) -> bool {
+        match (self, other) {
+            (EnvSource::Uniform(a), EnvSource::Uniform(b)) => a == b,
+            (EnvSource::Sky { turbidity: t, sun: s }, EnvSource::Sky { turbidity: u, sun: r }) => t == u && s == r,
+            (EnvSource::Image(a), EnvSource::Image(b)) => Arc::ptr_eq(a, b) || a == b,
+            _ => false,
+        }
+    }
 }
 
 impl EnvSource {

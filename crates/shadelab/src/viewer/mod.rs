@@ -169,6 +169,8 @@ pub struct Viewer {
     uniforms_written: Option<(u64, u64)>,
     /// The link "copy link" wrote last, shown under the button.
     copied_link: Option<(String, Option<String>)>,
+    /// The I_amb an environment chosen in the panel took the place of, given back with "none".
+    ambient_replaced: Option<[f64; 3]>,
     /// In the browser: the screenshot being read back, downloaded once it is.
     #[cfg(target_arch = "wasm32")]
     screenshot_reading: Option<shadelab_render::target::PendingReadBack>,
@@ -246,6 +248,7 @@ impl Viewer {
             derived: Default::default(),
             uniforms_written: None,
             copied_link: None,
+            ambient_replaced: None,
             #[cfg(target_arch = "wasm32")]
             screenshot_reading: None,
         })
@@ -423,6 +426,7 @@ impl Viewer {
         self.orbit = Orbit::from_camera(&s.camera);
         self.selected_material = s.objects.get(1).map_or(0, |o| o.material);
         self.shadow_maps.scene_replaced(s.lights.len());
+        self.ambient_replaced = None;
         self.scene = s;
         self.scene_name = name.into();
     }

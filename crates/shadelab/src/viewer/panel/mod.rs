@@ -1,8 +1,9 @@
 //! The parameter panel at the side, section by section (scene and modes, files, material,
-//! transparency, lights, live numbers, the effects called for). It edits the model and the render settings,
+//! transparency, lights, the environment, live numbers, the effects called for). It edits the model and the render settings,
 //! never wgpu objects; every slider takes its range from the parameter's declared range.
 
 mod effects;
+mod environment;
 mod files_row;
 mod glass;
 mod lights;
@@ -37,6 +38,9 @@ impl Viewer {
         self.material_ui(ui);
         ui.separator();
         self.lights_ui(ui);
+        egui::CollapsingHeader::new("environment light")
+            .default_open(self.scene.environment.is_some())
+            .show(ui, |ui| self.environment_ui(ui));
         ui.separator();
         // The selected material's transparency: open where some material lets light through.
         egui::CollapsingHeader::new("transparency")

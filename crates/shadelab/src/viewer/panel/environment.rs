@@ -1,0 +1,87 @@
+//! The panel's environment section (docs/environment.md): the source (none, a uniform colour in
+//! place of I_amb, the sky, or the map a file or `--environment` brought), its intensity, turn
+//! and the sky's turbidity, each slider over its declared range.
+
+use super::slider;
+use crate::viewer::Viewer;
+use eframe::egui;
+use shadelab_model::lighting::env_map::{ENV_INTENSITY, ENV_ROTATION, EnvSource, Environment};
+use shadelab_model::lighting::sky::TURBIDITY;
+
+/// The sources the menu offers.
+#[derive(Clone, Copy, PartialEq)]
+enum Choice {
+    None,
+    Uniform,
+    Sky,
+    Map,
+}
+
+impl Viewer {
+    pub(super) fn environment_ui(&mut self, ui: &mut egui::Ui) {
+        let current = match self.scene.environment.as_ref().map(|e| &e.source) {
+            None => Choice::None,
+            Some(EnvSource::Uniform(_)) => Choice::Uniform,
+            Some(EnvSource::Sky { .. }) => Choice::Sky,
+            Some(EnvSource::Image(_)) => Choice::Map,
+        };
+        let mut choice = current;
+        let map = self.scene.environment.as_ref().and_then(|e| match &e.source {
+            EnvSource::Image(img) => Some(img.clone()),
+            _ => None,
+        });
+        let label = |c: Choice| match c {
+            Choice::None => "none (the constant I_amb)".to_string(),
+            Choice::Uniform => "uniform (I_amb from every direction)".to_string(),
+            Choice::Sky => "sky (Preetham)".to_string(),
+            Choice::Map => map.as_ref().map_or("map".into(), |m| format!("map {}", m.name)),
+        };
+        let marks = &mut self.marks;
+        egui::ComboBox::from_label("environment").selected_text(label(current)).show_ui(ui, |ui| {
+            for c in [Choice::None, Choice::Uniform, Choice::Sky] {
+                let r = ui.selectable_value(&mut choice, c, label(c));
+                marks.insert(format!("environment:{}", ["none", "uniform", "sky"][c as usize]), r.rect);
+            }
+            if map.is_some() {
+                ui.selectable_value(&mut choice, Choice::Map, label(Choice::Map));
+            }
+        });
+        if choice != current {
+            self.choose_environment(choice == Choice::None, choice == Choice::Uniform);
+        }
+        let Some(env) = self.scene.environment.as_mut() else {
+            ui.small("a sky or a map lights the scene in place of I_amb; a map comes from a scene file or --environment FILE");
+            return;
+        };
+        slider(ui, &mut env.intensity, &ENV_INTENSITY, true);
+        slider(ui, &mut env.rotation_deg, &ENV_ROTATION, false);
+        if let EnvSource::Sky { turbidity, sun } = &mut env.source {
+            slider(ui, turbidity, &TURBIDITY, false);
+            ui.small(if sun.is_some() {
+                "the sun as the file gives it"
+            } else {
+                "the sun at the first directional light"
+            });
+        }
+        ui.small(
+            "drawn by nine SH terms: diffuse only, unshadowed (the difference view's path-traced truth has the rest)",
+        );
+    }
+
+    /// Switch the environment: none gives back the I_amb the panel's environment replaced,
+    /// uniform takes I_amb's colour, the sky follows the sun; either of the last two sets I_amb
+    /// to 0, since it stands for it.
+    fn choose_environment(&mut self, none: bool, uniform: bool) {
+        self.scene.environment = None;
+        if none {
+            if let Some(a) = self.ambient_replaced.take() {
+                self.scene.ambient = a;
+            }
+            return;
+        }
+        let ambient = *self.ambient_replaced.get_or_insert(self.scene.ambient);
+        let source = if uniform { EnvSource::Uniform(ambient) } else { EnvSource::Sky { turbidity: 3.0, sun: None } };
+        self.scene.environment = Some(Environment::new(source));
+        self.scene.ambient = [0.0; 3];
+    }
+}

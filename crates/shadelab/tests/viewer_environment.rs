@@ -1,0 +1,59 @@
+//! The viewer's environment section (docs/environment.md), driven by egui_kittest on lavapipe:
+//! the sky takes I_amb's place and changes the image; "none" gives I_amb back.
+
+use egui_kittest::Harness;
+use egui_kittest::kittest::Queryable;
+use shadelab::viewer::Viewer;
+use shadelab_model::lighting::env_map::EnvSource;
+
+fn harness() -> Harness<'static, Viewer> {
+    let mut h = Harness::builder()
+        .with_size(egui::vec2(1100.0, 640.0))
+        .wgpu()
+        .build_eframe(|cc| Viewer::new(cc, None, None).expect("viewer"));
+    h.run_steps(2);
+    h
+}
+
+/// Pixels of the scene area (left of the panel) that differ by more than 8 in any channel.
+fn changed_view_pixels(a: &image::RgbaImage, b: &image::RgbaImage) -> usize {
+    let view_width = a.width() * 6 / 10;
+    (0..a.height())
+        .flat_map(|y| (0..view_width).map(move |x| (x, y)))
+        .filter(|&(x, y)| (0..3).any(|c| a.get_pixel(x, y).0[c].abs_diff(b.get_pixel(x, y).0[c]) > 8))
+        .count()
+}
+
+/// Open the environment menu and pick `item`.
+fn choose(h: &mut Harness<'static, Viewer>, item: &str) {
+    h.get_by_label("environment").scroll_to_me();
+    h.run_steps(5);
+    h.get_by_label("environment").click();
+    h.run_steps(3);
+    h.get_by_label(item).click();
+    h.run_steps(3);
+}
+
+#[test]
+fn the_sky_replaces_the_ambient_and_none_gives_it_back() {
+    let mut h = harness();
+    let ambient = h.state_mut().scene_mut().ambient;
+    h.get_by_label("environment light").scroll_to_me();
+    h.run_steps(5);
+    h.get_by_label("environment light").click();
+    h.run_steps(3);
+    let before = h.render().expect("render");
+    choose(&mut h, "sky (Preetham)");
+    let scene = h.state_mut().scene_mut().clone();
+    assert!(matches!(scene.environment.as_ref().map(|e| &e.source), Some(EnvSource::Sky { .. })));
+    assert_eq!(scene.ambient, [0.0; 3]);
+    let after = h.render().expect("render");
+    if let Ok(dir) = std::env::var("SHADELAB_VIEWER_SHOTS") {
+        after.save(std::path::Path::new(&dir).join("viewer-environment.png")).unwrap();
+    }
+    let changed = changed_view_pixels(&before, &after);
+    assert!(changed > 2000, "only {changed} pixels of the view changed");
+    choose(&mut h, "none (the constant I_amb)");
+    let scene = h.state_mut().scene_mut().clone();
+    assert_eq!((scene.environment, scene.ambient), (None, ambient));
+}

@@ -16,6 +16,13 @@ pub const FURNACE_SAMPLES: usize = 512;
 /// reflected directions above the surface. `u = 1 − (1 − t)³` on a midpoint grid in `t` puts
 /// more samples in the tails (GGX's reach far), where a grid in `u` errs by up to 1/n.
 pub fn directional_albedo(terms: Microfacet, m: f64, cos_v: f64, n: usize) -> f64 {
+    weighted_albedo(terms, m, cos_v, n, |_| 1.0)
+}
+
+/// [`directional_albedo`] with each half vector's reflection weighed by `weight(V·H)`: with
+/// `(1 − V·H)⁵` it is the share B of the lobe's albedo that Schlick's F adds toward grazing, so
+/// that `∫ F f cos = F0·(E − B) + B` (the environment's split sum, docs/environment.md).
+pub fn weighted_albedo(terms: Microfacet, m: f64, cos_v: f64, n: usize, weight: impl Fn(f64) -> f64) -> f64 {
     let cos_v = cos_v.clamp(1e-6, 1.0);
     let v = DVec3::new((1.0 - cos_v * cos_v).max(0.0).sqrt(), 0.0, cos_v);
     let a2 = m.max(crate::guards::M_MIN).powi(2);
@@ -40,7 +47,7 @@ pub fn directional_albedo(terms: Microfacet, m: f64, cos_v: f64, n: usize) -> f6
                 continue;
             }
             let g = microfacet_g(terms, cos_h, cos_v, l.z, v_dot_h, m);
-            sum += du_dt * g * v_dot_h / (cos_v * cos_h);
+            sum += du_dt * g * v_dot_h / (cos_v * cos_h) * weight(v_dot_h);
         }
     }
     sum / (n * n) as f64

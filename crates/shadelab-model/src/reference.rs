@@ -475,9 +475,22 @@ impl Context<'_> {
         let emit = |c: [f64; 3]| -> [f64; 3] { std::array::from_fn(|i| c[i] + emission[i]) };
         let (rays, specular) = (self.rays, self.specular);
         let (hidden, dimmed) = (Cell::new(0u8), Cell::new(false));
-        let env_sh = self.env.filter(|_| self.env_use == EnvUse::Sh).map(|e| &e.sh);
-        let at =
-            ShadePoint { p, n_in: n, eye, mat, ambient: scene.ambient, env_sh, specular, model: scene.illumination };
+        let drawn = self.env.filter(|_| self.env_use == EnvUse::Sh);
+        let env_sh = drawn.map(|e| &e.sh);
+        // The split sum where the scene's environment asks the GPU for it.
+        let split_sum = scene.environment.as_ref().is_some_and(|e| e.specular);
+        let env_prefiltered = drawn.filter(|_| split_sum).map(|e| e.prefiltered.as_slice());
+        let at = ShadePoint {
+            p,
+            n_in: n,
+            eye,
+            mat,
+            ambient: scene.ambient,
+            env_sh,
+            env_prefiltered,
+            specular,
+            model: scene.illumination,
+        };
         let ng = hit.geometric_normal;
         let visible = rays.cell_visible(ng);
         // An area light's exact term, shadowed; its unshadowed term kept for the image without

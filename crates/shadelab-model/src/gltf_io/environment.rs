@@ -5,7 +5,7 @@
 
 use super::GltfError;
 use super::container::{Externals, data_uri, read_external_whole};
-use super::extras::{EnvIntensity, EnvRadiance, EnvRotation, Named, Num, Rgb, Turbidity, Vec3};
+use super::extras::{EnvIntensity, EnvRadiance, EnvRotation, Flag, Named, Num, Rgb, Turbidity, Vec3};
 use super::scene_file::Cx;
 use crate::lighting::env_file::{MAX_ENV_FILE_BYTES, read_env_image};
 use crate::lighting::env_map::{EnvKind, EnvSource, Environment};
@@ -29,6 +29,9 @@ pub(super) struct EnvironmentExtras {
     uri: Option<String>,
     intensity: Option<Num<EnvIntensity>>,
     rotation: Option<Num<EnvRotation>>,
+    /// False: the GPU leaves out its split-sum specular; absent is true.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    specular: Option<Flag>,
 }
 
 /// The environment `ex` describes; its map from a data URI or a file read through `externals`. A source without what it
@@ -66,6 +69,7 @@ pub(super) fn read_environment(
         source,
         intensity: ex.intensity.map_or(1.0, |v| v.0),
         rotation_deg: ex.rotation.map_or(0.0, |v| v.0),
+        specular: ex.specular.is_none_or(|f| f.0),
     })
 }
 
@@ -75,6 +79,7 @@ pub(super) fn write_environment(env: &Environment) -> EnvironmentExtras {
     let mut ex = EnvironmentExtras {
         intensity: Some(env.intensity.into()),
         rotation: Some(env.rotation_deg.into()),
+        specular: (!env.specular).then_some(Flag(false)),
         ..Default::default()
     };
     match &env.source {

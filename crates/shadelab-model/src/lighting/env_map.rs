@@ -129,12 +129,14 @@ pub struct Environment {
     pub intensity: f64,
     /// Within [`ENV_ROTATION`], degrees.
     pub rotation_deg: f64,
+    /// Whether the GPU draws its specular by the split sum (the reference's truth always has it).
+    pub specular: bool,
 }
 
 impl Environment {
     /// An environment of `source` at intensity 1, unturned.
     pub fn new(source: EnvSource) -> Environment {
-        Environment { source, intensity: 1.0, rotation_deg: 0.0 }
+        Environment { source, intensity: 1.0, rotation_deg: 0.0, specular: true }
     }
 
     /// The nine SH coefficients the GPU's diffuse term reads (and the exact reference's twin).
@@ -149,8 +151,44 @@ impl Environment {
     pub fn bake(&self, lights: &[super::lights::Light]) -> EnvLight {
         let (radiance, turn) = self.radiance(lights);
         let sh = self.sh(lights);
+        let prefiltered = self.prefiltered(lights);
         let sampling = Distribution::new(&radiance.grid());
-        EnvLight { radiance, turn, sh, sampling }
+        EnvLight { radiance, turn, sh, prefiltered, sampling }
+    }
+
+    /// The prefiltered levels the split sum reads (`environment.rs`'s `env_prefiltered`), in
+    /// world axes: level 0 the radiance at each texel's centre, level k the environment on a
+    /// [`PREFILTER_SOURCE`]-wide grid weighed by the lobe `cos^h` about the texel's direction,
+    /// `h` from `m_k` by the project's one h-from-m rule (the lobe Beckmann's D is as wide as).
+    pub fn prefiltered(&self, lights: &[super::lights::Light]) -> Vec<[f32; 4]> {
+        use super::environment::{ENV_LEVELS, env_level_size};
+        use rayon::prelude::*;
+        let (radiance, turn) = self.radiance(lights);
+        let source = radiance.averaged(PREFILTER_SOURCE);
+        let cells: Vec<(DVec3, f64, [f64; 3])> = (0..source.height)
+            .flat_map(|y| (0..source.width).map(move |x| (x, y)))
+            .map(|(x, y)| {
+                let d = turn_y(cell_center(x, y, source.width, source.height), turn);
+                let a = cell_solid_angle(y, source.width, source.height);
+                (d, a, source.texels[(y * source.width + x) as usize])
+            })
+            .collect();
+        let mut out = Vec::with_capacity(super::environment::ENV_PREFILTERED_TEXELS);
+        for k in 0..ENV_LEVELS {
+            let (w, h) = env_level_size(k);
+            let m = f64::from(k) / f64::from(ENV_LEVELS - 1);
+            let lobe = crate::params::PhongExponent::from_m(m).value().clamp(1.0, PREFILTER_EXPONENT_MAX);
+            let level: Vec<[f32; 4]> = (0..w * h)
+                .into_par_iter()
+                .map(|i| {
+                    let d = turn_y(cell_center(i % w, i / w, w, h), turn);
+                    let c = if k == 0 { radiance.at(turn_y(d, -turn)) } else { lobe_mean(&cells, d, lobe) };
+                    [c[0] as f32, c[1] as f32, c[2] as f32, 0.0]
+                })
+                .collect();
+            out.extend(level);
+        }
+        out
     }
 
     /// The radiance function in the map's axes, and the turn to world axes.
@@ -189,6 +227,8 @@ pub struct EnvLight {
     turn: f64,
     /// The nine coefficients the GPU's diffuse term reads (`environment.wgsl`).
     pub sh: ShCoefficients,
+    /// The prefiltered levels the GPU's specular reads ([`Environment::prefiltered`]).
+    pub prefiltered: Vec<[f32; 4]>,
     sampling: Distribution,
 }
 
@@ -241,11 +281,16 @@ impl Radiance {
     /// The map on at most [`SH_GRID`] × [`SH_GRID`]/2 cells: an image's texels averaged (by
     /// solid angle) into the cell holding their centre, the sky at the cells' centres.
     fn sh_grid(&self) -> Grid {
+        self.averaged(SH_GRID)
+    }
+
+    /// The map on at most `side` × `side`/2 cells, as [`Self::sh_grid`].
+    fn averaged(&self, side: u32) -> Grid {
         match self {
             Radiance::Uniform(_) => self.grid(),
-            Radiance::Sky(..) => self.sampled(SH_GRID, SH_GRID / 2),
-            Radiance::Image(img, s) if img.width > SH_GRID || img.height > SH_GRID / 2 => {
-                let (w, h) = (img.width.min(SH_GRID), img.height.min(SH_GRID / 2));
+            Radiance::Sky(..) => self.sampled(side, side / 2),
+            Radiance::Image(img, s) if img.width > side || img.height > side / 2 => {
+                let (w, h) = (img.width.min(side), img.height.min(side / 2));
                 let mut sum = vec![[0.0; 3]; (w * h) as usize];
                 let mut area = vec![0.0; (w * h) as usize];
                 for y in 0..img.height {
@@ -275,6 +320,32 @@ impl Radiance {
             (0..h).flat_map(|y| (0..w).map(move |x| (x, y))).map(|(x, y)| self.at(cell_center(x, y, w, h))).collect();
         Grid { width: w, height: h, texels }
     }
+}
+
+/// The prefilter's source grid: this many columns, half as many rows (2.8° cells).
+pub const PREFILTER_SOURCE: u32 = 128;
+/// The prefilter's lobe exponent at most: 1e3 is a lobe of about 2.5°, as wide as the source's
+/// cells; sharper levels would fall between them.
+pub const PREFILTER_EXPONENT_MAX: f64 = 1e3;
+
+/// The mean of `cells` (direction, solid angle, radiance) weighed by `max(d·ω, 0)^h`; the
+/// nearest cell's radiance where no cell has weight.
+fn lobe_mean(cells: &[(DVec3, f64, [f64; 3])], d: DVec3, h: f64) -> [f64; 3] {
+    let (mut sum, mut total, mut best) = ([0.0; 3], 0.0, (f64::NEG_INFINITY, [0.0; 3]));
+    for (w, a, l) in cells {
+        let c = d.dot(*w);
+        if c > best.0 {
+            best = (c, *l);
+        }
+        if c > 0.0 {
+            let k = c.powf(h) * a;
+            total += k;
+            for i in 0..3 {
+                sum[i] += k * l[i];
+            }
+        }
+    }
+    if total > 0.0 { sum.map(|s| s / total) } else { best.1 }
 }
 
 /// The unit direction at the centre of cell `(x, y)` of a `w × h` map.

@@ -117,6 +117,144 @@ pub fn sh_project(width: u32, height: u32, phi0: f64, texel: impl Fn(u32, u32) -
     sh
 }
 
+/// Levels of the prefiltered environment (its specular, docs/environment.md): level k is the
+/// environment blurred by the lobe of roughness `m_k = k/(ENV_LEVELS − 1)`, so m in [0, 1] is
+/// read between two levels.
+pub const ENV_LEVELS: u32 = 6;
+/// Level 0's width in texels (height half of it): 5.6° texels; every second level halves both.
+pub const ENV_LEVEL_WIDTH: u32 = 64;
+/// Texels of every level together (vec4 slots of the GPU's buffer).
+pub const ENV_PREFILTERED_TEXELS: usize = 2 * (64 * 32 + 32 * 16 + 16 * 8);
+
+/// Level `k`'s width and height in texels.
+pub fn env_level_size(k: u32) -> (u32, u32) {
+    let w = ENV_LEVEL_WIDTH >> (k / 2);
+    (w, w / 2)
+}
+
+/// Where level `k`'s texels start in the buffer.
+pub fn env_level_offset(k: u32) -> u32 {
+    (0..k).map(|j| env_level_size(j).0 * env_level_size(j).1).sum()
+}
+
+/// Texel `(x, y)` of level `k` (x wraps around, y clamps at the poles).
+pub fn env_texel(pre: &[[f32; 4]], k: u32, x: i32, y: i32) -> [f64; 3] {
+    let (w, h) = env_level_size(k);
+    let xi = x.rem_euclid(w as i32) as u32;
+    let yi = y.clamp(0, h as i32 - 1) as u32;
+    let t = pre[(env_level_offset(k) + yi * w + xi) as usize];
+    [t[0], t[1], t[2]].map(f64::from)
+}
+
+/// Level `k` toward unit world direction `d`, bilinear between texel centres.
+pub fn env_level_sample(pre: &[[f32; 4]], k: u32, d: DVec3) -> [f64; 3] {
+    use std::f64::consts::{PI, TAU};
+    let (w, h) = env_level_size(k);
+    let phi = d.z.atan2(d.x);
+    let u = (phi / TAU).rem_euclid(1.0) * f64::from(w) - 0.5;
+    let v = d.y.clamp(-1.0, 1.0).acos() / PI * f64::from(h) - 0.5;
+    let (x0, y0) = (u.floor(), v.floor());
+    let (fu, fv) = (u - x0, v - y0);
+    let (x0, y0) = (x0 as i32, y0 as i32);
+    let at = |x, y| env_texel(pre, k, x, y);
+    let (a, b, c, e) = (at(x0, y0), at(x0 + 1, y0), at(x0, y0 + 1), at(x0 + 1, y0 + 1));
+    std::array::from_fn(|i| (a[i] * (1.0 - fu) + b[i] * fu) * (1.0 - fv) + (c[i] * (1.0 - fu) + e[i] * fu) * fv)
+}
+
+/// The prefiltered environment toward `r` for roughness `m` (clamped to [0, 1]), linear between
+/// the two levels around it.
+pub fn env_prefiltered(pre: &[[f32; 4]], r: DVec3, m: f64) -> [f64; 3] {
+    let t = m.clamp(0.0, 1.0) * f64::from(ENV_LEVELS - 1);
+    let k = (t.floor() as u32).min(ENV_LEVELS - 2);
+    let f = t - f64::from(k);
+    let (a, b) = (env_level_sample(pre, k, r), env_level_sample(pre, k + 1, r));
+    std::array::from_fn(|i| a[i] * (1.0 - f) + b[i] * f)
+}
+
+/// Every D × G pair's B (the lobe's albedo weighed by `(1 − V·H)⁵`, [`crate::furnace::weighted_albedo`])
+/// at the nodes of the compensation's table (`multiscatter::ms_table`: m down, `N·V` across),
+/// computed once; `globals.env_split_b` holds it four floats a slot.
+pub fn env_split_b_table() -> &'static [f32] {
+    use super::microfacet::{Distribution, Masking, Microfacet};
+    use super::multiscatter::{MS_TABLE_SAMPLES, MS_TABLE_SIDE};
+    use crate::params::NamedValue;
+    static TABLE: std::sync::OnceLock<Vec<f32>> = std::sync::OnceLock::new();
+    TABLE.get_or_init(|| {
+        let node = |k: usize| k as f64 / (MS_TABLE_SIDE - 1) as f64;
+        let mut out = Vec::new();
+        for &(_, d) in Distribution::ALL {
+            for &(_, g) in Masking::ALL {
+                let terms = Microfacet { d, g, ..Microfacet::CHAPTER };
+                for j in 0..MS_TABLE_SIDE {
+                    for i in 0..MS_TABLE_SIDE {
+                        let grazing = |c: f64| (1.0 - c).clamp(0.0, 1.0).powi(5);
+                        out.push(
+                            crate::furnace::weighted_albedo(terms, node(j), node(i), MS_TABLE_SAMPLES, grazing) as f32
+                        );
+                    }
+                }
+            }
+        }
+        out
+    })
+}
+
+/// The table as `globals.env_split_b` holds it: four floats a slot.
+pub fn env_split_b_vec4s() -> [[f32; 4]; ENV_SPLIT_B_VEC4S] {
+    let mut out = [[0.0; 4]; ENV_SPLIT_B_VEC4S];
+    for (k, b) in env_split_b_table().iter().enumerate() {
+        out[k / 4][k % 4] = *b;
+    }
+    out
+}
+
+/// vec4 slots of `globals.env_split_b`: the 6 pairs' 16 × 16 nodes.
+pub const ENV_SPLIT_B_VEC4S: usize = 384;
+
+/// One node of the B table: pair `base`'s row j (m), column i (N·V).
+pub fn env_split_b_node(base: usize, j: usize, i: usize) -> f64 {
+    f64::from(env_split_b_table()[base + j * super::multiscatter::MS_TABLE_SIDE + i])
+}
+
+/// B of the material's D and G at `n_dot_v` and `m`, bilinear between the nodes as the
+/// compensation's E.
+pub fn env_split_b(terms: super::microfacet::Microfacet, n_dot_v: f64, m: f64) -> f64 {
+    use super::multiscatter::MS_TABLE_SIDE;
+    let last = (MS_TABLE_SIDE - 1) as f64;
+    let u = n_dot_v.clamp(0.0, 1.0) * last;
+    let w = m.clamp(0.0, 1.0) * last;
+    let (i, j) = ((u.floor() as usize).min(MS_TABLE_SIDE - 2), (w.floor() as usize).min(MS_TABLE_SIDE - 2));
+    let (fu, fw) = (u - i as f64, w - j as f64);
+    let base = super::multiscatter::ms_pair(terms) * MS_TABLE_SIDE * MS_TABLE_SIDE;
+    let low = env_split_b_node(base, j, i) * (1.0 - fu) + env_split_b_node(base, j, i + 1) * fu;
+    let high = env_split_b_node(base, j + 1, i) * (1.0 - fu) + env_split_b_node(base, j + 1, i + 1) * fu;
+    low * (1.0 - fw) + high * fw
+}
+
+/// The split sum (docs/environment.md): the environment's specular light at a point seen along
+/// `v`, before `r_s`: the prefiltered environment toward the mirror direction, times
+/// `F0·(E − B) + B`: E the lobe's albedo for the material's D and G at `N·V` (the compensation's
+/// table), B its share toward grazing, F0 the material's F at normal incidence.
+pub fn env_specular(
+    pre: &[[f32; 4]],
+    n: DVec3,
+    v: DVec3,
+    m: f64,
+    terms: super::microfacet::Microfacet,
+    v_index: [f64; 3],
+) -> [f64; 3] {
+    let n_dot_v = n.dot(v);
+    if n_dot_v <= 0.0 {
+        return [0.0; 3];
+    }
+    let r = super::common::safe_normalize(n * (2.0 * n_dot_v) - v, n);
+    let l = env_prefiltered(pre, r, m);
+    let e = super::multiscatter::ms_albedo(terms, n_dot_v, m);
+    let b = env_split_b(terms, n_dot_v, m);
+    let f0 = super::microfacet::microfacet_f(terms, 1.0, v_index);
+    std::array::from_fn(|i| l[i] * (f0[i] * (e - b) + b))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -163,6 +301,29 @@ mod tests {
         for k in 0..9 {
             assert!((sum[k] - exact[k]).abs() < 1e-5, "basis {k}: quadrature {} closed form {}", sum[k], exact[k]);
         }
+    }
+
+    /// The B table against the f64 integral at 256² samples between its nodes: within the
+    /// bilinear interpolation's error, as the E table, for every D × G pair; and B never above E.
+    #[test]
+    fn the_b_table_matches_its_integral() {
+        use crate::lighting::microfacet::{Distribution, Masking, Microfacet};
+        use crate::params::NamedValue;
+        let mut worst = 0.0f64;
+        for &(_, d) in Distribution::ALL {
+            for &(_, g) in Masking::ALL {
+                let terms = Microfacet { d, g, ..Microfacet::CHAPTER };
+                for (n_dot_v, m) in [(0.53, 0.47), (0.9, 0.2), (0.2, 0.8), (0.1, 0.35)] {
+                    let grazing = |c: f64| (1.0f64 - c).clamp(0.0, 1.0).powi(5);
+                    let exact = crate::furnace::weighted_albedo(terms, m, n_dot_v, 256, grazing);
+                    let table = env_split_b(terms, n_dot_v, m);
+                    worst = worst.max((exact - table).abs());
+                    assert!(table <= crate::lighting::multiscatter::ms_albedo(terms, n_dot_v, m) + 1e-6);
+                }
+            }
+        }
+        // Measured 5.2e-3; the E table's bound between its nodes (multiscatter.rs) is 1e-2.
+        assert!(worst < 1e-2, "largest |table − integral| {worst}");
     }
 
     /// A 1×1 map is the uniform ambient it stands for: `E/π = L` for every normal, to rounding.

@@ -6,7 +6,7 @@
 use super::area_points::{area_emitter, area_point_count, area_point_sample};
 use super::brdf::{SpecularModel, fresnel_v_from_mu, light_contribution};
 use super::common::safe_normalize;
-use super::environment::{ShCoefficients, env_sh_radiance};
+use super::environment::{ShCoefficients, env_sh_radiance, env_specular};
 use super::lights::{Light, LightSample, MAX_LIGHTS, light_sample};
 use super::models::{IlluminationModel, lambert_rule_fill, lambert_rule_lit, sum_contribution, transmitted_term};
 use crate::scene::Material;
@@ -49,7 +49,7 @@ pub fn shade_with_visibility(
     model: IlluminationModel,
     visibility: impl FnMut(usize, &Light, u32, DVec3) -> f64,
 ) -> [f64; 3] {
-    let at = ShadePoint { p, n_in, eye, mat, ambient, env_sh: None, specular, model };
+    let at = ShadePoint { p, n_in, eye, mat, ambient, env_sh: None, env_prefiltered: None, specular, model };
     shade_exact(&at, lights, visibility, &mut |_| None)
 }
 
@@ -62,6 +62,8 @@ pub struct ShadePoint<'a> {
     pub ambient: [f64; 3],
     /// The environment light's nine SH terms, where it is drawn by them (docs/environment.md).
     pub env_sh: Option<&'a ShCoefficients>,
+    /// Its prefiltered levels, where its specular is drawn by the split sum.
+    pub env_prefiltered: Option<&'a [[f32; 4]]>,
     pub specular: SpecularModel,
     pub model: IlluminationModel,
 }
@@ -93,7 +95,7 @@ pub fn shade_exact(
     mut visibility: impl FnMut(usize, &Light, u32, DVec3) -> f64,
     exact: &mut dyn FnMut(&AreaAt) -> Option<[f64; 3]>,
 ) -> [f64; 3] {
-    let ShadePoint { p, n_in, eye, mat, ambient, env_sh, specular, model } = *at;
+    let ShadePoint { p, n_in, eye, mat, ambient, env_sh, env_prefiltered, specular, model } = *at;
     // The view vector: toward the eye (w = 1), or the orthographic camera's one direction (w = 0).
     let v = safe_normalize(eye.truncate() - p * eye.w, DVec3::Y);
     let n = safe_normalize(n_in, v);
@@ -114,6 +116,15 @@ pub fn shade_exact(
             for i in 0..3 {
                 total[i] += e[i] * mat.r_a * c[i];
             }
+        }
+    }
+    // The environment's specular by the split sum: Cook–Torrance under the Phong model only.
+    if let Some(pre) =
+        env_prefiltered.filter(|_| model == IlluminationModel::Phong && specular == SpecularModel::CookTorrance)
+    {
+        let e = env_specular(pre, n, v, mat.m, mat.microfacet, v_index);
+        for i in 0..3 {
+            total[i] += mat.r_s * e[i];
         }
     }
     // The Lambert rule's I: the brightest light at the point, per channel, in [0, 1].

@@ -286,6 +286,7 @@ fn model_term_towards(ctx: &Context, p: DVec3, n: DVec3, from: DVec3, mat: &Mate
         mat,
         ambient: [0.0; 3],
         env_sh: None,
+        env_prefiltered: None,
         specular: ctx.specular,
         model: ctx.scene.illumination,
     };

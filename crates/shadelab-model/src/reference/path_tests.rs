@@ -104,6 +104,7 @@ fn glossy_bounces_converge_to_the_albedo_integral() {
                     mat: &material,
                     ambient: [0.0; 3],
                     env_sh: None,
+                    env_prefiltered: None,
                     specular,
                     model: scene.illumination,
                 };

@@ -9,7 +9,7 @@ use std::sync::Arc;
 
 fn with_env(source: EnvSource) -> Scene {
     let mut s = Scene::builtin("default").unwrap();
-    s.environment = Some(Environment { source, intensity: 2.5, rotation_deg: -30.0 });
+    s.environment = Some(Environment { source, intensity: 2.5, rotation_deg: -30.0, specular: false });
     s
 }
 
@@ -37,7 +37,8 @@ fn a_map_is_read_beside_the_scene_file() {
     let path = dir.join("s.gltf");
     save_scene(&scene, &SceneSettings::default(), &path).unwrap();
     let back = load_scene(&path).unwrap();
-    let Some(Environment { source: EnvSource::Image(read), intensity, rotation_deg }) = back.scene.environment else {
+    let Some(Environment { source: EnvSource::Image(read), intensity, rotation_deg, .. }) = back.scene.environment
+    else {
         panic!("no map: {:?}", back.scene.environment)
     };
     assert_eq!((read.texels.clone(), intensity, rotation_deg), (img.texels, 2.5, -30.0));

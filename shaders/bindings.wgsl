@@ -4,6 +4,10 @@
 // The Rust side of each group is in crates/shadelab-render/src/pipelines.rs.
 
 @group(0) @binding(0) var<uniform> globals: Globals;
+#if EFFECT_ENVIRONMENT_SPECULAR
+// The environment's prefiltered levels (environment.wgsl), written only when a scene has one.
+@group(0) @binding(1) var<storage, read> env_levels: array<vec4<f32>>;
+#endif
 @group(1) @binding(0) var<uniform> object: Object;
 
 // The per-vertex modes' lighting passes (@group(3); binding 0 is the shadow pass's): a compute

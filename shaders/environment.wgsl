@@ -1,6 +1,7 @@
 // An environment's diffuse light from nine spherical-harmonic coefficients (globals.env_sh,
 // written by environment.rs's sh_project; Ramamoorthi and Hanrahan): E(n)/π, in the unit of the
-// chapter's I_a. Only with the environment effect (the whole file is one #if). The f64 twin is
+// chapter's I_a; and its specular by the split sum, from the prefiltered levels in env_levels
+// (bindings.wgsl). Each part only with its effect. The f64 twin is
 // crates/shadelab-model/src/lighting/environment.rs.
 
 #if EFFECT_ENVIRONMENT_SH
@@ -23,5 +24,102 @@ fn env_sh_radiance(n: vec3<f32>) -> vec3<f32> {
     e += globals.env_sh[6].rgb * (SH_Y20 * (3.0 * y * y - 1.0));
     e += globals.env_sh[7].rgb * (SH_Y2 * x * y) + globals.env_sh[8].rgb * (SH_Y22 * (x * x - z * z));
     return max(e, vec3(0.0));
+}
+#endif
+
+#if EFFECT_ENVIRONMENT_SPECULAR
+// The prefiltered environment's levels: level k blurred for roughness k/(ENV_LEVELS − 1), level
+// 0 ENV_LEVEL_WIDTH texels wide and half as high, every second level halving both.
+const ENV_LEVELS: u32 = 6u;
+const ENV_LEVEL_WIDTH: u32 = 64u;
+// 1/(2π) and 1/π: turns and half turns from radians.
+const ENV_INV_TAU: f32 = 0.15915494;
+const ENV_INV_PI: f32 = 0.31830989;
+
+fn env_level_size(k: u32) -> vec2<u32> {
+    let w = ENV_LEVEL_WIDTH >> (k / 2u);
+    return vec2(w, w / 2u);
+}
+
+fn env_level_offset(k: u32) -> u32 {
+    var o = 0u;
+    for (var j = 0u; j < k; j++) {
+        let s = env_level_size(j);
+        o += s.x * s.y;
+    }
+    return o;
+}
+
+// Texel (x, y) of level k: x wraps around, y clamps at the poles.
+fn env_texel(k: u32, x: i32, y: i32) -> vec3<f32> {
+    let s = env_level_size(k);
+    let w = i32(s.x);
+    let xi = u32(((x % w) + w) % w);
+    let yi = u32(clamp(y, 0, i32(s.y) - 1));
+    return env_levels[env_level_offset(k) + yi * s.x + xi].rgb;
+}
+
+// Level k toward unit world direction d, bilinear between texel centres.
+fn env_level_sample(k: u32, d: vec3<f32>) -> vec3<f32> {
+    let s = vec2<f32>(env_level_size(k));
+    let turns = atan2(d.z, d.x) * ENV_INV_TAU;
+    let u = (turns - floor(turns)) * s.x - 0.5;
+    let v = acos(clamp(d.y, -1.0, 1.0)) * ENV_INV_PI * s.y - 0.5;
+    let x0 = floor(u);
+    let y0 = floor(v);
+    let fu = u - x0;
+    let fv = v - y0;
+    let xi = i32(x0);
+    let yi = i32(y0);
+    let top = env_texel(k, xi, yi) * (1.0 - fu) + env_texel(k, xi + 1, yi) * fu;
+    let bottom = env_texel(k, xi, yi + 1) * (1.0 - fu) + env_texel(k, xi + 1, yi + 1) * fu;
+    return top * (1.0 - fv) + bottom * fv;
+}
+
+// The prefiltered environment toward r for roughness m (clamped to [0, 1]), linear between the
+// two levels around it.
+fn env_prefiltered(r: vec3<f32>, m: f32) -> vec3<f32> {
+    let t = clamp(m, 0.0, 1.0) * f32(ENV_LEVELS - 1u);
+    let k = min(u32(floor(t)), ENV_LEVELS - 2u);
+    let f = t - f32(k);
+    return env_level_sample(k, r) * (1.0 - f) + env_level_sample(k + 1u, r) * f;
+}
+
+// One node of the B table (globals.env_split_b, laid out as the compensation's E table).
+fn env_split_b_node(base: u32, j: u32, i: u32) -> f32 {
+    let k = base + j * MS_TABLE_SIDE + i;
+    return globals.env_split_b[k / 4u][k % 4u];
+}
+
+// B, the share of the lobe's albedo Schlick's F adds toward grazing, of the material's D and G
+// at n_dot_v and m, bilinear between the nodes as the E table.
+fn env_split_b(terms: u32, n_dot_v: f32, m: f32) -> f32 {
+    let d = terms & MICROFACET_FIELD_MASK;
+    let g = (terms >> MICROFACET_FIELD_BITS) & MICROFACET_FIELD_MASK;
+    let base = (d * 3u + g) * MS_TABLE_SIDE * MS_TABLE_SIDE;
+    let last = f32(MS_TABLE_SIDE - 1u);
+    let u = clamp(n_dot_v, 0.0, 1.0) * last;
+    let w = clamp(m, 0.0, 1.0) * last;
+    let i = min(u32(floor(u)), MS_TABLE_SIDE - 2u);
+    let j = min(u32(floor(w)), MS_TABLE_SIDE - 2u);
+    let fu = u - f32(i);
+    let fw = w - f32(j);
+    let low = env_split_b_node(base, j, i) * (1.0 - fu) + env_split_b_node(base, j, i + 1u) * fu;
+    let high = env_split_b_node(base, j + 1u, i) * (1.0 - fu) + env_split_b_node(base, j + 1u, i + 1u) * fu;
+    return low * (1.0 - fw) + high * fw;
+}
+
+// The split sum before r_s: the prefiltered environment toward the mirror direction, times
+// F0·(E − B) + B: E the lobe's albedo for the material's D and G at N·V (ms_table.wgsl), B its
+// share toward grazing, F0 the material's F at normal incidence.
+fn env_specular(n: vec3<f32>, v: vec3<f32>, m: f32, terms: u32, v_index: vec3<f32>) -> vec3<f32> {
+    let n_dot_v = dot(n, v);
+    if (n_dot_v <= 0.0) {
+        return vec3(0.0);
+    }
+    let r = safe_normalize(n * (2.0 * n_dot_v) - v, n);
+    let e = ms_albedo(terms, n_dot_v, m);
+    let b = env_split_b(terms, n_dot_v, m);
+    return env_prefiltered(r, m) * (microfacet_f(terms, 1.0, v_index) * (e - b) + b);
 }
 #endif

@@ -1,9 +1,10 @@
 // The lobe's albedo E from the project's table (globals.ms_albedo, multiscatter.rs's ms_table):
 // per D × G pair, MS_TABLE_SIDE × MS_TABLE_SIDE nodes over N·V (across) and m (down), each in
-// [0, 1], read bilinearly. Only with the multiple-scattering effect (the whole file is one #if).
+// [0, 1], read bilinearly. Only with the multiple-scattering effect or the environment's split sum
+// (the whole file is one #if).
 // The f64 twin is crates/shadelab-model/src/lighting/multiscatter.rs.
 
-#if EFFECT_MULTIPLE_SCATTERING
+#if EFFECT_MULTIPLE_SCATTERING||EFFECT_ENVIRONMENT_SPECULAR
 const MS_TABLE_SIDE: u32 = 16u;
 const MS_PAIRS: u32 = 6u;
 

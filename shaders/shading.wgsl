@@ -42,6 +42,14 @@ fn shade(p: vec3<f32>, n_in: vec3<f32>, surface: Surface, pixel: vec2<f32>) -> v
         total += env_sh_radiance(n) * surface.r_a * c;
     }
 #endif
+#if EFFECT_ENVIRONMENT_SPECULAR
+#if EFFECT_SPECULAR_COOK_TORRANCE
+    // The environment's specular by the split sum: Cook–Torrance under the Phong model only.
+    if (globals.specular_model == SPECULAR_COOK_TORRANCE && globals.illumination == ILLUMINATION_PHONG) {
+        total += object.r_s * env_specular(n, v, surface.m, terms, v_index);
+    }
+#endif
+#endif
     // The Lambert rule's I: the brightest light at the point, per channel, in [0, 1] (model_term
     // raises it; without the rule it stays 0, unread).
     var i_max = vec3(0.0);

@@ -3,6 +3,8 @@
 // (crates/shadelab-render/src/shadow_pass.rs) and the light loop's pipeline constants
 // (crates/shadelab-render/src/light_loop.rs). Bindings are in bindings.wgsl.
 
+const ENV_SPLIT_B_VEC4S: u32 = 384u;
+
 struct Globals {
     view_proj: mat4x4<f32>,
     // The eye, homogeneous: (position, 1) for a perspective camera, (−forward, 0) for an
@@ -23,6 +25,9 @@ struct Globals {
     ms_albedo: array<vec4<f32>, MS_TABLE_VEC4S>,
     // The environment's nine SH coefficients (rgb; environment.wgsl); zero without one.
     env_sh: array<vec4<f32>, 9>,
+    // The split sum's B table (environment.rs's env_split_b_table), four floats a slot; zero
+    // without an environment.
+    env_split_b: array<vec4<f32>, ENV_SPLIT_B_VEC4S>,
 }
 
 struct Object {

@@ -48,8 +48,25 @@ impl Renderer {
         self.queue.write_buffer(&gpu_scene.objects_buf, 0, &bytes);
         *gpu_scene.glass_exits.lock().expect("not poisoned") = exits;
         *gpu_scene.glass_order.lock().expect("not poisoned") = crate::glass_pass::glass_order(scene);
+        if program.effects().has(Effect::EnvironmentSpecular) {
+            self.write_env_levels(gpu_scene, scene);
+        }
         let shadows = program.effects().has(Effect::CastShadows);
         self.write_shadows(gpu_scene, scene, shadows, target.width as f64 / target.height.max(1) as f64);
+    }
+
+    /// The environment's prefiltered levels, computed and written only when the environment (or
+    /// the sun it follows) changed since the last write: orbiting writes the uniforms every frame.
+    fn write_env_levels(&self, gpu_scene: &SceneGpu, scene: &Scene) {
+        let Some(env) = &scene.environment else { return };
+        let sun = scene.lights.iter().find(|l| l.kind == shadelab_model::LightKind::Directional).map(|l| l.direction);
+        let mut of = gpu_scene.env_levels_of.lock().unwrap_or_else(|e| e.into_inner());
+        if of.as_ref().is_some_and(|(e, s)| e == env && *s == sun) {
+            return;
+        }
+        let levels = env.prefiltered(&scene.lights);
+        self.queue.write_buffer(&gpu_scene.env_levels, 0, bytemuck::cast_slice(&levels));
+        *of = Some((env.clone(), sun));
     }
 
     /// Record the scene pass of `program` into `encoder`, drawing into `target` with the uniforms

@@ -42,11 +42,25 @@ fn uniform_entry(dynamic: bool, size: u64) -> wgpu::BindGroupLayoutEntry {
     }
 }
 
+/// The environment's prefiltered levels (`environment.wgsl`'s `env_levels`), read-only.
+fn env_levels_entry() -> wgpu::BindGroupLayoutEntry {
+    wgpu::BindGroupLayoutEntry {
+        binding: 1,
+        visibility: wgpu::ShaderStages::FRAGMENT.union(wgpu::ShaderStages::COMPUTE),
+        ty: wgpu::BindingType::Buffer {
+            ty: wgpu::BufferBindingType::Storage { read_only: true },
+            has_dynamic_offset: false,
+            min_binding_size: wgpu::BufferSize::new(16),
+        },
+        count: None,
+    }
+}
+
 impl Renderer {
     pub fn new(device: &wgpu::Device, queue: &wgpu::Queue) -> Renderer {
         let globals_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("globals"),
-            entries: &[uniform_entry(false, size_of::<GlobalsUniform>() as u64)],
+            entries: &[uniform_entry(false, size_of::<GlobalsUniform>() as u64), env_levels_entry()],
         });
         let object_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("object"),

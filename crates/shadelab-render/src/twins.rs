@@ -290,6 +290,13 @@ fn wgsl_codes_equal_rust_codes() {
     assert_eq!(wgsl_constant(&lighting, "MS_PAIRS"), Some(MS_PAIRS as f64));
     assert_eq!(wgsl_constant(&lighting, "MS_TABLE_VEC4S"), Some(MS_TABLE_VEC4S as f64));
     assert!(MS_PAIRS * MS_TABLE_SIDE * MS_TABLE_SIDE <= 4 * MS_TABLE_VEC4S);
+    // The prefiltered levels' shape, as environment.rs lays it out.
+    use shadelab_model::lighting::environment::{ENV_LEVEL_WIDTH, ENV_LEVELS};
+    assert_eq!(wgsl_constant(&lighting, "ENV_LEVELS"), Some(ENV_LEVELS as f64));
+    assert_eq!(wgsl_constant(&lighting, "ENV_LEVEL_WIDTH"), Some(ENV_LEVEL_WIDTH as f64));
+    let vec4s = shadelab_model::lighting::environment::ENV_SPLIT_B_VEC4S;
+    assert_eq!(wgsl_constant(&lighting, "ENV_SPLIT_B_VEC4S"), Some(vec4s as f64));
+    assert!(MS_PAIRS * MS_TABLE_SIDE * MS_TABLE_SIDE <= 4 * vec4s);
     // The SH basis's factors, as environment.rs writes them, to f32.
     use shadelab_model::lighting::environment::{SH_Y0, SH_Y1, SH_Y2, SH_Y20, SH_Y22};
     for (name, v) in [("SH_Y0", SH_Y0), ("SH_Y1", SH_Y1), ("SH_Y2", SH_Y2), ("SH_Y20", SH_Y20), ("SH_Y22", SH_Y22)] {

@@ -57,6 +57,8 @@ pub struct GlobalsUniform {
     pub ms_albedo: [[f32; 4]; MS_TABLE_VEC4S],
     /// The environment's nine SH coefficients (`Environment::sh`); zero without one.
     pub env_sh: [[f32; 4]; 9],
+    /// The split sum's B table (`environment::env_split_b_vec4s`); zero without an environment.
+    pub env_split_b: [[f32; 4]; shadelab_model::lighting::environment::ENV_SPLIT_B_VEC4S],
 }
 
 #[repr(C)]
@@ -227,12 +229,20 @@ impl GlobalsUniform {
             specular_model: specular.code(),
             illumination: scene.illumination.code(),
             lights,
-            ms_albedo: if scene.materials.iter().any(|m| m.microfacet.multiple_scattering) {
+            // The split sum reads the same table (its E), with or without the compensation.
+            ms_albedo: if scene.materials.iter().any(|m| m.microfacet.multiple_scattering)
+                || scene.environment.is_some()
+            {
                 shadelab_model::lighting::multiscatter::ms_table_vec4s()
             } else {
                 [[0.0; 4]; MS_TABLE_VEC4S]
             },
             env_sh: scene.environment.as_ref().map_or([[0.0; 4]; 9], |e| e.sh(&scene.lights).map(|c| rgb(c, 0.0))),
+            env_split_b: if scene.environment.is_some() {
+                shadelab_model::lighting::environment::env_split_b_vec4s()
+            } else {
+                [[0.0; 4]; shadelab_model::lighting::environment::ENV_SPLIT_B_VEC4S]
+            },
         }
     }
 }

@@ -98,6 +98,11 @@ pub struct SceneGpu {
     lit: [std::sync::OnceLock<Vec<Option<crate::lighting_pass::LitColors>>>; 4],
     pub(crate) globals: wgpu::Buffer,
     pub(crate) globals_bind: wgpu::BindGroup,
+    /// The environment's prefiltered levels (86 KiB), written only when a program draws its
+    /// split sum, and the environment (with the sun it follows) they were written for.
+    pub(crate) env_levels: wgpu::Buffer,
+    pub(crate) env_levels_of:
+        std::sync::Mutex<Option<(shadelab_model::lighting::env_map::Environment, Option<glam::DVec3>)>>,
     pub(crate) objects_buf: wgpu::Buffer,
     /// The object groups (uniforms, each slot's texture and sampler), one per distinct set of
     /// textures (`textures::bind_sets`): 0 with white texels for objects without any.
@@ -227,10 +232,19 @@ impl Uploader {
             usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
             mapped_at_creation: false,
         });
+        let env_levels = device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("environment levels"),
+            size: (shadelab_model::lighting::environment::ENV_PREFILTERED_TEXELS * 16) as u64,
+            usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_DST,
+            mapped_at_creation: false,
+        });
         let globals_bind = device.create_bind_group(&wgpu::BindGroupDescriptor {
             label: Some("globals"),
             layout: &self.globals_layout,
-            entries: &[wgpu::BindGroupEntry { binding: 0, resource: globals.as_entire_binding() }],
+            entries: &[
+                wgpu::BindGroupEntry { binding: 0, resource: globals.as_entire_binding() },
+                wgpu::BindGroupEntry { binding: 1, resource: env_levels.as_entire_binding() },
+            ],
         });
         let (sets, object_bind_of) = crate::textures::bind_sets(scene);
         let objects_binds = self.objects_binds(scene, &objects_buf, &sets);
@@ -240,6 +254,8 @@ impl Uploader {
             lit: Default::default(),
             globals,
             globals_bind,
+            env_levels,
+            env_levels_of: Default::default(),
             objects_buf,
             objects_binds,
             object_bind_of,

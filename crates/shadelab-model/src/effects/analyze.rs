@@ -185,12 +185,14 @@ fn decide_diffuse_specular(
         },
     );
     let max_rs = used.iter().map(|m| m.r_s).fold(0.0, f64::max);
+    // An environment's split sum lights the Cook–Torrance lobe without any light.
+    let env_specular = scene.environment.as_ref().is_some_and(|e| e.specular);
     let spec_reason = |this: SpecularModel| -> (bool, String) {
         if !phong_model {
             (false, other_model.clone())
         } else if specular != this {
             (false, format!("the specular model is {specular}"))
-        } else if !lit {
+        } else if !lit && !(this == SpecularModel::CookTorrance && env_specular) {
             (false, "no lights".into())
         } else if max_rs > 0.0 {
             (true, format!("the specular model is {specular} and some material has r_s > 0"))
@@ -206,6 +208,23 @@ fn decide_diffuse_specular(
     super::specular_terms::decide_microfacet_terms(a, used, on);
     super::specular_terms::decide_multiple_scattering(a, used, on);
     super::specular_terms::decide_fresnel_mix(a, used, on);
+}
+
+/// The environment's split-sum specular: an environment that asks for it, the Phong model with
+/// Cook–Torrance, and a material with a specular term.
+fn decide_environment_specular(a: &mut Analysis, scene: &Scene, used: &[&crate::scene::Material]) {
+    let env = scene.environment.as_ref();
+    let ct = a.key.has(Effect::SpecularCookTorrance) && scene.illumination == IlluminationModel::Phong;
+    let (on, why) = match env {
+        None => (false, "no environment light".to_string()),
+        Some(e) if !e.specular => (false, "the environment's specular is off".into()),
+        Some(_) if !ct => (false, "the split sum is Cook–Torrance's, under the Phong model".into()),
+        Some(_) if !used.iter().any(|m| m.r_s > 0.0) => (false, "every material has r_s = 0".into()),
+        Some(e) => {
+            (true, format!("the scene has an environment light ({}) and Cook–Torrance specular", e.source.name()))
+        }
+    };
+    a.decide(Effect::EnvironmentSpecular, on, why);
 }
 
 /// The ambient term, the Lambert rule, and the four-term sum with its transmitted term.
@@ -241,6 +260,7 @@ fn decide_ambient_and_sum(a: &mut Analysis, scene: &Scene, used: &[&crate::scene
             }
         },
     );
+    decide_environment_specular(a, scene, used);
     a.decide(Effect::LambertRule, model == IlluminationModel::Lambert, format!("the illumination model is {model}"));
     let sum = model == IlluminationModel::Sum;
     a.decide(

@@ -182,8 +182,10 @@ declare_effects! {
         name: "multiple-scattering compensation",
         label: "ms",
         define: Some("EFFECT_MULTIPLE_SCATTERING"),
-        functions: &["ms_compensation", "ms_albedo"],
-        members: &[("Globals", "ms_albedo")],
+        // The table's lookup (ms_albedo, and the globals' table) is shared with the environment's
+        // split sum, so it is neither effect's alone.
+        functions: &["ms_compensation"],
+        members: &[],
     },
     /// The diffuse weighted by what the dielectric layer's Fresnel leaves it, glTF's
     /// `fresnel_mix` (docs/model.md §5).
@@ -213,6 +215,25 @@ declare_effects! {
         define: Some("EFFECT_ENVIRONMENT_SH"),
         functions: &["env_sh_radiance"],
         members: &[("Globals", "env_sh")],
+    },
+    /// The environment light's specular by the split sum: a prefiltered environment times the
+    /// lobe's albedo split by Schlick's F (docs/environment.md).
+    EnvironmentSpecular {
+        explain: "environment specular r_s·L_pre(R, m)·(F0·(E − B) + B) by the split sum",
+        name: "environment specular",
+        label: "env-spec",
+        define: Some("EFFECT_ENVIRONMENT_SPECULAR"),
+        functions: &[
+            "env_level_size",
+            "env_level_offset",
+            "env_texel",
+            "env_level_sample",
+            "env_prefiltered",
+            "env_split_b_node",
+            "env_split_b",
+            "env_specular",
+        ],
+        members: &[("Globals", "env_split_b")],
     },
     /// The Lambert rule's lit part and fill (docs/model.md §1), the illumination model
     /// `IlluminationModel::Lambert`.

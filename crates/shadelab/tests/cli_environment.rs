@@ -33,7 +33,7 @@ fn the_environment_replaces_the_ambient() {
         image::open(path).unwrap().to_rgb8().into_raw()
     };
     let constant = draw(&[], "constant.png");
-    let mapped = draw(&["--environment", map.to_str().unwrap()], "mapped.png");
+    let mapped = draw(&["--environment", map.to_str().unwrap(), "--env-specular", "off"], "mapped.png");
     let worst = constant.iter().zip(&mapped).map(|(a, b)| a.abs_diff(*b)).max().unwrap();
     assert!(worst <= 1, "a 1×1 map of I_amb differs by {worst} levels");
 }
@@ -71,5 +71,7 @@ fn the_study_prints_its_rungs() {
     };
     let (constant, sh) = (rmse("| constant I_a"), rmse("| nine SH terms |"));
     assert!(sh < constant, "SH {sh} against constant {constant}: {out}");
-    assert!(out.contains("× ambient occlusion") && out.contains("sky environment"), "{out}");
+    let (split, bare) = (rmse("| nine SH terms + split-sum specular |"), rmse("| no environment light at all |"));
+    assert!(split.is_finite() && sh < bare, "split sum {split}, no environment {bare}: {out}");
+    assert!(out.contains("+ ambient occlusion of the diffuse") && out.contains("sky environment"), "{out}");
 }

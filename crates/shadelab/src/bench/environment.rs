@@ -1,8 +1,9 @@
 //! `shadelab bench environment`: what each approximation of the environment light costs against
 //! the path-traced truth (docs/environment.md). The rungs, each as the f64 twin of what it draws
-//! (the GPU matches its twin to 1e-5, `tests/tests/environment.rs`): the constant `I_a` of the
-//! environment's mean radiance, the nine SH terms, and the nine terms times ambient occlusion
-//! (f64 only: the GPU has no occlusion yet); each GPU rung timed side by side with the others.
+//! (the GPU matches its twin to about 1e-5, `tests/tests/environment.rs`): the constant `I_a` of
+//! the environment's mean radiance, the nine SH terms (diffuse), the nine terms with the split
+//! sum's specular, and those with the diffuse times ambient occlusion (f64 only: the GPU has no
+//! occlusion yet); each GPU rung timed side by side with the others.
 
 use crate::reference_views::traced_with_progress;
 use crate::{Failure, cli};
@@ -50,19 +51,29 @@ pub fn run(args: &cli::BenchAmbientArgs) -> Result<(), Failure> {
     let mean = sh[0].map(|c| c * SH_Y0);
     let constant = Scene { ambient: mean, environment: None, ..scene.clone() };
     let bare = Scene { ambient: [0.0; 3], environment: None, ..scene.clone() };
-    let sh_image = render_reference(&scene, settings.specular, w, h);
+    let diffuse = Scene {
+        environment: Some(shadelab_model::lighting::env_map::Environment { specular: false, ..env.clone() }),
+        ..scene.clone()
+    };
+    let split = Scene {
+        environment: Some(shadelab_model::lighting::env_map::Environment { specular: true, ..env.clone() }),
+        ..scene.clone()
+    };
+    let sh_image = render_reference(&diffuse, settings.specular, w, h);
+    let split_image = render_reference(&split, settings.specular, w, h);
     let constant_image = render_reference(&constant, settings.specular, w, h);
     let bare_image = render_reference(&bare, settings.specular, w, h);
     let start = web_time::Instant::now();
     let ao = ambient_occlusion(&scene, w, h, crate::ambient_views::AO_RAYS, 1);
     let ao_ms = start.elapsed().as_secs_f64() * 1e3;
+    // The diffuse part occluded, the specular part as drawn.
     let occluded: Vec<[f64; 3]> = (0..sh_image.pixels.len())
         .map(|i| {
-            let (s, b) = (sh_image.pixels[i], bare_image.pixels[i]);
-            std::array::from_fn(|c| b[c] + ao[i] * (s[c] - b[c]))
+            let (d, s, b) = (sh_image.pixels[i], split_image.pixels[i], bare_image.pixels[i]);
+            std::array::from_fn(|c| b[c] + ao[i] * (d[c] - b[c]) + (s[c] - d[c]))
         })
         .collect();
-    let [null_ms, constant_ms, sh_ms] = gpu_times(&scene, &constant, &settings, (w, h))?;
+    let [null_ms, constant_ms, sh_ms, split_ms] = gpu_times(&[&constant, &diffuse, &split], &settings, (w, h))?;
     let noise = {
         let n = truth.std_error.len().max(1) as f64;
         (truth.std_error.iter().map(|e| e.iter().map(|v| v * v).sum::<f64>() / 3.0).sum::<f64>() / n).sqrt()
@@ -88,7 +99,11 @@ pub fn run(args: &cli::BenchAmbientArgs) -> Result<(), Failure> {
     println!("| constant I_a (the chapter) | {constant_ms:.3} | {:.3e} |", rmse(&constant_image.pixels, &truth.pixels));
     println!("| nine SH terms | {sh_ms:.3} | {:.3e} |", rmse(&sh_image.pixels, &truth.pixels));
     println!(
-        "| nine SH terms × ambient occlusion, {} rays (f64 only: {ao_ms:.0} ms on the CPU) | | {:.3e} |",
+        "| nine SH terms + split-sum specular | {split_ms:.3} | {:.3e} |",
+        rmse(&split_image.pixels, &truth.pixels)
+    );
+    println!(
+        "| + ambient occlusion of the diffuse, {} rays (f64 only: {ao_ms:.0} ms on the CPU) | | {:.3e} |",
         crate::ambient_views::AO_RAYS,
         rmse(&occluded, &truth.pixels)
     );
@@ -96,28 +111,25 @@ pub fn run(args: &cli::BenchAmbientArgs) -> Result<(), Failure> {
     Ok(())
 }
 
-/// The GPU's frame for the null shader, the constant ambient and the SH terms, drawn
-/// interleaved: medians in ms.
-fn gpu_times(
-    scene: &Scene,
-    constant: &Scene,
-    settings: &RenderSettings,
-    (w, h): (u32, u32),
-) -> anyhow::Result<[f64; 3]> {
+/// The GPU's frame for the null shader and each of `scenes` (one scene's variants: the same
+/// geometry), drawn interleaved: medians in ms, the null shader's first.
+fn gpu_times(scenes: &[&Scene; 3], settings: &RenderSettings, (w, h): (u32, u32)) -> anyhow::Result<[f64; 4]> {
     let gpu = Gpu::headless(shadelab_render::AdapterChoice::from_env()).context("opening a GPU adapter")?;
     let mut r = Renderer::new(&gpu.device, &gpu.queue);
-    let gs = r.upload(scene)?;
+    let gs = r.upload(scenes[0])?;
     let target = Target::new(&gpu.device, w, h, shadelab_render::target::HDR_FORMAT);
-    let draws = [
-        TimedDraw { gpu_scene: &gs, scene, program: Program::NullBaseline, settings: RenderSettings::default() },
-        TimedDraw {
-            gpu_scene: &gs,
-            scene: constant,
-            program: Program::for_scene(constant, settings),
-            settings: *settings,
-        },
-        TimedDraw { gpu_scene: &gs, scene, program: Program::for_scene(scene, settings), settings: *settings },
-    ];
+    let mut draws = vec![TimedDraw {
+        gpu_scene: &gs,
+        scene: scenes[0],
+        program: Program::NullBaseline,
+        settings: RenderSettings::default(),
+    }];
+    draws.extend(scenes.iter().map(|s| TimedDraw {
+        gpu_scene: &gs,
+        scene: s,
+        program: Program::for_scene(s, settings),
+        settings: *settings,
+    }));
     let timer = FrameTimer::new(&gpu.device, &gpu.queue);
     let mut samples = timer.interleaved_draws(&mut r, &target, &draws, FRAMES, WARMUP);
     Ok(std::array::from_fn(|i| median(&mut samples[i])))

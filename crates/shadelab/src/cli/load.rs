@@ -109,6 +109,9 @@ fn environment(args: &SceneArgs, scene: &mut Scene) -> Result<(), Failure> {
     if let Some(v) = args.env_rotation {
         env.rotation_deg = v;
     }
+    if let Some(on) = args.env_specular {
+        env.specular = on;
+    }
     if let Some(t) = args.turbidity {
         match &mut env.source {
             EnvSource::Sky { turbidity, .. } => *turbidity = t,

@@ -299,6 +299,10 @@ pub struct SceneArgs {
     #[arg(long, value_name = "T", value_parser = values::real(shadelab_model::lighting::sky::TURBIDITY),
           help = within("The sky's turbidity, 2 clear to 10 hazy", shadelab_model::lighting::sky::TURBIDITY))]
     pub turbidity: Option<f64>,
+    /// Draw the environment's specular by the split sum (on) or leave it out (off), on the GPU
+    /// and in the exact reference; the path-traced truth always has it [default: on]
+    #[arg(long, value_name = "ON|OFF", value_parser = values::on_off())]
+    pub env_specular: Option<bool>,
 }
 
 /// `render --small-area-lights`: how an area light too small on screen for its area to show

@@ -1,6 +1,7 @@
 //! The panel's environment section (docs/environment.md): the source (none, a uniform colour in
-//! place of I_amb, the sky, or the map a file or `--environment` brought), its intensity, turn
-//! and the sky's turbidity, each slider over its declared range.
+//! place of I_amb, the sky, or the map a file or `--environment` brought), its intensity, turn,
+//! the sky's turbidity (each slider over its declared range) and whether the split sum draws its
+//! specular.
 
 use super::slider;
 use crate::viewer::Viewer;

@@ -56,8 +56,9 @@ impl crate::params::NamedValue for EnvKind {
 /// as many rows: 1.4° cells, finer than the sky's features away from the sun.
 pub const SKY_GRID: u32 = 256;
 /// The nine SH terms are projected from a grid of at most this many columns and half as many
-/// rows (a larger map averaged into it, the sky sampled at its cells' centres): 5.6° cells, on
-/// which bands 0–2 vary by under 1 %, and cheap enough to redo whenever the uniforms are written.
+/// rows (a larger map averaged into it, the sky sampled at its cells' centres): 5.6° cells, whose
+/// averaging moves a coefficient by a term second order in the cell's size, and cheap enough to
+/// redo whenever the uniforms are written.
 pub const SH_GRID: u32 = 64;
 
 /// An equirectangular radiance map in linear RGB: row 0 looks up (+y), rows are uniform in the

@@ -32,7 +32,8 @@ impl Renderer {
         *gpu_scene.clear.lock().unwrap_or_else(|e| e.into_inner()) = crate::uniforms::clear_color(scene);
         let flags = if settings.debug_nonfinite { crate::uniforms::FLAG_DEBUG_NONFINITE } else { 0 }
             | settings.glass_view.code() << crate::uniforms::GLASS_VIEW_SHIFT;
-        let g = GlobalsUniform::new(scene, target.width, target.height, flags, settings.specular);
+        let env_sh = self.env_sh(gpu_scene, scene);
+        let g = GlobalsUniform::new(scene, target.width, target.height, flags, settings.specular, env_sh);
         self.queue.write_buffer(&gpu_scene.globals, 0, bytemuck::bytes_of(&g));
         let mut bytes = vec![0u8; (gpu_scene.object_stride as usize) * scene.objects.len()];
         let mut exits = Vec::with_capacity(scene.objects.len());
@@ -55,11 +56,27 @@ impl Renderer {
         self.write_shadows(gpu_scene, scene, shadows, target.width as f64 / target.height.max(1) as f64);
     }
 
+    /// The environment's SH terms, projected again only when the environment (or the sun it
+    /// follows) changed since the last write: orbiting writes the uniforms every frame.
+    fn env_sh(&self, gpu_scene: &SceneGpu, scene: &Scene) -> [[f32; 4]; 9] {
+        let Some(env) = &scene.environment else { return [[0.0; 4]; 9] };
+        let sun = env_sun(scene);
+        let mut of = gpu_scene.env_sh_of.lock().unwrap_or_else(|e| e.into_inner());
+        match of.as_ref() {
+            Some((e, s, sh)) if e == env && *s == sun => *sh,
+            _ => {
+                let sh = crate::uniforms::env_sh(env, &scene.lights);
+                *of = Some((env.clone(), sun, sh));
+                sh
+            }
+        }
+    }
+
     /// The environment's prefiltered levels, computed and written only when the environment (or
-    /// the sun it follows) changed since the last write: orbiting writes the uniforms every frame.
+    /// the sun it follows) changed since the last write.
     fn write_env_levels(&self, gpu_scene: &SceneGpu, scene: &Scene) {
         let Some(env) = &scene.environment else { return };
-        let sun = scene.lights.iter().find(|l| l.kind == shadelab_model::LightKind::Directional).map(|l| l.direction);
+        let sun = env_sun(scene);
         let mut of = gpu_scene.env_levels_of.lock().unwrap_or_else(|e| e.into_inner());
         if of.as_ref().is_some_and(|(e, s)| e == env && *s == sun) {
             return;
@@ -252,4 +269,10 @@ fn scene_pass<'e>(
         occlusion_query_set: None,
         multiview_mask: None,
     })
+}
+
+/// The direction of the light a sky follows (the first directional light's), part of the key of
+/// what the frame keeps of an environment.
+fn env_sun(scene: &Scene) -> Option<glam::DVec3> {
+    scene.lights.iter().find(|l| l.kind == shadelab_model::LightKind::Directional).map(|l| l.direction)
 }

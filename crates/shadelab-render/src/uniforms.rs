@@ -55,7 +55,7 @@ pub struct GlobalsUniform {
     /// The multiple-scattering compensation's table (`multiscatter::ms_table_vec4s`); zero when
     /// no material uses it, so a scene without it never computes the table.
     pub ms_albedo: [[f32; 4]; MS_TABLE_VEC4S],
-    /// The environment's nine SH coefficients (`Environment::sh`); zero without one.
+    /// The environment's nine SH coefficients ([`env_sh`]); zero without one.
     pub env_sh: [[f32; 4]; 9],
     /// The split sum's B table (`environment::env_split_b_vec4s`); zero without an environment.
     pub env_split_b: [[f32; 4]; shadelab_model::lighting::environment::ENV_SPLIT_B_VEC4S],
@@ -214,8 +214,22 @@ pub fn clear_color(scene: &Scene) -> wgpu::Color {
     }
 }
 
+/// An environment's nine SH terms as `globals.env_sh` holds them.
+pub fn env_sh(env: &shadelab_model::lighting::env_map::Environment, lights: &[Light]) -> [[f32; 4]; 9] {
+    env.sh(lights).map(|c| rgb(c, 0.0))
+}
+
 impl GlobalsUniform {
-    pub fn new(scene: &Scene, width: u32, height: u32, flags: u32, specular: SpecularModel) -> Self {
+    /// The globals of `scene`; `env_sh` its environment's SH terms ([`env_sh`]), which the frame
+    /// keeps between writes since a large map's projection reads every texel.
+    pub fn new(
+        scene: &Scene,
+        width: u32,
+        height: u32,
+        flags: u32,
+        specular: SpecularModel,
+        env_sh: [[f32; 4]; 9],
+    ) -> Self {
         let mut lights = [LightUniform::zeroed(); MAX_LIGHTS];
         for (slot, l) in lights.iter_mut().zip(&scene.lights) {
             *slot = LightUniform::new(l);
@@ -237,7 +251,7 @@ impl GlobalsUniform {
             } else {
                 [[0.0; 4]; MS_TABLE_VEC4S]
             },
-            env_sh: scene.environment.as_ref().map_or([[0.0; 4]; 9], |e| e.sh(&scene.lights).map(|c| rgb(c, 0.0))),
+            env_sh,
             env_split_b: if scene.environment.is_some() {
                 shadelab_model::lighting::environment::env_split_b_vec4s()
             } else {

@@ -103,6 +103,10 @@ pub struct SceneGpu {
     pub(crate) env_levels: wgpu::Buffer,
     pub(crate) env_levels_of:
         std::sync::Mutex<Option<(shadelab_model::lighting::env_map::Environment, Option<glam::DVec3>)>>,
+    /// The environment's nine SH terms as the globals hold them, and the environment (with its
+    /// sun) they were projected for: a large map's projection reads every texel.
+    pub(crate) env_sh_of:
+        std::sync::Mutex<Option<(shadelab_model::lighting::env_map::Environment, Option<glam::DVec3>, [[f32; 4]; 9])>>,
     pub(crate) objects_buf: wgpu::Buffer,
     /// The object groups (uniforms, each slot's texture and sampler), one per distinct set of
     /// textures (`textures::bind_sets`): 0 with white texels for objects without any.
@@ -256,6 +260,7 @@ impl Uploader {
             globals_bind,
             env_levels,
             env_levels_of: Default::default(),
+            env_sh_of: Default::default(),
             objects_buf,
             objects_binds,
             object_bind_of,

@@ -10,6 +10,7 @@ mod cornell_tests;
 mod env_tests;
 mod glass;
 mod intersect;
+mod occlusion_bake;
 mod path;
 #[cfg(test)]
 mod path_tests;
@@ -19,6 +20,7 @@ mod tests;
 
 pub use ambient::{AO_RADIUS_REL, AmbientLadder, ambient_occlusion};
 pub use glass::{GLASS_MAX_DEPTH, GLASS_MIN_WEIGHT, SECONDARY_RAY_OFFSET};
+pub use occlusion_bake::bake_occlusion;
 pub use path::{FIREFLY_MIN_SPP, FIREFLY_SHARE, PATH_COS_MIN, PathSettings};
 pub use shadow_rays::SHADOW_RAY_OFFSET_REL;
 
@@ -174,9 +176,20 @@ pub fn render_reference(scene: &Scene, specular: SpecularModel, width: u32, heig
 /// [`render_reference`].
 pub fn render_drawn(scene: &Scene, specular: SpecularModel, width: u32, height: u32) -> ReferenceImage {
     let mut img = ReferenceImage::empty(width, height, scene.background);
-    let env = scene.environment.as_ref().map(|e| e.bake(&scene.lights));
+    let env = bake_env(scene);
     trace_rows(scene, &Geometry::new(scene), specular, &mut img, 0..height, false, None, env.as_ref());
     img
+}
+
+/// The scene's environment made ready to shade, with its occlusion grid where it asks for one
+/// ([`bake_occlusion`] with `OCC_RAYS`, seed 1: the GPU's grid, node for node).
+pub fn bake_env(scene: &Scene) -> Option<EnvLight> {
+    let env = scene.environment.as_ref()?;
+    let mut light = env.bake(&scene.lights);
+    if env.occlusion {
+        light.occlusion = bake_occlusion(scene, crate::lighting::occlusion::OCC_RAYS, 1);
+    }
+    Some(light)
 }
 
 /// [`render_reference`] a few rows at a time, for a caller without threads (the browser, which
@@ -202,7 +215,7 @@ impl ReferenceJob {
         let scene = Scene { lights: exact, ..scene.clone() };
         let img = ReferenceImage::empty(width, height, scene.background);
         let geo = Geometry::new(&scene);
-        let env = scene.environment.as_ref().map(|e| e.bake(&scene.lights));
+        let env = bake_env(&scene);
         ReferenceJob { scene, geo, specular, paths: None, unit: None, env, img, next_row: 0 }
     }
 
@@ -480,6 +493,7 @@ impl Context<'_> {
         // The split sum where the scene's environment asks the GPU for it.
         let split_sum = scene.environment.as_ref().is_some_and(|e| e.specular);
         let env_prefiltered = drawn.filter(|_| split_sum).map(|e| e.prefiltered.as_slice());
+        let env_occlusion = drawn.and_then(|e| e.occlusion.as_ref());
         let at = ShadePoint {
             p,
             n_in: n,
@@ -488,6 +502,7 @@ impl Context<'_> {
             ambient: scene.ambient,
             env_sh,
             env_prefiltered,
+            env_occlusion,
             specular,
             model: scene.illumination,
         };

@@ -32,6 +32,9 @@ pub(super) struct EnvironmentExtras {
     /// False: the GPU leaves out its split-sum specular; absent is true.
     #[serde(skip_serializing_if = "Option::is_none")]
     specular: Option<Flag>,
+    /// True: the GPU occludes its diffuse light by the precomputed grid; absent is false.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    occlusion: Option<Flag>,
 }
 
 /// The environment `ex` describes; its map from a data URI or a file read through `externals`. A source without what it
@@ -70,6 +73,7 @@ pub(super) fn read_environment(
         intensity: ex.intensity.map_or(1.0, |v| v.0),
         rotation_deg: ex.rotation.map_or(0.0, |v| v.0),
         specular: ex.specular.is_none_or(|f| f.0),
+        occlusion: ex.occlusion.is_some_and(|f| f.0),
     })
 }
 
@@ -80,6 +84,7 @@ pub(super) fn write_environment(env: &Environment) -> EnvironmentExtras {
         intensity: Some(env.intensity.into()),
         rotation: Some(env.rotation_deg.into()),
         specular: (!env.specular).then_some(Flag(false)),
+        occlusion: env.occlusion.then_some(Flag(true)),
         ..Default::default()
     };
     match &env.source {

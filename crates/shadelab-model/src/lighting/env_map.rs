@@ -132,12 +132,15 @@ pub struct Environment {
     pub rotation_deg: f64,
     /// Whether the GPU draws its specular by the split sum (the reference's truth always has it).
     pub specular: bool,
+    /// Whether the GPU occludes its diffuse light by the precomputed grid (`occlusion.rs`); the
+    /// truth always traces visibility.
+    pub occlusion: bool,
 }
 
 impl Environment {
     /// An environment of `source` at intensity 1, unturned.
     pub fn new(source: EnvSource) -> Environment {
-        Environment { source, intensity: 1.0, rotation_deg: 0.0, specular: true }
+        Environment { source, intensity: 1.0, rotation_deg: 0.0, specular: true, occlusion: false }
     }
 
     /// The nine SH coefficients the GPU's diffuse term reads (and the exact reference's twin).
@@ -154,7 +157,7 @@ impl Environment {
         let sh = self.sh(lights);
         let prefiltered = self.prefiltered(lights);
         let sampling = Distribution::new(&radiance.grid());
-        EnvLight { radiance, turn, sh, prefiltered, sampling }
+        EnvLight { radiance, turn, sh, prefiltered, sampling, occlusion: None }
     }
 
     /// The prefiltered levels the split sum reads (`environment.rs`'s `env_prefiltered`), in
@@ -231,6 +234,9 @@ pub struct EnvLight {
     /// The prefiltered levels the GPU's specular reads ([`Environment::prefiltered`]).
     pub prefiltered: Vec<[f32; 4]>,
     sampling: Distribution,
+    /// The scene's occlusion grid, where the environment asks for it: the geometry's, so the
+    /// reference bakes it beside the light (`reference::bake_env`).
+    pub occlusion: Option<super::occlusion::OcclusionGrid>,
 }
 
 #[derive(Clone, Debug)]

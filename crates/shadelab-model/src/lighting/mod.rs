@@ -17,6 +17,7 @@
 //! - [`environment`] ↔ `environment.wgsl`: an environment's diffuse light from nine SH
 //!   coefficients; [`env_map`] (the environment light, its radiance and sampling), [`sky`]
 //!   (Preetham's sky) and [`env_file`] (HDR and EXR maps) have no WGSL twin.
+//! - [`occlusion`] ↔ `occlusion.wgsl`: the environment's occlusion, from a precomputed grid.
 //!
 //! `shadows.rs` and `shadows/cascades.rs` at the crate root are the twins of `shadow_math.wgsl`
 //! and `shadows.wgsl`; `scene/material.rs` and `scene/texture.rs` those of `surface.wgsl`.
@@ -34,6 +35,7 @@ pub mod lights;
 pub mod microfacet;
 pub mod models;
 pub mod multiscatter;
+pub mod occlusion;
 pub mod shading;
 pub mod sky;
 pub mod transmission;

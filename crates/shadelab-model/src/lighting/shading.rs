@@ -49,7 +49,18 @@ pub fn shade_with_visibility(
     model: IlluminationModel,
     visibility: impl FnMut(usize, &Light, u32, DVec3) -> f64,
 ) -> [f64; 3] {
-    let at = ShadePoint { p, n_in, eye, mat, ambient, env_sh: None, env_prefiltered: None, specular, model };
+    let at = ShadePoint {
+        p,
+        n_in,
+        eye,
+        mat,
+        ambient,
+        env_sh: None,
+        env_prefiltered: None,
+        env_occlusion: None,
+        specular,
+        model,
+    };
     shade_exact(&at, lights, visibility, &mut |_| None)
 }
 
@@ -64,6 +75,8 @@ pub struct ShadePoint<'a> {
     pub env_sh: Option<&'a ShCoefficients>,
     /// Its prefiltered levels, where its specular is drawn by the split sum.
     pub env_prefiltered: Option<&'a [[f32; 4]]>,
+    /// Its occlusion grid, where its diffuse light is occluded by it.
+    pub env_occlusion: Option<&'a super::occlusion::OcclusionGrid>,
     pub specular: SpecularModel,
     pub model: IlluminationModel,
 }
@@ -95,7 +108,7 @@ pub fn shade_exact(
     mut visibility: impl FnMut(usize, &Light, u32, DVec3) -> f64,
     exact: &mut dyn FnMut(&AreaAt) -> Option<[f64; 3]>,
 ) -> [f64; 3] {
-    let ShadePoint { p, n_in, eye, mat, ambient, env_sh, env_prefiltered, specular, model } = *at;
+    let ShadePoint { p, n_in, eye, mat, ambient, env_sh, env_prefiltered, env_occlusion, specular, model } = *at;
     // The view vector: toward the eye (w = 1), or the orthographic camera's one direction (w = 0).
     let v = safe_normalize(eye.truncate() - p * eye.w, DVec3::Y);
     let n = safe_normalize(n_in, v);
@@ -113,8 +126,10 @@ pub fn shade_exact(
         // The environment's diffuse light, the chapter's I_a made directional.
         if let Some(sh) = env_sh {
             let e = env_sh_radiance(sh, n);
+            // The share of it the precomputed grid lets through, where the scene asks for it.
+            let open = env_occlusion.map_or(1.0, |g| super::occlusion::env_occlusion(g, p, n));
             for i in 0..3 {
-                total[i] += e[i] * mat.r_a * c[i];
+                total[i] += e[i] * open * mat.r_a * c[i];
             }
         }
     }

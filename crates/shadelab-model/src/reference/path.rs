@@ -287,6 +287,7 @@ fn model_term_towards(ctx: &Context, p: DVec3, n: DVec3, from: DVec3, mat: &Mate
         ambient: [0.0; 3],
         env_sh: None,
         env_prefiltered: None,
+        env_occlusion: None,
         specular: ctx.specular,
         model: ctx.scene.illumination,
     };

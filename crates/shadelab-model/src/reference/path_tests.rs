@@ -105,6 +105,7 @@ fn glossy_bounces_converge_to_the_albedo_integral() {
                     ambient: [0.0; 3],
                     env_sh: None,
                     env_prefiltered: None,
+                    env_occlusion: None,
                     specular,
                     model: scene.illumination,
                 };

@@ -8,6 +8,10 @@
 // The environment's prefiltered levels (environment.wgsl), written only when a scene has one.
 @group(0) @binding(1) var<storage, read> env_levels: array<vec4<f32>>;
 #endif
+#if EFFECT_ENVIRONMENT_OCCLUSION
+// The environment's occlusion grid (occlusion.wgsl), written only when a scene asks for it.
+@group(0) @binding(2) var<storage, read> env_occlusion_nodes: array<vec2<u32>>;
+#endif
 @group(1) @binding(0) var<uniform> object: Object;
 
 // The per-vertex modes' lighting passes (@group(3); binding 0 is the shadow pass's): a compute

@@ -39,7 +39,12 @@ fn shade(p: vec3<f32>, n_in: vec3<f32>, surface: Surface, pixel: vec2<f32>) -> v
 #if EFFECT_ENVIRONMENT_SH
     // The environment's diffuse light, the chapter's I_a made directional.
     if (globals.illumination != ILLUMINATION_LAMBERT) {
-        total += env_sh_radiance(n) * surface.r_a * c;
+        // The share of it the precomputed grid lets through, where the scene asks for it.
+        var open = 1.0;
+#if EFFECT_ENVIRONMENT_OCCLUSION
+        open = env_occlusion(p, n);
+#endif
+        total += env_sh_radiance(n) * open * surface.r_a * c;
     }
 #endif
 #if EFFECT_ENVIRONMENT_SPECULAR

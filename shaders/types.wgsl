@@ -28,6 +28,9 @@ struct Globals {
     // The split sum's B table (environment.rs's env_split_b_table), four floats a slot; zero
     // without an environment.
     env_split_b: array<vec4<f32>, ENV_SPLIT_B_VEC4S>,
+    // The occlusion grid's origin (xyz) and cell (w), then its node counts (xyz; occlusion.wgsl);
+    // zero without one.
+    env_occlusion: array<vec4<f32>, 2>,
 }
 
 struct Object {

@@ -79,3 +79,37 @@ fn the_sky_on_the_gpu_matches_its_f64_twin() {
         assert!(apart > 0.02, "{name}: the sky adds only {apart}");
     }
 }
+
+/// With the precomputed occlusion on, the GPU's occluded diffuse matches its f64 twin (the same
+/// grid, baked once for each) as closely as the unoccluded one does, and the occlusion darkens
+/// the ground where the objects meet it by far more than that.
+#[test]
+fn the_occluded_sky_on_the_gpu_matches_its_f64_twin() {
+    let mut scene = Scene::builtin("default").unwrap();
+    scene.set_shadows(false);
+    scene.lights.clear();
+    for o in &mut scene.objects {
+        o.tessellation = 256;
+    }
+    let sky = lit_by(&scene, EnvSource::Sky { turbidity: 3.0, sun: Some(glam::DVec3::new(0.5, 0.5, 0.3)) });
+    let mut occluded = sky.clone();
+    occluded.environment.as_mut().unwrap().occlusion = true;
+    let img = draw(&occluded);
+    let open = draw(&sky);
+    let reference = render_reference(&occluded, SpecularModel::CookTorrance, W, H);
+    let bounded = |name: &str| name == "ground" || name.starts_with("sphere");
+    for object in (0..scene.objects.len()).filter(|&o| bounded(&scene.objects[o].name)) {
+        let pixels = interior(&reference, object);
+        let (mean, max, worst) = error(&img, &reference, &pixels);
+        let darker = pixels
+            .iter()
+            .map(|&(x, y)| (0..3).map(|c| open.get(x, y)[c] - img.get(x, y)[c]).fold(0.0, f32::max))
+            .fold(0.0, f32::max);
+        let name = &scene.objects[object].name;
+        eprintln!("{name}: mean |error| {mean:.2e}, max {max:.2e} at {worst:?}; occlusion darkens up to {darker:.2e}");
+        assert!(mean < 1e-4 && max < 4e-3, "{name}: mean {mean}, max {max}");
+        if name == "ground" {
+            assert!(darker > 0.02, "the occlusion darkens the ground only by {darker}");
+        }
+    }
+}

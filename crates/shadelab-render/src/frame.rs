@@ -33,7 +33,10 @@ impl Renderer {
         let flags = if settings.debug_nonfinite { crate::uniforms::FLAG_DEBUG_NONFINITE } else { 0 }
             | settings.glass_view.code() << crate::uniforms::GLASS_VIEW_SHIFT;
         let env_sh = self.env_sh(gpu_scene, scene);
-        let g = GlobalsUniform::new(scene, target.width, target.height, flags, settings.specular, env_sh);
+        let mut g = GlobalsUniform::new(scene, target.width, target.height, flags, settings.specular, env_sh);
+        if program.effects().has(Effect::EnvironmentOcclusion) {
+            g.env_occlusion = self.write_env_occlusion(gpu_scene, scene);
+        }
         self.queue.write_buffer(&gpu_scene.globals, 0, bytemuck::bytes_of(&g));
         let mut bytes = vec![0u8; (gpu_scene.object_stride as usize) * scene.objects.len()];
         let mut exits = Vec::with_capacity(scene.objects.len());
@@ -70,6 +73,28 @@ impl Renderer {
                 sh
             }
         }
+    }
+
+    /// The environment's occlusion grid's placement, the grid baked and written only when the
+    /// geometry changed since the last write (the bake traces rays from every node).
+    fn write_env_occlusion(&self, gpu_scene: &SceneGpu, scene: &Scene) -> [[f32; 4]; 2] {
+        let key = OcclusionKey::of(scene);
+        let mut of = gpu_scene.env_occlusion_of.lock().unwrap_or_else(|e| e.into_inner());
+        if let Some((k, placement)) = of.as_ref()
+            && *k == key
+        {
+            return *placement;
+        }
+        use shadelab_model::lighting::occlusion::OCC_RAYS;
+        let placement = match shadelab_model::reference::bake_occlusion(scene, OCC_RAYS, 1) {
+            Some(grid) => {
+                self.queue.write_buffer(&gpu_scene.env_occlusion, 0, bytemuck::cast_slice(&grid.gpu_words()));
+                grid.gpu_placement()
+            }
+            None => [[0.0; 4]; 2],
+        };
+        *of = Some((key, placement));
+        placement
     }
 
     /// The environment's prefiltered levels, computed and written only when the environment (or
@@ -275,4 +300,20 @@ fn scene_pass<'e>(
 /// what the frame keeps of an environment.
 fn env_sun(scene: &Scene) -> Option<glam::DVec3> {
     scene.lights.iter().find(|l| l.kind == shadelab_model::LightKind::Directional).map(|l| l.direction)
+}
+
+/// What the occlusion grid is baked from: each object's shape and transform, and the meshes.
+#[derive(PartialEq)]
+pub(crate) struct OcclusionKey {
+    objects: Vec<(shadelab_model::Shape, shadelab_model::Transform)>,
+    meshes: shadelab_model::mesh::Meshes,
+}
+
+impl OcclusionKey {
+    fn of(scene: &Scene) -> OcclusionKey {
+        OcclusionKey {
+            objects: scene.objects.iter().map(|o| (o.shape, o.transform)).collect(),
+            meshes: scene.meshes.clone(),
+        }
+    }
 }

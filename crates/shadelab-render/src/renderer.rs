@@ -42,15 +42,17 @@ fn uniform_entry(dynamic: bool, size: u64) -> wgpu::BindGroupLayoutEntry {
     }
 }
 
-/// The environment's prefiltered levels (`environment.wgsl`'s `env_levels`), read-only.
-fn env_levels_entry() -> wgpu::BindGroupLayoutEntry {
+/// A read-only storage buffer of the globals' group: the environment's prefiltered levels
+/// (binding 1, `env_levels`) and its occlusion grid (binding 2, `env_occlusion_nodes`), each with
+/// the size of its element.
+fn storage_entry(binding: u32, element: u64) -> wgpu::BindGroupLayoutEntry {
     wgpu::BindGroupLayoutEntry {
-        binding: 1,
+        binding,
         visibility: wgpu::ShaderStages::FRAGMENT.union(wgpu::ShaderStages::COMPUTE),
         ty: wgpu::BindingType::Buffer {
             ty: wgpu::BufferBindingType::Storage { read_only: true },
             has_dynamic_offset: false,
-            min_binding_size: wgpu::BufferSize::new(16),
+            min_binding_size: wgpu::BufferSize::new(element),
         },
         count: None,
     }
@@ -60,7 +62,11 @@ impl Renderer {
     pub fn new(device: &wgpu::Device, queue: &wgpu::Queue) -> Renderer {
         let globals_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("globals"),
-            entries: &[uniform_entry(false, size_of::<GlobalsUniform>() as u64), env_levels_entry()],
+            entries: &[
+                uniform_entry(false, size_of::<GlobalsUniform>() as u64),
+                storage_entry(1, 16),
+                storage_entry(2, 8),
+            ],
         });
         let object_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("object"),

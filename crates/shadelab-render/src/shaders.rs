@@ -8,7 +8,7 @@
 use shadelab_model::effects::EffectKey;
 
 /// `(file name, source)` in the order they are concatenated.
-pub const FILES: [(&str, &str); 20] = [
+pub const FILES: [(&str, &str); 21] = [
     ("common.wgsl", include_str!("../../../shaders/common.wgsl")),
     ("brdf.wgsl", include_str!("../../../shaders/brdf.wgsl")),
     // Cook–Torrance's D, G and F, each selected by the material's code.
@@ -35,6 +35,8 @@ pub const FILES: [(&str, &str); 20] = [
     ("ms_table.wgsl", include_str!("../../../shaders/ms_table.wgsl")),
     // The environment's SH terms in the globals: with the environment effect only.
     ("environment.wgsl", include_str!("../../../shaders/environment.wgsl")),
+    // The environment's occlusion grid: with the occlusion effect only.
+    ("occlusion.wgsl", include_str!("../../../shaders/occlusion.wgsl")),
     // Only in permutations with cast shadows (the whole file is one `#if EFFECT_CAST_SHADOWS`).
     ("shadows.wgsl", include_str!("../../../shaders/shadows.wgsl")),
     // The model at a point and the material at a pixel: the functions the entry points call.

@@ -10,7 +10,7 @@ use shadelab_model::params::NamedValue;
 use shadelab_model::{FalloffForm, IlluminationModel, LightKind, SpecularModel};
 
 /// Each WGSL file and the source of its f64 twin.
-const TWINS: [(&str, &str); 20] = [
+const TWINS: [(&str, &str); 21] = [
     ("common.wgsl", include_str!("../../shadelab-model/src/lighting/common.rs")),
     ("brdf.wgsl", include_str!("../../shadelab-model/src/lighting/brdf.rs")),
     ("microfacet.wgsl", include_str!("../../shadelab-model/src/lighting/microfacet.rs")),
@@ -42,6 +42,7 @@ const TWINS: [(&str, &str); 20] = [
     // The table lookup of the compensation.
     ("ms_table.wgsl", include_str!("../../shadelab-model/src/lighting/multiscatter.rs")),
     ("environment.wgsl", include_str!("../../shadelab-model/src/lighting/environment.rs")),
+    ("occlusion.wgsl", include_str!("../../shadelab-model/src/lighting/occlusion.rs")),
     (
         "shadows.wgsl",
         concat!(
@@ -301,6 +302,13 @@ fn wgsl_codes_equal_rust_codes() {
     use shadelab_model::lighting::environment::{SH_Y0, SH_Y1, SH_Y2, SH_Y20, SH_Y22};
     for (name, v) in [("SH_Y0", SH_Y0), ("SH_Y1", SH_Y1), ("SH_Y2", SH_Y2), ("SH_Y20", SH_Y20), ("SH_Y22", SH_Y22)] {
         assert_eq!(wgsl_constant(&lighting, name), Some(v as f32 as f64), "{name}: WGSL vs environment.rs");
+    }
+    // The occlusion grid's lookup guards, as occlusion.rs names them, to f32.
+    use shadelab_model::lighting::occlusion::{OCC_COORD_MAX, OCC_LOOKUP_CELLS, OCC_WEIGHT_MIN};
+    for (name, v) in
+        [("OCC_LOOKUP_CELLS", OCC_LOOKUP_CELLS), ("OCC_WEIGHT_MIN", OCC_WEIGHT_MIN), ("OCC_COORD_MAX", OCC_COORD_MAX)]
+    {
+        assert_eq!(wgsl_constant(&lighting, name), Some(v as f32 as f64), "{name}: WGSL vs occlusion.rs");
     }
     // Codes are distinct within a kind.
     for prefix in ["LIGHT_", "FALLOFF_", "SPECULAR_", "ILLUMINATION_", "DISTRIBUTION_", "MASKING_", "FRESNEL_"] {

@@ -59,6 +59,9 @@ pub struct GlobalsUniform {
     pub env_sh: [[f32; 4]; 9],
     /// The split sum's B table (`environment::env_split_b_vec4s`); zero without an environment.
     pub env_split_b: [[f32; 4]; shadelab_model::lighting::environment::ENV_SPLIT_B_VEC4S],
+    /// The occlusion grid's placement (`OcclusionGrid::gpu_placement`); zero without one, set by
+    /// the frame, which bakes the grid once per change of the geometry.
+    pub env_occlusion: [[f32; 4]; 2],
 }
 
 #[repr(C)]
@@ -257,6 +260,7 @@ impl GlobalsUniform {
             } else {
                 [[0.0; 4]; shadelab_model::lighting::environment::ENV_SPLIT_B_VEC4S]
             },
+            env_occlusion: [[0.0; 4]; 2],
         }
     }
 }

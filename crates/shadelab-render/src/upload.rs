@@ -105,6 +105,10 @@ pub struct SceneGpu {
         std::sync::Mutex<Option<(shadelab_model::lighting::env_map::Environment, Option<glam::DVec3>)>>,
     /// The environment's nine SH terms as the globals hold them, and the environment (with its
     /// sun) they were projected for: a large map's projection reads every texel.
+    /// The environment's occlusion grid (64 KiB), written only when a program draws it, and
+    /// the geometry it was baked for with the grid's placement in the globals.
+    pub(crate) env_occlusion: wgpu::Buffer,
+    pub(crate) env_occlusion_of: std::sync::Mutex<Option<(crate::frame::OcclusionKey, [[f32; 4]; 2])>>,
     pub(crate) env_sh_of:
         std::sync::Mutex<Option<(shadelab_model::lighting::env_map::Environment, Option<glam::DVec3>, [[f32; 4]; 9])>>,
     pub(crate) objects_buf: wgpu::Buffer,
@@ -242,12 +246,19 @@ impl Uploader {
             usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_DST,
             mapped_at_creation: false,
         });
+        let env_occlusion = device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("environment occlusion"),
+            size: (shadelab_model::lighting::occlusion::OCC_NODES_MAX * 8) as u64,
+            usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_DST,
+            mapped_at_creation: false,
+        });
         let globals_bind = device.create_bind_group(&wgpu::BindGroupDescriptor {
             label: Some("globals"),
             layout: &self.globals_layout,
             entries: &[
                 wgpu::BindGroupEntry { binding: 0, resource: globals.as_entire_binding() },
                 wgpu::BindGroupEntry { binding: 1, resource: env_levels.as_entire_binding() },
+                wgpu::BindGroupEntry { binding: 2, resource: env_occlusion.as_entire_binding() },
             ],
         });
         let (sets, object_bind_of) = crate::textures::bind_sets(scene);
@@ -261,6 +272,8 @@ impl Uploader {
             env_levels,
             env_levels_of: Default::default(),
             env_sh_of: Default::default(),
+            env_occlusion,
+            env_occlusion_of: Default::default(),
             objects_buf,
             objects_binds,
             object_bind_of,

@@ -227,6 +227,18 @@ fn decide_environment_specular(a: &mut Analysis, scene: &Scene, used: &[&crate::
     a.decide(Effect::EnvironmentSpecular, on, why);
 }
 
+/// The environment's precomputed occlusion: an environment that asks for it, with its diffuse
+/// term drawn (the grid occludes only that).
+fn decide_environment_occlusion(a: &mut Analysis, env: Option<&crate::lighting::env_map::Environment>) {
+    let (on, why) = match env {
+        None => (false, "no environment light".to_string()),
+        Some(e) if !e.occlusion => (false, "the environment's occlusion is off".into()),
+        Some(_) if !a.key.has(Effect::EnvironmentSh) => (false, "no environment diffuse term to occlude".into()),
+        Some(_) => (true, "the environment asks for occlusion and its diffuse term is drawn".into()),
+    };
+    a.decide(Effect::EnvironmentOcclusion, on, why);
+}
+
 /// The ambient term, the Lambert rule, and the four-term sum with its transmitted term.
 fn decide_ambient_and_sum(a: &mut Analysis, scene: &Scene, used: &[&crate::scene::Material], lit: bool) {
     let model = scene.illumination;
@@ -260,6 +272,7 @@ fn decide_ambient_and_sum(a: &mut Analysis, scene: &Scene, used: &[&crate::scene
             }
         },
     );
+    decide_environment_occlusion(a, env);
     decide_environment_specular(a, scene, used);
     a.decide(Effect::LambertRule, model == IlluminationModel::Lambert, format!("the illumination model is {model}"));
     let sum = model == IlluminationModel::Sum;

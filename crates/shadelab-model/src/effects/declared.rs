@@ -216,6 +216,16 @@ declare_effects! {
         functions: &["env_sh_radiance"],
         members: &[("Globals", "env_sh")],
     },
+    /// The environment's diffuse term occluded by a grid of ambient occlusion precomputed over
+    /// the scene (docs/environment.md, "Occlusion").
+    EnvironmentOcclusion {
+        explain: "environment diffuse times the precomputed occlusion grid's open share",
+        name: "environment occlusion",
+        label: "env-occ",
+        define: Some("EFFECT_ENVIRONMENT_OCCLUSION"),
+        functions: &["occ_cube", "env_occlusion"],
+        members: &[("Globals", "env_occlusion")],
+    },
     /// The environment light's specular by the split sum: a prefiltered environment times the
     /// lobe's albedo split by Schlick's F (docs/environment.md).
     EnvironmentSpecular {

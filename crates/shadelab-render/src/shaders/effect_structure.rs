@@ -69,6 +69,10 @@ const PHONG_OPTIONS: [Effect; 1] = [Effect::PhongNormalized];
 /// bases.
 const MS_OPTIONS: [Effect; 2] = [Effect::MultipleScattering, Effect::FresnelMix];
 
+/// The environment's occlusion: one factor inside the environment's diffuse term, validated on a
+/// few bases rather than doubling the product of the rest.
+const ENV_OPTIONS: [Effect; 1] = [Effect::EnvironmentOcclusion];
+
 /// The keys of every subset of `effects`.
 fn subsets(effects: &[Effect]) -> Vec<EffectKey> {
     (0..1u32 << effects.len())
@@ -90,7 +94,8 @@ fn every_permutation_validates_in_naga() {
     let outside: Vec<Effect> = Effect::ALL
         .into_iter()
         .filter(|e| {
-            let groups = [&INSIDE_SHADOWS[..], &SURFACE, &AREA, &GLASS, &MICROFACET, &PHONG_OPTIONS, &MS_OPTIONS];
+            let groups =
+                [&INSIDE_SHADOWS[..], &SURFACE, &AREA, &GLASS, &MICROFACET, &PHONG_OPTIONS, &MS_OPTIONS, &ENV_OPTIONS];
             !groups.iter().any(|group| group.contains(e))
         })
         .collect();
@@ -174,6 +179,13 @@ fn every_permutation_validates_in_naga() {
     for base in ms_bases {
         let base = MS_OPTIONS.into_iter().fold(base, |k, e| k.without(e));
         keys.extend(subsets(&MS_OPTIONS).into_iter().map(|k| union(k, base)));
+    }
+    // The occlusion on every other effect, on the environment's diffuse alone, and on none.
+    let env_bases: [EffectKey; 3] =
+        [EffectKey::UBER, [Effect::DirectionalLights, Effect::EnvironmentSh].into_iter().collect(), EffectKey::NONE];
+    for base in env_bases {
+        let base = ENV_OPTIONS.into_iter().fold(base, |k, e| k.without(e));
+        keys.extend(subsets(&ENV_OPTIONS).into_iter().map(|k| union(k, base)));
     }
     for key in keys {
         let src = lighting_source_for(&raw, key).unwrap();

@@ -15,6 +15,21 @@ fn the_environment_replaces_the_ambient() {
     let out = String::from_utf8_lossy(&o.stdout);
     assert_eq!(o.status.code(), Some(0), "{:?}", error_lines(&o));
     assert!(out.contains("env-sh") && out.contains("environment light (sky)"), "{out}");
+    assert!(out.contains("environment's occlusion is off"), "{out}");
+    // Asked for, the occlusion is drawn, and says so.
+    let o = shadelab(&[
+        "render",
+        "--environment",
+        "sky",
+        "--env-occlusion",
+        "on",
+        "--explain",
+        "--output",
+        dir.join("occluded.png").to_str().unwrap(),
+    ]);
+    let out = String::from_utf8_lossy(&o.stdout);
+    assert_eq!(o.status.code(), Some(0), "{:?}", error_lines(&o));
+    assert!(out.contains("env-occ") && out.contains("asks for occlusion"), "{out}");
     // The default scene's I_amb is 0.12 grey: the same light as a 1×1 map.
     let one = shadelab_model::lighting::env_map::EnvImage {
         name: "one".into(),
@@ -44,6 +59,8 @@ fn bad_environment_flags_are_one_line() {
     std::fs::write(&not_a_map, b"#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 2 +X 4\n\x80").unwrap();
     for (args, says) in [
         (vec!["--env-rotation", "10"], "--env-rotation: the scene has no environment"),
+        (vec!["--env-occlusion", "on"], "--env-occlusion: the scene has no environment"),
+        (vec!["--environment", "sky", "--env-occlusion", "maybe"], "--env-occlusion"),
         (vec!["--environment", "sky", "--turbidity", "40"], "--turbidity"),
         (vec!["--environment", "uniform", "--turbidity", "3"], "--turbidity: only for --environment sky"),
         (vec!["--environment", "sky", "--env-intensity", "-1"], "--env-intensity"),
@@ -73,5 +90,7 @@ fn the_study_prints_its_rungs() {
     assert!(sh < constant, "SH {sh} against constant {constant}: {out}");
     let (split, bare) = (rmse("| nine SH terms + split-sum specular |"), rmse("| no environment light at all |"));
     assert!(split.is_finite() && sh < bare, "split sum {split}, no environment {bare}: {out}");
-    assert!(out.contains("+ ambient occlusion of the diffuse") && out.contains("sky environment"), "{out}");
+    assert!(out.contains("+ per-pixel ambient occlusion of the diffuse") && out.contains("sky environment"), "{out}");
+    let grid = rmse("| + the diffuse occluded by the precomputed grid");
+    assert!(grid.is_finite() && grid > 0.0, "grid {grid}: {out}");
 }

@@ -2,15 +2,19 @@
 //! the path-traced truth (docs/environment.md). The rungs, each as the f64 twin of what it draws
 //! (the GPU matches its twin to about 1e-5, `tests/tests/environment.rs`): the constant `I_a` of
 //! the environment's mean radiance, the nine SH terms (diffuse), the nine terms with the split
-//! sum's specular, and those with the diffuse times ambient occlusion (f64 only: the GPU has no
-//! occlusion yet); each GPU rung timed side by side with the others.
+//! sum's specular, those with the diffuse occluded by the precomputed grid (its bake timed on
+//! the CPU), and, for comparison, by per-pixel ambient occlusion traced in f64; each GPU rung
+//! timed side by side with the others.
 
 use crate::reference_views::traced_with_progress;
 use crate::{Failure, cli};
 use anyhow::Context;
 use shadelab_model::lighting::env_map::{EnvSource, Environment};
 use shadelab_model::lighting::environment::SH_Y0;
-use shadelab_model::reference::{PathSettings, ReferenceJob, ambient_occlusion, reference_threads, render_reference};
+use shadelab_model::lighting::occlusion::OCC_RAYS;
+use shadelab_model::reference::{
+    PathSettings, ReferenceJob, ambient_occlusion, bake_occlusion, reference_threads, render_reference,
+};
 use shadelab_model::{Scene, ShadingMode, SpecularModel};
 use shadelab_render::timing::{FrameTimer, TimedDraw, median};
 use shadelab_render::{Gpu, Program, RenderSettings, Renderer, Target};
@@ -59,6 +63,13 @@ pub fn run(args: &cli::BenchAmbientArgs) -> Result<(), Failure> {
         environment: Some(shadelab_model::lighting::env_map::Environment { specular: true, ..env.clone() }),
         ..scene.clone()
     };
+    let grid =
+        Scene { environment: Some(Environment { specular: true, occlusion: true, ..env.clone() }), ..scene.clone() };
+    let start = web_time::Instant::now();
+    let baked = bake_occlusion(&scene, OCC_RAYS, 1);
+    let bake_ms = start.elapsed().as_secs_f64() * 1e3;
+    let nodes = baked.as_ref().map_or(0, |g| g.nodes.len());
+    let grid_image = render_reference(&grid, settings.specular, w, h);
     let sh_image = render_reference(&diffuse, settings.specular, w, h);
     let split_image = render_reference(&split, settings.specular, w, h);
     let constant_image = render_reference(&constant, settings.specular, w, h);
@@ -73,7 +84,8 @@ pub fn run(args: &cli::BenchAmbientArgs) -> Result<(), Failure> {
             std::array::from_fn(|c| b[c] + ao[i] * (d[c] - b[c]) + (s[c] - d[c]))
         })
         .collect();
-    let [null_ms, constant_ms, sh_ms, split_ms] = gpu_times(&[&constant, &diffuse, &split], &settings, (w, h))?;
+    let [null_ms, constant_ms, sh_ms, split_ms, grid_ms] =
+        gpu_times(&[&constant, &diffuse, &split, &grid], &settings, (w, h))?;
     let noise = {
         let n = truth.std_error.len().max(1) as f64;
         (truth.std_error.iter().map(|e| e.iter().map(|v| v * v).sum::<f64>() / 3.0).sum::<f64>() / n).sqrt()
@@ -103,7 +115,11 @@ pub fn run(args: &cli::BenchAmbientArgs) -> Result<(), Failure> {
         rmse(&split_image.pixels, &truth.pixels)
     );
     println!(
-        "| + ambient occlusion of the diffuse, {} rays (f64 only: {ao_ms:.0} ms on the CPU) | | {:.3e} |",
+        "| + the diffuse occluded by the precomputed grid ({nodes} nodes, baked in {bake_ms:.0} ms on the CPU) | {grid_ms:.3} | {:.3e} |",
+        rmse(&grid_image.pixels, &truth.pixels)
+    );
+    println!(
+        "| + per-pixel ambient occlusion of the diffuse, {} rays (f64 only: {ao_ms:.0} ms on the CPU) | | {:.3e} |",
         crate::ambient_views::AO_RAYS,
         rmse(&occluded, &truth.pixels)
     );
@@ -113,7 +129,7 @@ pub fn run(args: &cli::BenchAmbientArgs) -> Result<(), Failure> {
 
 /// The GPU's frame for the null shader and each of `scenes` (one scene's variants: the same
 /// geometry), drawn interleaved: medians in ms, the null shader's first.
-fn gpu_times(scenes: &[&Scene; 3], settings: &RenderSettings, (w, h): (u32, u32)) -> anyhow::Result<[f64; 4]> {
+fn gpu_times(scenes: &[&Scene; 4], settings: &RenderSettings, (w, h): (u32, u32)) -> anyhow::Result<[f64; 5]> {
     let gpu = Gpu::headless(shadelab_render::AdapterChoice::from_env()).context("opening a GPU adapter")?;
     let mut r = Renderer::new(&gpu.device, &gpu.queue);
     let gs = r.upload(scenes[0])?;

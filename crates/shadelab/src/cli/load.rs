@@ -94,6 +94,7 @@ fn environment(args: &SceneArgs, scene: &mut Scene) -> Result<(), Failure> {
         ("--env-intensity", args.env_intensity.is_some()),
         ("--env-rotation", args.env_rotation.is_some()),
         ("--turbidity", args.turbidity.is_some()),
+        ("--env-occlusion", args.env_occlusion.is_some()),
     ];
     let Some(env) = scene.environment.as_mut() else {
         if let Some((flag, _)) = adjusts.iter().find(|(_, given)| *given) {
@@ -111,6 +112,9 @@ fn environment(args: &SceneArgs, scene: &mut Scene) -> Result<(), Failure> {
     }
     if let Some(on) = args.env_specular {
         env.specular = on;
+    }
+    if let Some(on) = args.env_occlusion {
+        env.occlusion = on;
     }
     if let Some(t) = args.turbidity {
         match &mut env.source {

@@ -303,6 +303,11 @@ pub struct SceneArgs {
     /// and in the exact reference; the path-traced truth always has it [default: on]
     #[arg(long, value_name = "ON|OFF", value_parser = values::on_off())]
     pub env_specular: Option<bool>,
+    /// Occlude the environment's diffuse light by a grid of ambient occlusion precomputed over
+    /// the scene (on), on the GPU and in the exact reference; the path-traced truth always traces
+    /// visibility [default: off]
+    #[arg(long, value_name = "ON|OFF", value_parser = values::on_off())]
+    pub env_occlusion: Option<bool>,
 }
 
 /// `render --small-area-lights`: how an area light too small on screen for its area to show

@@ -1,5 +1,6 @@
 //! The viewer's environment section (docs/environment.md), driven by egui_kittest on lavapipe:
-//! the sky takes I_amb's place and changes the image; "none" gives I_amb back.
+//! the sky takes I_amb's place and changes the image, its occlusion and split sum are switched,
+//! and "none" gives I_amb back.
 
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
@@ -53,6 +54,18 @@ fn the_sky_replaces_the_ambient_and_none_gives_it_back() {
     }
     let changed = changed_view_pixels(&before, &after);
     assert!(changed > 2000, "only {changed} pixels of the view changed");
+    // The occlusion darkens the contacts; the split sum's checkbox takes the specular away.
+    h.get_by_label("occlusion (precomputed grid)").scroll_to_me();
+    h.run_steps(3);
+    h.get_by_label("occlusion (precomputed grid)").click();
+    h.run_steps(3);
+    assert!(h.state_mut().scene_mut().environment.as_ref().is_some_and(|e| e.occlusion));
+    let occluded = h.render().expect("render");
+    let changed = changed_view_pixels(&after, &occluded);
+    assert!(changed > 200, "the occlusion changed only {changed} pixels of the view");
+    h.get_by_label("specular (split sum)").click();
+    h.run_steps(3);
+    assert!(h.state_mut().scene_mut().environment.as_ref().is_some_and(|e| !e.specular));
     choose(&mut h, "none (the constant I_amb)");
     let scene = h.state_mut().scene_mut().clone();
     assert_eq!((scene.environment, scene.ambient), (None, ambient));

@@ -1,7 +1,7 @@
 //! The panel's environment section (docs/environment.md): the source (none, a uniform colour in
 //! place of I_amb, the sky, or the map a file or `--environment` brought), its intensity, turn,
-//! the sky's turbidity (each slider over its declared range) and whether the split sum draws its
-//! specular.
+//! the sky's turbidity (each slider over its declared range), whether the split sum draws its
+//! specular and whether the precomputed grid occludes its diffuse light.
 
 use super::slider;
 use crate::viewer::Viewer;
@@ -64,8 +64,14 @@ impl Viewer {
                 "the sun at the first directional light"
             });
         }
+        let r = ui.checkbox(&mut env.specular, "specular (split sum)");
+        self.marks.insert("environment:specular".into(), r.rect);
+        let r = ui.checkbox(&mut env.occlusion, "occlusion (precomputed grid)").on_hover_text(
+            "the diffuse light times the open share of a grid of ambient occlusion baked over the scene (once per change of the geometry)",
+        );
+        self.marks.insert("environment:occlusion".into(), r.rect);
         ui.small(
-            "drawn by nine SH terms: diffuse only, unshadowed (the difference view's path-traced truth has the rest)",
+            "diffuse by nine SH terms, specular by the split sum (Cook–Torrance): the difference view's path-traced truth has the rest",
         );
     }
 

@@ -317,8 +317,9 @@ fn debug_view_paints_nonfinite_pixels_magenta() {
 }
 
 /// Each term alone (`render --term`) matches the f64 reference's same term on a fine sphere, and
-/// the GPU's terms add up to its whole image on the default scene, in linear float (what an EXR
-/// holds), in each of the four illumination models (the four-term sum's materials transmitting
+/// the GPU's terms add up to its whole image on the default scene (under the occluded sky with
+/// Cook–Torrance), in linear float (what an EXR holds), in each of the four illumination models
+/// (the four-term sum's materials transmitting
 /// 0.3, so that its I_t is not zero; in the other models a transmitting material is glass, which
 /// the terms do not split).
 #[test]
@@ -350,7 +351,14 @@ fn each_term_matches_the_reference_and_the_terms_sum_to_the_image() {
             assert!(mean < 1e-4, "{choice} {term:?}: mean |error| {mean}");
             assert!(max < 4e-3, "{choice} {term:?}: max |error| {max} at {worst:?}");
         }
-        let scene = chosen(Scene::builtin("default").expect("built-in"), choice);
+        let mut scene = chosen(Scene::builtin("default").expect("built-in"), choice);
+        // Under Cook–Torrance, the sky with its occlusion in place of I_amb: its diffuse is the
+        // ambient part, its split sum the environment's specular part.
+        if specular == SpecularModel::CookTorrance && scene.illumination == IlluminationModel::Phong {
+            use shadelab_model::lighting::env_map::{EnvSource, Environment};
+            let sky = Environment { occlusion: true, ..Environment::new(EnvSource::Sky { turbidity: 3.0, sun: None }) };
+            (scene.environment, scene.ambient) = (Some(sky), [0.0; 3]);
+        }
         let full = render_image(gpu(), &scene, w, h, &settings).expect("upload");
         let parts: Vec<_> = Term::PARTS
             .iter()

@@ -1,7 +1,9 @@
 //! One term of the illumination model at a time (docs/model.md §1–§3a): the image of the ambient,
-//! the diffuse, the specular (or reflected) or the transmitted term alone is the image of the same
-//! scene with the other terms' coefficients set to 0 (I_amb and r_a, r_d, r_s, the transmission). The GPU and the f64 reference draw the same
-//! transformed scene, so each term has both, and the terms add up to the full image.
+//! the diffuse, the specular (or reflected), the environment's specular or the transmitted term
+//! alone is the image of the same scene with the other terms' coefficients set to 0 (I_amb and
+//! r_a, r_d, r_s, the transmission, the lights' intensities, the environment's split sum). The GPU
+//! and the f64 reference draw the same transformed scene, so each term has both, and the terms add
+//! up to the full image.
 
 use crate::params::{IlluminationModel, NamedValue};
 use crate::scene::Scene;
@@ -19,6 +21,10 @@ pub enum Term {
     /// `Σ V·I_L·r_s·S` alone (Phong or Cook–Torrance), cast shadows included; the four-term
     /// sum's reflected term `I_r`.
     Specular,
+    /// The environment light's specular `r_s·L_pre·(F0·(E − B) + B)` alone (the split sum,
+    /// docs/environment.md). The environment's diffuse light is the ambient term's: it stands
+    /// for `I_amb`.
+    EnvSpecular,
     /// The four-term sum's transmitted term `I_t = K_t·(1 − t)·I/(d + d0)` alone.
     Transmitted,
     /// The cast-shadow factor: the share of the lights' diffuse and specular light that reaches
@@ -34,6 +40,7 @@ impl NamedValue for Term {
         ("ambient", Term::Ambient),
         ("diffuse", Term::Diffuse),
         ("specular", Term::Specular),
+        ("environment-specular", Term::EnvSpecular),
         ("transmitted", Term::Transmitted),
         ("shadow", Term::Shadow),
     ];
@@ -42,16 +49,24 @@ impl NamedValue for Term {
 impl Term {
     /// The terms that add up to [`Term::All`] (in every model; a model without a term draws it
     /// black, see [`Term::in_model`]).
-    pub const PARTS: [Term; 4] = [Term::Ambient, Term::Diffuse, Term::Specular, Term::Transmitted];
+    pub const PARTS: [Term; 5] = [Term::Ambient, Term::Diffuse, Term::Specular, Term::EnvSpecular, Term::Transmitted];
 
     /// Whether `model` has this term: the Lambert rule has its fill (shown as ambient) and its lit
-    /// part (diffuse); the Phong model has no transmitted term; the four-term sum has all four.
+    /// part (diffuse); the Phong model has no transmitted term; the four-term sum has all but the
+    /// environment's specular, which only the Phong model draws.
     pub fn in_model(self, model: IlluminationModel) -> bool {
         !matches!(
             (self, model),
             (Term::Specular, IlluminationModel::Lambert)
+                | (Term::EnvSpecular, IlluminationModel::Lambert | IlluminationModel::Sum)
                 | (Term::Transmitted, IlluminationModel::Lambert | IlluminationModel::Phong)
         )
+    }
+
+    /// Whether `scene` can show this term: its model has it, and the environment's specular needs
+    /// an environment light.
+    pub fn in_scene(self, scene: &Scene) -> bool {
+        self.in_model(scene.illumination) && (self != Term::EnvSpecular || scene.environment.is_some())
     }
 
     /// The term's symbol in `model`: the four-term sum calls its specular term `I_r`, and the
@@ -72,6 +87,7 @@ impl Term {
             Term::Ambient => "I_a",
             Term::Diffuse => "I_d",
             Term::Specular => "I_s",
+            Term::EnvSpecular => "I_env,s",
             Term::Transmitted => "I_t",
             Term::Shadow => "V",
         }
@@ -81,11 +97,14 @@ impl Term {
     pub fn meaning(self) -> &'static str {
         match self {
             Term::All => "the whole model: the sum of its terms",
-            Term::Ambient => "the ambient term I_amb·r_a·C alone",
+            Term::Ambient => {
+                "the ambient term I_amb·r_a·C alone, with the environment's diffuse light that stands for it"
+            }
             Term::Diffuse => "the diffuse term Σ I_L·r_d·C·(N·L) alone, with cast shadows",
             Term::Specular => {
                 "the specular term Σ I_L·r_s·S alone (the four-term sum's reflected I_r), with cast shadows"
             }
+            Term::EnvSpecular => "the environment's specular r_s·L_pre·(F0·(E − B) + B) alone, by the split sum",
             Term::Transmitted => "the four-term sum's transmitted term Σ K_t·(1 − t)·I/(d + d0) alone",
             Term::Shadow => "the cast-shadow factor V: the share of the lights' light that reaches each point",
         }
@@ -110,9 +129,21 @@ impl Term {
         }
         if self != Term::Shadow {
             scene.background = None;
+            if let Some(e) = scene.environment.as_mut() {
+                e.background = false;
+            }
         }
         if self != Term::Ambient {
             scene.ambient = [0.0; 3];
+        }
+        // The environment's specular is its own term; the lights' terms are the others'. The
+        // lights keep their directions: a sky follows the first directional one.
+        if self == Term::EnvSpecular {
+            for l in &mut scene.lights {
+                l.intensity = 0.0;
+            }
+        } else if let Some(e) = scene.environment.as_mut() {
+            e.specular = false;
         }
         for m in &mut scene.materials {
             // r_a weighs the Lambert rule's fill as well as the ambient term.
@@ -128,7 +159,7 @@ impl Term {
             if self != Term::Diffuse {
                 m.r_d = 0.0;
             }
-            if self != Term::Specular {
+            if !matches!(self, Term::Specular | Term::EnvSpecular) {
                 m.r_s = 0.0;
             }
         }
@@ -157,11 +188,19 @@ mod tests {
 
     /// The f64 terms add up to the full image, pixel by pixel, in each of the four models (the
     /// four-term sum on a scene whose materials transmit, so that I_t is not zero; in the other
-    /// models a transmitting material is glass, which the terms do not split).
+    /// models a transmitting material is glass, which the terms do not split), with the constant
+    /// ambient and under an occluded sky in its place.
     #[test]
     fn the_reference_terms_sum_to_the_full_image() {
-        for choice in crate::params::ModelChoice::ALL_CHOICES {
+        use crate::lighting::env_map::{EnvSource, Environment};
+        let sky = Environment { occlusion: true, ..Environment::new(EnvSource::Sky { turbidity: 3.0, sun: None }) };
+        for (choice, env) in
+            crate::params::ModelChoice::ALL_CHOICES.into_iter().flat_map(|c| [(c, None), (c, Some(sky.clone()))])
+        {
             let mut scene = Scene::builtin("default").unwrap();
+            if env.is_some() {
+                (scene.environment, scene.ambient) = (env, [0.0; 3]);
+            }
             let (model, specular) = choice.split();
             let specular = specular.unwrap_or(SpecularModel::Phong);
             scene.apply(&crate::scene::Overrides::for_model(choice));
@@ -187,10 +226,11 @@ mod tests {
             }
             assert!(lit > 1000, "{lit} pixels on objects");
             assert!(worst < 1e-12, "{choice:?}: the terms differ from the whole by {worst}");
-            // Each term of the model is non-zero somewhere; a term it lacks is black.
+            // Each term the scene has is non-zero somewhere; a term it lacks is black.
             for (t, img) in Term::PARTS.iter().zip(&parts) {
                 let on = img.pixels.iter().zip(&img.object).filter(|(p, o)| o.is_some() && p[0] > 1e-6).count();
-                if t.in_model(model) {
+                // The split sum is Cook–Torrance's: under Phong specular the term is black.
+                if t.in_scene(&scene) && (*t != Term::EnvSpecular || specular == SpecularModel::CookTorrance) {
                     assert!(on > 100, "{choice:?} {t:?}: {on} pixels");
                 } else {
                     assert_eq!(on, 0, "{choice:?} {t:?} is not a term of {model}");

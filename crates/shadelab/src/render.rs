@@ -83,6 +83,12 @@ pub fn run(args: &cli::RenderArgs) -> Result<(), Failure> {
             scene.illumination
         )));
     }
+    if !args.term.in_scene(&scene) {
+        return Err(Failure::Usage(format!(
+            "--term {}: the scene has no environment light; add --environment uniform, sky or a map file",
+            shadelab_model::params::NamedValue::name(args.term)
+        )));
+    }
     // One term alone is the scene with the other terms' coefficients at 0 (--save-scene keeps
     // the whole scene).
     let whole = scene;

@@ -136,8 +136,10 @@ impl Viewer {
             Err(e) => errors.push(format!("link: {}", cli::one_line(&e))),
         }
         if let Some(term) = link.term {
-            if term.in_model(self.scene.illumination) {
+            if term.in_scene(&self.scene) {
                 self.term = term;
+            } else if term.in_model(self.scene.illumination) {
+                errors.push(format!("link parameter term={}: the scene has no environment light", term.name()));
             } else {
                 errors.push(format!("link parameter term={}: not a term of this model", term.name()));
             }

@@ -101,7 +101,8 @@ impl Viewer {
         ui.horizontal(|ui| {
             ui.label("term");
             let model = self.scene.illumination;
-            for (name, term) in Term::ALL.iter().filter(|(_, t)| t.in_model(model)) {
+            let offered: Vec<_> = Term::ALL.iter().filter(|(_, t)| t.in_scene(&self.scene)).collect();
+            for (name, term) in offered {
                 let r = ui.selectable_value(&mut self.term, *term, term.symbol_in(model)).on_hover_text(term.meaning());
                 self.mark(format!("term:{name}"), &r);
             }

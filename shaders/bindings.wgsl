@@ -4,7 +4,7 @@
 // The Rust side of each group is in crates/shadelab-render/src/pipelines.rs.
 
 @group(0) @binding(0) var<uniform> globals: Globals;
-#if EFFECT_ENVIRONMENT_SPECULAR
+#if EFFECT_ENVIRONMENT_SPECULAR||EFFECT_ENVIRONMENT_BACKGROUND
 // The environment's prefiltered levels (environment.wgsl), written only when a scene has one.
 @group(0) @binding(1) var<storage, read> env_levels: array<vec4<f32>>;
 #endif

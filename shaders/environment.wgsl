@@ -27,8 +27,8 @@ fn env_sh_radiance(n: vec3<f32>) -> vec3<f32> {
 }
 #endif
 
-#if EFFECT_ENVIRONMENT_SPECULAR
-// The prefiltered environment's levels: level k blurred for roughness k/(ENV_LEVELS − 1), level
+#if EFFECT_ENVIRONMENT_SPECULAR||EFFECT_ENVIRONMENT_BACKGROUND
+// The prefiltered environment's levels (read by the split sum, and level 0 by the background): level k blurred for roughness k/(ENV_LEVELS − 1), level
 // 0 ENV_LEVEL_WIDTH texels wide and half as high, every second level halving both.
 const ENV_LEVELS: u32 = 6u;
 const ENV_LEVEL_WIDTH: u32 = 64u;
@@ -75,6 +75,9 @@ fn env_level_sample(k: u32, d: vec3<f32>) -> vec3<f32> {
     let bottom = env_texel(k, xi, yi + 1) * (1.0 - fu) + env_texel(k, xi + 1, yi + 1) * fu;
     return top * (1.0 - fv) + bottom * fv;
 }
+#endif
+
+#if EFFECT_ENVIRONMENT_SPECULAR
 
 // The prefiltered environment toward r for roughness m (clamped to [0, 1]), linear between the
 // two levels around it.

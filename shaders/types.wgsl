@@ -31,6 +31,8 @@ struct Globals {
     // The occlusion grid's origin (xyz) and cell (w), then its node counts (xyz; occlusion.wgsl);
     // zero without one.
     env_occlusion: array<vec4<f32>, 2>,
+    // The inverse of view_proj: the background's direction through each pixel (background.wgsl).
+    inv_view_proj: mat4x4<f32>,
 }
 
 struct Object {

@@ -113,3 +113,57 @@ fn the_occluded_sky_on_the_gpu_matches_its_f64_twin() {
         }
     }
 }
+
+/// As the background, the sky fills every pixel where the camera sees nothing with level 0 of its
+/// prefiltered levels toward the pixel's ray, as the f64 reference's miss does; the objects'
+/// pixels are the same as without it, and a term alone has no background.
+#[test]
+fn the_sky_as_the_background_matches_its_f64_twin() {
+    let scene = Scene::builtin("default").unwrap();
+    let mut sky = lit_by(&scene, EnvSource::Sky { turbidity: 3.0, sun: Some(glam::DVec3::new(0.5, 0.5, 0.3)) });
+    let without = draw(&sky);
+    sky.environment.as_mut().unwrap().background = true;
+    let img = draw(&sky);
+    let reference = render_reference(&sky, SpecularModel::CookTorrance, W, H);
+    let (mut worst, mut sum, mut empty, mut apart) = (0.0f32, 0.0f64, 0, 0.0f32);
+    for y in 0..H {
+        for x in 0..W {
+            let i = (y * W + x) as usize;
+            let (p, q) = (img.get(x, y), without.get(x, y));
+            // The empty pixels, off the silhouettes (where the mesh and the exact shape may
+            // disagree): those whose neighbours see nothing either.
+            let open = |dx: i32, dy: i32| {
+                let (u, v) = (x as i32 + dx, y as i32 + dy);
+                u < 0
+                    || v < 0
+                    || u >= W as i32
+                    || v >= H as i32
+                    || reference.object[(v as u32 * W + u as u32) as usize].is_none()
+            };
+            if reference.object[i].is_some() || ![(1, 0), (-1, 0), (0, 1), (0, -1)].iter().all(|&(dx, dy)| open(dx, dy))
+            {
+                continue;
+            }
+            empty += 1;
+            let r = reference.pixels[i];
+            let e = (0..3).map(|c| (p[c] - r[c] as f32).abs()).fold(0.0, f32::max);
+            (worst, sum) = (worst.max(e), sum + f64::from(e));
+            apart = (0..3).map(|c| (p[c] - q[c]).abs()).fold(apart, f32::max);
+        }
+    }
+    let mean = sum / empty.max(1) as f64;
+    eprintln!(
+        "background: {empty} pixels, mean |error| {mean:.2e}, max {worst:.2e}; the sky differs from the colour by up to {apart:.2e}"
+    );
+    assert!(empty > (W * H / 5) as usize, "{empty} empty pixels");
+    // The surfaces' thresholds: Vulkan lets atan and acos, which find the texel, err by 4096 ulp.
+    assert!(mean < 1e-4 && worst < 4e-3, "the background differs from its twin by {mean} (mean), {worst} (max)");
+    assert!(apart > 0.1, "the sky differs from the background colour only by {apart}");
+    // The objects are drawn as before: the background only fills what the scene leaves.
+    for (x, y) in interior(&reference, 0) {
+        assert_eq!(img.get(x, y), without.get(x, y), "the ground changed at ({x}, {y})");
+    }
+    // A term alone drops the background, the environment's too.
+    let ambient = shadelab_model::terms::Term::Ambient.scene(&sky);
+    assert!(!ambient.environment.as_ref().unwrap().background);
+}

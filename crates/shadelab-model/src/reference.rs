@@ -357,7 +357,13 @@ fn trace_row(ctx: &Context, y: u32, width: u32, height: u32) -> RowPixels {
     for x in 0..width {
         let (o, dir) = scene.camera.ray(x, y, width, height);
         let Some(hit) = trace(scene, geo, o, dir) else {
-            let background = scene.background.unwrap_or([0.0; 3]);
+            // The environment where it is the background: the truth's exact radiance, the GPU's
+            // level 0 in its f64 twin.
+            let env = ctx.env.filter(|_| scene.environment.as_ref().is_some_and(|e| e.background));
+            let background = match env {
+                Some(e) => e.background_toward(dir, ctx.env_use == EnvUse::Traced),
+                None => scene.background.unwrap_or([0.0; 3]),
+            };
             img.pixels.push(background);
             img.unshadowed.push(background);
             img.object.push(None);

@@ -52,63 +52,13 @@ impl Renderer {
         self.queue.write_buffer(&gpu_scene.objects_buf, 0, &bytes);
         *gpu_scene.glass_exits.lock().expect("not poisoned") = exits;
         *gpu_scene.glass_order.lock().expect("not poisoned") = crate::glass_pass::glass_order(scene);
-        if program.effects().has(Effect::EnvironmentSpecular) {
+        let background = program.effects().has(Effect::EnvironmentBackground);
+        gpu_scene.env_background.store(background, std::sync::atomic::Ordering::Relaxed);
+        if program.effects().has(Effect::EnvironmentSpecular) || background {
             self.write_env_levels(gpu_scene, scene);
         }
         let shadows = program.effects().has(Effect::CastShadows);
         self.write_shadows(gpu_scene, scene, shadows, target.width as f64 / target.height.max(1) as f64);
-    }
-
-    /// The environment's SH terms, projected again only when the environment (or the sun it
-    /// follows) changed since the last write: orbiting writes the uniforms every frame.
-    fn env_sh(&self, gpu_scene: &SceneGpu, scene: &Scene) -> [[f32; 4]; 9] {
-        let Some(env) = &scene.environment else { return [[0.0; 4]; 9] };
-        let sun = env_sun(scene);
-        let mut of = gpu_scene.env_sh_of.lock().unwrap_or_else(|e| e.into_inner());
-        match of.as_ref() {
-            Some((e, s, sh)) if e == env && *s == sun => *sh,
-            _ => {
-                let sh = crate::uniforms::env_sh(env, &scene.lights);
-                *of = Some((env.clone(), sun, sh));
-                sh
-            }
-        }
-    }
-
-    /// The environment's occlusion grid's placement, the grid baked and written only when the
-    /// geometry changed since the last write (the bake traces rays from every node).
-    fn write_env_occlusion(&self, gpu_scene: &SceneGpu, scene: &Scene) -> [[f32; 4]; 2] {
-        let key = OcclusionKey::of(scene);
-        let mut of = gpu_scene.env_occlusion_of.lock().unwrap_or_else(|e| e.into_inner());
-        if let Some((k, placement)) = of.as_ref()
-            && *k == key
-        {
-            return *placement;
-        }
-        use shadelab_model::lighting::occlusion::OCC_RAYS;
-        let placement = match shadelab_model::reference::bake_occlusion(scene, OCC_RAYS, 1) {
-            Some(grid) => {
-                self.queue.write_buffer(&gpu_scene.env_occlusion, 0, bytemuck::cast_slice(&grid.gpu_words()));
-                grid.gpu_placement()
-            }
-            None => [[0.0; 4]; 2],
-        };
-        *of = Some((key, placement));
-        placement
-    }
-
-    /// The environment's prefiltered levels, computed and written only when the environment (or
-    /// the sun it follows) changed since the last write.
-    fn write_env_levels(&self, gpu_scene: &SceneGpu, scene: &Scene) {
-        let Some(env) = &scene.environment else { return };
-        let sun = env_sun(scene);
-        let mut of = gpu_scene.env_levels_of.lock().unwrap_or_else(|e| e.into_inner());
-        if of.as_ref().is_some_and(|(e, s)| e == env && *s == sun) {
-            return;
-        }
-        let levels = env.prefiltered(&scene.lights);
-        self.queue.write_buffer(&gpu_scene.env_levels, 0, bytemuck::cast_slice(&levels));
-        *of = Some((env.clone(), sun));
     }
 
     /// Record the scene pass of `program` into `encoder`, drawing into `target` with the uniforms
@@ -165,6 +115,15 @@ impl Renderer {
             pass.set_bind_group(2, maps, &[]);
         }
         self.draw_objects(&mut pass, gpu_scene, lit_colors, &glass, flat, surfaces);
+        // The environment behind the opaque scene, before the glass, which sees it through.
+        if fx.has(Effect::EnvironmentBackground) && gpu_scene.env_background.load(std::sync::atomic::Ordering::Relaxed)
+        {
+            let background =
+                crate::environment_gpu::background_pipeline(&mut self.pipelines, key.program, target.format);
+            pass.set_pipeline(background);
+            pass.set_bind_group(0, &gpu_scene.globals_bind, &[]);
+            pass.draw(0..3, 0..1);
+        }
         drop(pass);
         if !glass.is_empty() {
             let maps = shadows.as_ref().map(|s| &s.0);
@@ -294,26 +253,4 @@ fn scene_pass<'e>(
         occlusion_query_set: None,
         multiview_mask: None,
     })
-}
-
-/// The direction of the light a sky follows (the first directional light's), part of the key of
-/// what the frame keeps of an environment.
-fn env_sun(scene: &Scene) -> Option<glam::DVec3> {
-    scene.lights.iter().find(|l| l.kind == shadelab_model::LightKind::Directional).map(|l| l.direction)
-}
-
-/// What the occlusion grid is baked from: each object's shape and transform, and the meshes.
-#[derive(PartialEq)]
-pub(crate) struct OcclusionKey {
-    objects: Vec<(shadelab_model::Shape, shadelab_model::Transform)>,
-    meshes: shadelab_model::mesh::Meshes,
-}
-
-impl OcclusionKey {
-    fn of(scene: &Scene) -> OcclusionKey {
-        OcclusionKey {
-            objects: scene.objects.iter().map(|o| (o.shape, o.transform)).collect(),
-            meshes: scene.meshes.clone(),
-        }
-    }
 }

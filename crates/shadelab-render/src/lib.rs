@@ -2,6 +2,7 @@
 //! pipeline per permutation (cached), capture to a linear float image, GPU timing. Knows nothing
 //! of egui.
 
+mod environment_gpu;
 pub mod flip;
 pub mod frame;
 pub mod glass_pass;

@@ -3,7 +3,6 @@
 //! view-projection, drawn after the scene pass into the same target and depth-tested against the
 //! depth that pass keeps (`LessEqual`), so that an edge behind an object is hidden.
 
-use crate::pipelines::DEPTH_FORMAT;
 use crate::program::RenderSettings;
 use crate::target::{self, LinearImage, Target};
 use crate::upload::UploadError;
@@ -209,14 +208,8 @@ fn build_pipeline(
             })],
         },
         primitive: wgpu::PrimitiveState { topology: wgpu::PrimitiveTopology::LineList, ..Default::default() },
-        depth_stencil: Some(wgpu::DepthStencilState {
-            format: DEPTH_FORMAT,
-            // Lines are drawn over the scene; they hide nothing of each other's by depth.
-            depth_write_enabled: Some(false),
-            depth_compare: Some(wgpu::CompareFunction::LessEqual),
-            stencil: Default::default(),
-            bias: Default::default(),
-        }),
+        // Lines are drawn over the scene; they hide nothing of each other's by depth.
+        depth_stencil: Some(crate::pipelines::depth_tested_over()),
         multisample: Default::default(),
         fragment: Some(wgpu::FragmentState {
             module,

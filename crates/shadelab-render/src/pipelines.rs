@@ -16,6 +16,18 @@ use web_time::Instant;
 
 pub const DEPTH_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Depth32Float;
 
+/// A pass drawn over the scene's depth without writing it: its fragments where they are not behind
+/// what is drawn (the overlay's lines, the environment's background at the far plane).
+pub fn depth_tested_over() -> wgpu::DepthStencilState {
+    wgpu::DepthStencilState {
+        format: DEPTH_FORMAT,
+        depth_write_enabled: Some(false),
+        depth_compare: Some(wgpu::CompareFunction::LessEqual),
+        stencil: Default::default(),
+        bias: Default::default(),
+    }
+}
+
 /// Everything that selects a distinct pipeline. Plain `Copy + Hash`: pipelines are cached by it
 /// and never rebuilt per frame.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -42,6 +54,8 @@ pub struct Layouts {
     pub glass: wgpu::PipelineLayout,
     pub glass_shadows: wgpu::PipelineLayout,
     pub glass_back: wgpu::PipelineLayout,
+    /// The environment's background: the globals alone.
+    pub background: wgpu::PipelineLayout,
 }
 
 impl Layouts {

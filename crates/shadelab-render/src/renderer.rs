@@ -115,6 +115,7 @@ impl Renderer {
                 &[Some(&globals_layout), Some(&object_layout), Some(&shadow_layout), Some(&glass_layout)],
             ),
             glass_back: layout("shadelab glass back faces", &[Some(&globals_layout), Some(&object_layout)]),
+            background: layout("shadelab environment background", &[Some(&globals_layout)]),
         };
         Renderer {
             device: device.clone(),

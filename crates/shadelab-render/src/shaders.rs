@@ -8,7 +8,7 @@
 use shadelab_model::effects::EffectKey;
 
 /// `(file name, source)` in the order they are concatenated.
-pub const FILES: [(&str, &str); 21] = [
+pub const FILES: [(&str, &str); 22] = [
     ("common.wgsl", include_str!("../../../shaders/common.wgsl")),
     ("brdf.wgsl", include_str!("../../../shaders/brdf.wgsl")),
     // Cook–Torrance's D, G and F, each selected by the material's code.
@@ -45,6 +45,8 @@ pub const FILES: [(&str, &str); 21] = [
     ("entry_points.wgsl", include_str!("../../../shaders/entry_points.wgsl")),
     // Gouraud's and Phong shading's stages with screen-space interpolation.
     ("screen_space.wgsl", include_str!("../../../shaders/screen_space.wgsl")),
+    // The environment as the background: only in permutations with its effect.
+    ("background.wgsl", include_str!("../../../shaders/background.wgsl")),
     // The glass pass's entry points: only in permutations with transparent objects.
     ("glass.wgsl", include_str!("../../../shaders/glass.wgsl")),
 ];

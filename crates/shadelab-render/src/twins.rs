@@ -10,7 +10,7 @@ use shadelab_model::params::NamedValue;
 use shadelab_model::{FalloffForm, IlluminationModel, LightKind, SpecularModel};
 
 /// Each WGSL file and the source of its f64 twin.
-const TWINS: [(&str, &str); 21] = [
+const TWINS: [(&str, &str); 22] = [
     ("common.wgsl", include_str!("../../shadelab-model/src/lighting/common.rs")),
     ("brdf.wgsl", include_str!("../../shadelab-model/src/lighting/brdf.rs")),
     ("microfacet.wgsl", include_str!("../../shadelab-model/src/lighting/microfacet.rs")),
@@ -55,6 +55,8 @@ const TWINS: [(&str, &str); 21] = [
     ("entry_points.wgsl", include_str!("../../shadelab-model/src/lighting/shading.rs")),
     // Stages only: their counterpart is the reference's exact per-pixel image.
     ("screen_space.wgsl", include_str!("../../shadelab-model/src/lighting/shading.rs")),
+    // Stages only: their counterpart is the reference's miss toward the environment.
+    ("background.wgsl", include_str!("../../shadelab-model/src/reference.rs")),
     // The glass pass: its counterpart is the reference's tracer, which follows every branch.
     (
         "glass.wgsl",

@@ -62,6 +62,8 @@ pub struct GlobalsUniform {
     /// The occlusion grid's placement (`OcclusionGrid::gpu_placement`); zero without one, set by
     /// the frame, which bakes the grid once per change of the geometry.
     pub env_occlusion: [[f32; 4]; 2],
+    /// The inverse of `view_proj`, for the background's ray through each pixel.
+    pub inv_view_proj: [[f32; 4]; 4],
 }
 
 #[repr(C)]
@@ -261,6 +263,14 @@ impl GlobalsUniform {
                 [[0.0; 4]; shadelab_model::lighting::environment::ENV_SPLIT_B_VEC4S]
             },
             env_occlusion: [[0.0; 4]; 2],
+            // Inverted in f64: the far plane's points are large, f32's inverse loses them.
+            inv_view_proj: {
+                let c = &scene.camera;
+                (c.projection(f64::from(width) / f64::from(height.max(1))) * c.view())
+                    .inverse()
+                    .as_mat4()
+                    .to_cols_array_2d()
+            },
         }
     }
 }

@@ -108,7 +108,7 @@ pub struct SceneGpu {
     /// The environment's occlusion grid (64 KiB), written only when a program draws it, and
     /// the geometry it was baked for with the grid's placement in the globals.
     pub(crate) env_occlusion: wgpu::Buffer,
-    pub(crate) env_occlusion_of: std::sync::Mutex<Option<(crate::frame::OcclusionKey, [[f32; 4]; 2])>>,
+    pub(crate) env_occlusion_of: std::sync::Mutex<Option<(crate::environment_gpu::OcclusionKey, [[f32; 4]; 2])>>,
     pub(crate) env_sh_of:
         std::sync::Mutex<Option<(shadelab_model::lighting::env_map::Environment, Option<glam::DVec3>, [[f32; 4]; 9])>>,
     pub(crate) objects_buf: wgpu::Buffer,
@@ -132,6 +132,9 @@ pub struct SceneGpu {
     pub(crate) glass_exits: std::sync::Mutex<Vec<u32>>,
     /// The scene pass's clear colour as last written (`uniforms::clear_color` of the scene).
     pub(crate) clear: std::sync::Mutex<wgpu::Color>,
+    /// Whether the last uniforms written draw the environment as the background (the uber
+    /// pipeline, which a frame may draw with meanwhile, holds the background for every scene).
+    pub(crate) env_background: std::sync::atomic::AtomicBool,
     /// How many times the uniforms were written: a caller that keeps them between frames sees
     /// here whether another draw (another target, another scene's parameters) wrote over them.
     pub uniform_writes: std::sync::atomic::AtomicU64,
@@ -284,6 +287,7 @@ impl Uploader {
             glass_order: Default::default(),
             glass_exits: Default::default(),
             clear: std::sync::Mutex::new(crate::uniforms::CLEAR_COLOR),
+            env_background: Default::default(),
             uniform_writes: Default::default(),
         })
     }

@@ -16,12 +16,14 @@ fn the_environment_replaces_the_ambient() {
     assert_eq!(o.status.code(), Some(0), "{:?}", error_lines(&o));
     assert!(out.contains("env-sh") && out.contains("environment light (sky)"), "{out}");
     assert!(out.contains("environment's occlusion is off"), "{out}");
-    // Asked for, the occlusion is drawn, and says so.
+    // Asked for, the occlusion and the background are drawn, and say so.
     let o = shadelab(&[
         "render",
         "--environment",
         "sky",
         "--env-occlusion",
+        "on",
+        "--env-background",
         "on",
         "--explain",
         "--output",
@@ -30,6 +32,7 @@ fn the_environment_replaces_the_ambient() {
     let out = String::from_utf8_lossy(&o.stdout);
     assert_eq!(o.status.code(), Some(0), "{:?}", error_lines(&o));
     assert!(out.contains("env-occ") && out.contains("asks for occlusion"), "{out}");
+    assert!(out.contains("env-bg") && out.contains("drawn as the background"), "{out}");
     // The default scene's I_amb is 0.12 grey: the same light as a 1×1 map.
     let one = shadelab_model::lighting::env_map::EnvImage {
         name: "one".into(),
@@ -60,6 +63,8 @@ fn bad_environment_flags_are_one_line() {
     for (args, says) in [
         (vec!["--env-rotation", "10"], "--env-rotation: the scene has no environment"),
         (vec!["--env-occlusion", "on"], "--env-occlusion: the scene has no environment"),
+        (vec!["--env-background", "on"], "--env-background: the scene has no environment"),
+        (vec!["--term", "environment-specular"], "--term environment-specular: the scene has no environment light"),
         (vec!["--environment", "sky", "--env-occlusion", "maybe"], "--env-occlusion"),
         (vec!["--environment", "sky", "--turbidity", "40"], "--turbidity"),
         (vec!["--environment", "uniform", "--turbidity", "3"], "--turbidity: only for --environment sky"),

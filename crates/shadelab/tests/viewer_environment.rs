@@ -1,6 +1,6 @@
 //! The viewer's environment section (docs/environment.md), driven by egui_kittest on lavapipe:
 //! the sky takes I_amb's place and changes the image, its occlusion and split sum are switched,
-//! and "none" gives I_amb back.
+//! its specular is shown alone, and "none" gives I_amb back.
 
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
@@ -63,10 +63,31 @@ fn the_sky_replaces_the_ambient_and_none_gives_it_back() {
     let occluded = h.render().expect("render");
     let changed = changed_view_pixels(&after, &occluded);
     assert!(changed > 200, "the occlusion changed only {changed} pixels of the view");
+    // The term row offers the environment's specular alone: only its reflections stay.
+    h.get_by_label("I_env,s").scroll_to_me();
+    h.run_steps(3);
+    h.get_by_label("I_env,s").click();
+    h.run_steps(3);
+    let env_specular = h.render().expect("render");
+    let changed = changed_view_pixels(&occluded, &env_specular);
+    assert!(changed > 20000, "the environment's specular alone changed only {changed} pixels");
+    h.get_by_label("all").click();
+    h.run_steps(3);
+    h.get_by_label("specular (split sum)").scroll_to_me();
+    h.run_steps(3);
     h.get_by_label("specular (split sum)").click();
     h.run_steps(3);
     assert!(h.state_mut().scene_mut().environment.as_ref().is_some_and(|e| !e.specular));
+    // As the background, the sky fills the view's empty top.
+    let plain = h.render().expect("render");
+    h.get_by_label("show as the background").click();
+    h.run_steps(3);
+    assert!(h.state_mut().scene_mut().environment.as_ref().is_some_and(|e| e.background));
+    let behind = h.render().expect("render");
+    let changed = changed_view_pixels(&plain, &behind);
+    assert!(changed > 5000, "the background changed only {changed} pixels of the view");
     choose(&mut h, "none (the constant I_amb)");
     let scene = h.state_mut().scene_mut().clone();
     assert_eq!((scene.environment, scene.ambient), (None, ambient));
+    assert!(h.query_by_label("I_env,s").is_none(), "no environment, no term of its own");
 }

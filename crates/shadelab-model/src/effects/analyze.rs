@@ -273,6 +273,12 @@ fn decide_ambient_and_sum(a: &mut Analysis, scene: &Scene, used: &[&crate::scene
         },
     );
     decide_environment_occlusion(a, env);
+    let (on, why) = match env {
+        None => (false, "no environment light".to_string()),
+        Some(e) if !e.background => (false, "the environment is not the background".into()),
+        Some(e) => (true, format!("the environment ({}) is drawn as the background", e.source.name())),
+    };
+    a.decide(Effect::EnvironmentBackground, on, why);
     decide_environment_specular(a, scene, used);
     a.decide(Effect::LambertRule, model == IlluminationModel::Lambert, format!("the illumination model is {model}"));
     let sum = model == IlluminationModel::Sum;

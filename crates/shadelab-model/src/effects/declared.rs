@@ -233,17 +233,24 @@ declare_effects! {
         name: "environment specular",
         label: "env-spec",
         define: Some("EFFECT_ENVIRONMENT_SPECULAR"),
+        // The levels' lookup (env_level_size … env_level_sample) is shared with the background.
         functions: &[
-            "env_level_size",
-            "env_level_offset",
-            "env_texel",
-            "env_level_sample",
             "env_prefiltered",
             "env_split_b_node",
             "env_split_b",
             "env_specular",
         ],
         members: &[("Globals", "env_split_b")],
+    },
+    /// The environment drawn where the camera sees nothing, from its prefiltered level 0
+    /// (docs/environment.md, "As the background").
+    EnvironmentBackground {
+        explain: "the environment as the background, level 0 of its prefiltered levels",
+        name: "environment background",
+        label: "env-bg",
+        define: Some("EFFECT_ENVIRONMENT_BACKGROUND"),
+        functions: &[],
+        members: &[("Globals", "inv_view_proj")],
     },
     /// The Lambert rule's lit part and fill (docs/model.md §1), the illumination model
     /// `IlluminationModel::Lambert`.

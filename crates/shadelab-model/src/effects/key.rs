@@ -129,7 +129,7 @@ mod tests {
         assert_eq!(format!("{k:?}"), "EffectKey(diffuse+cook-torrance+point+range)");
         assert_eq!(
             EffectKey::UBER.without(Effect::Ambient).label(),
-            "diffuse+phong+phong-norm+cook-torrance+beckmann+ggx+vgroove+smith+smith-hc+exact-f+schlick+ms+fmix+env-sh+env-spec+lambert+sum+it+dir+point+quad+linear+spot+area+apoints+range+shadows+hard+pcf+poisson+pcss+cascades+texture+vcolor+mrtex+aotex+emit+emittex+normtex+glass+refract+absorb"
+            "diffuse+phong+phong-norm+cook-torrance+beckmann+ggx+vgroove+smith+smith-hc+exact-f+schlick+ms+fmix+env-sh+env-occ+env-spec+env-bg+lambert+sum+it+dir+point+quad+linear+spot+area+apoints+range+shadows+hard+pcf+poisson+pcss+cascades+texture+vcolor+mrtex+aotex+emit+emittex+normtex+glass+refract+absorb"
         );
         assert_eq!(Effect::SpecularPhong.to_string(), "Phong specular (V·R)^h");
     }

@@ -35,6 +35,9 @@ pub(super) struct EnvironmentExtras {
     /// True: the GPU occludes its diffuse light by the precomputed grid; absent is false.
     #[serde(skip_serializing_if = "Option::is_none")]
     occlusion: Option<Flag>,
+    /// True: drawn where the camera sees nothing, in place of the background; absent is false.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    background: Option<Flag>,
 }
 
 /// The environment `ex` describes; its map from a data URI or a file read through `externals`. A source without what it
@@ -74,6 +77,7 @@ pub(super) fn read_environment(
         rotation_deg: ex.rotation.map_or(0.0, |v| v.0),
         specular: ex.specular.is_none_or(|f| f.0),
         occlusion: ex.occlusion.is_some_and(|f| f.0),
+        background: ex.background.is_some_and(|f| f.0),
     })
 }
 
@@ -85,6 +89,7 @@ pub(super) fn write_environment(env: &Environment) -> EnvironmentExtras {
         rotation: Some(env.rotation_deg.into()),
         specular: (!env.specular).then_some(Flag(false)),
         occlusion: env.occlusion.then_some(Flag(true)),
+        background: env.background.then_some(Flag(true)),
         ..Default::default()
     };
     match &env.source {

@@ -135,12 +135,14 @@ pub struct Environment {
     /// Whether the GPU occludes its diffuse light by the precomputed grid (`occlusion.rs`); the
     /// truth always traces visibility.
     pub occlusion: bool,
+    /// Whether it is drawn where the camera sees nothing, in place of the scene's background.
+    pub background: bool,
 }
 
 impl Environment {
     /// An environment of `source` at intensity 1, unturned.
     pub fn new(source: EnvSource) -> Environment {
-        Environment { source, intensity: 1.0, rotation_deg: 0.0, specular: true, occlusion: false }
+        Environment { source, intensity: 1.0, rotation_deg: 0.0, specular: true, occlusion: false, background: false }
     }
 
     /// The nine SH coefficients the GPU's diffuse term reads (and the exact reference's twin).
@@ -437,6 +439,12 @@ fn cell_solid_angle(y: u32, w: u32, h: u32) -> f64 {
 }
 
 impl EnvLight {
+    /// What the camera sees toward unit `d` where it meets nothing: the radiance itself (`exact`,
+    /// the truth's), or the GPU's background, level 0 of the prefiltered levels, bilinear.
+    pub fn background_toward(&self, d: DVec3, exact: bool) -> [f64; 3] {
+        if exact { self.radiance(d) } else { super::environment::env_level_sample(&self.prefiltered, 0, d) }
+    }
+
     /// Radiance arriving from world direction `d` (unit, pointing away from the point).
     pub fn radiance(&self, d: DVec3) -> [f64; 3] {
         self.radiance.at(turn_y(d, -self.turn))

@@ -69,9 +69,9 @@ const PHONG_OPTIONS: [Effect; 1] = [Effect::PhongNormalized];
 /// bases.
 const MS_OPTIONS: [Effect; 2] = [Effect::MultipleScattering, Effect::FresnelMix];
 
-/// The environment's occlusion: one factor inside the environment's diffuse term, validated on a
-/// few bases rather than doubling the product of the rest.
-const ENV_OPTIONS: [Effect; 1] = [Effect::EnvironmentOcclusion];
+/// The environment's occlusion (one factor inside its diffuse term) and its background (a pass of
+/// its own that reads the levels), validated on a few bases rather than multiplying the rest.
+const ENV_OPTIONS: [Effect; 2] = [Effect::EnvironmentOcclusion, Effect::EnvironmentBackground];
 
 /// The keys of every subset of `effects`.
 fn subsets(effects: &[Effect]) -> Vec<EffectKey> {
@@ -180,7 +180,7 @@ fn every_permutation_validates_in_naga() {
         let base = MS_OPTIONS.into_iter().fold(base, |k, e| k.without(e));
         keys.extend(subsets(&MS_OPTIONS).into_iter().map(|k| union(k, base)));
     }
-    // The occlusion on every other effect, on the environment's diffuse alone, and on none.
+    // These on every other effect, on the environment's diffuse alone, and on none.
     let env_bases: [EffectKey; 3] =
         [EffectKey::UBER, [Effect::DirectionalLights, Effect::EnvironmentSh].into_iter().collect(), EffectKey::NONE];
     for base in env_bases {
@@ -197,6 +197,9 @@ fn every_permutation_validates_in_naga() {
         if key.has(Effect::Transmission) {
             eps.extend([crate::glass_pass::GLASS_ENTRY_POINTS, crate::glass_pass::BACK_ENTRY_POINTS]);
         }
+        let background =
+            module.entry_points.iter().any(|e| e.name == crate::environment_gpu::BACKGROUND_ENTRY_POINTS.1);
+        assert_eq!(background, key.has(Effect::EnvironmentBackground), "{}: the background's entry point", key.label());
         let glass = module.entry_points.iter().any(|e| e.name == crate::glass_pass::GLASS_ENTRY_POINTS.1);
         assert_eq!(glass, key.has(Effect::Transmission), "{}: the glass pass's entry point", key.label());
         for (vs, fs) in eps {
@@ -303,6 +306,11 @@ fn a_permutation_without_an_effect_has_no_code_for_it() {
                     && (shading == ShadingMode::Phong || GLASS.contains(&e))
                 {
                     eps.push(glass_ep);
+                }
+                // The background is its own pass: its stage counts for its effect.
+                let background_ep = crate::environment_gpu::BACKGROUND_ENTRY_POINTS.1;
+                if e == Effect::EnvironmentBackground && module.entry_points.iter().any(|x| x.name == background_ep) {
+                    eps.push(background_ep);
                 }
                 let called: Vec<String> = eps
                     .iter()

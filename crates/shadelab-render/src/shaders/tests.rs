@@ -56,7 +56,7 @@ fn uniform_layouts_match_wgsl() {
     );
     assert_eq!(
         wgsl_layout(&module, "Globals"),
-        rust_layout!(GlobalsUniform: view_proj, camera_pos, ambient, light_count, flags, specular_model, illumination, lights, ms_albedo, env_sh, env_split_b)
+        rust_layout!(GlobalsUniform: view_proj, camera_pos, ambient, light_count, flags, specular_model, illumination, lights, ms_albedo, env_sh, env_split_b, env_occlusion, inv_view_proj)
     );
     assert_eq!(
         wgsl_layout(&module, "Object"),

@@ -95,6 +95,7 @@ fn environment(args: &SceneArgs, scene: &mut Scene) -> Result<(), Failure> {
         ("--env-rotation", args.env_rotation.is_some()),
         ("--turbidity", args.turbidity.is_some()),
         ("--env-occlusion", args.env_occlusion.is_some()),
+        ("--env-background", args.env_background.is_some()),
     ];
     let Some(env) = scene.environment.as_mut() else {
         if let Some((flag, _)) = adjusts.iter().find(|(_, given)| *given) {
@@ -115,6 +116,9 @@ fn environment(args: &SceneArgs, scene: &mut Scene) -> Result<(), Failure> {
     }
     if let Some(on) = args.env_occlusion {
         env.occlusion = on;
+    }
+    if let Some(on) = args.env_background {
+        env.background = on;
     }
     if let Some(t) = args.turbidity {
         match &mut env.source {

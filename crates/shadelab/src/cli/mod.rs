@@ -308,6 +308,10 @@ pub struct SceneArgs {
     /// visibility [default: off]
     #[arg(long, value_name = "ON|OFF", value_parser = values::on_off())]
     pub env_occlusion: Option<bool>,
+    /// Draw the environment where the camera sees nothing, in place of the background colour
+    /// (on), on the GPU and in the references [default: off]
+    #[arg(long, value_name = "ON|OFF", value_parser = values::on_off())]
+    pub env_background: Option<bool>,
 }
 
 /// `render --small-area-lights`: how an area light too small on screen for its area to show

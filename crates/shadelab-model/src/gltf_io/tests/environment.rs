@@ -9,7 +9,14 @@ use std::sync::Arc;
 
 fn with_env(source: EnvSource) -> Scene {
     let mut s = Scene::builtin("default").unwrap();
-    s.environment = Some(Environment { source, intensity: 2.5, rotation_deg: -30.0, specular: false, occlusion: true });
+    s.environment = Some(Environment {
+        source,
+        intensity: 2.5,
+        rotation_deg: -30.0,
+        specular: false,
+        occlusion: true,
+        background: true,
+    });
     s
 }
 

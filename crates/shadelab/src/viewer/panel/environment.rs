@@ -1,7 +1,8 @@
 //! The panel's environment section (docs/environment.md): the source (none, a uniform colour in
 //! place of I_amb, the sky, or the map a file or `--environment` brought), its intensity, turn,
 //! the sky's turbidity (each slider over its declared range), whether the split sum draws its
-//! specular and whether the precomputed grid occludes its diffuse light.
+//! specular, whether the precomputed grid occludes its diffuse light and whether it is drawn as
+//! the background.
 
 use super::slider;
 use crate::viewer::Viewer;
@@ -70,6 +71,8 @@ impl Viewer {
             "the diffuse light times the open share of a grid of ambient occlusion baked over the scene (once per change of the geometry)",
         );
         self.marks.insert("environment:occlusion".into(), r.rect);
+        let r = ui.checkbox(&mut env.background, "show as the background");
+        self.marks.insert("environment:background".into(), r.rect);
         ui.small(
             "diffuse by nine SH terms, specular by the split sum (Cook–Torrance): the difference view's path-traced truth has the rest",
         );
@@ -81,6 +84,9 @@ impl Viewer {
     fn choose_environment(&mut self, none: bool, uniform: bool) {
         self.scene.environment = None;
         if none {
+            if self.term == shadelab_model::terms::Term::EnvSpecular {
+                self.term = shadelab_model::terms::Term::All;
+            }
             if let Some(a) = self.ambient_replaced.take() {
                 self.scene.ambient = a;
             }

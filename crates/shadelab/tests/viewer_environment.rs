@@ -91,3 +91,32 @@ fn the_sky_replaces_the_ambient_and_none_gives_it_back() {
     assert_eq!((scene.environment, scene.ambient), (None, ambient));
     assert!(h.query_by_label("I_env,s").is_none(), "no environment, no term of its own");
 }
+
+/// An `.hdr` or `.exr` opened from the files row lights the scene on show by that map, in place
+/// of I_amb; a broken one is one line on the panel and the scene keeps its light.
+#[test]
+fn a_map_file_opens_as_the_environment() {
+    use shadelab_model::lighting::env_map::EnvImage;
+    let dir = std::env::temp_dir().join(format!("shadelab-viewer-map-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let img = EnvImage { name: "sky".into(), width: 8, height: 4, texels: vec![[0.5, 0.6, 0.9]; 32] };
+    let map = dir.join("sky.exr");
+    std::fs::write(&map, shadelab_model::lighting::env_file::write_env_exr(&img).unwrap()).unwrap();
+    let mut h = harness();
+    let objects = h.state_mut().scene_mut().objects.len();
+    h.state_mut().open_file(&map);
+    h.run_steps(3);
+    let scene = h.state_mut().scene_mut().clone();
+    let Some(EnvSource::Image(read)) = scene.environment.as_ref().map(|e| &e.source) else {
+        panic!("no map: {:?}", scene.environment)
+    };
+    assert_eq!((read.width, read.height, scene.ambient, scene.objects.len()), (8, 4, [0.0; 3], objects));
+    let broken = dir.join("broken.hdr");
+    std::fs::write(&broken, b"not a map").unwrap();
+    h.state_mut().open_file(&broken);
+    h.run_steps(3);
+    let (said, error) = h.state().message().cloned().expect("a message");
+    assert!(error && said.contains("broken.hdr") && !said.contains('\n'), "{said}");
+    assert!(matches!(h.state_mut().scene_mut().environment.as_ref().map(|e| &e.source), Some(EnvSource::Image(_))));
+    std::fs::remove_dir_all(&dir).unwrap();
+}

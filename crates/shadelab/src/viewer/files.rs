@@ -23,13 +23,16 @@ pub enum FileRequest {
 pub type FilePicker = Arc<dyn Fn(FileRequest) -> Option<PathBuf> + Send + Sync>;
 
 /// The desktop's file dialog (rfd: the XDG desktop portal, else zenity; GTK is not needed),
-/// filtered to glTF files.
+/// filtered to glTF files (and, to open, environment maps).
 #[cfg(not(target_arch = "wasm32"))]
 pub fn native_file_picker() -> FilePicker {
     Arc::new(|request| {
         let dialog = rfd::FileDialog::new().add_filter("glTF 2.0 scene", &["gltf", "glb"]);
         match request {
-            FileRequest::Open => dialog.set_title("Open a scene").pick_file(),
+            FileRequest::Open => dialog
+                .add_filter("environment map", &["hdr", "exr"])
+                .set_title("Open a scene or an environment map")
+                .pick_file(),
             FileRequest::Save => dialog.set_title("Save the scene").set_file_name("scene.gltf").save_file(),
         }
     })

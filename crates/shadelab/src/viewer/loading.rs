@@ -136,11 +136,22 @@ impl Viewer {
     /// leaves it as it is and shows the loader's one-line error. A file opened while another
     /// loads replaces that one.
     pub fn open_file(&mut self, path: &Path) {
+        // An environment map lights the scene on show instead of replacing it.
+        if is_env_map(&path.to_string_lossy()) {
+            self.use_env_map(shadelab_model::lighting::env_file::load_env_image(path));
+            return;
+        }
         self.open_source(Source::Path(path.to_path_buf(), self.allow_outside_paths));
     }
 
     /// Open files handed in together ([`Source::from_files`]) as [`Self::open_file`] does.
     pub fn open_files(&mut self, files: Vec<(String, Vec<u8>)>) {
+        if let [(name, bytes)] = &files[..]
+            && is_env_map(name)
+        {
+            self.use_env_map(shadelab_model::lighting::env_file::read_env_image(bytes, name));
+            return;
+        }
         match Source::from_files(files) {
             Ok(source) => self.open_source(source),
             Err(e) => self.message = Some((e, true)),
@@ -227,4 +238,11 @@ impl Viewer {
             self.cancel_loading(true);
         }
     }
+}
+
+/// Whether `name` is an environment map's (`.hdr` or `.exr`), which the files row opens as the
+/// scene's environment.
+pub fn is_env_map(name: &str) -> bool {
+    let lower = name.to_ascii_lowercase();
+    lower.ends_with(".hdr") || lower.ends_with(".exr")
 }

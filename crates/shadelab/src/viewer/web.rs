@@ -84,13 +84,13 @@ pub fn choose_files() {
 }
 
 /// The hidden `<input type=file multiple>` whose files open as one scene (a `.gltf` with its
-/// `.bin` and images, or a `.glb`).
+/// `.bin` and images, or a `.glb`), or as the scene's environment (one `.hdr` or `.exr`).
 fn install_file_input() -> Result<(), JsValue> {
     let document = window()?.document().ok_or_else(|| JsValue::from_str("no document"))?;
     let input: web_sys::HtmlInputElement = document.create_element("input")?.dyn_into()?;
     input.set_type("file");
     input.set_multiple(true);
-    input.set_accept(".gltf,.glb,.bin,.png,.jpg,.jpeg");
+    input.set_accept(".gltf,.glb,.bin,.png,.jpg,.jpeg,.hdr,.exr");
     input.set_id(FILE_INPUT_ID);
     input.set_attribute("style", "display:none")?;
     let target = input.clone();

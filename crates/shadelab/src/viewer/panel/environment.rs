@@ -1,5 +1,5 @@
 //! The panel's environment section (docs/environment.md): the source (none, a uniform colour in
-//! place of I_amb, the sky, or the map a file or `--environment` brought), its intensity, turn,
+//! place of I_amb, the sky, or the map a file, `--environment` or the files row brought), its intensity, turn,
 //! the sky's turbidity (each slider over its declared range), whether the split sum draws its
 //! specular, whether the precomputed grid occludes its diffuse light and whether it is drawn as
 //! the background.
@@ -7,7 +7,7 @@
 use super::slider;
 use crate::viewer::Viewer;
 use eframe::egui;
-use shadelab_model::lighting::env_map::{ENV_INTENSITY, ENV_ROTATION, EnvSource, Environment};
+use shadelab_model::lighting::env_map::{ENV_INTENSITY, ENV_ROTATION, EnvImage, EnvSource, Environment};
 use shadelab_model::lighting::sky::TURBIDITY;
 
 /// The sources the menu offers.
@@ -52,7 +52,7 @@ impl Viewer {
             self.choose_environment(choice == Choice::None, choice == Choice::Uniform);
         }
         let Some(env) = self.scene.environment.as_mut() else {
-            ui.small("a sky or a map lights the scene in place of I_amb; a map comes from a scene file or --environment FILE");
+            ui.small("a sky or a map lights the scene in place of I_amb; open a map (.hdr, .exr) as a scene file");
             return;
         };
         slider(ui, &mut env.intensity, &ENV_INTENSITY, true);
@@ -76,6 +76,34 @@ impl Viewer {
         ui.small(
             "diffuse by nine SH terms, specular by the split sum (Cook–Torrance): the difference view's path-traced truth has the rest",
         );
+    }
+
+    /// Light the scene by a map read from a file (`read`: the map and its warnings, or one error
+    /// line), in place of I_amb as the other sources; the scene on show stays when it fails.
+    pub fn use_env_map(&mut self, read: Result<(EnvImage, Vec<String>), String>) {
+        let (img, warnings) = match read {
+            Ok(r) => r,
+            Err(e) => {
+                self.message = Some((e, true));
+                return;
+            }
+        };
+        let name = img.name.clone();
+        let previous = self.scene.environment.take();
+        self.choose_environment(false, false);
+        let mut env = Environment::new(EnvSource::Image(std::sync::Arc::new(img)));
+        // The switches of the environment it replaces stay as they were.
+        if let Some(p) = previous {
+            (env.intensity, env.rotation_deg, env.specular, env.occlusion, env.background) =
+                (p.intensity, p.rotation_deg, p.specular, p.occlusion, p.background);
+        }
+        self.scene.environment = Some(env);
+        let mut said = format!("environment map {name}");
+        for w in &warnings {
+            log::warn!("{w}");
+            said.push_str(&format!("; {w}"));
+        }
+        self.message = Some((said, false));
     }
 
     /// Switch the environment: none gives back the I_amb the panel's environment replaced,

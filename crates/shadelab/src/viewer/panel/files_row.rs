@@ -13,7 +13,9 @@ impl Viewer {
             ui.add(
                 egui::TextEdit::singleline(&mut self.file_field).desired_width(170.0).hint_text("scene.gltf / .glb"),
             )
-            .on_hover_text("a glTF 2.0 file to open (or drop a file on the window)");
+            .on_hover_text(
+                "a glTF 2.0 file to open, or an .hdr/.exr map to light the scene by (or drop a file on the window)",
+            );
             if ui.button("open").on_hover_text("open the file named in the field").clicked() {
                 let p = PathBuf::from(self.file_field.trim());
                 self.open_file(&p);
@@ -28,11 +30,14 @@ impl Viewer {
             let idle = self.picking.is_none();
             let (open_tip, save_tip) = if cfg!(target_arch = "wasm32") {
                 (
-                    "choose a .glb, or a .gltf with its .bin and images, all at once (or drop them on the page)",
+                    "choose a .glb, or a .gltf with its .bin and images, all at once, or an .hdr/.exr environment map (or drop them on the page)",
                     "download the scene as shown as shadelab-scene.glb",
                 )
             } else {
-                ("choose a glTF file in a dialog", "choose where to save the scene as shown (.gltf or .glb)")
+                (
+                    "choose a glTF file, or an .hdr/.exr environment map, in a dialog",
+                    "choose where to save the scene as shown (.gltf or .glb)",
+                )
             };
             let open = ui.add_enabled(idle, egui::Button::new("open…")).on_hover_text(open_tip);
             self.mark("open", &open);

@@ -103,12 +103,12 @@ pub struct SceneGpu {
     pub(crate) env_levels: wgpu::Buffer,
     pub(crate) env_levels_of:
         std::sync::Mutex<Option<(shadelab_model::lighting::env_map::Environment, Option<glam::DVec3>)>>,
-    /// The environment's nine SH terms as the globals hold them, and the environment (with its
-    /// sun) they were projected for: a large map's projection reads every texel.
     /// The environment's occlusion grid (64 KiB), written only when a program draws it, and
     /// the geometry it was baked for with the grid's placement in the globals.
     pub(crate) env_occlusion: wgpu::Buffer,
     pub(crate) env_occlusion_of: std::sync::Mutex<Option<(crate::environment_gpu::OcclusionKey, [[f32; 4]; 2])>>,
+    /// The environment's nine SH terms as the globals hold them, and the environment (with its
+    /// sun) they were projected for: a large map's projection reads every texel.
     pub(crate) env_sh_of:
         std::sync::Mutex<Option<(shadelab_model::lighting::env_map::Environment, Option<glam::DVec3>, [[f32; 4]; 9])>>,
     pub(crate) objects_buf: wgpu::Buffer,

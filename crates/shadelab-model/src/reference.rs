@@ -235,7 +235,11 @@ impl ReferenceJob {
         for (range, value) in [(crate::params::BOUNCES, paths.bounces), (crate::params::SPP, paths.spp)] {
             range.check(f64::from(value)).map_err(|e| e.to_string())?;
         }
-        let mut job = ReferenceJob::new(&Scene { ambient: [0.0; 3], ..scene.clone() }, specular, width, height);
+        // The truth traces the environment's visibility: it bakes no occlusion grid.
+        let environment =
+            scene.environment.clone().map(|e| crate::lighting::env_map::Environment { occlusion: false, ..e });
+        let traced = Scene { ambient: [0.0; 3], environment, ..scene.clone() };
+        let mut job = ReferenceJob::new(&traced, specular, width, height);
         job.paths = Some(paths);
         job.unit = Some(Scene { ambient: [1.0; 3], ..job.scene.clone() });
         job.img.paths = Some(paths);

@@ -64,7 +64,9 @@ fn env_level_sample(k: u32, d: vec3<f32>) -> vec3<f32> {
     let s = vec2<f32>(env_level_size(k));
     let turns = atan2(d.z, d.x) * ENV_INV_TAU;
     let u = (turns - floor(turns)) * s.x - 0.5;
-    let v = acos(clamp(d.y, -1.0, 1.0)) * ENV_INV_PI * s.y - 0.5;
+    // The angle from +y as atan2 of (√(x² + z²), y), not acos(y): accurate at every angle (the
+    // environment's sweep found a GPU acos 2e-5 rad off), and defined near the poles.
+    let v = atan2(length(d.xz), d.y) * ENV_INV_PI * s.y - 0.5;
     let x0 = floor(u);
     let y0 = floor(v);
     let fu = u - x0;

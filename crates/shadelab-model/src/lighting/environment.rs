@@ -152,7 +152,8 @@ pub fn env_level_sample(pre: &[[f32; 4]], k: u32, d: DVec3) -> [f64; 3] {
     let (w, h) = env_level_size(k);
     let phi = d.z.atan2(d.x);
     let u = (phi / TAU).rem_euclid(1.0) * f64::from(w) - 0.5;
-    let v = d.y.clamp(-1.0, 1.0).acos() / PI * f64::from(h) - 0.5;
+    // The angle from +y as the WGSL takes it: atan2 of (√(x² + z²), y).
+    let v = d.x.hypot(d.z).atan2(d.y) / PI * f64::from(h) - 0.5;
     let (x0, y0) = (u.floor(), v.floor());
     let (fu, fv) = (u - x0, v - y0);
     let (x0, y0) = (x0 as i32, y0 as i32);

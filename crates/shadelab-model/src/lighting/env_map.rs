@@ -152,6 +152,13 @@ impl Environment {
         sh_project(grid.width, grid.height, turn, |x, y| grid.texels[(y * grid.width + x) as usize])
     }
 
+    /// The largest radiance (any channel) of the cells the SH terms are projected from: the SH
+    /// diffuse stays under it times `environment::SH_RINGING_BOUND` (the stability sweep's bound).
+    pub fn sh_radiance_max(&self, lights: &[super::lights::Light]) -> f64 {
+        let (radiance, _) = self.radiance(lights);
+        radiance.sh_grid().texels.iter().flatten().fold(0.0, |a: f64, &c| a.max(c))
+    }
+
     /// The environment made ready to shade; `lights` are the scene's (a sky that follows the sun
     /// reads the first directional light).
     pub fn bake(&self, lights: &[super::lights::Light]) -> EnvLight {

@@ -42,6 +42,12 @@ pub const SH_Y22: f64 = 0.546_274_215_296_039_6;
 /// and Hanrahan), divided by π so the sum is in the unit of `I_a`.
 pub const SH_BAND_WEIGHT: [f64; 3] = [1.0, 2.0 / 3.0, 0.25];
 
+/// How far the nine terms can overshoot the radiance: they convolve it with the kernel
+/// `K(t) = (1 + 2t + 5/8·(3t² − 1))/4` of `t = n·ω`, which dips below 0 between its roots
+/// `t = (−16 ± √76)/30`, so `E(n)/π ≤ 2∫ max(K, 0) dt · max L`, this constant (closed form; a
+/// test integrates it). The stability sweep holds the GPU's SH diffuse under it.
+pub const SH_RINGING_BOUND: f64 = 1.030_673_733_306_397;
+
 /// `E(n)/π` at unit `n` from coefficients already scaled by [`SH_BAND_WEIGHT`]: the twin of the
 /// WGSL, which reads the same nine triples from the globals. Negative sums (ringing of the nine
 /// terms behind a bright source) are clamped to 0: light is never negative.
@@ -328,6 +334,24 @@ mod tests {
     }
 
     /// A 1×1 map is the uniform ambient it stands for: `E/π = L` for every normal, to rounding.
+    #[test]
+    fn the_ringing_bound_is_the_kernels_positive_mass() {
+        // The kernel from the band weights: Σ_l Â_l (2l + 1)/4 · P_l(t), t = n·ω.
+        let k = |t: f64| {
+            let w = SH_BAND_WEIGHT;
+            (w[0] + 3.0 * w[1] * t + 5.0 * w[2] * 0.5 * (3.0 * t * t - 1.0)) / 4.0
+        };
+        let steps = 200_000;
+        let positive: f64 = (0..steps).map(|i| k(-1.0 + (i as f64 + 0.5) * 2.0 / steps as f64).max(0.0)).sum::<f64>()
+            * 2.0
+            / steps as f64;
+        assert!((2.0 * positive - SH_RINGING_BOUND).abs() < 1e-8, "{}", 2.0 * positive);
+        // The whole kernel's mass is 1: a uniform environment is its own ambient.
+        let whole: f64 =
+            (0..steps).map(|i| k(-1.0 + (i as f64 + 0.5) * 2.0 / steps as f64)).sum::<f64>() * 2.0 / steps as f64;
+        assert!((2.0 * whole - 1.0).abs() < 1e-9);
+    }
+
     #[test]
     fn one_texel_is_the_uniform_ambient() {
         let l = [0.12, 0.3, 0.05];

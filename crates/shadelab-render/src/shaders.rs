@@ -107,6 +107,17 @@ pub fn terms_source() -> String {
     preprocess(&raw, &uber_defines()).expect("the shipped WGSL preprocesses")
 }
 
+/// The terms with the globals and bindings they read, through the environment's functions
+/// (`environment.wgsl`, `occlusion.wgsl`) and the shadow maps' (whose file holds a constant the
+/// uniform structs size an array by), with every effect and no entry points: the module the
+/// environment's sweep appends its kernel to, so that it reads the environment as the renderer
+/// binds it.
+pub fn environment_terms_source() -> String {
+    let end = FILES.iter().position(|(name, _)| *name == "shadows.wgsl").expect("shadows.wgsl is shipped");
+    let raw = FILES[..=end].iter().map(|(_, s)| *s).collect::<Vec<_>>().join("\n");
+    preprocess(&raw, &uber_defines()).expect("the shipped WGSL preprocesses")
+}
+
 /// The renderer's WGSL as shipped, before preprocessing.
 pub fn raw_lighting_source() -> String {
     FILES.iter().map(|(_, s)| *s).collect::<Vec<_>>().join("\n")

@@ -7,15 +7,19 @@
 
 //!
 //! The kernel's output columns are declared once in [`columns`]; the inputs, the GPU pass and the
-//! report have their own files under `sweep/`.
+//! report have their own files under `sweep/`. The environment's functions, which read the
+//! globals and the environment's buffers, have their own kernel and cases ([`environment`]).
 
 mod columns;
 mod dispatch;
+mod env_inputs;
+pub mod environment;
 mod inputs;
 mod report;
 
 pub use columns::{COLUMNS, Column, OUTPUTS, wgsl_columns};
 pub use dispatch::{SWEEP_KERNEL, sweep_source};
+pub use env_inputs::{EnvCase, EnvSweepInputs};
 pub use inputs::{Geometry, ShadowCase, SweepInputs};
 pub use report::{SweepReport, TermReport};
 

@@ -30,6 +30,8 @@ fn wgsl_blocks_are_the_declared_defines() {
     }
     // The sweep's kernel is appended after preprocessing: it holds no blocks.
     assert!(SWEEP_KERNEL.lines().all(|l| !l.trim_start().starts_with('#')));
+    let env_kernel = crate::sweep::environment::ENV_SWEEP_KERNEL;
+    assert!(env_kernel.lines().all(|l| !l.trim_start().starts_with('#')));
 }
 
 /// The effects whose code is nested inside `EFFECT_CAST_SHADOWS` and reads nothing outside the
@@ -211,6 +213,7 @@ fn every_permutation_validates_in_naga() {
     // The terms alone, and the sweep's compute module, are valid too.
     validate(&parse(&terms_source()));
     validate(&parse(&sweep_source()));
+    validate(&parse(&crate::sweep::environment::env_sweep_source()));
 }
 
 /// Functions reachable by calls from an entry point.

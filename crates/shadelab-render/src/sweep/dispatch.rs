@@ -110,7 +110,7 @@ fn chunk_counts(inputs: &SweepInputs, total: usize, first: usize, chunk: usize) 
 }
 
 /// The readback buffer's floats, once the GPU has written them (waits for it).
-fn read_back(device: &wgpu::Device, read_buf: &wgpu::Buffer) -> Vec<f32> {
+pub(super) fn read_back(device: &wgpu::Device, read_buf: &wgpu::Buffer) -> Vec<f32> {
     let slice = read_buf.slice(..);
     slice.map_async(wgpu::MapMode::Read, |r| r.expect("map sweep outputs"));
     device.poll(wgpu::PollType::wait_indefinitely()).expect("poll");

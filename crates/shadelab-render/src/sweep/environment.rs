@@ -1,0 +1,470 @@
+//! The environment's sweep: the GPU functions of `environment.wgsl` and `occlusion.wgsl` (the SH
+//! diffuse, level 0 as the background reads it, the prefiltered lookup, the split sum's B and its
+//! whole specular, the occlusion grid's lookup), over hard environments and grids, each against
+//! its f64 twin, with the main sweep's checks (docs/stability.md). Values are measured in the
+//! environment's own scale (its largest radiance), so one bound and one error floor hold for a
+//! black map and a texel of 10⁶ alike.
+
+use super::env_inputs::{EnvCase, EnvSweepInputs, grid_centre};
+use super::report::TermReport;
+use super::{ERROR_ABS_FLOOR, ERROR_CHECK_CONDITIONING, INPUT_PERTURBATION, SWITCH_MARGIN, WELL_CONDITIONED_CHANGE};
+use crate::gpu::Gpu;
+use glam::DVec3;
+use shadelab_model::lighting::environment::{self as env, SH_RINGING_BOUND, ShCoefficients};
+use shadelab_model::lighting::microfacet::{Distribution, Masking, Microfacet, fresnel_v_from_mu};
+use shadelab_model::lighting::{common::safe_normalize, occlusion};
+use shadelab_model::params::NamedValue;
+use wgpu::util::DeviceExt;
+
+/// One output group of the kernel: its name, its first column's WGSL name, its width, its
+/// bound in its scale, and whether that scale is the environment's radiance (else 1).
+struct EnvColumn {
+    name: &'static str,
+    wgsl: &'static str,
+    channels: usize,
+    bound: f64,
+    why_bound: &'static str,
+    scale: Scale,
+}
+
+#[derive(Clone, Copy)]
+enum Scale {
+    /// The largest radiance of the cells the SH terms are projected from.
+    ShRadiance,
+    /// The largest texel of the prefiltered levels.
+    Levels,
+    /// A share: 1.
+    One,
+}
+
+const ENV_COLUMNS: [EnvColumn; 7] = [
+    EnvColumn {
+        name: "env_sh_radiance",
+        wgsl: "SH_RADIANCE",
+        channels: 3,
+        bound: SH_RINGING_BOUND,
+        why_bound: "the nine terms' overshoot SH_RINGING_BOUND × the largest radiance",
+        scale: Scale::ShRadiance,
+    },
+    EnvColumn {
+        name: "env_level_sample (level 0 along −V, the background's lookup)",
+        wgsl: "LEVEL_SAMPLE",
+        channels: 3,
+        bound: 1.0,
+        why_bound: "bilinear: at most the largest texel",
+        scale: Scale::Levels,
+    },
+    EnvColumn {
+        name: "env_prefiltered (toward N's mirror of V, at m)",
+        wgsl: "PREFILTERED",
+        channels: 3,
+        bound: 1.0,
+        why_bound: "a blend of bilinear lookups: at most the largest texel",
+        scale: Scale::Levels,
+    },
+    EnvColumn {
+        name: "env_split_b (every D × G pair)",
+        wgsl: "SPLIT_B",
+        channels: 6,
+        bound: 1.0,
+        why_bound: "a share of the lobe's albedo, at most 1",
+        scale: Scale::One,
+    },
+    EnvColumn {
+        name: "env_specular (the chapter's terms, glTF's)",
+        wgsl: "SPECULAR",
+        channels: 6,
+        bound: 1.0,
+        why_bound: "the largest texel times F0·(E − B) + B ≤ max(E, B) ≤ 1",
+        scale: Scale::Levels,
+    },
+    EnvColumn {
+        name: "env_occlusion (at the grid's centre + l·d)",
+        wgsl: "OCCLUSION",
+        channels: 1,
+        bound: 1.0,
+        why_bound: "an open share",
+        scale: Scale::One,
+    },
+    // Kept last and empty of outputs of its own: the column count, for the WGSL's stride.
+    EnvColumn { name: "", wgsl: "END", channels: 0, bound: 0.0, why_bound: "", scale: Scale::One },
+];
+
+/// Floats the kernel writes per combination.
+pub const ENV_OUTPUTS: usize = 22;
+
+/// The environment sweep's kernel (`shaders/sweep_environment.wgsl`).
+pub const ENV_SWEEP_KERNEL: &str = include_str!("../../../../shaders/sweep_environment.wgsl");
+
+/// The environment sweep's compute module: the terms, globals and bindings through the
+/// environment's functions as shipped, the generated columns, then the kernel.
+pub fn env_sweep_source() -> String {
+    format!("{}\n{}\n{}", crate::shaders::environment_terms_source(), wgsl_env_columns(), ENV_SWEEP_KERNEL)
+}
+
+/// Each column's first output, in order.
+fn starts() -> impl Iterator<Item = (&'static EnvColumn, usize)> {
+    ENV_COLUMNS.iter().scan(0, |at, c| {
+        let start = *at;
+        *at += c.channels;
+        Some((c, start))
+    })
+}
+
+/// The kernel's `ENV_SWEEP_OUTPUTS` and `ENV_COL_…` constants.
+fn wgsl_env_columns() -> String {
+    let mut s = String::from("// Generated from crates/shadelab-render/src/sweep/environment.rs.\n");
+    s += &format!("const ENV_SWEEP_OUTPUTS: u32 = {ENV_OUTPUTS}u;\n");
+    for (c, start) in starts() {
+        s += &format!("const ENV_COL_{}: u32 = {start}u;\n", c.wgsl);
+    }
+    s
+}
+
+/// One case made ready as the renderer makes it: the levels and SH terms the GPU reads (the SH
+/// rounded to f32 as the uniforms hold them), the grid, and the scales of its values.
+struct Prepared<'a> {
+    case: &'a EnvCase,
+    pre: Vec<[f32; 4]>,
+    sh: ShCoefficients,
+    centre: [f32; 3],
+    sh_max: f64,
+    levels_max: f64,
+}
+
+impl<'a> Prepared<'a> {
+    fn new(case: &'a EnvCase) -> Prepared<'a> {
+        let pre = case.env.prefiltered(&case.lights);
+        let sh = case.env.sh(&case.lights).map(|c| c.map(|x| x as f32 as f64));
+        let levels_max = pre.iter().flat_map(|t| &t[..3]).fold(0.0, |a: f64, &x| a.max(x as f64));
+        let sh_max = case.env.sh_radiance_max(&case.lights);
+        Prepared { case, pre, sh, centre: grid_centre(&case.grid), sh_max, levels_max }
+    }
+
+    /// The scale a column's values are measured in (1 where the environment is black).
+    fn scale(&self, s: Scale) -> f64 {
+        let x = match s {
+            Scale::ShRadiance => self.sh_max,
+            Scale::Levels => self.levels_max,
+            Scale::One => 1.0,
+        };
+        if x > 0.0 { x } else { 1.0 }
+    }
+
+    /// The occlusion column's point for direction `l` and distance `d`, as the kernel forms it.
+    fn point(&self, l: DVec3, d: f64) -> DVec3 {
+        DVec3::from_array(self.centre.map(f64::from)) + l * d
+    }
+
+    /// The f64 twins at one combination, in the kernel's column order; `p` the occlusion's point.
+    fn reference(&self, n_raw: DVec3, v: DVec3, m: f64, mu: [f64; 3], p: DVec3) -> [f64; ENV_OUTPUTS] {
+        let n = safe_normalize(n_raw, v);
+        let v_index = mu.map(fresnel_v_from_mu);
+        let mut out = [0.0; ENV_OUTPUTS];
+        let mut put = |at: usize, c: &[f64]| out[at..at + c.len()].copy_from_slice(c);
+        put(0, &env::env_sh_radiance(&self.sh, n));
+        put(3, &env::env_level_sample(&self.pre, 0, -v));
+        let r = safe_normalize(n * (2.0 * n.dot(v)) - v, n);
+        put(6, &env::env_prefiltered(&self.pre, r, m));
+        let pairs: Vec<f64> = pairs().map(|terms| env::env_split_b(terms, n.dot(v), m)).collect();
+        put(9, &pairs);
+        put(15, &env::env_specular(&self.pre, n, v, m, Microfacet::CHAPTER, v_index));
+        put(18, &env::env_specular(&self.pre, n, v, m, Microfacet::GLTF, v_index));
+        put(21, &[occlusion::env_occlusion(&self.case.grid, p, n)]);
+        out
+    }
+}
+
+/// Every D × G pair in the tables' order (d·3 + g), as the kernel loops over them.
+fn pairs() -> impl Iterator<Item = Microfacet> {
+    Distribution::ALL
+        .iter()
+        .flat_map(|&(_, d)| Masking::ALL.iter().map(move |&(_, g)| Microfacet { d, g, ..Microfacet::CHAPTER }))
+}
+
+/// The environment sweep's report: a row per column over every case.
+pub struct EnvSweepReport {
+    pub inputs: EnvSweepInputs,
+    pub terms: Vec<TermReport>,
+    pub gpu_ms: f64,
+    /// The case of each row's worst combination.
+    worst_case: Vec<usize>,
+}
+
+impl EnvSweepReport {
+    /// The report as a Markdown table.
+    pub fn table(&self) -> String {
+        let i = &self.inputs;
+        let mut s = format!(
+            "{} environments × {} combinations ({} geometries × {} m × {} μ × {} d)\n\n",
+            i.cases.len(),
+            i.combinations(),
+            i.geometry.len(),
+            i.m.len(),
+            i.mu.len(),
+            i.d.len()
+        );
+        s += "| term | non-finite | < 0 | > bound | max value / scale | bound / scale | max rel. error | not compared (ill-conditioned, error > 1e-5) | worst input |\n";
+        s += "|---|---:|---:|---:|---:|---:|---:|---:|---|\n";
+        for (t, &case) in self.terms.iter().zip(&self.worst_case) {
+            s += &format!(
+                "| `{}` | {} | {} | {} | {:.3e} | {:.3e} | {:.2e} | {} | {} |\n",
+                t.name,
+                t.nonfinite,
+                t.negative,
+                t.over_bound,
+                t.max_value,
+                t.bound,
+                t.max_rel_err,
+                t.ill_conditioned,
+                t.worst.map(|w| i.describe(case, w)).unwrap_or_else(|| "—".into())
+            );
+        }
+        s
+    }
+}
+
+/// Run the environment sweep on the GPU, case by case, and compare with the f64 twins.
+pub fn run(gpu: &Gpu, inputs: EnvSweepInputs) -> EnvSweepReport {
+    let mut terms: Vec<TermReport> = starts()
+        .filter(|(c, _)| c.channels > 0)
+        .map(|(c, start)| TermReport {
+            name: c.name,
+            columns: start..start + c.channels,
+            bound: c.bound,
+            why_bound: c.why_bound,
+            signed: false,
+            nonfinite: 0,
+            negative: 0,
+            over_bound: 0,
+            max_value: 0.0,
+            max_rel_err: 0.0,
+            worst: None,
+            ill_conditioned: 0,
+        })
+        .collect();
+    let mut worst_case = vec![0; terms.len()];
+    let kernel = Kernel::new(gpu, &inputs);
+    let mut gpu_ms = 0.0;
+    for (ci, case) in inputs.cases.iter().enumerate() {
+        let prep = Prepared::new(case);
+        let start = std::time::Instant::now();
+        let out = kernel.dispatch(gpu, &prep, &inputs);
+        gpu_ms += start.elapsed().as_secs_f64() * 1e3;
+        check_case(&inputs, &prep, &out, &mut terms, |t| worst_case[t] = ci);
+    }
+    EnvSweepReport { inputs, terms, gpu_ms, worst_case }
+}
+
+/// Count one case's outputs into `terms`; `on_worst(t)` is told when term t's worst moves here.
+fn check_case(
+    inputs: &EnvSweepInputs,
+    prep: &Prepared,
+    out: &[f32],
+    terms: &mut [TermReport],
+    mut on_worst: impl FnMut(usize),
+) {
+    let f64v = |a: [f32; 3]| DVec3::new(a[0] as f64, a[1] as f64, a[2] as f64);
+    let scales: Vec<f64> = ENV_COLUMNS.iter().filter(|c| c.channels > 0).map(|c| prep.scale(c.scale)).collect();
+    for idx in 0..inputs.combinations() {
+        let [gi, mi, ui, di] = inputs.split(idx);
+        let g = &inputs.geometry[gi];
+        let (n, v, l) = (f64v(g.n), f64v(g.v), f64v(g.l));
+        let (m, mu, d) = (inputs.m[mi] as f64, inputs.mu[ui].map(f64::from), inputs.d[di] as f64);
+        let p = prep.point(l, d);
+        let expected = prep.reference(n, v, m, mu, p);
+        let gpu_out = &out[idx * ENV_OUTPUTS..(idx + 1) * ENV_OUTPUTS];
+        let near_switch = safe_normalize(n, v).dot(v).abs() < SWITCH_MARGIN;
+        let mut perturbed: Option<[[f64; ENV_OUTPUTS]; 8]> = None;
+        for (ti, t) in terms.iter_mut().enumerate() {
+            let scale = scales[ti];
+            for c in t.columns.clone() {
+                let (gv, rv) = (gpu_out[c] as f64, expected[c]);
+                if !gv.is_finite() {
+                    t.nonfinite += 1;
+                    continue;
+                }
+                if gv < 0.0 {
+                    t.negative += 1;
+                }
+                if gv > t.bound * scale * super::BOUND_SLACK {
+                    t.over_bound += 1;
+                }
+                t.max_value = t.max_value.max(gv / scale);
+                let floor = ERROR_ABS_FLOOR * scale;
+                let err = (gv - rv).abs() / rv.abs().max(floor);
+                if err > ERROR_CHECK_CONDITIONING {
+                    if near_switch {
+                        t.ill_conditioned += 1;
+                        continue;
+                    }
+                    let p = perturbed.get_or_insert_with(|| perturbed_references(prep, n, v, m, mu, p));
+                    let change = p.iter().map(|q| (q[c] - rv).abs() / rv.abs().max(floor)).fold(0.0, f64::max);
+                    if change > WELL_CONDITIONED_CHANGE {
+                        t.ill_conditioned += 1;
+                        continue;
+                    }
+                }
+                if err > t.max_rel_err {
+                    t.max_rel_err = err;
+                    t.worst = Some(idx);
+                    on_worst(ti);
+                }
+            }
+        }
+    }
+}
+
+/// The f64 twins at the eight perturbations of a combination's inputs, as the main sweep's:
+/// each vector (the occlusion's point among them, whose f32 rounding is relative to its size)
+/// turned by `INPUT_PERTURBATION` about two axes perpendicular to it, or its components scaled
+/// by 1 ± that, and the scalars scaled alike.
+fn perturbed_references(
+    prep: &Prepared,
+    n: DVec3,
+    v: DVec3,
+    m: f64,
+    mu: [f64; 3],
+    p: DVec3,
+) -> [[f64; ENV_OUTPUTS]; 8] {
+    let (pn, pv, pp) = (super::perpendiculars(n), super::perpendiculars(v), super::perpendiculars(p));
+    let patterns = [DVec3::new(1.0, -1.0, 1.0), DVec3::new(-1.0, 1.0, 1.0)];
+    std::array::from_fn(|j| {
+        let k = if j % 2 == 0 { INPUT_PERTURBATION } else { -INPUT_PERTURBATION };
+        let (dn, dv, dp) = match j / 2 {
+            a @ 0..=1 => (pn[a] * k * n.length(), pv[a] * k, pp[a] * k * p.length()),
+            a => {
+                let s = patterns[a - 2] * k;
+                (n * s, v * s, p * -s)
+            }
+        };
+        let mu = mu.map(|x| x * (1.0 + k));
+        prep.reference(n + dn, (v + dv).normalize(), m * (1.0 + k), mu, p + dp)
+    })
+}
+
+/// The kernel's pipeline and the buffers every case shares.
+struct Kernel {
+    pipeline: wgpu::ComputePipeline,
+    table: wgpu::Buffer,
+}
+
+impl Kernel {
+    fn new(gpu: &Gpu, inputs: &EnvSweepInputs) -> Kernel {
+        let device = &gpu.device;
+        let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
+            label: Some("environment sweep"),
+            source: wgpu::ShaderSource::Wgsl(env_sweep_source().into()),
+        });
+        let pipeline = device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
+            label: Some("environment sweep"),
+            layout: None,
+            module: &module,
+            entry_point: Some("sweep_environment"),
+            compilation_options: Default::default(),
+            cache: None,
+        });
+        let table = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+            label: Some("environment sweep table"),
+            contents: bytemuck::cast_slice(&inputs.table()),
+            usage: wgpu::BufferUsages::STORAGE,
+        });
+        Kernel { pipeline, table }
+    }
+
+    /// One case's outputs: its globals, levels and grid written as the renderer writes them.
+    fn dispatch(&self, gpu: &Gpu, prep: &Prepared, inputs: &EnvSweepInputs) -> Vec<f32> {
+        let device = &gpu.device;
+        let init = |label, contents: &[u8], usage| {
+            device.create_buffer_init(&wgpu::util::BufferInitDescriptor { label: Some(label), contents, usage })
+        };
+        let globals =
+            init("environment sweep globals", bytemuck::bytes_of(&globals(prep)), wgpu::BufferUsages::UNIFORM);
+        let levels = init("environment sweep levels", bytemuck::cast_slice(&prep.pre), wgpu::BufferUsages::STORAGE);
+        let nodes = prep.case.grid.gpu_words();
+        let nodes = init("environment sweep grid", bytemuck::cast_slice(&nodes), wgpu::BufferUsages::STORAGE);
+        let total = inputs.combinations();
+        let len = |x: usize| x as u32;
+        let c = prep.centre.map(f32::to_bits);
+        let counts: [u32; 12] = [
+            len(inputs.geometry.len()),
+            len(inputs.m.len()),
+            len(inputs.mu.len()),
+            len(inputs.d.len()),
+            len(total),
+            0,
+            0,
+            0,
+            c[0],
+            c[1],
+            c[2],
+            0,
+        ];
+        let counts = init("environment sweep counts", bytemuck::cast_slice(&counts), wgpu::BufferUsages::UNIFORM);
+        let size = (total * ENV_OUTPUTS * 4) as u64;
+        let buffer = |label, usage| {
+            device.create_buffer(&wgpu::BufferDescriptor { label: Some(label), size, usage, mapped_at_creation: false })
+        };
+        let out = buffer("environment sweep outputs", wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_SRC);
+        let read = buffer("environment sweep readback", wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ);
+        let group = |index, entries: &[(u32, &wgpu::Buffer)]| {
+            let entries: Vec<_> = entries
+                .iter()
+                .map(|&(binding, b)| wgpu::BindGroupEntry { binding, resource: b.as_entire_binding() })
+                .collect();
+            device.create_bind_group(&wgpu::BindGroupDescriptor {
+                label: Some("environment sweep"),
+                layout: &self.pipeline.get_bind_group_layout(index),
+                entries: &entries,
+            })
+        };
+        let environment = group(0, &[(0, &globals), (1, &levels), (2, &nodes)]);
+        let own = group(1, &[(8, &counts), (9, &self.table), (10, &out)]);
+        let mut enc = device.create_command_encoder(&Default::default());
+        {
+            let mut pass = enc.begin_compute_pass(&Default::default());
+            pass.set_pipeline(&self.pipeline);
+            pass.set_bind_group(0, &environment, &[]);
+            pass.set_bind_group(1, &own, &[]);
+            pass.dispatch_workgroups(total.div_ceil(64) as u32, 1, 1);
+        }
+        enc.copy_buffer_to_buffer(&out, 0, &read, 0, size);
+        gpu.queue.submit([enc.finish()]);
+        super::dispatch::read_back(device, &read)
+    }
+}
+
+/// The globals as the frame writes them for a scene with this environment and grid: its SH
+/// terms, the albedo and B tables and the grid's placement; nothing else is read.
+fn globals(prep: &Prepared) -> crate::uniforms::GlobalsUniform {
+    use bytemuck::Zeroable;
+    let mut g = crate::uniforms::GlobalsUniform::zeroed();
+    g.ms_albedo = shadelab_model::lighting::multiscatter::ms_table_vec4s();
+    g.env_sh = prep.sh.map(|c| [c[0] as f32, c[1] as f32, c[2] as f32, 0.0]);
+    g.env_split_b = env::env_split_b_vec4s();
+    g.env_occlusion = prep.case.grid.gpu_placement();
+    g
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The columns' starts are where the f64 side writes each term, and the last ends at
+    /// `ENV_OUTPUTS`, the kernel's stride.
+    #[test]
+    fn the_columns_are_where_both_sides_write_them() {
+        let at: Vec<(&str, usize)> = starts().map(|(c, s)| (c.wgsl, s)).collect();
+        let written = [
+            ("SH_RADIANCE", 0),
+            ("LEVEL_SAMPLE", 3),
+            ("PREFILTERED", 6),
+            ("SPLIT_B", 9),
+            ("SPECULAR", 15),
+            ("OCCLUSION", 21),
+            ("END", ENV_OUTPUTS),
+        ];
+        assert_eq!(at, written);
+        assert_eq!(pairs().count(), 6);
+    }
+}

@@ -33,6 +33,27 @@ fn sweep_of_the_shipped_wgsl_is_finite_bounded_and_close_to_f64() {
     }
 }
 
+/// The environment's functions (SH diffuse, the background's and the split sum's lookups, B, the
+/// whole split sum, the occlusion grid's lookup) over hard environments and grids: finite, ≥ 0,
+/// within their bounds in each environment's scale and within the tolerance of their f64 twins.
+#[test]
+fn environment_sweep_is_finite_bounded_and_close_to_f64() {
+    let inputs = sweep::EnvSweepInputs::standard();
+    let per_case = inputs.combinations();
+    let cases = inputs.cases.len();
+    let report = sweep::environment::run(gpu(), inputs);
+    eprintln!("{}", report.table());
+    for t in &report.terms {
+        assert_eq!(t.nonfinite, 0, "{}: non-finite outputs", t.name);
+        assert_eq!(t.negative, 0, "{}: negative outputs", t.name);
+        assert_eq!(t.over_bound, 0, "{}: above its bound {} ({})", t.name, t.bound, t.why_bound);
+        assert!(t.max_rel_err <= ERROR_TOLERANCE, "{}: relative error {}", t.name, t.max_rel_err);
+        // Only the lookups at the poles, where the map's φ is undefined, may go uncompared.
+        let outputs = per_case * cases * t.columns.len();
+        assert!(t.ill_conditioned * 100 < outputs, "{}: {} of {outputs} not compared", t.name, t.ill_conditioned);
+    }
+}
+
 #[test]
 fn a_spot_light_with_a_range_matches_the_f64_reference() {
     let (w, h) = (320, 180);

@@ -18,9 +18,18 @@ pub fn run() -> Result<(), Failure> {
         start.elapsed().as_secs_f64()
     );
     print!("{}", report.table());
+    let start = std::time::Instant::now();
+    let env_report = sweep::environment::run(&gpu, sweep::EnvSweepInputs::standard());
+    println!(
+        "\n## The environment's functions\n\n# GPU passes + readback {:.0} ms, whole environment sweep {:.1} s; values in each environment's scale (its largest radiance; shares in 1)\n",
+        env_report.gpu_ms,
+        start.elapsed().as_secs_f64()
+    );
+    print!("{}", env_report.table());
     let failed: Vec<_> = report
         .terms
         .iter()
+        .chain(&env_report.terms)
         .filter(|t| t.nonfinite + t.negative + t.over_bound > 0 || t.max_rel_err > ERROR_TOLERANCE)
         .map(|t| t.name)
         .collect();

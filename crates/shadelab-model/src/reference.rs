@@ -361,13 +361,7 @@ fn trace_row(ctx: &Context, y: u32, width: u32, height: u32) -> RowPixels {
     for x in 0..width {
         let (o, dir) = scene.camera.ray(x, y, width, height);
         let Some(hit) = trace(scene, geo, o, dir) else {
-            // The environment where it is the background: the truth's exact radiance, the GPU's
-            // level 0 in its f64 twin.
-            let env = ctx.env.filter(|_| scene.environment.as_ref().is_some_and(|e| e.background));
-            let background = match env {
-                Some(e) => e.background_toward(dir, ctx.env_use == EnvUse::Traced),
-                None => scene.background.unwrap_or([0.0; 3]),
-            };
+            let background = ctx.miss_toward(dir);
             img.pixels.push(background);
             img.unshadowed.push(background);
             img.object.push(None);
@@ -440,6 +434,17 @@ struct Shaded {
 }
 
 impl Context<'_> {
+    /// What a ray that meets nothing sees along unit `dir`, from the camera or through glass: the
+    /// environment where it is the background (the truth's exact radiance, the GPU's level 0 in
+    /// its f64 twin), else the picture's background (none in a term view), as the GPU's target.
+    pub(super) fn miss_toward(&self, dir: DVec3) -> [f64; 3] {
+        let env = self.env.filter(|_| self.scene.environment.as_ref().is_some_and(|e| e.background));
+        match env {
+            Some(e) => e.background_toward(dir, self.env_use == EnvUse::Traced),
+            None => self.scene.background.unwrap_or([0.0; 3]),
+        }
+    }
+
     /// The surface at `hit` with material `base`: its shading normal (perturbed by the material's
     /// normal texture where it has one), its parameters (written into `slot` where textures or
     /// vertex colours vary them; `fresh`: `slot` is not a copy of `base` yet) and its emission.

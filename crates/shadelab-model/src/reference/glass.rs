@@ -7,7 +7,7 @@
 use super::intersect::{SurfaceHit, glass_exit, trace};
 use super::{Context, Shaded};
 use crate::lighting::transmission::{absorption_exact, fresnel_dielectric, reflect_about, refract_snell};
-use crate::scene::{BACKGROUND, Material};
+use crate::scene::Material;
 use glam::{DVec3, DVec4};
 use std::cell::{Cell, RefCell};
 
@@ -26,8 +26,8 @@ pub const SECONDARY_RAY_OFFSET: f64 = 1e-7;
 pub(super) trait Leaves {
     /// An opaque surface, seen from `from`.
     fn opaque(&self, ctx: &Context, hit: &SurfaceHit, from: DVec3) -> [f64; 3];
-    /// Nothing: the ray leaves the scene.
-    fn background(&self) -> [f64; 3];
+    /// Nothing: the ray leaves the scene along unit `dir`.
+    fn background(&self, ctx: &Context, dir: DVec3) -> [f64; 3];
     /// A glass surface's own light from the lights (its diffuse, ambient and specular terms with
     /// `material`), seen from `eye`.
     fn glass_surface(&self, ctx: &Context, hit: &SurfaceHit, eye: DVec4, material: &Material) -> Shaded;
@@ -48,8 +48,8 @@ impl Leaves for SceneLeaves {
     fn opaque(&self, ctx: &Context, hit: &SurfaceHit, from: DVec3) -> [f64; 3] {
         ctx.shade_hit(hit, from.extend(1.0), &mut self.tinted.borrow_mut(), None, None).lit
     }
-    fn background(&self) -> [f64; 3] {
-        BACKGROUND
+    fn background(&self, ctx: &Context, dir: DVec3) -> [f64; 3] {
+        ctx.miss_toward(dir)
     }
     fn glass_surface(&self, ctx: &Context, hit: &SurfaceHit, eye: DVec4, material: &Material) -> Shaded {
         ctx.shade_hit(hit, eye, &mut self.tinted.borrow_mut(), None, Some(material))
@@ -88,7 +88,7 @@ impl<'a, L: Leaves> Tracer<'a, L> {
     pub fn radiance(&self, o: DVec3, dir: DVec3, depth: u32, w: [f64; 3], channel: Option<usize>) -> [f64; 3] {
         let ctx = self.ctx;
         let Some(hit) = trace(ctx.scene, ctx.geo, o + dir * self.offset, dir) else {
-            return self.leaves.background();
+            return self.leaves.background(ctx, dir);
         };
         if ctx.scene.drawn_as_glass(hit.object) {
             return self.glass_color(&hit, dir, o.extend(1.0), depth, w, channel).lit;
@@ -210,7 +210,7 @@ mod tests {
         fn opaque(&self, _: &Context, _: &SurfaceHit, _: DVec3) -> [f64; 3] {
             [1.0; 3]
         }
-        fn background(&self) -> [f64; 3] {
+        fn background(&self, _: &Context, _: DVec3) -> [f64; 3] {
             [1.0; 3]
         }
         fn glass_surface(&self, _: &Context, _: &SurfaceHit, _: DVec4, _: &Material) -> Shaded {

@@ -147,7 +147,7 @@ impl Leaves for PathLeaves<'_> {
         }
         light
     }
-    fn background(&self) -> [f64; 3] {
+    fn background(&self, _: &Context, _: DVec3) -> [f64; 3] {
         // The background is the picture's, not an emitter: a bounce that leaves brings nothing,
         // and the camera's own view of it through glass is in the exact image already.
         [0.0; 3]

@@ -6,7 +6,7 @@
 use super::tests::{all_finite, object, stage};
 use super::*;
 use crate::lighting::env_map::{EnvImage, EnvSource, Environment};
-use crate::scene::Shape;
+use crate::scene::{Object, Shape};
 use glam::DVec3;
 use std::sync::Arc;
 
@@ -162,4 +162,47 @@ fn split_sum_case(m: f64, mu: f64, terms: crate::lighting::microfacet::Microface
     let (s, t) = (mean(&split), mean(&truth));
     assert!(t > 0.01, "m {m}, μ {mu}: the plane reflects the sky: {t}");
     assert!((s - t).abs() <= 4.0 * se + 0.03 * t, "m {m}, μ {mu}: split sum {s} against the truth {t} (σ {se})");
+}
+
+/// Light through glass: under a uniform environment a clear (non-absorbing) glass sphere over an
+/// open diffuse plane passes the sky it hides on to the plane, less what its surface reflects back
+/// down (the plane's own, dimmer light), so the plane near it stays within 5 % of the open plane's
+/// `r_d·C·L`. A black sphere in its place, the light a path through glass brought before it
+/// carried the environment, takes over a fifth of it.
+#[test]
+fn a_clear_glass_sphere_passes_the_sky_on() {
+    let l = [0.3, 0.3, 0.3];
+    let open = 0.6 * l[0];
+    let glass = Material { transmission: 1.0, ior: Some([1.5; 3]), r_s: 0.0, ..Material::default() };
+    let black = Material { color: [0.0; 3], r_s: 0.0, ..Material::default() };
+    let near = |sphere: Material| {
+        let mut scene = stage(vec![], vec![]);
+        scene.objects = vec![
+            object("ground", Shape::Plane, DVec3::ZERO, DVec3::new(40.0, 1.0, 40.0)),
+            Object { material: 1, ..object("ball", Shape::Sphere, DVec3::new(0.0, 0.9, 0.0), DVec3::splat(0.8)) },
+        ];
+        let ground = Material { color: [0.6, 0.5, 0.4], r_d: 1.0, r_a: 1.0, r_s: 0.0, ..Material::default() };
+        scene.materials = vec![ground, sphere];
+        let scene = lit_by(&scene, EnvSource::Uniform(l));
+        let (w, h) = (32, 18);
+        let paths = PathSettings { bounces: 3, spp: 48, seed: 6 };
+        let mut job = ReferenceJob::with_paths(&scene, SpecularModel::Phong, w, h, paths).unwrap();
+        job.step(h);
+        let img = job.finish();
+        assert!(all_finite(&img));
+        // The ground's pixels within 1.2 of the sphere's foot, seen beside it.
+        let on: Vec<usize> = (0..w * h)
+            .filter(|&i| img.object[i as usize] == Some(0))
+            .filter(|&i| {
+                super::tests::ground_point(&scene.camera, i % w, i / w, w, h).is_some_and(|p| p.length() < 1.2)
+            })
+            .map(|i| i as usize)
+            .collect();
+        assert!(on.len() > 20, "{} ground pixels near the sphere", on.len());
+        on.iter().map(|&i| img.pixels[i][0]).sum::<f64>() / on.len() as f64
+    };
+    let (through_glass, behind_black) = (near(glass), near(black));
+    eprintln!("plane near the sphere: {through_glass:.4} (glass), {behind_black:.4} (black), open {open:.4}");
+    assert!((through_glass - open).abs() < 0.05 * open, "glass: {through_glass} against {open}");
+    assert!(behind_black < 0.8 * open, "a black sphere darkens the plane: {behind_black}");
 }

@@ -147,10 +147,14 @@ impl Leaves for PathLeaves<'_> {
         }
         light
     }
-    fn background(&self, _: &Context, _: DVec3) -> [f64; 3] {
-        // The background is the picture's, not an emitter: a bounce that leaves brings nothing,
-        // and the camera's own view of it through glass is in the exact image already.
-        [0.0; 3]
+    fn background(&self, ctx: &Context, dir: DVec3) -> [f64; 3] {
+        // A bounce that leaves through glass meets the environment, whole: the environment's own
+        // samples stop at glass, so no other strategy finds this path. The camera's own view
+        // through glass is in the exact image already, and the picture's background is no light.
+        match ctx.env.filter(|_| self.whole && ctx.env_use == super::EnvUse::Traced) {
+            Some(env) => env.radiance(dir),
+            None => [0.0; 3],
+        }
     }
     fn glass_surface(&self, ctx: &Context, hit: &SurfaceHit, eye: DVec4, material: &Material) -> Shaded {
         if self.whole {

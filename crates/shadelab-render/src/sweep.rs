@@ -78,45 +78,52 @@ pub fn run(gpu: &Gpu, inputs: SweepInputs) -> SweepReport {
         let near_switch = is_near_switch(n, v, l, mirror);
         for t in terms.iter_mut() {
             for c in t.columns.clone() {
-                let (gv, rv) = (gpu_out[c] as f64, expected[c]);
-                if !gv.is_finite() {
-                    t.nonfinite += 1;
-                    continue;
-                }
-                if gv < 0.0 && !t.signed {
-                    t.negative += 1;
-                }
-                if gv > t.bound * BOUND_SLACK {
-                    t.over_bound += 1;
-                }
-                t.max_value = t.max_value.max(gv);
-                let err = (gv - rv).abs() / rv.abs().max(ERROR_ABS_FLOOR);
-                if err <= ERROR_CHECK_CONDITIONING {
-                    if err > t.max_rel_err {
-                        t.max_rel_err = err;
-                        t.worst = Some(idx);
-                    }
-                    continue;
-                }
-                if near_switch {
-                    t.ill_conditioned += 1;
-                    continue;
-                }
-                let p = perturbed
-                    .get_or_insert_with(|| perturbed_references(n, v, l, (m, h, mirror), mu, (d, alpha, d0), shadow));
-                let change = p.iter().map(|q| (q[c] - rv).abs() / rv.abs().max(ERROR_ABS_FLOOR)).fold(0.0, f64::max);
-                if change > WELL_CONDITIONED_CHANGE {
-                    t.ill_conditioned += 1;
-                    continue;
-                }
-                if err > t.max_rel_err {
-                    t.max_rel_err = err;
-                    t.worst = Some(idx);
-                }
+                let rv = expected[c];
+                t.judge(idx, gpu_out[c] as f64, rv, 1.0, |floor| {
+                    (!near_switch).then(|| {
+                        let p = perturbed.get_or_insert_with(|| {
+                            perturbed_references(n, v, l, (m, h, mirror), mu, (d, alpha, d0), shadow)
+                        });
+                        p.iter().map(|q| (q[c] - rv).abs() / rv.abs().max(floor)).fold(0.0, f64::max)
+                    })
+                });
             }
         }
     }
     SweepReport { inputs, combinations: total, terms, gpu_ms }
+}
+
+impl TermReport {
+    /// Count one output into the row: `gv` the GPU's value, `rv` its f64 twin's, `scale` what the
+    /// bound, the reported value and the error's floor are measured in (1 for the terms).
+    /// `change(floor)` is the twin's largest relative change under the input perturbations, asked
+    /// only where the error needs it; `None` near a switch of the model. Returns whether this
+    /// output became the row's worst.
+    fn judge(&mut self, idx: usize, gv: f64, rv: f64, scale: f64, change: impl FnOnce(f64) -> Option<f64>) -> bool {
+        if !gv.is_finite() {
+            self.nonfinite += 1;
+            return false;
+        }
+        if gv < 0.0 && !self.signed {
+            self.negative += 1;
+        }
+        if gv > self.bound * scale * BOUND_SLACK {
+            self.over_bound += 1;
+        }
+        self.max_value = self.max_value.max(gv / scale);
+        let floor = ERROR_ABS_FLOOR * scale;
+        let err = (gv - rv).abs() / rv.abs().max(floor);
+        if err > ERROR_CHECK_CONDITIONING && change(floor).is_none_or(|c| c > WELL_CONDITIONED_CHANGE) {
+            self.ill_conditioned += 1;
+            return false;
+        }
+        if err > self.max_rel_err {
+            self.max_rel_err = err;
+            self.worst = Some(idx);
+            return true;
+        }
+        false
+    }
 }
 
 /// Whether the inputs are within `SWITCH_MARGIN` of a switch (N·L = 0, N·V = 0, the mirror threshold).
@@ -138,21 +145,8 @@ fn perturbed_references(
     (d, alpha, d0): (f64, f64, f64),
     shadow: &ShadowCase,
 ) -> [[f64; OUTPUTS]; 8] {
-    // Rotate each vector by INPUT_PERTURBATION radians about two axes perpendicular
-    // to it, and scale its components by 1 ± INPUT_PERTURBATION (the rounding a
-    // position gets per component), both ways; scale the scalars and the length
-    // of the sampled light direction alike.
-    let (pn, pv, pl) = (perpendiculars(n), perpendiculars(v), perpendiculars(l));
-    let patterns = [DVec3::new(1.0, -1.0, 1.0), DVec3::new(-1.0, 1.0, 1.0)];
     std::array::from_fn(|j| {
-        let k = if j % 2 == 0 { INPUT_PERTURBATION } else { -INPUT_PERTURBATION };
-        let (dn, dv, dl) = match j / 2 {
-            a @ 0..=1 => (pn[a] * k * n.length(), pv[a] * k, pl[a] * k),
-            a => {
-                let s = patterns[a - 2] * k;
-                (n * s, v * s, l * -s)
-            }
-        };
+        let (k, [dn, dv, dl]) = perturbation(j, [n, v, l]);
         reference(
             n + dn,
             (v + dv).normalize(),
@@ -164,6 +158,23 @@ fn perturbed_references(
             shadow,
         )
     })
+}
+
+/// Perturbation `j` of eight of the vectors `[a, b, c]`: `(k, their changes)` with `k` =
+/// ±`INPUT_PERTURBATION`. Pairs 0 and 1 turn each vector by `k` radians about one of two axes
+/// perpendicular to it; pairs 2 and 3 scale its components by 1 ± k (the rounding a position gets
+/// per component), the third the other way. The caller scales its scalars by 1 + k alike.
+fn perturbation(j: usize, vectors: [DVec3; 3]) -> (f64, [DVec3; 3]) {
+    let k = if j % 2 == 0 { INPUT_PERTURBATION } else { -INPUT_PERTURBATION };
+    let patterns = [DVec3::new(1.0, -1.0, 1.0), DVec3::new(-1.0, 1.0, 1.0)];
+    let deltas = match j / 2 {
+        a @ 0..=1 => vectors.map(|x| perpendiculars(x)[a] * k * x.length()),
+        a => {
+            let s = patterns[a - 2] * k;
+            [vectors[0] * s, vectors[1] * s, vectors[2] * -s]
+        }
+    };
+    (k, deltas)
 }
 
 /// Two unit vectors perpendicular to `v` and to each other (any two, for a zero `v`).

@@ -146,12 +146,7 @@ impl EnvSweepInputs {
 
     /// The rows the kernel reads: geometry (n, v, l) each, then m, μ and d.
     pub(super) fn table(&self) -> Vec<[f32; 4]> {
-        let mut t = Vec::new();
-        for g in &self.geometry {
-            for v in [g.n, g.v, g.l] {
-                t.push([v[0], v[1], v[2], 0.0]);
-            }
-        }
+        let mut t = super::inputs::geometry_rows(&self.geometry);
         t.extend(self.m.iter().map(|&m| [m, 0.0, 0.0, 0.0]));
         t.extend(self.mu.iter().map(|u| [u[0], u[1], u[2], 0.0]));
         t.extend(self.d.iter().map(|&d| [d, 0.0, 0.0, 0.0]));

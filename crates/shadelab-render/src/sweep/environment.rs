@@ -5,9 +5,9 @@
 //! environment's own scale (its largest radiance), so one bound and one error floor hold for a
 //! black map and a texel of 10⁶ alike.
 
+use super::SWITCH_MARGIN;
 use super::env_inputs::{EnvCase, EnvSweepInputs, grid_centre};
 use super::report::TermReport;
-use super::{ERROR_ABS_FLOOR, ERROR_CHECK_CONDITIONING, INPUT_PERTURBATION, SWITCH_MARGIN, WELL_CONDITIONED_CHANGE};
 use crate::gpu::Gpu;
 use glam::DVec3;
 use shadelab_model::lighting::environment::{self as env, SH_RINGING_BOUND, ShCoefficients};
@@ -204,21 +204,9 @@ impl EnvSweepReport {
             i.mu.len(),
             i.d.len()
         );
-        s += "| term | non-finite | < 0 | > bound | max value / scale | bound / scale | max rel. error | not compared (ill-conditioned, error > 1e-5) | worst input |\n";
-        s += "|---|---:|---:|---:|---:|---:|---:|---:|---|\n";
+        s += &super::report::table_head("max value / scale", "bound / scale");
         for (t, &case) in self.terms.iter().zip(&self.worst_case) {
-            s += &format!(
-                "| `{}` | {} | {} | {} | {:.3e} | {:.3e} | {:.2e} | {} | {} |\n",
-                t.name,
-                t.nonfinite,
-                t.negative,
-                t.over_bound,
-                t.max_value,
-                t.bound,
-                t.max_rel_err,
-                t.ill_conditioned,
-                t.worst.map(|w| i.describe(case, w)).unwrap_or_else(|| "—".into())
-            );
+            s += &t.row(t.worst.map(|w| i.describe(case, w)));
         }
         s
     }
@@ -228,20 +216,7 @@ impl EnvSweepReport {
 pub fn run(gpu: &Gpu, inputs: EnvSweepInputs) -> EnvSweepReport {
     let mut terms: Vec<TermReport> = starts()
         .filter(|(c, _)| c.channels > 0)
-        .map(|(c, start)| TermReport {
-            name: c.name,
-            columns: start..start + c.channels,
-            bound: c.bound,
-            why_bound: c.why_bound,
-            signed: false,
-            nonfinite: 0,
-            negative: 0,
-            over_bound: 0,
-            max_value: 0.0,
-            max_rel_err: 0.0,
-            worst: None,
-            ill_conditioned: 0,
-        })
+        .map(|(c, start)| TermReport::new(c.name, start..start + c.channels, c.bound, c.why_bound, false))
         .collect();
     let mut worst_case = vec![0; terms.len()];
     let kernel = Kernel::new(gpu, &inputs);
@@ -277,37 +252,15 @@ fn check_case(
         let near_switch = safe_normalize(n, v).dot(v).abs() < SWITCH_MARGIN;
         let mut perturbed: Option<[[f64; ENV_OUTPUTS]; 8]> = None;
         for (ti, t) in terms.iter_mut().enumerate() {
-            let scale = scales[ti];
             for c in t.columns.clone() {
-                let (gv, rv) = (gpu_out[c] as f64, expected[c]);
-                if !gv.is_finite() {
-                    t.nonfinite += 1;
-                    continue;
-                }
-                if gv < 0.0 {
-                    t.negative += 1;
-                }
-                if gv > t.bound * scale * super::BOUND_SLACK {
-                    t.over_bound += 1;
-                }
-                t.max_value = t.max_value.max(gv / scale);
-                let floor = ERROR_ABS_FLOOR * scale;
-                let err = (gv - rv).abs() / rv.abs().max(floor);
-                if err > ERROR_CHECK_CONDITIONING {
-                    if near_switch {
-                        t.ill_conditioned += 1;
-                        continue;
-                    }
-                    let p = perturbed.get_or_insert_with(|| perturbed_references(prep, n, v, m, mu, p));
-                    let change = p.iter().map(|q| (q[c] - rv).abs() / rv.abs().max(floor)).fold(0.0, f64::max);
-                    if change > WELL_CONDITIONED_CHANGE {
-                        t.ill_conditioned += 1;
-                        continue;
-                    }
-                }
-                if err > t.max_rel_err {
-                    t.max_rel_err = err;
-                    t.worst = Some(idx);
+                let rv = expected[c];
+                let worst = t.judge(idx, gpu_out[c] as f64, rv, scales[ti], |floor| {
+                    (!near_switch).then(|| {
+                        let q = perturbed.get_or_insert_with(|| perturbed_references(prep, n, v, m, mu, p));
+                        q.iter().map(|q| (q[c] - rv).abs() / rv.abs().max(floor)).fold(0.0, f64::max)
+                    })
+                });
+                if worst {
                     on_worst(ti);
                 }
             }
@@ -315,10 +268,9 @@ fn check_case(
     }
 }
 
-/// The f64 twins at the eight perturbations of a combination's inputs, as the main sweep's:
-/// each vector (the occlusion's point among them, whose f32 rounding is relative to its size)
-/// turned by `INPUT_PERTURBATION` about two axes perpendicular to it, or its components scaled
-/// by 1 ± that, and the scalars scaled alike.
+/// The f64 twins at the eight perturbations of a combination's inputs, the main sweep's
+/// ([`super::perturbation`]): the occlusion's point is perturbed as a position, relative to its
+/// size.
 fn perturbed_references(
     prep: &Prepared,
     n: DVec3,
@@ -327,17 +279,8 @@ fn perturbed_references(
     mu: [f64; 3],
     p: DVec3,
 ) -> [[f64; ENV_OUTPUTS]; 8] {
-    let (pn, pv, pp) = (super::perpendiculars(n), super::perpendiculars(v), super::perpendiculars(p));
-    let patterns = [DVec3::new(1.0, -1.0, 1.0), DVec3::new(-1.0, 1.0, 1.0)];
     std::array::from_fn(|j| {
-        let k = if j % 2 == 0 { INPUT_PERTURBATION } else { -INPUT_PERTURBATION };
-        let (dn, dv, dp) = match j / 2 {
-            a @ 0..=1 => (pn[a] * k * n.length(), pv[a] * k, pp[a] * k * p.length()),
-            a => {
-                let s = patterns[a - 2] * k;
-                (n * s, v * s, p * -s)
-            }
-        };
+        let (k, [dn, dv, dp]) = super::perturbation(j, [n, v, p]);
         let mu = mu.map(|x| x * (1.0 + k));
         prep.reference(n + dn, (v + dv).normalize(), m * (1.0 + k), mu, p + dp)
     })

@@ -241,12 +241,7 @@ impl SweepInputs {
     }
 
     pub(super) fn table(&self) -> Vec<[f32; 4]> {
-        let mut t = Vec::new();
-        for g in &self.geometry {
-            for v in [g.n, g.v, g.l] {
-                t.push([v[0], v[1], v[2], 0.0]);
-            }
-        }
+        let mut t = geometry_rows(&self.geometry);
         t.extend(self.m.iter().map(|&m| [m, 0.0, 0.0, 0.0]));
         t.extend(self.h.iter().map(|&(h, mirror)| [h, mirror as u32 as f32, 0.0, 0.0]));
         t.extend(self.mu.iter().map(|mu| [mu[0], mu[1], mu[2], 0.0]));
@@ -258,4 +253,9 @@ impl SweepInputs {
         }
         t
     }
+}
+
+/// The kernels' first rows: each geometry's n, v and l.
+pub(super) fn geometry_rows(geometry: &[Geometry]) -> Vec<[f32; 4]> {
+    geometry.iter().flat_map(|g| [g.n, g.v, g.l].map(|v| [v[0], v[1], v[2], 0.0])).collect()
 }

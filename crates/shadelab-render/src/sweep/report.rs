@@ -52,35 +52,36 @@ impl SweepReport {
             self.inputs.alpha.len(),
             self.nonfinite()
         );
-        s += "| term | non-finite | < 0 | > bound | max value | bound | max rel. error | not compared (ill-conditioned, error > 1e-5) | worst input |\n";
-        s += "|---|---:|---:|---:|---:|---:|---:|---:|---|\n";
+        s += &table_head("max value", "bound");
         for t in &self.terms {
-            s += &format!(
-                "| `{}` | {} | {} | {} | {:.3e} | {:.3e} | {:.2e} | {} | {} |\n",
-                t.name,
-                t.nonfinite,
-                t.negative,
-                t.over_bound,
-                t.max_value,
-                t.bound,
-                t.max_rel_err,
-                t.ill_conditioned,
-                t.worst.map(|i| self.inputs.describe(i)).unwrap_or_else(|| "—".into())
-            );
+            s += &t.row(t.worst.map(|i| self.inputs.describe(i)));
         }
         s
     }
 }
 
-/// An empty row per column, in the order of the columns.
-pub(super) fn terms() -> Vec<TermReport> {
-    ranges()
-        .map(|(c, columns)| TermReport {
-            name: c.name,
+/// The table's head: its columns, with the names of the value's and the bound's.
+pub(super) fn table_head(value: &str, bound: &str) -> String {
+    format!(
+        "| term | non-finite | < 0 | > bound | {value} | {bound} | max rel. error | not compared (ill-conditioned, error > 1e-5) | worst input |\n|---|---:|---:|---:|---:|---:|---:|---:|---|\n"
+    )
+}
+
+impl TermReport {
+    /// A row with nothing counted yet.
+    pub(super) fn new(
+        name: &'static str,
+        columns: std::ops::Range<usize>,
+        bound: f64,
+        why_bound: &'static str,
+        signed: bool,
+    ) -> Self {
+        TermReport {
+            name,
             columns,
-            bound: c.bound,
-            why_bound: c.why_bound,
-            signed: c.signed,
+            bound,
+            why_bound,
+            signed,
             nonfinite: 0,
             negative: 0,
             over_bound: 0,
@@ -88,6 +89,27 @@ pub(super) fn terms() -> Vec<TermReport> {
             max_rel_err: 0.0,
             worst: None,
             ill_conditioned: 0,
-        })
-        .collect()
+        }
+    }
+
+    /// The row in the table, its worst input in words.
+    pub(super) fn row(&self, worst: Option<String>) -> String {
+        format!(
+            "| `{}` | {} | {} | {} | {:.3e} | {:.3e} | {:.2e} | {} | {} |\n",
+            self.name,
+            self.nonfinite,
+            self.negative,
+            self.over_bound,
+            self.max_value,
+            self.bound,
+            self.max_rel_err,
+            self.ill_conditioned,
+            worst.unwrap_or_else(|| "—".into())
+        )
+    }
+}
+
+/// An empty row per column, in the order of the columns.
+pub(super) fn terms() -> Vec<TermReport> {
+    ranges().map(|(c, columns)| TermReport::new(c.name, columns, c.bound, c.why_bound, c.signed)).collect()
 }

@@ -20,7 +20,8 @@ const GLASS_MARCH_FIRST: f32 = 0.002;
 const BACK_FACE_STEPS: u32 = 4u;
 // Halvings that narrow a hit of the march down between its last two steps.
 const GLASS_MARCH_REFINE: u32 = 8u;
-// The scene's background (scene::BACKGROUND): what a ray that meets nothing sees.
+// The scene's background (scene::BACKGROUND): what a ray that meets nothing sees, where no
+// environment is shown as the background.
 const GLASS_BACKGROUND: vec3<f32> = vec3(0.03, 0.035, 0.045);
 // globals.flags bits 1–2: the glass view (GlassView::code).
 const GLASS_VIEW_SHIFT: u32 = 1u;
@@ -68,6 +69,16 @@ fn scene_behind(pixel: vec2<f32>) -> vec3<f32> {
     return textureLoad(behind_color, vec2<i32>(pixel), 0).rgb;
 }
 
+// What a ray through the glass that meets nothing sees along unit `dir`: the environment where
+// it is the background (level 0, as background.wgsl draws it), else the scene's background.
+fn glass_miss(dir: vec3<f32>) -> vec3<f32> {
+#if EFFECT_ENVIRONMENT_BACKGROUND
+    return env_level_sample(0u, dir);
+#else
+    return GLASS_BACKGROUND;
+#endif
+}
+
 #if EFFECT_REFRACTION
 // What the ray from `p` along unit `dir` meets in the scene behind: steps grow until a step lands
 // behind the stored depth, halvings then narrow the crossing down; the background when the ray
@@ -79,7 +90,7 @@ fn scene_along(p: vec3<f32>, dir: vec3<f32>) -> vec3<f32> {
     for (var k = 0u; k < GLASS_MARCH_STEPS; k++) {
         let q = project_to_pixel(p + dir * s);
         if (q.z < 0.0) {
-            return GLASS_BACKGROUND;
+            return glass_miss(dir);
         }
         if (q.z >= textureLoad(behind_depth, texel(q), 0).r) {
             // Narrow the crossing down between the last step in front and this one.
@@ -100,7 +111,7 @@ fn scene_along(p: vec3<f32>, dir: vec3<f32>) -> vec3<f32> {
         step *= GLASS_MARCH_GROWTH;
         s += step;
     }
-    return GLASS_BACKGROUND;
+    return glass_miss(dir);
 }
 #endif
 

@@ -176,3 +176,27 @@ fn a_glass_mesh_exits_through_its_back_faces() {
         assert!(pixels.len() > 500 && mean < mean_max, "{name} as a mesh: mean |error| {mean}");
     }
 }
+
+/// Rays through glass that meet nothing see the environment where it is the background, on the
+/// GPU as in its f64 twin: the glass sphere alone before the sky, within the sphere's bound of
+/// the whole scene's comparison above. Against the constant background the sky through it is
+/// far off.
+#[test]
+fn glass_shows_the_environment_behind_it() {
+    use shadelab_model::lighting::env_map::{EnvSource, Environment};
+    let mut scene = glass();
+    scene.objects = vec![scene.objects[object(&scene, "glass sphere")].clone()];
+    let sky = Environment { background: true, ..Environment::new(EnvSource::Sky { turbidity: 3.0, sun: None }) };
+    scene.environment = Some(sky);
+    let img = render_image(gpu(), &scene, W, H, &settings()).unwrap();
+    let reference = render_reference(&scene, SpecularModel::CookTorrance, W, H);
+    let pixels = interior(&reference, 0);
+    assert!(pixels.len() > 500, "{} sphere pixels", pixels.len());
+    let (mean, max, worst) = error(&img, &reference, &pixels);
+    eprintln!("glass sphere before the sky: mean |error| {mean:.4}, max {max:.3} at {worst:?}");
+    assert!(mean < 0.02, "mean |error| {mean}");
+    scene.environment.as_mut().unwrap().background = false;
+    let plain = render_reference(&scene, SpecularModel::CookTorrance, W, H);
+    let (apart, _, _) = error(&img, &plain, &pixels);
+    assert!(apart > 0.05, "the sky shows through the glass: {apart} from the constant background");
+}

@@ -361,7 +361,7 @@ fn trace_row(ctx: &Context, y: u32, width: u32, height: u32) -> RowPixels {
     for x in 0..width {
         let (o, dir) = scene.camera.ray(x, y, width, height);
         let Some(hit) = trace(scene, geo, o, dir) else {
-            let background = ctx.miss_toward(dir);
+            let background = ctx.env_background(dir).unwrap_or_else(|| scene.background.unwrap_or([0.0; 3]));
             img.pixels.push(background);
             img.unshadowed.push(background);
             img.object.push(None);
@@ -434,15 +434,11 @@ struct Shaded {
 }
 
 impl Context<'_> {
-    /// What a ray that meets nothing sees along unit `dir`, from the camera or through glass: the
-    /// environment where it is the background (the truth's exact radiance, the GPU's level 0 in
-    /// its f64 twin), else the picture's background (none in a term view), as the GPU's target.
-    pub(super) fn miss_toward(&self, dir: DVec3) -> [f64; 3] {
-        let env = self.env.filter(|_| self.scene.environment.as_ref().is_some_and(|e| e.background));
-        match env {
-            Some(e) => e.background_toward(dir, self.env_use == EnvUse::Traced),
-            None => self.scene.background.unwrap_or([0.0; 3]),
-        }
+    /// The environment toward unit `dir` where it is shown as the background (the truth's exact
+    /// radiance, the GPU's level 0 in its f64 twin): what a ray that meets nothing sees.
+    pub(super) fn env_background(&self, dir: DVec3) -> Option<[f64; 3]> {
+        let env = self.env.filter(|_| self.scene.environment.as_ref().is_some_and(|e| e.background))?;
+        Some(env.background_toward(dir, self.env_use == EnvUse::Traced))
     }
 
     /// The surface at `hit` with material `base`: its shading normal (perturbed by the material's

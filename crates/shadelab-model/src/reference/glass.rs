@@ -7,7 +7,7 @@
 use super::intersect::{SurfaceHit, glass_exit, trace};
 use super::{Context, Shaded};
 use crate::lighting::transmission::{absorption_exact, fresnel_dielectric, reflect_about, refract_snell};
-use crate::scene::Material;
+use crate::scene::{BACKGROUND, Material};
 use glam::{DVec3, DVec4};
 use std::cell::{Cell, RefCell};
 
@@ -49,11 +49,17 @@ impl Leaves for SceneLeaves {
         ctx.shade_hit(hit, from.extend(1.0), &mut self.tinted.borrow_mut(), None, None).lit
     }
     fn background(&self, ctx: &Context, dir: DVec3) -> [f64; 3] {
-        ctx.miss_toward(dir)
+        glass_miss(ctx, dir)
     }
     fn glass_surface(&self, ctx: &Context, hit: &SurfaceHit, eye: DVec4, material: &Material) -> Shaded {
         ctx.shade_hit(hit, eye, &mut self.tinted.borrow_mut(), None, Some(material))
     }
+}
+
+/// What a ray through glass that meets nothing sees along unit `dir`, as the glass pass: the
+/// environment where it is the background, else the scene's background (in a term view too).
+pub(super) fn glass_miss(ctx: &Context, dir: DVec3) -> [f64; 3] {
+    ctx.env_background(dir).unwrap_or(BACKGROUND)
 }
 
 /// The tracer: a context, its leaves, and the light of the paths it stopped (the energy check's

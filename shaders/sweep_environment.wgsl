@@ -18,11 +18,12 @@ struct EnvSweepCounts {
     centre: vec4<f32>,
 }
 
-// Past the object's binding in group 1, which the kernel's own pipeline does not read.
-@group(1) @binding(8) var<uniform> env_counts: EnvSweepCounts;
+// Group 1 past the object's and the material textures' bindings (0 to 10), none of which the
+// kernel reads.
+@group(1) @binding(11) var<uniform> env_counts: EnvSweepCounts;
 // Rows: geometry (n, v, l) × count, then m (x), μ (xyz), d (x).
-@group(1) @binding(9) var<storage, read> env_table: array<vec4<f32>>;
-@group(1) @binding(10) var<storage, read_write> env_outputs: array<f32>;
+@group(1) @binding(12) var<storage, read> env_table: array<vec4<f32>>;
+@group(1) @binding(13) var<storage, read_write> env_outputs: array<f32>;
 
 @compute @workgroup_size(64)
 fn sweep_environment(@builtin(global_invocation_id) gid: vec3<u32>) {

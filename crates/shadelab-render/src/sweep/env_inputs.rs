@@ -69,8 +69,8 @@ fn grids() -> [(OcclusionGrid, &'static str); 4] {
 }
 
 impl EnvSweepInputs {
-    /// The hard environments (a sun at the horizon, a black map, a single bright texel),
-    /// a sun below the horizon, a 1×1 map and a turned, bright map, over the main sweep's
+    /// The hard environments (a sun at and below the horizon, a black map, a single bright
+    /// texel, a 1×1 map and a turned map at the largest intensity), over the main sweep's
     /// geometries, m and μ.
     pub fn standard() -> EnvSweepInputs {
         let main = SweepInputs::standard();

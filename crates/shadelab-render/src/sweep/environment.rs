@@ -17,7 +17,7 @@ use shadelab_model::params::NamedValue;
 use wgpu::util::DeviceExt;
 
 /// One output group of the kernel: its name, its first column's WGSL name, its width, its
-/// bound in its scale, and whether that scale is the environment's radiance (else 1).
+/// bound, and the scale its values and bound are measured in.
 struct EnvColumn {
     name: &'static str,
     wgsl: &'static str,
@@ -362,7 +362,7 @@ impl Kernel {
             })
         };
         let environment = group(0, &[(0, &globals), (1, &levels), (2, &nodes)]);
-        let own = group(1, &[(8, &counts), (9, &self.table), (10, &out)]);
+        let own = group(1, &[(11, &counts), (12, &self.table), (13, &out)]);
         let mut enc = device.create_command_encoder(&Default::default());
         {
             let mut pass = enc.begin_compute_pass(&Default::default());

@@ -333,7 +333,8 @@ mod tests {
         assert!(worst < 1e-2, "largest |table − integral| {worst}");
     }
 
-    /// A 1×1 map is the uniform ambient it stands for: `E/π = L` for every normal, to rounding.
+    /// The ringing bound is the nine terms' kernel's positive mass, by quadrature, and the whole
+    /// kernel's mass is 1.
     #[test]
     fn the_ringing_bound_is_the_kernels_positive_mass() {
         // The kernel from the band weights: Σ_l Â_l (2l + 1)/4 · P_l(t), t = n·ω.
@@ -352,6 +353,7 @@ mod tests {
         assert!((2.0 * whole - 1.0).abs() < 1e-9);
     }
 
+    /// A 1×1 map is the uniform ambient it stands for: `E/π = L` for every normal, to rounding.
     #[test]
     fn one_texel_is_the_uniform_ambient() {
         let l = [0.12, 0.3, 0.05];

@@ -164,24 +164,32 @@ const fn col(name: &'static str, wgsl: &'static str, channels: usize, bound: f64
 }
 
 /// Floats the kernel writes per combination (`SWEEP_OUTPUTS` in WGSL).
-pub const OUTPUTS: usize = {
+pub const OUTPUTS: usize = outputs_of(&COLUMNS);
+
+/// Floats a kernel with `columns` writes per combination.
+pub(super) const fn outputs_of(columns: &[Column]) -> usize {
     let (mut n, mut i) = (0, 0);
-    while i < COLUMNS.len() {
-        n += COLUMNS[i].channels;
+    while i < columns.len() {
+        n += columns[i].channels;
         i += 1;
     }
     n
-};
+}
 
 /// The first index of the column named `wgsl` (a name not in [`COLUMNS`] fails to compile where
 /// used in a constant).
 pub const fn offset(wgsl: &str) -> usize {
+    offset_in(&COLUMNS, wgsl)
+}
+
+/// The first index of the column named `wgsl` among `columns`.
+pub(super) const fn offset_in(columns: &[Column], wgsl: &str) -> usize {
     let (mut at, mut i) = (0, 0);
-    while i < COLUMNS.len() {
-        if same(COLUMNS[i].wgsl, wgsl) {
+    while i < columns.len() {
+        if same(columns[i].wgsl, wgsl) {
             return at;
         }
-        at += COLUMNS[i].channels;
+        at += columns[i].channels;
         i += 1;
     }
     panic!("no such sweep column")
@@ -204,7 +212,12 @@ const fn same(a: &str, b: &str) -> bool {
 
 /// The columns' index ranges, in the order of [`COLUMNS`].
 pub fn ranges() -> impl Iterator<Item = (Column, std::ops::Range<usize>)> {
-    COLUMNS.iter().scan(0, |at, c| {
+    ranges_of(&COLUMNS)
+}
+
+/// The index ranges of `columns`, in their order.
+pub(super) fn ranges_of(columns: &'static [Column]) -> impl Iterator<Item = (Column, std::ops::Range<usize>)> {
+    columns.iter().scan(0, |at, c| {
         let r = *at..*at + c.channels;
         *at = r.end;
         Some((*c, r))

@@ -6,6 +6,7 @@
 //! black map and a texel of 10⁶ alike.
 
 use super::SWITCH_MARGIN;
+use super::columns::{Column, offset_in, outputs_of, ranges_of};
 use super::env_inputs::{EnvCase, EnvSweepInputs, grid_centre};
 use super::report::TermReport;
 use crate::gpu::Gpu;
@@ -16,17 +17,7 @@ use shadelab_model::lighting::{common::safe_normalize, occlusion};
 use shadelab_model::params::NamedValue;
 use wgpu::util::DeviceExt;
 
-/// One output group of the kernel: its name, its first column's WGSL name, its width, its
-/// bound, and the scale its values and bound are measured in.
-struct EnvColumn {
-    name: &'static str,
-    wgsl: &'static str,
-    channels: usize,
-    bound: f64,
-    why_bound: &'static str,
-    scale: Scale,
-}
-
+/// The scale a column's values and bound are measured in.
 #[derive(Clone, Copy)]
 enum Scale {
     /// The largest radiance of the cells the SH terms are projected from.
@@ -37,61 +28,56 @@ enum Scale {
     One,
 }
 
-const ENV_COLUMNS: [EnvColumn; 7] = [
-    EnvColumn {
-        name: "env_sh_radiance",
-        wgsl: "SH_RADIANCE",
-        channels: 3,
-        bound: SH_RINGING_BOUND,
-        why_bound: "the nine terms' overshoot SH_RINGING_BOUND × the largest radiance",
-        scale: Scale::ShRadiance,
-    },
-    EnvColumn {
-        name: "env_level_sample (level 0 along −V, the background's lookup)",
-        wgsl: "LEVEL_SAMPLE",
-        channels: 3,
-        bound: 1.0,
-        why_bound: "bilinear: at most the largest texel",
-        scale: Scale::Levels,
-    },
-    EnvColumn {
-        name: "env_prefiltered (toward N's mirror of V, at m)",
-        wgsl: "PREFILTERED",
-        channels: 3,
-        bound: 1.0,
-        why_bound: "a blend of bilinear lookups: at most the largest texel",
-        scale: Scale::Levels,
-    },
-    EnvColumn {
-        name: "env_split_b (every D × G pair)",
-        wgsl: "SPLIT_B",
-        channels: 6,
-        bound: 1.0,
-        why_bound: "a share of the lobe's albedo, at most 1",
-        scale: Scale::One,
-    },
-    EnvColumn {
-        name: "env_specular (the chapter's terms, glTF's)",
-        wgsl: "SPECULAR",
-        channels: 6,
-        bound: 1.0,
-        why_bound: "the largest texel times F0·(E − B) + B ≤ max(E, B) ≤ 1",
-        scale: Scale::Levels,
-    },
-    EnvColumn {
-        name: "env_occlusion (at the grid's centre + l·d)",
-        wgsl: "OCCLUSION",
-        channels: 1,
-        bound: 1.0,
-        why_bound: "an open share",
-        scale: Scale::One,
-    },
-    // Kept last and empty of outputs of its own: the column count, for the WGSL's stride.
-    EnvColumn { name: "", wgsl: "END", channels: 0, bound: 0.0, why_bound: "", scale: Scale::One },
+const fn col(name: &'static str, wgsl: &'static str, channels: usize, bound: f64, why_bound: &'static str) -> Column {
+    Column { name, wgsl, channels, bound, why_bound, signed: false }
+}
+
+/// The kernel's output columns, their bounds in the scale of [`ENV_SCALES`].
+const ENV_COLUMNS: [Column; 6] = [
+    col(
+        "env_sh_radiance",
+        "SH_RADIANCE",
+        3,
+        SH_RINGING_BOUND,
+        "the nine terms' overshoot SH_RINGING_BOUND × the largest radiance",
+    ),
+    col(
+        "env_level_sample (level 0 along −V, the background's lookup)",
+        "LEVEL_SAMPLE",
+        3,
+        1.0,
+        "bilinear: at most the largest texel",
+    ),
+    col(
+        "env_prefiltered (toward N's mirror of V, at m)",
+        "PREFILTERED",
+        3,
+        1.0,
+        "a blend of bilinear lookups: at most the largest texel",
+    ),
+    col("env_split_b (every D × G pair)", "SPLIT_B", 6, 1.0, "a share of the lobe's albedo, at most 1"),
+    col(
+        "env_specular (the chapter's terms, glTF's)",
+        "SPECULAR",
+        6,
+        1.0,
+        "the largest texel times F0·(E − B) + B ≤ max(E, B) ≤ 1",
+    ),
+    col("env_occlusion (at the grid's centre + l·d)", "OCCLUSION", 1, 1.0, "an open share"),
 ];
 
+/// Each column's scale, in the order of [`ENV_COLUMNS`].
+const ENV_SCALES: [Scale; 6] = [Scale::ShRadiance, Scale::Levels, Scale::Levels, Scale::One, Scale::Levels, Scale::One];
+
 /// Floats the kernel writes per combination.
-pub const ENV_OUTPUTS: usize = 22;
+pub const ENV_OUTPUTS: usize = outputs_of(&ENV_COLUMNS);
+
+const SH_RADIANCE: usize = offset_in(&ENV_COLUMNS, "SH_RADIANCE");
+const LEVEL_SAMPLE: usize = offset_in(&ENV_COLUMNS, "LEVEL_SAMPLE");
+const PREFILTERED: usize = offset_in(&ENV_COLUMNS, "PREFILTERED");
+const SPLIT_B: usize = offset_in(&ENV_COLUMNS, "SPLIT_B");
+const SPECULAR: usize = offset_in(&ENV_COLUMNS, "SPECULAR");
+const OCCLUSION: usize = offset_in(&ENV_COLUMNS, "OCCLUSION");
 
 /// The environment sweep's kernel (`shaders/sweep_environment.wgsl`).
 pub const ENV_SWEEP_KERNEL: &str = include_str!("../../../../shaders/sweep_environment.wgsl");
@@ -102,21 +88,12 @@ pub fn env_sweep_source() -> String {
     format!("{}\n{}\n{}", crate::shaders::environment_terms_source(), wgsl_env_columns(), ENV_SWEEP_KERNEL)
 }
 
-/// Each column's first output, in order.
-fn starts() -> impl Iterator<Item = (&'static EnvColumn, usize)> {
-    ENV_COLUMNS.iter().scan(0, |at, c| {
-        let start = *at;
-        *at += c.channels;
-        Some((c, start))
-    })
-}
-
 /// The kernel's `ENV_SWEEP_OUTPUTS` and `ENV_COL_…` constants.
 fn wgsl_env_columns() -> String {
     let mut s = String::from("// Generated from crates/shadelab-render/src/sweep/environment.rs.\n");
     s += &format!("const ENV_SWEEP_OUTPUTS: u32 = {ENV_OUTPUTS}u;\n");
-    for (c, start) in starts() {
-        s += &format!("const ENV_COL_{}: u32 = {start}u;\n", c.wgsl);
+    for (c, r) in ranges_of(&ENV_COLUMNS) {
+        s += &format!("const ENV_COL_{}: u32 = {}u;\n", c.wgsl, r.start);
     }
     s
 }
@@ -162,15 +139,15 @@ impl<'a> Prepared<'a> {
         let v_index = mu.map(fresnel_v_from_mu);
         let mut out = [0.0; ENV_OUTPUTS];
         let mut put = |at: usize, c: &[f64]| out[at..at + c.len()].copy_from_slice(c);
-        put(0, &env::env_sh_radiance(&self.sh, n));
-        put(3, &env::env_level_sample(&self.pre, 0, -v));
+        put(SH_RADIANCE, &env::env_sh_radiance(&self.sh, n));
+        put(LEVEL_SAMPLE, &env::env_level_sample(&self.pre, 0, -v));
         let r = safe_normalize(n * (2.0 * n.dot(v)) - v, n);
-        put(6, &env::env_prefiltered(&self.pre, r, m));
+        put(PREFILTERED, &env::env_prefiltered(&self.pre, r, m));
         let pairs: Vec<f64> = pairs().map(|terms| env::env_split_b(terms, n.dot(v), m)).collect();
-        put(9, &pairs);
-        put(15, &env::env_specular(&self.pre, n, v, m, Microfacet::CHAPTER, v_index));
-        put(18, &env::env_specular(&self.pre, n, v, m, Microfacet::GLTF, v_index));
-        put(21, &[occlusion::env_occlusion(&self.case.grid, p, n)]);
+        put(SPLIT_B, &pairs);
+        put(SPECULAR, &env::env_specular(&self.pre, n, v, m, Microfacet::CHAPTER, v_index));
+        put(SPECULAR + 3, &env::env_specular(&self.pre, n, v, m, Microfacet::GLTF, v_index));
+        put(OCCLUSION, &[occlusion::env_occlusion(&self.case.grid, p, n)]);
         out
     }
 }
@@ -214,10 +191,8 @@ impl EnvSweepReport {
 
 /// Run the environment sweep on the GPU, case by case, and compare with the f64 twins.
 pub fn run(gpu: &Gpu, inputs: EnvSweepInputs) -> EnvSweepReport {
-    let mut terms: Vec<TermReport> = starts()
-        .filter(|(c, _)| c.channels > 0)
-        .map(|(c, start)| TermReport::new(c.name, start..start + c.channels, c.bound, c.why_bound, false))
-        .collect();
+    let mut terms: Vec<TermReport> =
+        ranges_of(&ENV_COLUMNS).map(|(c, r)| TermReport::new(c.name, r, c.bound, c.why_bound, c.signed)).collect();
     let mut worst_case = vec![0; terms.len()];
     let kernel = Kernel::new(gpu, &inputs);
     let mut gpu_ms = 0.0;
@@ -240,7 +215,7 @@ fn check_case(
     mut on_worst: impl FnMut(usize),
 ) {
     let f64v = |a: [f32; 3]| DVec3::new(a[0] as f64, a[1] as f64, a[2] as f64);
-    let scales: Vec<f64> = ENV_COLUMNS.iter().filter(|c| c.channels > 0).map(|c| prep.scale(c.scale)).collect();
+    let scales = ENV_SCALES.map(|s| prep.scale(s));
     for idx in 0..inputs.combinations() {
         let [gi, mi, ui, di] = inputs.split(idx);
         let g = &inputs.geometry[gi];
@@ -393,11 +368,11 @@ fn globals(prep: &Prepared) -> crate::uniforms::GlobalsUniform {
 mod tests {
     use super::*;
 
-    /// The columns' starts are where the f64 side writes each term, and the last ends at
+    /// The columns lie one after another in the kernel's order, and the last ends at
     /// `ENV_OUTPUTS`, the kernel's stride.
     #[test]
     fn the_columns_are_where_both_sides_write_them() {
-        let at: Vec<(&str, usize)> = starts().map(|(c, s)| (c.wgsl, s)).collect();
+        let at: Vec<(&str, usize)> = ranges_of(&ENV_COLUMNS).map(|(c, r)| (c.wgsl, r.start)).collect();
         let written = [
             ("SH_RADIANCE", 0),
             ("LEVEL_SAMPLE", 3),
@@ -405,9 +380,9 @@ mod tests {
             ("SPLIT_B", 9),
             ("SPECULAR", 15),
             ("OCCLUSION", 21),
-            ("END", ENV_OUTPUTS),
         ];
         assert_eq!(at, written);
+        assert_eq!(ENV_OUTPUTS, 22);
         assert_eq!(pairs().count(), 6);
     }
 }

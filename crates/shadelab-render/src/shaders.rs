@@ -102,9 +102,7 @@ fn uber_defines() -> Vec<&'static str> {
 /// `common`, `brdf`, `microfacet`, `multiscatter`, `models`, `lights`, `area_lights`, `area_points`,
 /// `shadow_math`, `surface` and `transmission`: the files before `types.wgsl`.
 pub fn terms_source() -> String {
-    let terms = FILES.iter().position(|(name, _)| *name == "types.wgsl").expect("types.wgsl is shipped");
-    let raw = FILES[..terms].iter().map(|(_, s)| *s).collect::<Vec<_>>().join("\n");
-    preprocess(&raw, &uber_defines()).expect("the shipped WGSL preprocesses")
+    uber_files_before("types.wgsl")
 }
 
 /// The terms with the globals and bindings they read, through the environment's functions
@@ -113,8 +111,13 @@ pub fn terms_source() -> String {
 /// environment's sweep appends its kernel to, so that it reads the environment as the renderer
 /// binds it.
 pub fn environment_terms_source() -> String {
-    let end = FILES.iter().position(|(name, _)| *name == "shadows.wgsl").expect("shadows.wgsl is shipped");
-    let raw = FILES[..=end].iter().map(|(_, s)| *s).collect::<Vec<_>>().join("\n");
+    uber_files_before("shading.wgsl")
+}
+
+/// The shipped files before `file`, concatenated and preprocessed with every effect.
+fn uber_files_before(file: &str) -> String {
+    let end = FILES.iter().position(|(name, _)| *name == file).expect("a shipped file");
+    let raw = FILES[..end].iter().map(|(_, s)| *s).collect::<Vec<_>>().join("\n");
     preprocess(&raw, &uber_defines()).expect("the shipped WGSL preprocesses")
 }
 

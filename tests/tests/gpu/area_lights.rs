@@ -1,7 +1,7 @@
 //! Area lights on lavapipe (docs/area-lights.md): each kind drawn by the GPU against its f64
 //! twin, the representative point against the exact integral, and the zero-size limit against
 //! the point light. The penumbra's width is measured
-//! by `bench penumbra` (crates/shadelab/tests/penumbra_widths.rs).
+//! by `bench penumbra` (crates/shadelab/tests/app/penumbra_widths.rs).
 
 use shadelab_model::reference::{render_drawn, render_reference};
 use shadelab_model::scene::{Overrides, Scene, single_shape_scene};

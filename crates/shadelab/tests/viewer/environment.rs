@@ -2,31 +2,12 @@
 //! the sky takes I_amb's place and changes the image, its occlusion and split sum are switched,
 //! its specular is shown alone, and "none" gives I_amb back.
 
-use egui_kittest::Harness;
+use crate::harness::{ViewerHarness, harness, changed_view_pixels};
 use egui_kittest::kittest::Queryable;
-use shadelab::viewer::Viewer;
 use shadelab_model::lighting::env_map::EnvSource;
 
-fn harness() -> Harness<'static, Viewer> {
-    let mut h = Harness::builder()
-        .with_size(egui::vec2(1100.0, 640.0))
-        .wgpu()
-        .build_eframe(|cc| Viewer::new(cc, None, None).expect("viewer"));
-    h.run_steps(2);
-    h
-}
-
-/// Pixels of the scene area (left of the panel) that differ by more than 8 in any channel.
-fn changed_view_pixels(a: &image::RgbaImage, b: &image::RgbaImage) -> usize {
-    let view_width = a.width() * 6 / 10;
-    (0..a.height())
-        .flat_map(|y| (0..view_width).map(move |x| (x, y)))
-        .filter(|&(x, y)| (0..3).any(|c| a.get_pixel(x, y).0[c].abs_diff(b.get_pixel(x, y).0[c]) > 8))
-        .count()
-}
-
 /// Open the environment menu and pick `item`.
-fn choose(h: &mut Harness<'static, Viewer>, item: &str) {
+fn choose(h: &mut ViewerHarness, item: &str) {
     h.get_by_label("environment").scroll_to_me();
     h.run_steps(5);
     h.get_by_label("environment").click();

@@ -1,45 +1,9 @@
 //! The viewer driven by egui_kittest on lavapipe (wgpu): what a person sees and clicks.
 
-use egui_kittest::Harness;
+use crate::harness::{ViewerHarness, harness, wait_loaded, changed_view_pixels};
+use crate::common;
 use egui_kittest::kittest::Queryable;
-use shadelab::viewer::Viewer;
 use shadelab_model::{ShadingMode, SpecularModel};
-
-mod common;
-
-fn harness() -> Harness<'static, Viewer> {
-    let mut h = Harness::builder()
-        .with_size(egui::vec2(1100.0, 640.0))
-        .wgpu()
-        .build_eframe(|cc| Viewer::new(cc, None, None).expect("viewer"));
-    h.run_steps(2);
-    h
-}
-
-/// Pixels of the scene area (left of the panel) that differ by more than 8 in any channel.
-/// Frames until the file being opened is shown (or refused), at most 60 s.
-fn wait_loaded(h: &mut Harness<'static, Viewer>) -> u32 {
-    let mut frames = 0;
-    let start = std::time::Instant::now();
-    while h.state().loading() && start.elapsed() < std::time::Duration::from_secs(60) {
-        h.run_steps(1);
-        frames += 1;
-        std::thread::sleep(std::time::Duration::from_millis(10));
-    }
-    assert!(!h.state().loading(), "still loading after 60 s");
-    frames
-}
-
-fn changed_view_pixels(a: &image::RgbaImage, b: &image::RgbaImage) -> usize {
-    let view_width = a.width() * 6 / 10;
-    (0..a.height())
-        .flat_map(|y| (0..view_width).map(move |x| (x, y)))
-        .filter(|&(x, y)| {
-            let (p, q) = (a.get_pixel(x, y).0, b.get_pixel(x, y).0);
-            (0..3).any(|c| p[c].abs_diff(q[c]) > 8)
-        })
-        .count()
-}
 
 #[test]
 fn snapshot_of_panel_and_view() {
@@ -228,7 +192,7 @@ fn difference_from_reference_view() {
     let mut h = harness();
     let normal = h.render().expect("render");
     h.get_by_label("difference from reference").click();
-    let wait = |h: &mut Harness<'static, Viewer>| {
+    let wait = |h: &mut ViewerHarness| {
         let start = std::time::Instant::now();
         loop {
             h.run_steps(1);
@@ -292,7 +256,7 @@ fn file_dialog_buttons_open_and_save_the_chosen_file() {
         b.lock().unwrap().clone()
     });
     // Frames until the panel's message changes (the picker answers on a worker thread).
-    let wait = |h: &mut Harness<'static, Viewer>| {
+    let wait = |h: &mut ViewerHarness| {
         let before = h.state().message().cloned();
         for _ in 0..100 {
             h.run_steps(1);
@@ -361,7 +325,7 @@ fn a_light_can_become_a_spot_light_in_the_panel() {
     h.run_steps(20);
     h.get_by_label("L2 — point").click();
     h.run_steps(2);
-    let shown = |h: &Harness<'static, Viewer>, label: &str| h.query_all_by_label(label).next().is_some();
+    let shown = |h: &ViewerHarness, label: &str| h.query_all_by_label(label).next().is_some();
     assert!(!shown(&h, "outer cone °"));
     h.get_by_label("spot").scroll_to_me();
     h.run_steps(20);
@@ -414,7 +378,7 @@ fn the_model_row_switches_models_and_v_shows_the_shadow_factor() {
     use shadelab_model::{FalloffForm, IlluminationModel, LightKind};
     let mut h = harness();
     let before = h.render().expect("render");
-    let pick = |h: &mut Harness<'static, Viewer>, label: &str| {
+    let pick = |h: &mut ViewerHarness, label: &str| {
         h.get_by_label("model").click();
         h.run_steps(2);
         h.get_by_label(label).click();

@@ -1,8 +1,7 @@
 //! `bench reference` and the reference on a mesh past the old brute-force limit of 10⁴ triangles
 //! (docs/reference.md): correctness only; the times are reported, never asserted.
 
-mod common;
-use common::{out_dir, shadelab};
+use crate::common::{out_dir, shadelab};
 
 /// A 20 000-triangle generated sphere renders as a reference (through its hierarchy), and `bench
 /// reference` reports its triangles, its hierarchy's bytes and both timings.

@@ -1,5 +1,5 @@
 //! glTF scenes through the `shadelab` binary: `--scene FILE`, `--save-scene`, the file's shading
-//! and specular choice, and bad files exiting 2 with one line (on lavapipe, like `tests/cli.rs`).
+//! and specular choice, and bad files exiting 2 with one line (on lavapipe, like `crates/shadelab/tests/app/cli.rs`).
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};

@@ -1,20 +1,14 @@
 //! The viewer's difference view while its reference is traced (docs/reference.md): on a worker,
 //! on every core, a fiftieth of the rows a step, with the share traced on show.
 
-use egui_kittest::Harness;
-use shadelab::viewer::Viewer;
-
-mod common;
+use crate::harness::harness;
+use crate::common;
 
 /// Turned on, the difference view reports the share of its reference traced, within [0, 1],
 /// until the error map with its numbers is in.
 #[test]
 fn the_difference_view_reports_how_far_its_reference_is() {
-    let mut h = Harness::builder()
-        .with_size(egui::vec2(1100.0, 640.0))
-        .wgpu()
-        .build_eframe(|cc| Viewer::new(cc, None, None).expect("viewer"));
-    h.run_steps(2);
+    let mut h = harness();
     assert_eq!(h.state().reference_progress(), None, "nothing traced before the view is on");
     h.state_mut().set_difference_view(true);
     let (mut seen, start) = (Vec::new(), std::time::Instant::now());
@@ -39,11 +33,7 @@ fn the_difference_view_reports_how_far_its_reference_is() {
 /// spheres' (docs/reference.md).
 #[test]
 fn the_ambient_error_view_fits_i_a() {
-    let mut h = Harness::builder()
-        .with_size(egui::vec2(1100.0, 640.0))
-        .wgpu()
-        .build_eframe(|cc| Viewer::new(cc, None, None).expect("viewer"));
-    h.run_steps(2);
+    let mut h = harness();
     h.state_mut().set_difference_view(true);
     h.state_mut().set_difference_kind(shadelab::viewer::difference::DifferenceKind::Ambient);
     let start = std::time::Instant::now();
@@ -68,11 +58,7 @@ fn the_ambient_error_view_fits_i_a() {
 #[test]
 fn a_textured_file_has_its_difference_view() {
     let file = common::root().join("../shared/gltf-samples/BoxTextured.gltf");
-    let mut h = Harness::builder()
-        .with_size(egui::vec2(1100.0, 640.0))
-        .wgpu()
-        .build_eframe(|cc| Viewer::new(cc, None, None).expect("viewer"));
-    h.run_steps(2);
+    let mut h = harness();
     h.state_mut().open_file(&file);
     let start = std::time::Instant::now();
     while h.state().loading() {

@@ -1,9 +1,8 @@
 //! `render --reference --bounces` and `render --ambient-error` (docs/reference.md): the
 //! path-traced reference and the chapter's constant ambient against it, from the command line.
 
-use common::{error_lines, out_dir, shadelab};
+use crate::common::{error_lines, out_dir, shadelab};
 
-mod common;
 
 fn exr(path: &std::path::Path) -> Vec<f32> {
     image::open(path).unwrap().to_rgba32f().pixels().flat_map(|p| [p.0[0], p.0[1], p.0[2]]).collect()

@@ -3,10 +3,10 @@
 //! The views of the model (`--overlay`, `--term`, `figures`) are in `cli_views.rs`, `compare` in
 //! `cli_compare.rs`.
 
-use common::{error_lines, out_dir, shadelab};
+use crate::common;
+use crate::common::{error_lines, out_dir, shadelab};
 use shadelab_model::shadows::{ShadowFilter, ShadowSettings};
 
-mod common;
 
 #[test]
 fn bad_values_exit_2_with_one_line_naming_flag_and_range() {

@@ -1,9 +1,8 @@
 //! `shadelab compare` from the outside: the error numbers of one PNG against another, the map,
 //! the --max-flip exit, and bad pairs as one line and exit 2.
 
-use common::{error_lines, out_dir, shadelab};
+use crate::common::{error_lines, out_dir, shadelab};
 
-mod common;
 
 #[test]
 fn compare_gives_the_error_numbers_and_refuses_bad_pairs() {

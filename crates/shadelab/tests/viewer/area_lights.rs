@@ -1,23 +1,13 @@
 //! The viewer's area lights, driven by egui_kittest on lavapipe: a light too small on screen is
 //! drawn as a point light and the panel says why; a light as k point sources draws with its slider.
 
-use egui_kittest::Harness;
+use crate::harness::harness_of_height;
 use egui_kittest::kittest::Queryable;
-use shadelab::viewer::Viewer;
 use shadelab_model::{LightKind, Overrides};
-
-fn harness() -> Harness<'static, Viewer> {
-    let mut h = Harness::builder()
-        .with_size(egui::vec2(1100.0, 900.0))
-        .wgpu()
-        .build_eframe(|cc| Viewer::new(cc, None, None).expect("viewer"));
-    h.run_steps(2);
-    h
-}
 
 #[test]
 fn a_small_area_light_is_a_point_light_and_the_panel_says_why() {
-    let mut h = harness();
+    let mut h = harness_of_height(900.0);
     let tiny = Overrides { light: Some(LightKind::Rect), light_size: Some(0.001), ..Default::default() };
     h.state_mut().scene_mut().apply(&tiny);
     h.run_steps(3);
@@ -37,7 +27,7 @@ fn a_small_area_light_is_a_point_light_and_the_panel_says_why() {
 
 #[test]
 fn a_light_as_point_sources_has_its_slider_and_draws() {
-    let mut h = harness();
+    let mut h = harness_of_height(900.0);
     let points = Overrides { light: Some(LightKind::Disk), area_points: Some(4), ..Default::default() };
     h.state_mut().scene_mut().apply(&points);
     h.run_steps(2);

@@ -1,36 +1,13 @@
 //! The viewer's shadow views, driven by egui_kittest on lavapipe: a light's shadow map shown in
 //! its panel section, and the difference view's shadow error map with its shares.
 
-use egui_kittest::Harness;
+use crate::harness::{harness, run_until};
 use egui_kittest::kittest::Queryable;
-use shadelab::viewer::Viewer;
 use shadelab_model::shadows::SHADOW_RESOLUTION;
 
 /// The most of the default scene's pixels whose lit/shadowed state may disagree with the
 /// reference: its shadows' edges, one map texel wide, at the difference view's 480 px width.
 const DEFAULT_SCENE_SHADOW_DISAGREEMENT_MAX: f64 = 0.05;
-
-fn harness() -> Harness<'static, Viewer> {
-    let mut h = Harness::builder()
-        .with_size(egui::vec2(1100.0, 640.0))
-        .wgpu()
-        .build_eframe(|cc| Viewer::new(cc, None, None).expect("viewer"));
-    h.run_steps(2);
-    h
-}
-
-/// Frames until `done` holds (the readback and the reference arrive in later frames).
-fn run_until<T>(h: &mut Harness<'static, Viewer>, what: &str, done: impl Fn(&Viewer) -> Option<T>) -> T {
-    let start = std::time::Instant::now();
-    loop {
-        h.run_steps(1);
-        if let Some(t) = done(h.state()) {
-            return t;
-        }
-        assert!(start.elapsed().as_secs() < 90, "no {what} after 90 s");
-        std::thread::sleep(std::time::Duration::from_millis(50));
-    }
-}
 
 #[test]
 fn the_show_shadow_map_box_shows_l1s_map_in_its_section() {
@@ -46,7 +23,7 @@ fn the_show_shadow_map_box_shows_l1s_map_in_its_section() {
     h.get_by_label("show shadow map").scroll_to_me();
     h.run_steps(20);
     h.get_by_label("show shadow map").click();
-    let [w, hgt] = run_until(&mut h, "shadow map", |v| v.shadow_map_shown(0));
+    let [w, hgt] = run_until(&mut h, "shadow map", 90, |v| v.shadow_map_shown(0));
     let asked = h.state_mut().scene_mut().lights[0].shadow.resolution as usize;
     // Square, a power of two within the declared range, at most what L1 asks for (the memory
     // budget may halve it).
@@ -66,7 +43,7 @@ fn the_shadow_error_map_reports_a_small_disagreement_on_the_default_scene() {
     h.get_by_label("difference from reference").click();
     h.run_steps(2);
     h.get_by_label("shadow error").click();
-    let s = run_until(&mut h, "shadow comparison", |v| v.shadow_difference());
+    let s = run_until(&mut h, "shadow comparison", 90, |v| v.shadow_difference());
     assert!(s.share_disagreeing.is_finite(), "{s:?}");
     assert!(s.share_disagreeing < DEFAULT_SCENE_SHADOW_DISAGREEMENT_MAX, "{s:?}");
     assert!(s.share_shadowed_reference > 0.0, "the default scene has cast shadows: {s:?}");
@@ -78,7 +55,7 @@ fn the_shadow_error_map_reports_a_small_disagreement_on_the_default_scene() {
     shot.save(std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join("viewer-shadow-error.png")).unwrap();
     // Back to the FLIP map: no shadow numbers.
     h.get_by_label("FLIP error").click();
-    run_until(&mut h, "FLIP map", |v| v.difference());
+    run_until(&mut h, "FLIP map", 90, |v| v.difference());
     assert!(h.state().shadow_difference().is_none());
 }
 
@@ -91,7 +68,7 @@ fn a_point_lights_map_shows_a_cube_face_with_a_face_menu() {
     h.get_by_label("L2 — point").click();
     h.run_steps(2);
     h.state_mut().set_shadow_map_view(1, true);
-    let [w, hgt] = run_until(&mut h, "cube face", |v| v.shadow_map_shown(1));
+    let [w, hgt] = run_until(&mut h, "cube face", 90, |v| v.shadow_map_shown(1));
     assert_eq!(w, hgt);
     h.get_by_label("show shadow map").scroll_to_me();
     h.run_steps(20);
@@ -118,7 +95,7 @@ fn a_directional_lights_cascades_have_a_menu() {
     h.get_by_label("L1 — directional").click();
     h.run_steps(2);
     h.state_mut().set_shadow_map_view(0, true);
-    run_until(&mut h, "first cascade", |v| v.shadow_map_shown(0));
+    run_until(&mut h, "first cascade", 90, |v| v.shadow_map_shown(0));
     h.get_by_label("show shadow map").scroll_to_me();
     h.run_steps(20);
     assert!(h.query_by_value("cascade 1").is_some(), "the sun's map has a cascade menu");
@@ -126,6 +103,6 @@ fn a_directional_lights_cascades_have_a_menu() {
     h.run_steps(2);
     h.get_by_label("cascade 2").click();
     h.run_steps(2);
-    run_until(&mut h, "second cascade", |v| v.shadow_map_shown(0));
+    run_until(&mut h, "second cascade", 90, |v| v.shadow_map_shown(0));
     assert!(h.query_by_value("cascade 2").is_some(), "the menu shows the chosen cascade");
 }

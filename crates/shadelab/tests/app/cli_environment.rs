@@ -1,9 +1,8 @@
 //! `render --environment` (docs/environment.md): the environment takes I_amb's place, its effect
 //! is explained, a map file is read, and bad flags and files are one line each.
 
-use common::{error_lines, out_dir, shadelab};
+use crate::common::{error_lines, out_dir, shadelab};
 
-mod common;
 
 /// The sky turns the environment's effect on and says why; a map file lights the scene, and a
 /// 1×1 map of I_amb's colour draws the image I_amb draws.

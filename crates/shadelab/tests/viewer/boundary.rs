@@ -1,9 +1,8 @@
 //! The viewer's "self-shadow boundary" switch, driven by egui_kittest on lavapipe: ticking it
 //! draws the boundary edges over the view in the overlay colour.
 
-use egui_kittest::Harness;
+use crate::harness::harness;
 use egui_kittest::kittest::Queryable;
-use shadelab::viewer::Viewer;
 
 /// Pixels of the scene area (left of the panel) in the boundary's colour, saturated cyan.
 fn boundary_pixels(image: &image::RgbaImage) -> usize {
@@ -19,11 +18,7 @@ fn boundary_pixels(image: &image::RgbaImage) -> usize {
 
 #[test]
 fn the_boundary_switch_draws_the_edges_over_the_view() {
-    let mut h = Harness::builder()
-        .with_size(egui::vec2(1100.0, 640.0))
-        .wgpu()
-        .build_eframe(|cc| Viewer::new(cc, None, None).expect("viewer"));
-    h.run_steps(2);
+    let mut h = harness();
     assert_eq!(h.state().self_shadow_boundary_edges(), 0);
     let off = h.render().expect("render");
     h.get_by_label("self-shadow boundary").click();
@@ -56,11 +51,7 @@ fn normal_pixels(image: &image::RgbaImage) -> usize {
 /// The "vertex normals" and "creases" switches draw their lines over the view, and stop.
 #[test]
 fn the_normals_and_creases_switches_draw_their_lines() {
-    let mut h = Harness::builder()
-        .with_size(egui::vec2(1100.0, 640.0))
-        .wgpu()
-        .build_eframe(|cc| Viewer::new(cc, None, None).expect("viewer"));
-    h.run_steps(2);
+    let mut h = harness();
     assert_eq!(h.state().mesh_line_counts(), (0, 0));
     let off = h.render().expect("render");
     h.get_by_label("vertex normals").click();

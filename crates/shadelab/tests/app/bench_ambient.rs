@@ -1,8 +1,7 @@
 //! `bench ambient` (docs/reference.md): every rung of the ladder is reported, with its time and
 //! its error against the truth; the times are reported, never asserted.
 
-mod common;
-use common::{error_lines, shadelab};
+use crate::common::{error_lines, shadelab};
 
 /// The table has the constant, fitted and occluded ambient and path tracing at 1 and 4 paths,
 /// each error finite; more paths come closer to the truth, and the fitted I_a no further than

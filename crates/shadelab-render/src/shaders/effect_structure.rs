@@ -189,31 +189,56 @@ fn every_permutation_validates_in_naga() {
         let base = ENV_OPTIONS.into_iter().fold(base, |k, e| k.without(e));
         keys.extend(subsets(&ENV_OPTIONS).into_iter().map(|k| union(k, base)));
     }
-    for key in keys {
-        let src = lighting_source_for(&raw, key).unwrap();
-        let module = naga::front::wgsl::parse_str(&src)
-            .unwrap_or_else(|e| panic!("{}: {}", key.label(), e.emit_to_string(&src)));
-        validate(&module);
-        let mut eps: Vec<(&str, &str)> = ShadingMode::ALL_MODES.into_iter().map(entry_points).collect();
-        eps.push(BASELINE_ENTRY_POINTS);
-        if key.has(Effect::Transmission) {
-            eps.extend([crate::glass_pass::GLASS_ENTRY_POINTS, crate::glass_pass::BACK_ENTRY_POINTS]);
+    // Keys whose effects are nested in an effect that is off preprocess to the same source:
+    // each distinct source (with the two entry points a key decides) is validated once, which
+    // checks what every key would. Sources are compared by hash, so they need not all be held.
+    let mut seen = HashSet::new();
+    let distinct: Vec<EffectKey> = keys
+        .into_iter()
+        .filter(|&key| {
+            let mut hasher = std::collections::hash_map::DefaultHasher::new();
+            std::hash::Hash::hash(&lighting_source_for(&raw, key).unwrap(), &mut hasher);
+            let decided = (key.has(Effect::Transmission), key.has(Effect::EnvironmentBackground));
+            seen.insert((std::hash::Hasher::finish(&hasher), decided))
+        })
+        .collect();
+    // On every core: parsing and validating each module is most of the suite's longest test.
+    let threads = std::thread::available_parallelism().map_or(1, |n| n.get());
+    let chunk = distinct.len().div_ceil(threads).max(1);
+    let raw = &raw;
+    std::thread::scope(|scope| {
+        for part in distinct.chunks(chunk) {
+            scope.spawn(move || {
+                for &key in part {
+                    permutation_is_valid(key, &lighting_source_for(raw, key).unwrap());
+                }
+            });
         }
-        let background =
-            module.entry_points.iter().any(|e| e.name == crate::environment_gpu::BACKGROUND_ENTRY_POINTS.1);
-        assert_eq!(background, key.has(Effect::EnvironmentBackground), "{}: the background's entry point", key.label());
-        let glass = module.entry_points.iter().any(|e| e.name == crate::glass_pass::GLASS_ENTRY_POINTS.1);
-        assert_eq!(glass, key.has(Effect::Transmission), "{}: the glass pass's entry point", key.label());
-        for (vs, fs) in eps {
-            assert!(
-                module.entry_points.iter().any(|e| e.name == vs) && module.entry_points.iter().any(|e| e.name == fs)
-            );
-        }
-    }
+    });
     // The terms alone, and the sweep's compute module, are valid too.
     validate(&parse(&terms_source()));
     validate(&parse(&sweep_source()));
     validate(&parse(&crate::sweep::environment::env_sweep_source()));
+}
+
+/// `src`, the lighting module of `key`, parses and validates, and holds the entry points of every
+/// shading mode, the baseline's, and the glass pass's and the background's where `key` has them.
+fn permutation_is_valid(key: EffectKey, src: &str) {
+    let module =
+        naga::front::wgsl::parse_str(src).unwrap_or_else(|e| panic!("{}: {}", key.label(), e.emit_to_string(src)));
+    validate(&module);
+    let mut eps: Vec<(&str, &str)> = ShadingMode::ALL_MODES.into_iter().map(entry_points).collect();
+    eps.push(BASELINE_ENTRY_POINTS);
+    if key.has(Effect::Transmission) {
+        eps.extend([crate::glass_pass::GLASS_ENTRY_POINTS, crate::glass_pass::BACK_ENTRY_POINTS]);
+    }
+    let background = module.entry_points.iter().any(|e| e.name == crate::environment_gpu::BACKGROUND_ENTRY_POINTS.1);
+    assert_eq!(background, key.has(Effect::EnvironmentBackground), "{}: the background's entry point", key.label());
+    let glass = module.entry_points.iter().any(|e| e.name == crate::glass_pass::GLASS_ENTRY_POINTS.1);
+    assert_eq!(glass, key.has(Effect::Transmission), "{}: the glass pass's entry point", key.label());
+    for (vs, fs) in eps {
+        assert!(module.entry_points.iter().any(|e| e.name == vs) && module.entry_points.iter().any(|e| e.name == fs));
+    }
 }
 
 /// Functions reachable by calls from an entry point.

@@ -164,15 +164,12 @@ pub const FIGURES: &[Figure] = &[
     },
 ];
 
-/// Every figure's size.
-const FIGURE_SIZE: [&str; 4] = ["--width", "640", "--height", "360"];
-
-/// The command that makes `figure`, run from the figures' folder.
-pub fn command(figure: &Figure) -> Vec<&'static str> {
-    let mut args = vec!["render"];
-    args.extend(figure.flags);
-    args.extend(FIGURE_SIZE);
-    args.extend(["--output", figure.file]);
+/// The command that makes `figure` at `width`×`height`, run from the figures' folder.
+pub fn command(figure: &Figure, width: u32, height: u32) -> Vec<String> {
+    let mut args = vec!["render".to_string()];
+    args.extend(figure.flags.iter().map(|f| f.to_string()));
+    args.extend(["--width".into(), width.to_string(), "--height".into(), height.to_string()]);
+    args.extend(["--output".into(), figure.file.into()]);
     args
 }
 
@@ -190,7 +187,7 @@ pub fn run(args: &cli::FiguresArgs) -> Result<(), Failure> {
          # or change one.\n",
     );
     for f in FIGURES {
-        let words = command(f);
+        let words = command(f, args.width, args.height);
         listing += &format!("\n# {}\nshadelab {}\n", f.caption, words.join(" "));
         render::run(&render_args(&words, out)?)?;
         println!("wrote {}", out.join(f.file).display());
@@ -202,7 +199,7 @@ pub fn run(args: &cli::FiguresArgs) -> Result<(), Failure> {
 
 /// The `render` arguments of `words` with the files it names (the scene files written here and
 /// the output) inside `dir`, parsed as the command line would be.
-fn render_args(words: &[&str], dir: &Path) -> Result<cli::RenderArgs, Failure> {
+fn render_args(words: &[String], dir: &Path) -> Result<cli::RenderArgs, Failure> {
     let mut argv = vec!["shadelab".to_string()];
     for w in words {
         let file = w.ends_with(".gltf") || w.ends_with(".png");
@@ -225,7 +222,7 @@ mod tests {
         let dir = Path::new("figures");
         let mut files: Vec<_> = FIGURES.iter().map(|f| f.file).collect();
         for f in FIGURES {
-            render_args(&command(f), dir).unwrap_or_else(|_| panic!("{}", f.file));
+            render_args(&command(f, 640, 360), dir).unwrap_or_else(|_| panic!("{}", f.file));
         }
         files.sort();
         files.dedup();

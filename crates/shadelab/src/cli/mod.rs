@@ -125,6 +125,12 @@ pub struct FiguresArgs {
     /// Folder for the figures, their scene files and commands.txt.
     #[arg(long, default_value = "figures", value_name = "DIR")]
     pub out: PathBuf,
+    #[arg(long, default_value = "640", value_parser = values::count(params::WIDTH),
+          help = within("Each figure's width in pixels (smaller for a quick look)", params::WIDTH))]
+    pub width: u32,
+    #[arg(long, default_value = "360", value_parser = values::count(params::HEIGHT),
+          help = within("Each figure's height in pixels", params::HEIGHT))]
+    pub height: u32,
 }
 
 #[derive(Subcommand, Debug)]

@@ -17,7 +17,7 @@ pub const TARGETS: [(&str, &[&str]); 3] = [
     ("texture_image", &["fuzz/seeds/texture_image"]),
     ("extras", &["fuzz/seeds/extras"]),
 ];
-/// Seconds each target runs in `cargo xtask test`: the three fit in about a minute of CI.
+/// Seconds the targets run in `cargo xtask test`, side by side.
 pub const CI_SECONDS: u32 = 20;
 /// One input may take this long before libFuzzer calls it a hang (a scene is bounded far below).
 const TIMEOUT_SECONDS: u32 = 10;
@@ -44,10 +44,21 @@ pub fn main(args: &[String]) -> Result<(), String> {
     run(seconds)
 }
 
-/// Build every target once, then run each for `seconds`.
+/// Build every target once, then run them all for `seconds`, side by side.
 pub fn run(seconds: u32) -> Result<(), String> {
+    build()?;
+    run_targets(seconds)
+}
+
+/// The repository and the fuzz targets' own target folder.
+fn folders() -> (&'static Path, std::path::PathBuf) {
     let root = Path::new(env!("CARGO_MANIFEST_DIR")).parent().expect("xtask/ is in the repository");
-    let target_dir = root.join("target/fuzz");
+    (root, root.join("target/fuzz"))
+}
+
+/// Build every target with the coverage instrumentation.
+pub fn build() -> Result<(), String> {
+    let (root, target_dir) = folders();
     let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
     let mut build = Command::new(cargo);
     build
@@ -56,10 +67,15 @@ pub fn run(seconds: u32) -> Result<(), String> {
         .arg("--target-dir")
         .arg(&target_dir)
         .env("RUSTFLAGS", RUSTFLAGS);
-    if !crate::run(&mut build) {
-        return Err("building the fuzz targets failed".into());
-    }
-    let mut failed = Vec::new();
+    if crate::run(&mut build) { Ok(()) } else { Err("building the fuzz targets failed".into()) }
+}
+
+/// Run every built target for `seconds`, side by side.
+pub fn run_targets(seconds: u32) -> Result<(), String> {
+    let (root, target_dir) = folders();
+    // The targets run side by side: each is one process on one core, so on a machine with
+    // several they take the time of one.
+    let mut running = Vec::new();
     for (name, seeds) in TARGETS {
         let corpus = target_dir.join("corpus").join(name);
         let artifacts = target_dir.join("artifacts").join(name);
@@ -73,7 +89,12 @@ pub fn run(seconds: u32) -> Result<(), String> {
             .arg(format!("-rss_limit_mb={RSS_LIMIT_MB}"))
             .arg(format!("-artifact_prefix={}/", artifacts.display()))
             .arg("-print_final_stats=1");
-        if !crate::run(&mut cmd) {
+        eprintln!("xtask: running {cmd:?}");
+        running.push((name, artifacts, cmd.spawn()));
+    }
+    let mut failed = Vec::new();
+    for (name, artifacts, child) in running {
+        if !child.and_then(|mut c| c.wait()).is_ok_and(|s| s.success()) {
             failed.push(format!("{name} (its input is in {})", artifacts.display()));
         }
     }

@@ -7,7 +7,9 @@
 //! and serves that site (`web.rs`). Last, every fuzz target runs for a short, fixed time
 //! (`fuzz.rs`; `cargo xtask fuzz` runs them longer).
 
+mod background;
 mod fuzz;
+mod suite;
 mod web;
 mod web_test;
 
@@ -38,7 +40,7 @@ fn main() -> ExitCode {
         },
         _ => {
             eprintln!(
-                "usage: cargo xtask test [-- <cargo test args>]\n       cargo xtask web [--out DIR] [--port N] | --bench\n       cargo xtask fuzz [--seconds N]"
+                "usage: cargo xtask test [CARGO TEST ARGS] [-- TEST ARGS]\n       cargo xtask web [--out DIR] [--port N] | --bench\n       cargo xtask fuzz [--seconds N]"
             );
             ExitCode::from(2)
         }
@@ -56,9 +58,14 @@ fn is_root() -> bool {
     Command::new("id").arg("-u").output().is_ok_and(|o| String::from_utf8_lossy(&o.stdout).trim() == "0")
 }
 
+/// Run `cmd` to its end (on the background thread: niced, into its log); whether it succeeded.
 fn run(cmd: &mut Command) -> bool {
-    eprintln!("xtask: running {cmd:?}");
-    cmd.status().is_ok_and(|s| s.success())
+    let note = format!("xtask: running {cmd:?}");
+    match background::niced(cmd, &note) {
+        Some(mut niced) => niced.status(),
+        None => cmd.status(),
+    }
+    .is_ok_and(|s| s.success())
 }
 
 /// Install Debian packages for something missing: as root on Debian/Ubuntu, `apt-get update`
@@ -83,8 +90,43 @@ pub(crate) fn ensure_lavapipe() -> Result<PathBuf, String> {
     lavapipe_icd().ok_or_else(|| "mesa-vulkan-drivers is installed but no lavapipe ICD was found".into())
 }
 
+/// Every Debian package the steps need that is missing, installed in one `apt-get` run (the
+/// background's builds then find their tools, and no two installs contend for dpkg's lock).
+fn ensure_system_packages() -> Result<(), String> {
+    let mut missing: Vec<(&str, &[&str])> = Vec::new();
+    if lavapipe_icd().is_none() {
+        missing.push(("lavapipe (Mesa's CPU Vulkan driver)", LAVAPIPE_PACKAGES));
+    }
+    if !has_xvfb() {
+        missing.push(("Xvfb", X_PACKAGES));
+    }
+    if !Path::new(web_test::CHROMIUM).exists() {
+        missing.push(("Chromium", &["chromium"]));
+    }
+    if !web_test::on_path("node") || !web_test::on_path("npm") {
+        missing.push(("Node.js", &["nodejs", "npm"]));
+    }
+    if !web::rustup_has_wasm_std() && !web::debian_toolchain_present() {
+        missing.push(("the web toolchain (rustc for wasm32)", web::WEB_PACKAGES));
+    }
+    if missing.is_empty() {
+        return Ok(());
+    }
+    let what: Vec<&str> = missing.iter().map(|m| m.0).collect();
+    let packages: Vec<&str> = missing.iter().flat_map(|m| m.1.iter().copied()).collect();
+    apt_install(&what.join(", "), &packages)
+}
+
+/// `cargo xtask test [CARGO ARGS] [-- TEST ARGS]`: every step, timed; the summary names each
+/// step's time and the slowest tests, and ends on the counts.
 fn test(extra: &[String]) -> ExitCode {
-    let icd = match ensure_lavapipe() {
+    let (cargo_args, test_args) = match extra.iter().position(|a| a == "--") {
+        Some(i) => (&extra[..i], &extra[i + 1..]),
+        None => (extra, &[][..]),
+    };
+    let mut timings = suite::Timings::default();
+    let installed = timings.step("system packages", |_| ensure_system_packages().and_then(|()| ensure_lavapipe()));
+    let icd = match installed {
         Ok(icd) => icd,
         Err(msg) => {
             eprintln!("xtask: {msg}");
@@ -92,21 +134,57 @@ fn test(extra: &[String]) -> ExitCode {
         }
     };
     eprintln!("xtask: lavapipe at {}", icd.display());
-    let mut cmd = Command::new(std::env::var("CARGO").unwrap_or_else(|_| "cargo".into()));
-    // Every test binary runs even after one fails, so the summary counts them all.
-    cmd.args(["test", "--release", "--workspace", "--no-fail-fast"]).args(extra);
+    let site = web::root().join("target/web-site");
+    let background = background::start(site.clone(), web::root().join("target/web-node"), timings.since);
+    let xdg = runtime_dir();
     // Only lavapipe is visible to the Vulkan loader (both variable names, old and new loaders),
     // and the tests and the binary ask for it by name as well.
-    cmd.env("VK_DRIVER_FILES", &icd).env("VK_ICD_FILENAMES", &icd).env("SHADELAB_ADAPTER", "lavapipe");
-    let xdg = runtime_dir();
-    cmd.env("XDG_RUNTIME_DIR", &xdg);
-    let (tests_ok, mut count) = run_counting(&mut cmd);
-    count.check("viewer smoke test under Xvfb", viewer_smoke_test(&icd, &xdg));
-    web_test::browser_tests(&icd, &mut count);
+    let env = [
+        ("VK_DRIVER_FILES", icd.as_os_str()),
+        ("VK_ICD_FILENAMES", icd.as_os_str()),
+        ("SHADELAB_ADAPTER", "lavapipe".as_ref()),
+        ("XDG_RUNTIME_DIR", xdg.as_os_str()),
+    ];
+    let mut count = Count::default();
+    let binaries = match timings.step("build the tests", |_| suite::build(cargo_args, &env)) {
+        Ok(b) => b,
+        Err(msg) => {
+            count.check("build the tests", Err(msg));
+            Vec::new()
+        }
+    };
+    let label = format!("run {} test binaries", binaries.len());
+    let tests_ok = timings.step(&label, |t| suite::run(&binaries, test_args, &env, &mut count, t));
+    let smoke = timings.step("viewer under Xvfb", |_| viewer_smoke_test(&icd, &xdg));
+    count.check("viewer smoke test under Xvfb", smoke);
+    let prepared = timings.step("wait for the background's builds", |_| background.join());
+    let prepared = match prepared {
+        Ok(p) => p,
+        Err(_) => {
+            count.check("the background's builds", Err("its thread panicked".into()));
+            return summary(&timings, &count, false);
+        }
+    };
+    let with_log = |r: Result<(), String>| {
+        r.map_err(|e| format!("{e}; the end of {}:\n{}", prepared.log.display(), background::tail(&prepared.log, 30)))
+    };
+    let (site_built, fuzz_built) = (with_log(prepared.site.clone()), with_log(prepared.fuzz_targets.clone()));
+    timings.merge(prepared.timings);
+    web_test::browser_tests(&icd, &site, site_built, &mut count, &mut timings);
     let fuzzing = format!("every fuzz target for {} s on its seeds", fuzz::CI_SECONDS);
-    count.check(&fuzzing, fuzz::run(fuzz::CI_SECONDS));
-    count.check("`cargo run --release` reuses the test build", viewer_build_is_fresh());
-    // The last line: every test binary's results, the smoke test and the build check, together.
+    let fuzzed = fuzz_built.and_then(|()| timings.step("fuzz targets: run", |_| fuzz::run_targets(fuzz::CI_SECONDS)));
+    count.check(&fuzzing, fuzzed);
+    let fresh = timings.step("`cargo run --release` is built", |_| viewer_build_is_fresh());
+    count.check("`cargo run --release` reuses the test build", fresh);
+    summary(&timings, &count, tests_ok)
+}
+
+/// Print the steps' times and the slowest tests, then the last line: every test binary's
+/// results and xtask's own checks, together.
+fn summary(timings: &suite::Timings, count: &Count, tests_ok: bool) -> ExitCode {
+    for line in timings.summary(10) {
+        println!("{line}");
+    }
     println!("xtask: {} passed, {} failed", count.passed, count.failed);
     if tests_ok && count.failed == 0 { ExitCode::SUCCESS } else { ExitCode::FAILURE }
 }
@@ -148,8 +226,8 @@ impl Count {
     }
 }
 
-/// Run `cmd`, passing its output through, and count its test results.
-fn run_counting(cmd: &mut Command) -> (bool, Count) {
+/// Run `cmd`, passing its output through, and count its test results and their times.
+fn run_counting(cmd: &mut Command, timings: &mut suite::Timings) -> (bool, Count) {
     use std::io::BufRead;
     eprintln!("xtask: running {cmd:?}");
     let mut count = Count::default();
@@ -160,6 +238,7 @@ fn run_counting(cmd: &mut Command) -> (bool, Count) {
         for line in std::io::BufReader::new(out).lines().map_while(Result::ok) {
             println!("{line}");
             count.add_line(&line);
+            timings.tests.extend(suite::test_time(&line));
         }
     }
     (child.wait().is_ok_and(|s| s.success()), count)

@@ -12,7 +12,7 @@ use std::process::Command;
 
 pub const WASM_TARGET: &str = "wasm32-unknown-unknown";
 /// Debian's web toolchain: rustc and cargo for wasm32, std's source, and the wasm linker.
-const WEB_PACKAGES: &[&str] = &["rustc-web", "cargo-web", "rust-web-src", "lld-22"];
+pub(crate) const WEB_PACKAGES: &[&str] = &["rustc-web", "cargo-web", "rust-web-src", "lld-22"];
 const DEBIAN_RUSTC: &str = "/usr/bin/rustc";
 const DEBIAN_CARGO: &str = "/usr/bin/cargo";
 const DEBIAN_STD_SOURCE: &str = "/usr/lib/rustlib/src/rust/library";
@@ -29,13 +29,13 @@ fn rustup_cargo() -> String {
 }
 
 /// Whether the rustc rustup runs has the wasm32 standard library.
-fn rustup_has_wasm_std() -> bool {
+pub(crate) fn rustup_has_wasm_std() -> bool {
     let Ok(out) = Command::new("rustc").args(["--print", "sysroot"]).output() else { return false };
     let sysroot = String::from_utf8_lossy(&out.stdout).trim().to_string();
     Path::new(&sysroot).join("lib/rustlib").join(WASM_TARGET).join("lib").is_dir()
 }
 
-fn debian_toolchain_present() -> bool {
+pub(crate) fn debian_toolchain_present() -> bool {
     [DEBIAN_RUSTC, DEBIAN_CARGO, DEBIAN_STD_SOURCE, DEBIAN_WASM_LD].iter().all(|p| Path::new(p).exists())
         && Command::new(DEBIAN_RUSTC).arg("--version").output().is_ok_and(|o| o.status.success())
 }

@@ -4,20 +4,21 @@
 //! as root; otherwise the commands are printed).
 
 use crate::web::{build_site, root, serve};
+use crate::suite::Timings;
 use crate::{Count, apt_install, run, run_counting};
 use std::path::Path;
 use std::process::Command;
 
 /// The Playwright driver, pinned: it only drives the system's Chromium (no browser download).
 const PLAYWRIGHT_CORE: &str = "playwright-core@1.65.1";
-const CHROMIUM: &str = "/usr/bin/chromium";
+pub(crate) const CHROMIUM: &str = "/usr/bin/chromium";
 
-fn on_path(tool: &str) -> bool {
+pub(crate) fn on_path(tool: &str) -> bool {
     Command::new("sh").arg("-c").arg(format!("command -v {tool}")).output().is_ok_and(|o| o.status.success())
 }
 
 /// Chromium, Node.js and playwright-core (in `target/web-node`), installed where missing.
-fn ensure_browser_tools(node_dir: &Path) -> Result<(), String> {
+pub(crate) fn ensure_browser_tools(node_dir: &Path) -> Result<(), String> {
     if !Path::new(CHROMIUM).exists() {
         apt_install("Chromium", &["chromium"])?;
     }
@@ -54,12 +55,11 @@ fn node_script(script: &str, address: &str, out: &str, icd: &Path) -> Command {
     cmd
 }
 
-/// Build, serve and test the web build; each browser test counts as one test.
-pub fn browser_tests(icd: &Path, count: &mut Count) {
+/// Serve and test the web build in `site` (built by then, or the error that stopped it); each
+/// browser test counts as one test.
+pub fn browser_tests(icd: &Path, site: &Path, built: Result<(), String>, count: &mut Count, timings: &mut Timings) {
     let root = root();
-    let node_dir = root.join("target/web-node");
-    let site = root.join("target/web-site");
-    let prepared = ensure_browser_tools(&node_dir).and_then(|()| build_site(&site)).and_then(|()| serve(&site, 0));
+    let prepared = built.and_then(|()| serve(site, 0));
     let address = match prepared {
         Ok(a) => a,
         Err(e) => return count.check("web build and browser tools", Err(e)),
@@ -67,7 +67,7 @@ pub fn browser_tests(icd: &Path, count: &mut Count) {
     eprintln!("xtask: the web build is served on {address}");
     let mut cmd = node_script("browser_tests.mjs", &address, "target/web-test", icd);
     cmd.env("SHADELAB_ROOT", &root);
-    let (ok, c) = run_counting(&mut cmd);
+    let (ok, c) = timings.step("browser tests", |t| run_counting(&mut cmd, t));
     count.passed += c.passed;
     count.failed += c.failed;
     if !ok && c.failed == 0 {

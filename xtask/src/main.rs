@@ -8,6 +8,9 @@
 //! (`fuzz.rs`; `cargo xtask fuzz` runs them longer).
 
 mod background;
+// The floor plan in docs/architecture.md held against the tree (a test only).
+#[cfg(test)]
+mod floor_plan;
 mod fuzz;
 mod suite;
 mod web;

@@ -101,7 +101,7 @@ fn env_split_b_node(base: u32, j: u32, i: u32) -> f32 {
 fn env_split_b(terms: u32, n_dot_v: f32, m: f32) -> f32 {
     let d = terms & MICROFACET_FIELD_MASK;
     let g = (terms >> MICROFACET_FIELD_BITS) & MICROFACET_FIELD_MASK;
-    let base = (d * 3u + g) * MS_TABLE_SIDE * MS_TABLE_SIDE;
+    let base = (d * MASKING_COUNT + g) * MS_TABLE_SIDE * MS_TABLE_SIDE;
     let last = f32(MS_TABLE_SIDE - 1u);
     let u = clamp(n_dot_v, 0.0, 1.0) * last;
     let w = clamp(m, 0.0, 1.0) * last;

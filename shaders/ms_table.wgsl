@@ -5,8 +5,6 @@
 // The f64 twin is crates/shadelab-model/src/lighting/multiscatter.rs.
 
 #if EFFECT_MULTIPLE_SCATTERING||EFFECT_ENVIRONMENT_SPECULAR
-const MS_TABLE_SIDE: u32 = 16u;
-const MS_PAIRS: u32 = 6u;
 
 // One node of pair `base`'s table: row j (m), column i (N·V).
 fn ms_node(base: u32, j: u32, i: u32) -> f32 {
@@ -19,7 +17,7 @@ fn ms_node(base: u32, j: u32, i: u32) -> f32 {
 fn ms_albedo(terms: u32, n_dot_v: f32, m: f32) -> f32 {
     let d = terms & MICROFACET_FIELD_MASK;
     let g = (terms >> MICROFACET_FIELD_BITS) & MICROFACET_FIELD_MASK;
-    let base = (d * 3u + g) * MS_TABLE_SIDE * MS_TABLE_SIDE;
+    let base = (d * MASKING_COUNT + g) * MS_TABLE_SIDE * MS_TABLE_SIDE;
     let last = f32(MS_TABLE_SIDE - 1u);
     let u = clamp(n_dot_v, 0.0, 1.0) * last;
     let w = clamp(m, 0.0, 1.0) * last;

@@ -55,9 +55,9 @@ fn sweep_environment(@builtin(global_invocation_id) gid: vec3<u32>) {
     env_put_rgb(base + ENV_COL_LEVEL_SAMPLE, env_level_sample(0u, -v));
     let r = safe_normalize(n * (2.0 * dot(n, v)) - v, n);
     env_put_rgb(base + ENV_COL_PREFILTERED, env_prefiltered(r, m));
-    // B of every D × G pair, in the table's order (d·3 + g).
-    for (var pair = 0u; pair < 6u; pair++) {
-        let terms = (pair / 3u) | ((pair % 3u) << MICROFACET_FIELD_BITS);
+    // B of every D × G pair, in the table's order (d·MASKING_COUNT + g).
+    for (var pair = 0u; pair < MS_PAIRS; pair++) {
+        let terms = (pair / MASKING_COUNT) | ((pair % MASKING_COUNT) << MICROFACET_FIELD_BITS);
         env_outputs[base + ENV_COL_SPLIT_B + pair] = env_split_b(terms, dot(n, v), m);
     }
     env_put_rgb(base + ENV_COL_SPECULAR, env_specular(n, v, m, MICROFACET_CHAPTER, v_index));

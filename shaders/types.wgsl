@@ -3,8 +3,6 @@
 // (crates/shadelab-render/src/shadow_pass.rs) and the light loop's pipeline constants
 // (crates/shadelab-render/src/light_loop.rs). Bindings are in bindings.wgsl.
 
-const ENV_SPLIT_B_VEC4S: u32 = 384u;
-
 struct Globals {
     view_proj: mat4x4<f32>,
     // The eye, homogeneous: (position, 1) for a perspective camera, (−forward, 0) for an
@@ -95,8 +93,6 @@ struct Object {
 }
 
 const FLAG_DEBUG_NONFINITE: u32 = 1u;
-// vec4 slots of globals.ms_albedo (multiscatter::MS_TABLE_VEC4S).
-const MS_TABLE_VEC4S: u32 = 512u;
 
 // The per-vertex modes' lighting passes read FLAT_CORNER_FLOATS floats a corner of the flat
 // mesh (three corners a face) and SMOOTH_VERTEX_FLOATS floats a smooth vertex.

@@ -114,16 +114,44 @@ pub fn environment_terms_source() -> String {
     uber_files_before("shading.wgsl")
 }
 
-/// The shipped files before `file`, concatenated and preprocessed with every effect.
+/// The shipped files before `file`, after the generated constants, concatenated and
+/// preprocessed with every effect.
 fn uber_files_before(file: &str) -> String {
     let end = FILES.iter().position(|(name, _)| *name == file).expect("a shipped file");
-    let raw = FILES[..end].iter().map(|(_, s)| *s).collect::<Vec<_>>().join("\n");
+    let raw = assemble(FILES[..end].iter().map(|(_, s)| *s));
     preprocess(&raw, &uber_defines()).expect("the shipped WGSL preprocesses")
 }
 
 /// The renderer's WGSL as shipped, before preprocessing.
 pub fn raw_lighting_source() -> String {
-    FILES.iter().map(|(_, s)| *s).collect::<Vec<_>>().join("\n")
+    assemble(FILES.iter().map(|(_, s)| *s))
+}
+
+/// The counts and table sizes the WGSL shares with the model, as WGSL constants generated from
+/// the model's term tables: no file writes them, so a new D, G or F term cannot leave a stale
+/// copy behind.
+pub fn generated_constants() -> Vec<(&'static str, usize)> {
+    use shadelab_model::lighting::microfacet::{Distribution, Fresnel, Masking};
+    use shadelab_model::lighting::{environment::ENV_SPLIT_B_VEC4S, multiscatter};
+    use shadelab_model::params::NamedValue;
+    vec![
+        ("DISTRIBUTION_COUNT", Distribution::ALL.len()),
+        ("MASKING_COUNT", Masking::ALL.len()),
+        ("FRESNEL_COUNT", Fresnel::ALL.len()),
+        ("MS_PAIRS", multiscatter::MS_PAIRS),
+        ("MS_TABLE_SIDE", multiscatter::MS_TABLE_SIDE),
+        ("MS_TABLE_VEC4S", multiscatter::MS_TABLE_VEC4S),
+        ("ENV_SPLIT_B_VEC4S", ENV_SPLIT_B_VEC4S),
+    ]
+}
+
+/// The generated constants, then `files`, one after another.
+fn assemble<'a>(files: impl Iterator<Item = &'a str>) -> String {
+    let mut out = String::from("// Generated from the model's term tables (shaders.rs, generated_constants).\n");
+    for (name, value) in generated_constants() {
+        out += &format!("const {name}: u32 = {value}u;\n");
+    }
+    out + &files.collect::<Vec<_>>().join("\n")
 }
 
 /// The renderer module of one effect permutation: terms plus the shading entry points, holding
@@ -162,7 +190,7 @@ pub fn read_lighting_source(dir: &std::path::Path) -> std::io::Result<String> {
     for (name, _) in FILES {
         parts.push(std::fs::read_to_string(dir.join(name))?);
     }
-    Ok(parts.join("\n"))
+    Ok(assemble(parts.iter().map(String::as_str)))
 }
 
 /// The newest modification time among those files (to notice an edit).

@@ -287,8 +287,15 @@ fn wgsl_codes_equal_rust_codes() {
     {
         assert_eq!(wgsl_constant(&lighting, name), Some(*bit as f64), "{name}: WGSL vs textures::MAP_BITS");
     }
-    // The compensation's table: its shape, as multiscatter.rs lays it out.
+    // The compensation's table: its shape, as multiscatter.rs lays it out, generated into the
+    // WGSL and written by no shipped file (a hand-written copy could fall behind the tables).
     use shadelab_model::lighting::multiscatter::{MS_PAIRS, MS_TABLE_SIDE, MS_TABLE_VEC4S};
+    for (name, value) in crate::shaders::generated_constants() {
+        assert_eq!(wgsl_constant(&lighting, name), Some(value as f64), "{name}: the generated constant");
+        let written: Vec<&str> =
+            FILES.iter().filter(|(_, src)| wgsl_consts(src).iter().any(|(n, _)| n == name)).map(|f| f.0).collect();
+        assert!(written.is_empty(), "{name} is generated; {written:?} must not define it");
+    }
     assert_eq!(wgsl_constant(&lighting, "MS_TABLE_SIDE"), Some(MS_TABLE_SIDE as f64));
     assert_eq!(wgsl_constant(&lighting, "MS_PAIRS"), Some(MS_PAIRS as f64));
     assert_eq!(wgsl_constant(&lighting, "MS_TABLE_VEC4S"), Some(MS_TABLE_VEC4S as f64));

@@ -215,8 +215,9 @@ pub fn env_split_b_vec4s() -> [[f32; 4]; ENV_SPLIT_B_VEC4S] {
     out
 }
 
-/// vec4 slots of `globals.env_split_b`: the 6 pairs' 16 × 16 nodes.
-pub const ENV_SPLIT_B_VEC4S: usize = 384;
+/// vec4 slots of `globals.env_split_b` (WGSL `ENV_SPLIT_B_VEC4S`, generated): every D × G pair's
+/// nodes, four floats a slot, laid out as the E table.
+pub const ENV_SPLIT_B_VEC4S: usize = super::multiscatter::MS_TABLE_VEC4S;
 
 /// One node of the B table: pair `base`'s row j (m), column i (N·V).
 pub fn env_split_b_node(base: usize, j: usize, i: usize) -> f64 {

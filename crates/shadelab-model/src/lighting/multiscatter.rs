@@ -13,11 +13,12 @@ use std::sync::OnceLock;
 
 /// Nodes per side of each D × G pair's table: `N·V` and m each at `k/(side − 1)`.
 pub const MS_TABLE_SIDE: usize = 16;
-/// The D × G pairs, `d.code()·3 + g.code()` (WGSL `MS_PAIRS`).
-pub const MS_PAIRS: usize = 6;
-/// vec4 slots of `globals.ms_albedo` (WGSL `MS_TABLE_VEC4S`): the table's 1536 floats, padded to
-/// a size bytemuck's `Pod` covers.
-pub const MS_TABLE_VEC4S: usize = 512;
+/// The D × G pairs, `d.code()·MASKING_COUNT + g.code()`, from the term tables (the WGSL's
+/// `MS_PAIRS` is generated from it, `shaders::generated_constants`).
+pub const MS_PAIRS: usize = Distribution::ALL.len() * Masking::ALL.len();
+/// vec4 slots of `globals.ms_albedo` (WGSL `MS_TABLE_VEC4S`, generated): every pair's nodes, four
+/// floats a slot.
+pub const MS_TABLE_VEC4S: usize = (MS_PAIRS * MS_TABLE_SIDE * MS_TABLE_SIDE).div_ceil(4);
 /// Half vectors per side the table's integrals take (64² each: its error is under the
 /// interpolation's, docs/microfacet.md).
 pub const MS_TABLE_SAMPLES: usize = 64;

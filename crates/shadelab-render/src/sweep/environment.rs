@@ -13,6 +13,7 @@ use crate::gpu::Gpu;
 use glam::DVec3;
 use shadelab_model::lighting::environment::{self as env, SH_RINGING_BOUND, ShCoefficients};
 use shadelab_model::lighting::microfacet::{Distribution, Masking, Microfacet, fresnel_v_from_mu};
+use shadelab_model::lighting::multiscatter::MS_PAIRS;
 use shadelab_model::lighting::{common::safe_normalize, occlusion};
 use shadelab_model::params::NamedValue;
 use wgpu::util::DeviceExt;
@@ -55,7 +56,7 @@ const ENV_COLUMNS: [Column; 6] = [
         1.0,
         "a blend of bilinear lookups: at most the largest texel",
     ),
-    col("env_split_b (every D × G pair)", "SPLIT_B", 6, 1.0, "a share of the lobe's albedo, at most 1"),
+    col("env_split_b (every D × G pair)", "SPLIT_B", MS_PAIRS, 1.0, "a share of the lobe's albedo, at most 1"),
     col(
         "env_specular (the chapter's terms, glTF's)",
         "SPECULAR",
@@ -378,11 +379,13 @@ mod tests {
             ("LEVEL_SAMPLE", 3),
             ("PREFILTERED", 6),
             ("SPLIT_B", 9),
-            ("SPECULAR", 15),
-            ("OCCLUSION", 21),
+            ("SPECULAR", 9 + MS_PAIRS),
+            ("OCCLUSION", 15 + MS_PAIRS),
         ];
         assert_eq!(at, written);
-        assert_eq!(ENV_OUTPUTS, 22);
-        assert_eq!(pairs().count(), 6);
+        assert_eq!(ENV_OUTPUTS, 16 + MS_PAIRS);
+        // One B column per pair of the term tables.
+        assert_eq!(pairs().count(), Distribution::ALL.len() * Masking::ALL.len());
+        assert_eq!(pairs().count(), MS_PAIRS);
     }
 }

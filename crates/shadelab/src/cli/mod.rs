@@ -223,14 +223,14 @@ pub struct SceneArgs {
     /// the scene file's; a glTF file without shadelab's extras opens with gltf]
     #[arg(long, value_name = "SET", value_parser = values::named::<Microfacet>())]
     pub microfacet: Option<Microfacet>,
-    /// Every material's facet distribution D, after --microfacet: beckmann (the chapter's) or ggx
+    /// Every material's facet distribution D, after --microfacet (the chapter's: beckmann)
     #[arg(long, value_name = "D", value_parser = values::named::<Distribution>())]
     pub distribution: Option<Distribution>,
-    /// Every material's masking–shadowing G, after --microfacet: v-groove (the chapter's), smith
-    /// (separable) or smith-correlated (height-correlated)
+    /// Every material's masking–shadowing G, after --microfacet (the chapter's: v-groove; smith is
+    /// the separable form, smith-correlated the height-correlated one)
     #[arg(long, value_name = "G", value_parser = values::named::<Masking>())]
     pub masking: Option<Masking>,
-    /// Every material's Fresnel factor F, after --microfacet: exact (the chapter's) or schlick
+    /// Every material's Fresnel factor F, after --microfacet (the chapter's: exact)
     #[arg(long, value_name = "F", value_parser = values::named::<Fresnel>())]
     pub fresnel: Option<Fresnel>,
     /// Every material's Phong lobe scaled by (h + 1)/2, so that it reflects all it receives at

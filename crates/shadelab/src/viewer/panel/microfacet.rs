@@ -57,14 +57,9 @@ fn terms_ui(ui: &mut egui::Ui, materials: &mut [Material], selected: usize) {
     });
     let t = &mut materials[selected].microfacet;
     ui.horizontal_wrapped(|ui| {
-        term_menu::<Distribution>(ui, "D", "facet distribution: beckmann (the chapter's) or ggx", &mut t.d);
-        term_menu::<Masking>(
-            ui,
-            "G",
-            "masking–shadowing: v-groove (the chapter's), smith or smith-correlated",
-            &mut t.g,
-        );
-        term_menu::<Fresnel>(ui, "F", "Fresnel factor: exact (the chapter's) or schlick", &mut t.f);
+        term_menu::<Distribution>(ui, "D", "facet distribution (the chapter's: beckmann)", &mut t.d);
+        term_menu::<Masking>(ui, "G", "masking–shadowing (the chapter's: v-groove)", &mut t.g);
+        term_menu::<Fresnel>(ui, "F", "Fresnel factor (the chapter's: exact)", &mut t.f);
     });
     ui.checkbox(&mut t.multiple_scattering, "multiple scattering").on_hover_text(
         "the light single scattering loses between facets put back, 1 + F0·(1 − E)/E (docs/microfacet.md)",

@@ -13,14 +13,6 @@ fn diffuse_lambert(n_dot_l: f32) -> f32 {
     return max(n_dot_l, 0.0);
 }
 
-// docs/model.md §1: the Lambert rule I' = R·I·cos α + R·(1 − I); the chapter's garbled R(I − I) is read as
-// the ambient fill R(1 − I) (erratum, docs/model.md §1).
-fn lambert_rule(r_in: f32, i_in: f32, cos_alpha: f32) -> f32 {
-    let r = clamp(r_in, 0.0, 1.0);
-    let i = clamp(i_in, 0.0, 1.0);
-    return r * i * diffuse_lambert(cos_alpha) + r * (1.0 - i);
-}
-
 // docs/model.md §3: Phong specular (V·R)^h, evaluated as exp2(h·log2(V·R)) with the argument of
 // log2 at least PHONG_LOG2_ARG_MIN; `mirror` is h = ∞ (guard MIRROR_V_DOT_R_MIN), otherwise h is
 // clamped to [1, H_MAX].

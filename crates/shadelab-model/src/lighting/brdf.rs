@@ -50,6 +50,7 @@ pub fn diffuse_lambert(n_dot_l: f64) -> f64 {
 
 /// docs/model.md §1: the chapter's Lambert rule `I' = R·I·cos α + R·(1 − I)`, with the printed text's
 /// garbled second term `R(I − I)` read as the ambient fill `R(1 − I)` (erratum, docs/model.md §1).
+/// The tests' whole-rule oracle: the WGSL and the sum use its two parts (`models.rs`).
 #[cfg(test)]
 pub(crate) fn lambert_rule(r: f64, i: f64, cos_alpha: f64) -> f64 {
     let r = r.clamp(0.0, 1.0);

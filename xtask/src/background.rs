@@ -10,6 +10,7 @@ use std::fs::File;
 use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
+use std::sync::mpsc::Receiver;
 use std::thread::JoinHandle;
 use std::time::Instant;
 
@@ -45,29 +46,39 @@ pub fn niced(cmd: &Command, note: &str) -> Option<Command> {
     })
 }
 
-/// What the background built: the site's and the fuzz targets' outcome, and its steps' times.
-pub struct Prepared {
-    pub site: Result<(), String>,
-    pub fuzz_targets: Result<(), String>,
-    pub timings: Timings,
+/// The background's work: the site's outcome as soon as it is built (the browser tests need
+/// nothing more), then the whole thread's with the fuzz targets'.
+pub struct Background {
+    pub site: Receiver<Result<(), String>>,
+    pub rest: JoinHandle<Prepared>,
     pub log: PathBuf,
 }
 
-/// Start building the site into `site` (with its node tools in `node_dir`) and the fuzz targets.
-pub fn start(site: PathBuf, node_dir: PathBuf, since: Instant) -> JoinHandle<Prepared> {
+/// What the background built besides the site: the fuzz targets' outcome, and its steps' times.
+pub struct Prepared {
+    pub fuzz_targets: Result<(), String>,
+    pub timings: Timings,
+}
+
+/// Start building the site into `site` (with its node tools in `node_dir`), then the fuzz targets.
+pub fn start(site: PathBuf, node_dir: PathBuf, since: Instant) -> Background {
     let log = crate::web::root().join("target/xtask-background.log");
-    std::thread::spawn(move || {
+    let (send, receive) = std::sync::mpsc::channel();
+    let log_path = log.clone();
+    let rest = std::thread::spawn(move || {
         let _ = std::fs::create_dir_all(log.parent().unwrap());
         if let Ok(file) = File::create(&log) {
             LOG.with(|l| *l.borrow_mut() = Some(file));
         }
         let mut timings = Timings::starting_at(since);
-        let site = timings.step("(background) browser tools and web build", |_| {
+        let built = timings.step("(background) browser tools and web build", |_| {
             crate::web_test::ensure_browser_tools(&node_dir).and_then(|()| crate::web::build_site(&site))
         });
+        let _ = send.send(built);
         let fuzz_targets = timings.step("(background) fuzz targets: build", |_| crate::fuzz::build());
-        Prepared { site, fuzz_targets, timings, log }
-    })
+        Prepared { fuzz_targets, timings }
+    });
+    Background { site: receive, rest, log: log_path }
 }
 
 /// The log's last `lines` lines, to show with a failure.

@@ -160,20 +160,22 @@ fn test(extra: &[String]) -> ExitCode {
     let tests_ok = timings.step(&label, |t| suite::run(&binaries, test_args, &env, &mut count, t));
     let smoke = timings.step("viewer under Xvfb", |_| viewer_smoke_test(&icd, &xdg));
     count.check("viewer smoke test under Xvfb", smoke);
-    let prepared = timings.step("wait for the background's builds", |_| background.join());
-    let prepared = match prepared {
-        Ok(p) => p,
-        Err(_) => {
-            count.check("the background's builds", Err("its thread panicked".into()));
-            return summary(&timings, &count, false);
-        }
-    };
+    let log = background.log.clone();
     let with_log = |r: Result<(), String>| {
-        r.map_err(|e| format!("{e}; the end of {}:\n{}", prepared.log.display(), background::tail(&prepared.log, 30)))
+        r.map_err(|e| format!("{e}; the end of {}:\n{}", log.display(), background::tail(&log, 30)))
     };
-    let (site_built, fuzz_built) = (with_log(prepared.site.clone()), with_log(prepared.fuzz_targets.clone()));
-    timings.merge(prepared.timings);
+    // The browser tests start once the site is built; the fuzz targets go on building meanwhile.
+    let site_built = timings.step("wait for the web build", |_| background.site.recv());
+    let site_built = with_log(site_built.unwrap_or_else(|_| Err("the background's thread stopped".into())));
     web_test::browser_tests(&icd, &site, site_built, &mut count, &mut timings);
+    let prepared = timings.step("wait for the fuzz targets' build", |_| background.rest.join());
+    let fuzz_built = match prepared {
+        Ok(p) => {
+            timings.merge(p.timings);
+            with_log(p.fuzz_targets)
+        }
+        Err(_) => Err("the background's thread panicked".into()),
+    };
     let fuzzing = format!("every fuzz target for {} s on its seeds", fuzz::CI_SECONDS);
     let fuzzed = fuzz_built.and_then(|()| timings.step("fuzz targets: run", |_| fuzz::run_targets(fuzz::CI_SECONDS)));
     count.check(&fuzzing, fuzzed);

@@ -255,7 +255,7 @@ pub fn shadow_projection(light: &Light, centre: DVec3, radius: f64, resolution: 
             let d = (centre - light.position).length();
             let far = if (d + radius).is_finite() { (d + radius).max(SHADOW_BOUNDS_RADIUS_MIN) } else { radius };
             let near = (d - radius).max(far * SHADOW_NEAR_OVER_FAR_MIN);
-            if light.kind == LightKind::Spot {
+            if light.kind.has_cone() {
                 let axis = light.spot_axis();
                 let half = light.outer_cone.clamp(1e-3, SPOT_SHADOW_HALF_ANGLE_MAX);
                 let view = DMat4::look_to_rh(light.position, axis, up_for(axis));
@@ -293,7 +293,7 @@ pub fn light_layers(scene: &Scene, light: &Light) -> u32 {
 /// [`cascade_count`] for this view when it holds cascades, otherwise all of [`light_layers`].
 pub fn drawn_layers(scene: &Scene, light: &Light) -> u32 {
     let layers = light_layers(scene, light);
-    if light.kind == LightKind::Directional && layers > 1 { cascade_count(scene).min(layers) } else { layers }
+    if light.kind.is_directional() && layers > 1 { cascade_count(scene).min(layers) } else { layers }
 }
 
 /// How many shadow cubes each light slot of `scene` gets (the first `MAX_LIGHTS`): 0 for a light

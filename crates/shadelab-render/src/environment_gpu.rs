@@ -102,7 +102,7 @@ pub(crate) fn background_pipeline(
 /// The direction of the light a sky follows (the first directional light's), part of the key of
 /// what the frame keeps of an environment.
 fn env_sun(scene: &Scene) -> Option<glam::DVec3> {
-    scene.lights.iter().find(|l| l.kind == shadelab_model::LightKind::Directional).map(|l| l.direction)
+    scene.lights.iter().find(|l| l.kind.is_directional()).map(|l| l.direction)
 }
 
 /// What the occlusion grid is baked from: each object's shape and transform, and the meshes.

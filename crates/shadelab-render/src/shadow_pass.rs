@@ -24,7 +24,7 @@ use shadelab_model::shadows::{
     SHADOW_SLOPE_BIAS, SHADOW_TEXEL_BYTES, cascade_projection, drawn_layers, light_layers, scene_bounds, shadow_cubes,
     shadow_projection,
 };
-use shadelab_model::{Light, LightKind, Scene};
+use shadelab_model::{Light, Scene};
 
 /// Where one light's map lies in the array.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -233,7 +233,7 @@ pub fn shadows_uniform(scene: &Scene, plan: &ShadowPlan, aspect: f64) -> Shadows
     for ((slot, light), map) in u.lights.iter_mut().zip(&scene.lights).zip(&plan.lights) {
         let Some(map) = map else { continue };
         // A directional light's cascades this frame: as many of its layers as the view needs.
-        let cascades = if light.kind == LightKind::Directional { drawn_layers(scene, light) } else { 1 };
+        let cascades = if light.kind.is_directional() { drawn_layers(scene, light) } else { 1 };
         // One projection per cube (an area light drawn as points has one per point source, each
         // from where it sits); the others have one map, from the light itself.
         let project = |at: &Light| {
@@ -260,7 +260,7 @@ pub fn shadows_uniform(scene: &Scene, plan: &ShadowPlan, aspect: f64) -> Shadows
         *slot = ShadowLightUniform {
             first_layer: map.first_layer,
             // The layers drawn this frame (a directional light's cascade count is a runtime value).
-            layers: if light.kind == LightKind::Directional { cascades } else { map.layers },
+            layers: if light.kind.is_directional() { cascades } else { map.layers },
             shadow_filter: light.drawn_shadow_filter().code(),
             perspective: p.perspective as u32,
             texel_world: p.texel_world as f32,
@@ -478,6 +478,7 @@ impl Renderer {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use shadelab_model::LightKind;
     use crate::{Gpu, RenderSettings, render_image};
     use glam::DVec3;
     use shadelab_model::shadows::ShadowFilter;

@@ -6,7 +6,7 @@
 use super::EffectKey;
 use super::declared::Effect;
 use crate::params::NamedValue;
-use crate::params::{FalloffForm, IlluminationModel, LightKind, SpecularModel};
+use crate::params::{FalloffForm, IlluminationModel, SpecularModel};
 use crate::scene::Scene;
 use crate::shadows::ShadowFilter;
 
@@ -50,7 +50,7 @@ pub fn analyze(scene: &Scene, specular: SpecularModel) -> Analysis {
     let used: Vec<&crate::scene::Material> = scene.objects.iter().filter_map(|o| mats.get(o.material)).collect();
     let lights = &scene.lights[..scene.lights.len().min(crate::scene::MAX_LIGHTS)];
     // Point and spot lights: both have a position, a distance and a falloff.
-    let points: Vec<_> = lights.iter().filter(|l| l.kind != LightKind::Directional).collect();
+    let points: Vec<_> = lights.iter().filter(|l| !l.kind.is_directional()).collect();
     let lit = !lights.is_empty();
     // The groups in the order the explanation lists them.
     decide_light_kinds(&mut a, lights, &points);
@@ -66,8 +66,8 @@ pub fn analyze(scene: &Scene, specular: SpecularModel) -> Analysis {
 
 /// The lights' kinds: directional, point (spots among them) and spot.
 fn decide_light_kinds(a: &mut Analysis, lights: &[crate::scene::Light], points: &[&crate::scene::Light]) {
-    let n_dir = lights.iter().filter(|l| l.kind == LightKind::Directional).count();
-    let n_spot = points.iter().filter(|l| l.kind == LightKind::Spot).count();
+    let n_dir = lights.iter().filter(|l| l.kind.is_directional()).count();
+    let n_spot = points.iter().filter(|l| l.kind.has_cone()).count();
     a.decide(Effect::DirectionalLights, n_dir > 0, format!("{n_dir} in the scene"));
     a.decide(
         Effect::PointLights,
@@ -374,7 +374,7 @@ fn shadow_filter(lights: &[crate::scene::Light], shadows: bool, filter: ShadowFi
 /// program or the maps.
 fn shadow_cascades(scene: &Scene, lights: &[crate::scene::Light], shadows: bool) -> (bool, String) {
     use crate::shadows::{SHADOW_CASCADE_DEPTH_RATIO, SHADOW_CASCADES_MAX};
-    let directional = |l: &&crate::scene::Light| l.kind == LightKind::Directional && l.shadow.casts;
+    let directional = |l: &&crate::scene::Light| l.kind.is_directional() && l.shadow.casts;
     if !shadows {
         return (false, "no cast shadows".into());
     }
@@ -399,6 +399,7 @@ fn shadow_cascades(scene: &Scene, lights: &[crate::scene::Light], shadows: bool)
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::LightKind;
     use crate::scene::Light;
     use glam::DVec3;
 

@@ -135,7 +135,8 @@ pub fn draw_small_area_lights_as_points(scene: &mut Scene, height: u32) -> Vec<S
         let Some(b) = bounds_of(scene, &boxes, light, height).filter(SmallAreaLight::is_small) else { continue };
         let size = match light.kind {
             LightKind::Rect => format!("{} × {} m", light.size[0], light.size[1]),
-            _ => format!("{} m across", light.size[0]),
+            LightKind::Disk | LightKind::Sphere => format!("{} m across", light.size[0]),
+            LightKind::Directional | LightKind::Point | LightKind::Spot => continue,
         };
         lines.push(format!(
             "{} light L{}: {size} at {:.3} m, penumbra ≤ {:.2} px, highlight ≤ {:.2} px, r/d {:.2e}: drawn as a point light",

@@ -133,7 +133,7 @@ impl Reader<'_> {
             _ => (0.0, crate::scene::SPOT_OUTER_CONE_DEFAULT),
         };
         let range = match l.range {
-            Some(r) if kind == LightKind::Directional => {
+            Some(r) if kind.is_directional() => {
                 self.cx.warn(format!("{what}: range {r} ignored: a directional light has no distance"));
                 None
             }
@@ -149,7 +149,7 @@ impl Reader<'_> {
             color,
             intensity: i_l,
             falloff_form: FalloffForm::Quadratic,
-            falloff_alpha: if kind == LightKind::Directional { 0.0 } else { POINT_FALLOFF_ALPHA },
+            falloff_alpha: if kind.is_directional() { 0.0 } else { POINT_FALLOFF_ALPHA },
             d0: 1.0,
             inner_cone,
             outer_cone,
@@ -172,7 +172,7 @@ impl Reader<'_> {
         file_filter: bool,
     ) {
         match ex.area.as_ref().map(|a| a.0) {
-            Some(area) if area.is_area() && kind != LightKind::Directional => {
+            Some(area) if area.is_area() && !kind.is_directional() => {
                 light.kind = area;
                 // The file's spot cone stands in for a flat light's face; the light has none.
                 light.inner_cone = 0.0;
@@ -210,7 +210,7 @@ impl Reader<'_> {
         // glTF's f32 π/2 is a little above f64's: the cones are held to [0, π/2] after the check.
         let (inner, outer) = (light.inner_cone, light.outer_cone);
         let span = params::CONE_ANGLE_F32;
-        if kind == LightKind::Spot && !(span.min <= inner && inner < outer && outer <= span.max) {
+        if kind.has_cone() && !(span.min <= inner && inner < outer && outer <= span.max) {
             return Err(self.cx.invalid(format!(
                 "{what}: spot cone angles inner {}, outer {} must be 0 ≤ inner < outer ≤ π/2 (radians)",
                 // As the file wrote them (f32), not widened to f64's digits.
@@ -280,18 +280,15 @@ pub(super) fn write_light(i: usize, l: &Light) -> (Value, Value) {
         LightKind::Point | LightKind::Spot | LightKind::Rect | LightKind::Disk | LightKind::Sphere => {
             // Other viewers see a sphere light as a point light, a flat one as a spot lighting
             // the half-space in front of it.
-            let kind = match l.kind {
-                LightKind::Point | LightKind::Sphere => "point",
-                _ => "spot",
-            };
+            let kind = if l.kind.emits_all_round() { "point" } else { "spot" };
             let far =
                 if l.falloff_form == FalloffForm::Quadratic && l.falloff_alpha > 0.0 { l.falloff_alpha } else { 1.0 };
             (kind, l.intensity * pi / far)
         }
     };
-    let spot = l.kind == LightKind::Spot;
+    let spot = l.kind.has_cone();
     let area = l.kind.is_area();
-    let range = l.range.filter(|_| l.kind != LightKind::Directional);
+    let range = l.range.filter(|_| !l.kind.is_directional());
     let ex = LightExtras {
         intensity: Some(l.intensity.into()),
         color: Some(l.color.into()),

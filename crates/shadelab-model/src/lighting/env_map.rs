@@ -214,7 +214,7 @@ impl Environment {
                 let toward = sun.unwrap_or_else(|| {
                     lights
                         .iter()
-                        .find(|l| l.kind == super::lights::LightKind::Directional)
+                        .find(|l| l.kind.is_directional())
                         .map_or(DVec3::Y, |l| -l.direction)
                 });
                 // The sky turns with the rest of the environment; the sun given in world axes.

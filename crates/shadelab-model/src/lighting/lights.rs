@@ -40,9 +40,64 @@ impl LightKind {
         }
     }
 
+    // What a kind is, each decided here by an exhaustive match: code elsewhere asks these
+    // rather than comparing kinds, so a new kind is named by the compiler in this one place.
+
     /// A light with an area: rectangle, disk or sphere.
     pub fn is_area(self) -> bool {
-        matches!(self, LightKind::Rect | LightKind::Disk | LightKind::Sphere)
+        use LightKind::*;
+        match self {
+            Rect | Disk | Sphere => true,
+            Directional | Point | Spot => false,
+        }
+    }
+
+    /// Light from one direction at infinity: no position, no falloff, cascaded shadow maps.
+    pub fn is_directional(self) -> bool {
+        use LightKind::*;
+        match self {
+            Directional => true,
+            Point | Spot | Rect | Disk | Sphere => false,
+        }
+    }
+
+    /// Lights only inside its cone (glTF's spot light).
+    pub fn has_cone(self) -> bool {
+        use LightKind::*;
+        match self {
+            Spot => true,
+            Directional | Point | Rect | Disk | Sphere => false,
+        }
+    }
+
+    /// Emits alike all round its position: no direction, axis or normal to set.
+    pub fn emits_all_round(self) -> bool {
+        use LightKind::*;
+        match self {
+            Point | Sphere => true,
+            Directional | Spot | Rect | Disk => false,
+        }
+    }
+
+    /// The name of its `direction` field where it has one: the way the light travels, a spot's
+    /// axis or an emitting face's normal.
+    pub fn direction_name(self) -> Option<&'static str> {
+        use LightKind::*;
+        match self {
+            Directional => Some("direction"),
+            Spot => Some("axis"),
+            Rect | Disk => Some("normal"),
+            Point | Sphere => None,
+        }
+    }
+
+    /// Its shadow map is a cube round its position (six faces), not one projection.
+    pub fn has_cube_map(self) -> bool {
+        use LightKind::*;
+        match self {
+            Point | Rect | Disk | Sphere => true,
+            Directional | Spot => false,
+        }
     }
 }
 
@@ -272,7 +327,7 @@ impl Light {
             LightKind::Rect => AreaShape::Rect { half_x: half(0), half_y: half(1) },
             LightKind::Disk => AreaShape::Disk { radius: half(0) },
             LightKind::Sphere => AreaShape::Sphere { radius: half(0) },
-            _ => return None,
+            LightKind::Directional | LightKind::Point | LightKind::Spot => return None,
         };
         let normal = self.spot_axis();
         Some(AreaLight { shape, center: self.position, normal, tangent: self.area_tangent() })
@@ -399,7 +454,7 @@ pub struct LightSample {
 /// representative point.
 pub fn light_sample(light: &Light, p: DVec3, n: DVec3, v: DVec3, m: f64) -> LightSample {
     let radiance = light.radiance();
-    if light.kind == LightKind::Directional {
+    if light.kind.is_directional() {
         let l = safe_normalize(-light.direction, n);
         return LightSample { l, radiance, form: n.dot(l), spec_scale: 1.0 };
     }
@@ -413,7 +468,7 @@ pub fn light_sample(light: &Light, p: DVec3, n: DVec3, v: DVec3, m: f64) -> Ligh
     if let Some(range) = light.range {
         f *= window_range(d, range);
     }
-    if light.kind == LightKind::Spot {
+    if light.kind.has_cone() {
         let (cos_inner, cos_outer) = light.cone_cosines();
         f *= spot_cone((-l).dot(light.spot_axis()), cos_inner, cos_outer);
     }

@@ -173,7 +173,7 @@ pub fn mark_pareto(rows: &mut [Row]) {
 /// Whether the scene's view gives its directional lights cascades (then the one-map rows are
 /// measured beside them).
 fn has_cascades(scene: &Scene) -> bool {
-    scene.lights.iter().any(|l| l.kind == shadelab_model::LightKind::Directional)
+    scene.lights.iter().any(|l| l.kind.is_directional())
         && shadelab_model::shadows::cascade_count(scene) > 1
 }
 

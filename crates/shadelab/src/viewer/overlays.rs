@@ -8,7 +8,7 @@ use eframe::egui::{self, Color32, Rect, pos2, vec2};
 use glam::DVec3;
 use shadelab_model::params::NamedValue;
 use shadelab_model::terminator::SceneEdges;
-use shadelab_model::{Light, LightKind, Object, Scene};
+use shadelab_model::{Light, Object, Scene};
 use shadelab_render::image_error::ShadowPixel;
 use shadelab_render::overlay_pass::{CREASES_COLOR, NORMALS_COLOR, OverlayPass, TERMINATOR_COLOR};
 use shadelab_render::{Renderer, Target};
@@ -38,9 +38,10 @@ pub(super) fn light_markers(
     }
     let vp = scene.camera.projection(w as f64 / h as f64) * scene.camera.view();
     for (i, l) in scene.lights.iter().enumerate() {
-        let p = match l.kind {
-            LightKind::Directional => orbit_target - l.direction * DIRECTIONAL_MARKER_DISTANCE,
-            _ => l.position,
+        let p = if l.kind.is_directional() {
+            orbit_target - l.direction * DIRECTIONAL_MARKER_DISTANCE
+        } else {
+            l.position
         };
         let clip = vp * p.extend(1.0);
         // Behind the eye the projection flips: divide by |w| so the marker keeps its side.
@@ -60,10 +61,7 @@ pub(super) fn light_markers(
         } else {
             painter.circle_stroke(at, MARKER_RADIUS, egui::Stroke::new(2.5, color));
         }
-        let kind = match l.kind {
-            LightKind::Directional => "dir.",
-            k => k.name(),
-        };
+        let kind = if l.kind.is_directional() { "dir." } else { l.kind.name() };
         let label = format!("L{} {kind}{}", i + 1, if on_view { "" } else { " (off view)" });
         let right_half = at.x > rect.center().x;
         let (align, offset) = if right_half {

@@ -30,7 +30,7 @@ struct MapKey {
 /// The camera a light's map depends on: the view, for a directional light that may use cascades.
 fn camera_for(scene: &Scene, light: usize) -> Option<shadelab_model::Camera> {
     let l = scene.lights.get(light)?;
-    (l.kind == shadelab_model::LightKind::Directional && l.shadow.cascades).then_some(scene.camera)
+    (l.kind.is_directional() && l.shadow.cascades).then_some(scene.camera)
 }
 
 impl MapKey {

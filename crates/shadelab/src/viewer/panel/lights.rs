@@ -45,16 +45,11 @@ impl Viewer {
 /// range, spot cones, shadow settings and map. True when its "remove" button was clicked.
 fn light_ui(ui: &mut egui::Ui, i: usize, l: &mut Light, layers: u32, maps: &mut ShadowMapViews) -> bool {
     let removed = light_kind_row(ui, l);
-    let positional = l.kind != LightKind::Directional;
+    let positional = !l.kind.is_directional();
     if positional {
         vec3_row(ui, "position", &mut l.position);
     }
-    if !matches!(l.kind, LightKind::Point | LightKind::Sphere) {
-        let name = match l.kind {
-            LightKind::Directional => "direction",
-            LightKind::Spot => "axis",
-            _ => "normal",
-        };
+    if let Some(name) = l.kind.direction_name() {
         vec3_row(ui, name, &mut l.direction);
         l.direction = l.direction.normalize_or(DVec3::NEG_Y);
     }
@@ -71,10 +66,10 @@ fn light_ui(ui: &mut egui::Ui, i: usize, l: &mut Light, layers: u32, maps: &mut 
     if positional {
         falloff_ui(ui, l);
     }
-    if l.kind == LightKind::Spot {
+    if l.kind.has_cone() {
         spot_cone_ui(ui, l);
     }
-    shadow_ui(ui, i, l.kind == LightKind::Directional, &mut l.shadow);
+    shadow_ui(ui, i, l.kind.is_directional(), &mut l.shadow);
     shadow_map_ui(ui, i, l.kind, layers, maps);
     removed
 }
@@ -88,11 +83,11 @@ fn light_kind_row(ui: &mut egui::Ui, l: &mut Light) -> bool {
         for (name, k) in LightKind::ALL {
             let choice = ui.selectable_value(&mut kind, *k, *name);
             let meaning = match k {
+                LightKind::Directional | LightKind::Point => None,
                 LightKind::Spot => Some("a point light that lights only a cone (glTF's spot light)"),
                 LightKind::Rect => Some("a rectangle emitting from its front face: soft shadows"),
                 LightKind::Disk => Some("a disk emitting from its front face: soft shadows"),
                 LightKind::Sphere => Some("a sphere emitting all round: soft shadows"),
-                _ => None,
             };
             if let Some(m) = meaning {
                 choice.on_hover_text(m);
@@ -109,7 +104,12 @@ fn light_kind_row(ui: &mut egui::Ui, l: &mut Light) -> bool {
 /// An area light's size and how many point sources draw it.
 fn area_light_ui(ui: &mut egui::Ui, l: &mut Light) {
     // A rectangle has a width and a height; a disk or sphere one diameter.
-    let (w, h) = if l.kind == LightKind::Rect { ("width m", Some("height m")) } else { ("diameter m", None) };
+    let (w, h) = match l.kind {
+        LightKind::Rect => ("width m", Some("height m")),
+        LightKind::Disk | LightKind::Sphere | LightKind::Directional | LightKind::Point | LightKind::Spot => {
+            ("diameter m", None)
+        }
+    };
     ui.add(
         egui::Slider::new(&mut l.size[0], params::LIGHT_SIZE.min..=params::LIGHT_SIZE.max).logarithmic(true).text(w),
     )
@@ -224,7 +224,7 @@ fn shadow_map_ui(ui: &mut egui::Ui, light: usize, kind: LightKind, layers: u32, 
             .on_hover_text("the depth the light sees, as grey: near black, far light grey, nothing drawn white");
         maps.set(light, on);
         if let Some(view) = maps.view_mut(light)
-            && (kind == LightKind::Point || kind.is_area())
+            && kind.has_cube_map()
         {
             egui::ComboBox::from_id_salt(("shadow map face", light))
                 .selected_text(CUBE_FACES[view.face.min(5) as usize])

@@ -60,7 +60,8 @@ const GLASS: [Effect; 3] = [Effect::Transmission, Effect::Refraction, Effect::Ab
 
 /// The microfacet terms (microfacet.wgsl): reached only through Cook–Torrance's specular, so
 /// their subsets are validated on a few bases.
-const MICROFACET: [Effect; 7] = shadelab_model::effects::MICROFACET_EFFECTS;
+const MICROFACET: [Effect; shadelab_model::effects::MICROFACET_EFFECTS.len()] =
+    shadelab_model::effects::MICROFACET_EFFECTS;
 
 /// Phong's normalization: one factor inside Phong specular's branch, validated on a few bases
 /// rather than doubling the product of the rest.

@@ -1,5 +1,5 @@
 //! `shadelab bench microfacet`: what each Cook–Torrance term costs against what it changes
-//! (docs/microfacet.md). The default scene drawn with each of the 12 combinations of D, G and F,
+//! (docs/microfacet.md). The default scene drawn with each combination of D, G and F,
 //! and with glTF's whole set (its terms and the Fresnel-weighted diffuse), timed side by side against the null shader; each combination's f64 reference against the
 //! chapter's (a different model, not an error) and the GPU against its own reference (the
 //! error); maps of where one term's change lies; and Schlick's F against the exact factor per μ,

@@ -167,7 +167,7 @@ pub enum BenchCommand {
     /// its error beside the time it saves. Writes a Markdown report, CSVs and error maps.
     Glass(BenchGlassArgs),
     /// What each Cook–Torrance term costs against what it changes: the default scene with each
-    /// of the 12 combinations of D, G and F and with glTF's whole set, timed side by side against
+    /// of the combinations of D, G and F and with glTF's whole set, timed side by side against
     /// the null shader; each combination's f64 reference against the chapter's and the GPU
     /// against its own; maps of where a term's change lies; Schlick's F against the exact factor
     /// per μ. Writes a Markdown report, CSVs and the maps.

@@ -1,6 +1,6 @@
 //! `shadelab bench environment`: what each approximation of the environment light costs against
 //! the path-traced truth (docs/environment.md). The rungs, each as the f64 twin of what it draws
-//! (the GPU matches its twin to about 1e-5, `tests/tests/environment.rs`): the constant `I_a` of
+//! (the GPU matches its twin to about 1e-5, `tests/tests/gpu/environment.rs`): the constant `I_a` of
 //! the environment's mean radiance, the nine SH terms (diffuse), the nine terms with the split
 //! sum's specular, those with the diffuse occluded by the precomputed grid (its bake timed on
 //! the CPU), and, for comparison, by per-pixel ambient occlusion traced in f64; each GPU rung

@@ -128,7 +128,14 @@ fn test(extra: &[String]) -> ExitCode {
         None => (extra, &[][..]),
     };
     let mut timings = suite::Timings::default();
-    let installed = timings.step("system packages", |_| ensure_system_packages().and_then(|()| ensure_lavapipe()));
+    // A package that did not install fails only the steps that need it (each checks its own
+    // tools again); without lavapipe nothing can run.
+    let installed = timings.step("system packages", |_| {
+        if let Err(msg) = ensure_system_packages() {
+            eprintln!("xtask: {msg}");
+        }
+        ensure_lavapipe()
+    });
     let icd = match installed {
         Ok(icd) => icd,
         Err(msg) => {

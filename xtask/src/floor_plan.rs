@@ -33,7 +33,8 @@ pub fn sections(doc: &str) -> Vec<Section> {
     let mut out = Vec::new();
     for (i, line) in lines.iter().enumerate() {
         let Some(lv) = level(line) else { continue };
-        let end = lines[i + 1..].iter().position(|l| level(l).is_some_and(|m| m <= lv)).map_or(lines.len(), |p| i + 1 + p);
+        let end =
+            lines[i + 1..].iter().position(|l| level(l).is_some_and(|m| m <= lv)).map_or(lines.len(), |p| i + 1 + p);
         let root = backticked(line).into_iter().find(|t| t.ends_with('/'));
         out.push(Section { root, text: lines[i..end].join("\n") });
     }
@@ -112,11 +113,18 @@ mod tests {
         std::fs::create_dir_all(dir.join("shaders")).unwrap();
         std::fs::write(dir.join("shaders/a.wgsl"), "").unwrap();
         std::fs::write(dir.join("shaders/b.wgsl"), "").unwrap();
-        let doc = "# Plan\n\n## Shaders (`shaders/`)\n\n### Terms\n\n- `a.wgsl`\n- `gone.wgsl`\n\n## Other\n\n`b.wgsl`\n";
+        let doc =
+            "# Plan\n\n## Shaders (`shaders/`)\n\n### Terms\n\n- `a.wgsl`\n- `gone.wgsl`\n\n## Other\n\n`b.wgsl`\n";
         let found = problems(doc, &dir);
         let _ = std::fs::remove_dir_all(&dir);
-        assert!(found.contains(&"`shaders/b.wgsl` is not listed in the section of `shaders/`".to_string()), "{found:?}");
-        assert!(found.contains(&"the section of `shaders/` names `gone.wgsl`, which is not a file".to_string()), "{found:?}");
+        assert!(
+            found.contains(&"`shaders/b.wgsl` is not listed in the section of `shaders/`".to_string()),
+            "{found:?}"
+        );
+        assert!(
+            found.contains(&"the section of `shaders/` names `gone.wgsl`, which is not a file".to_string()),
+            "{found:?}"
+        );
         assert!(!found.iter().any(|p| p.contains("a.wgsl")), "a listed file is fine: {found:?}");
         assert!(found.iter().any(|p| p.starts_with("`xtask/src/` has 0 sections")), "{found:?}");
     }

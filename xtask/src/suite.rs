@@ -24,7 +24,11 @@ pub struct TestBinary {
 impl TestBinary {
     /// The name the summary gives it: `package` for a library's unit tests, else `package/target`.
     pub fn label(&self) -> String {
-        if self.package.replace('-', "_") == self.target { self.package.clone() } else { format!("{}/{}", self.package, self.target) }
+        if self.package.replace('-', "_") == self.target {
+            self.package.clone()
+        } else {
+            format!("{}/{}", self.package, self.target)
+        }
     }
 }
 
@@ -83,7 +87,12 @@ impl Timings {
         let mut lines = vec!["xtask: steps (start, time)".to_string()];
         let width = self.steps.iter().map(|s| s.name.chars().count()).max().unwrap_or(0);
         for s in &self.steps {
-            lines.push(format!("  {:<width$}  {:>7.1} s  {:>7.1} s", s.name, s.start.as_secs_f64(), s.took.as_secs_f64()));
+            lines.push(format!(
+                "  {:<width$}  {:>7.1} s  {:>7.1} s",
+                s.name,
+                s.start.as_secs_f64(),
+                s.took.as_secs_f64()
+            ));
         }
         let total = self.steps.iter().map(|s| s.start + s.took).max().unwrap_or_default().as_secs_f64();
         lines.push(format!("  {:<width$}  {:>7.1} s  {total:>7.1} s", "the whole run", 0.0));

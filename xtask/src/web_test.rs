@@ -3,8 +3,8 @@
 //! native renderer. Chromium, Node.js and playwright-core are installed when missing (Debian/Ubuntu
 //! as root; otherwise the commands are printed).
 
-use crate::web::{build_site, root, serve};
 use crate::suite::Timings;
+use crate::web::{build_site, root, serve};
 use crate::{Count, apt_install, run, run_counting};
 use std::path::Path;
 use std::process::Command;

@@ -478,9 +478,9 @@ impl Renderer {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use shadelab_model::LightKind;
     use crate::{Gpu, RenderSettings, render_image};
     use glam::DVec3;
+    use shadelab_model::LightKind;
     use shadelab_model::shadows::ShadowFilter;
     use shadelab_model::{Light, ShadingMode, Shape, SpecularModel};
 

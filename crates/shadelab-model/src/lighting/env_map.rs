@@ -212,10 +212,7 @@ impl Environment {
             EnvSource::Uniform(c) => Radiance::Uniform(c.map(|x| x.max(0.0) * scale)),
             EnvSource::Sky { turbidity, sun } => {
                 let toward = sun.unwrap_or_else(|| {
-                    lights
-                        .iter()
-                        .find(|l| l.kind.is_directional())
-                        .map_or(DVec3::Y, |l| -l.direction)
+                    lights.iter().find(|l| l.kind.is_directional()).map_or(DVec3::Y, |l| -l.direction)
                 });
                 // The sky turns with the rest of the environment; the sun given in world axes.
                 Radiance::Sky(Sky::new(*turbidity, turn_y(toward, -turn)), scale)

@@ -173,8 +173,7 @@ pub fn mark_pareto(rows: &mut [Row]) {
 /// Whether the scene's view gives its directional lights cascades (then the one-map rows are
 /// measured beside them).
 fn has_cascades(scene: &Scene) -> bool {
-    scene.lights.iter().any(|l| l.kind.is_directional())
-        && shadelab_model::shadows::cascade_count(scene) > 1
+    scene.lights.iter().any(|l| l.kind.is_directional()) && shadelab_model::shadows::cascade_count(scene) > 1
 }
 
 /// Measure `scene` at `size` for every resolution × filter, shadows off and the baseline.

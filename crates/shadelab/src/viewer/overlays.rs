@@ -38,11 +38,8 @@ pub(super) fn light_markers(
     }
     let vp = scene.camera.projection(w as f64 / h as f64) * scene.camera.view();
     for (i, l) in scene.lights.iter().enumerate() {
-        let p = if l.kind.is_directional() {
-            orbit_target - l.direction * DIRECTIONAL_MARKER_DISTANCE
-        } else {
-            l.position
-        };
+        let p =
+            if l.kind.is_directional() { orbit_target - l.direction * DIRECTIONAL_MARKER_DISTANCE } else { l.position };
         let clip = vp * p.extend(1.0);
         // Behind the eye the projection flips: divide by |w| so the marker keeps its side.
         let (x, y) = (clip.x / clip.w.abs().max(CLIP_W_MIN), clip.y / clip.w.abs().max(CLIP_W_MIN));

@@ -7,7 +7,6 @@ use crate::common;
 use crate::common::{error_lines, out_dir, shadelab};
 use shadelab_model::shadows::{ShadowFilter, ShadowSettings};
 
-
 #[test]
 fn bad_values_exit_2_with_one_line_naming_flag_and_range() {
     let png = out_dir().join("bad.png");
@@ -286,7 +285,8 @@ fn bench_accuracy_quick_is_well_formed_and_orders_the_modes() {
     let _ = std::fs::remove_dir_all(&dir);
     // Three timed frames a row, not --quick's ten: what is checked is the rows, their order and
     // their errors, which the frames' count does not change (ten took 88 s of the suite, three 30).
-    let o = shadelab(&["bench", "accuracy", "--quick", "--frames", "3", "--warmup", "1", "--out", dir.to_str().unwrap()]);
+    let o =
+        shadelab(&["bench", "accuracy", "--quick", "--frames", "3", "--warmup", "1", "--out", dir.to_str().unwrap()]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let stdout = String::from_utf8_lossy(&o.stdout);
     assert!(stdout.contains("llvmpipe") && stdout.contains("GPU timestamps"), "{stdout}");

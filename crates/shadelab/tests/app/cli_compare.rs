@@ -3,7 +3,6 @@
 
 use crate::common::{error_lines, out_dir, shadelab};
 
-
 #[test]
 fn compare_gives_the_error_numbers_and_refuses_bad_pairs() {
     let dir = out_dir();

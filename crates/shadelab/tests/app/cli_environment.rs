@@ -3,7 +3,6 @@
 
 use crate::common::{error_lines, out_dir, shadelab};
 
-
 /// The sky turns the environment's effect on and says why; a map file lights the scene, and a
 /// 1×1 map of I_amb's colour draws the image I_amb draws.
 #[test]

@@ -3,7 +3,6 @@
 
 use crate::common::{error_lines, out_dir, shadelab};
 
-
 fn exr(path: &std::path::Path) -> Vec<f32> {
     image::open(path).unwrap().to_rgba32f().pixels().flat_map(|p| [p.0[0], p.0[1], p.0[2]]).collect()
 }

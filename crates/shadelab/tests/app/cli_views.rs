@@ -5,7 +5,6 @@ use crate::common;
 use crate::common::{error_lines, out_dir, shadelab};
 use std::process::Command;
 
-
 /// `render --overlay`: the self-shadow boundary is accepted and drawn.
 #[test]
 fn overlay_terminator_renders_and_a_bad_value_is_one_line() {

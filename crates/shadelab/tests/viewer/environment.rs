@@ -2,7 +2,7 @@
 //! the sky takes I_amb's place and changes the image, its occlusion and split sum are switched,
 //! its specular is shown alone, and "none" gives I_amb back.
 
-use crate::harness::{ViewerHarness, harness, changed_view_pixels};
+use crate::harness::{ViewerHarness, changed_view_pixels, harness};
 use egui_kittest::kittest::Queryable;
 use shadelab_model::lighting::env_map::EnvSource;
 

@@ -1,7 +1,7 @@
 //! The viewer driven by egui_kittest on lavapipe (wgpu): what a person sees and clicks.
 
-use crate::harness::{ViewerHarness, harness, wait_loaded, changed_view_pixels};
 use crate::common;
+use crate::harness::{ViewerHarness, changed_view_pixels, harness, wait_loaded};
 use egui_kittest::kittest::Queryable;
 use shadelab_model::{ShadingMode, SpecularModel};
 

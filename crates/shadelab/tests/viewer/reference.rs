@@ -1,8 +1,8 @@
 //! The viewer's difference view while its reference is traced (docs/reference.md): on a worker,
 //! on every core, a fiftieth of the rows a step, with the share traced on show.
 
-use crate::harness::harness;
 use crate::common;
+use crate::harness::harness;
 
 /// Turned on, the difference view reports the share of its reference traced, within [0, 1],
 /// until the error map with its numbers is in.

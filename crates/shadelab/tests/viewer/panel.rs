@@ -1,7 +1,7 @@
 //! The viewer driven by egui_kittest on lavapipe (wgpu): what a person sees and clicks.
 
 use crate::common;
-use crate::harness::{ViewerHarness, changed_view_pixels, harness, wait_loaded};
+use crate::harness::{ViewerHarness, changed_view_pixels, harness, run_until, wait_loaded};
 use egui_kittest::kittest::Queryable;
 use shadelab_model::{ShadingMode, SpecularModel};
 
@@ -192,17 +192,7 @@ fn difference_from_reference_view() {
     let mut h = harness();
     let normal = h.render().expect("render");
     h.get_by_label("difference from reference").click();
-    let wait = |h: &mut ViewerHarness| {
-        let start = std::time::Instant::now();
-        loop {
-            h.run_steps(1);
-            if let Some(s) = h.state().difference() {
-                return s;
-            }
-            assert!(start.elapsed().as_secs() < 60, "no reference after 60 s");
-            std::thread::sleep(std::time::Duration::from_millis(50));
-        }
-    };
+    let wait = |h: &mut ViewerHarness| run_until(h, "reference", 60, |v| v.difference());
     let phong = wait(&mut h);
     assert!(phong.flip_mean > 0.0 && phong.rmse > 0.0 && phong.rmse.is_finite(), "{phong:?}");
     let map = h.render().expect("render");

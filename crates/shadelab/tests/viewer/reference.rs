@@ -2,7 +2,7 @@
 //! on every core, a fiftieth of the rows a step, with the share traced on show.
 
 use crate::common;
-use crate::harness::harness;
+use crate::harness::{harness, run_until, wait_loaded};
 
 /// Turned on, the difference view reports the share of its reference traced, within [0, 1],
 /// until the error map with its numbers is in.
@@ -36,15 +36,7 @@ fn the_ambient_error_view_fits_i_a() {
     let mut h = harness();
     h.state_mut().set_difference_view(true);
     h.state_mut().set_difference_kind(shadelab::viewer::difference::DifferenceKind::Ambient);
-    let start = std::time::Instant::now();
-    let fit = loop {
-        h.run_steps(1);
-        if let Some(f) = h.state().ambient_fit() {
-            break f;
-        }
-        assert!(start.elapsed().as_secs() < 120, "no ambient error map after 120 s");
-        std::thread::sleep(std::time::Duration::from_millis(20));
-    };
+    let fit = run_until(&mut h, "ambient error map", 120, |v| v.ambient_fit());
     let stats = h.state().difference().expect("the map's numbers");
     assert!(stats.rmse.is_finite() && stats.rmse > fit.noise, "{stats:?} against noise {}", fit.noise);
     assert!(fit.scale > 0.0 && fit.noise > 0.0, "{fit:?}");
@@ -60,22 +52,10 @@ fn a_textured_file_has_its_difference_view() {
     let file = common::root().join("../shared/gltf-samples/BoxTextured.gltf");
     let mut h = harness();
     h.state_mut().open_file(&file);
-    let start = std::time::Instant::now();
-    while h.state().loading() {
-        h.run_steps(1);
-        assert!(start.elapsed().as_secs() < 60, "{} not open after 60 s", file.display());
-        std::thread::sleep(std::time::Duration::from_millis(10));
-    }
+    wait_loaded(&mut h);
     let (msg, is_error) = h.state().message().cloned().expect("the file's message");
     assert!(!is_error && msg.contains("BoxTextured"), "{msg}");
     h.state_mut().set_difference_view(true);
-    let stats = loop {
-        h.run_steps(1);
-        if let Some(s) = h.state().difference() {
-            break s;
-        }
-        assert!(start.elapsed().as_secs() < 120, "no map after 120 s");
-        std::thread::sleep(std::time::Duration::from_millis(10));
-    };
+    let stats = run_until(&mut h, "map", 120, |v| v.difference());
     assert!(stats.rmse < 2e-3 && stats.share_off < 0.01, "{stats:?}");
 }

@@ -2,7 +2,7 @@
 //! its heading (`### Model (`crates/shadelab-model/src/`)`) lists every `.rs` and `.wgsl` file
 //! under that folder by its path relative to it, and every such path the doc names exists.
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
 /// The folders the floor plan must list whole.
 pub const ROOTS: &[&str] = &[
@@ -90,17 +90,13 @@ pub fn problems(doc: &str, repo: &Path) -> Vec<String> {
     out
 }
 
-pub fn repo_root() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).parent().unwrap().to_path_buf()
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
 
     #[test]
     fn the_architecture_doc_lists_every_source_file_and_only_files() {
-        let repo = repo_root();
+        let repo = crate::web::root();
         let doc = std::fs::read_to_string(repo.join("docs/architecture.md")).unwrap();
         let problems = problems(&doc, &repo);
         assert!(problems.is_empty(), "docs/architecture.md:\n  {}", problems.join("\n  "));

@@ -238,8 +238,9 @@ impl Count {
     }
 }
 
-/// Run `cmd`, passing its output through, and count its test results and their times.
-fn run_counting(cmd: &mut Command, timings: &mut suite::Timings) -> (bool, Count) {
+/// Run `cmd`, passing its output through, and count its test results and their times (each
+/// test's name after `prefix`). False also when it could not start.
+fn run_counting(cmd: &mut Command, timings: &mut suite::Timings, prefix: &str) -> (bool, Count) {
     use std::io::BufRead;
     eprintln!("xtask: running {cmd:?}");
     let mut count = Count::default();
@@ -250,7 +251,10 @@ fn run_counting(cmd: &mut Command, timings: &mut suite::Timings) -> (bool, Count
         for line in std::io::BufReader::new(out).lines().map_while(Result::ok) {
             println!("{line}");
             count.add_line(&line);
-            timings.tests.extend(suite::test_time(&line));
+            if let Some(mut t) = suite::test_time(&line) {
+                t.name = format!("{prefix}{}", t.name);
+                timings.tests.push(t);
+            }
         }
     }
     (child.wait().is_ok_and(|s| s.success()), count)

@@ -7,7 +7,6 @@
 //! run with `RUSTC_BOOTSTRAP=1`.
 
 use crate::Count;
-use std::io::BufRead;
 use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
 
@@ -178,24 +177,12 @@ pub fn run(
         let label = bin.label();
         let mut cmd = Command::new(&bin.path);
         cmd.current_dir(&bin.dir).args(["-Zunstable-options", "--report-time"]).args(test_args);
-        cmd.envs(env.iter().copied()).env("RUSTC_BOOTSTRAP", "1").stdout(Stdio::piped());
-        println!("     Running {label} ({})", bin.path);
+        cmd.envs(env.iter().copied()).env("RUSTC_BOOTSTRAP", "1");
         let start = Instant::now();
-        let Ok(mut child) = cmd.spawn() else {
-            eprintln!("xtask: {label}: could not start {}", bin.path);
-            all_ok = false;
-            count.failed += 1;
-            continue;
-        };
-        for line in std::io::BufReader::new(child.stdout.take().expect("piped")).lines().map_while(Result::ok) {
-            println!("{line}");
-            count.add_line(&line);
-            if let Some(mut t) = test_time(&line) {
-                t.name = format!("{label}: {}", t.name);
-                timings.tests.push(t);
-            }
-        }
-        let ok = child.wait().is_ok_and(|s| s.success());
+        let (ok, c) = crate::run_counting(&mut cmd, timings, &format!("{label}: "));
+        // A binary that did not run, or stopped before its counts, still counts as a failure.
+        count.passed += c.passed;
+        count.failed += c.failed.max(u64::from(!ok && c.failed == 0));
         eprintln!("xtask: {label}: {} in {:.1} s", if ok { "ok" } else { "FAILED" }, start.elapsed().as_secs_f64());
         all_ok &= ok;
     }

@@ -1,6 +1,6 @@
 //! The accuracy study's Markdown report and terminal summary.
 
-use super::{MAPPED_FLOOR, Report, Row, Study, TEXTURED_FLOOR, crossovers};
+use super::report::{MAPPED_FLOOR, Report, Row, Study, TEXTURED_FLOOR, crossovers};
 use shadelab_model::scene_variants;
 use std::fmt::Write as _;
 

@@ -3,8 +3,8 @@
 //! error, prints the `I_a` that fits the scene, and the error and time of each rung of the
 //! ladder: the constant ambient, the fitted one, ambient occlusion, and the truth itself.
 
+use crate::image_file::{ImageKind, save};
 use crate::reference_views::{reference_job, traced_with_progress};
-use crate::render::{ImageKind, save};
 use crate::{Failure, cli};
 use anyhow::Context;
 use shadelab_model::Scene;

@@ -4,7 +4,7 @@
 //! with it.
 
 use crate::cli::CompareArgs;
-use crate::{Failure, render};
+use crate::{Failure, image_file};
 use anyhow::anyhow;
 use shadelab_render::LinearImage;
 use shadelab_render::image_error::compare_images;
@@ -39,7 +39,7 @@ pub fn run(args: &CompareArgs) -> Result<(), Failure> {
     );
     if let Some(path) = &args.map {
         let map = LinearImage::from_srgb8(test.width, test.height, &cmp.flip_map_rgb8);
-        render::save(&map, path, render::ImageKind::Png)?;
+        image_file::save(&map, path, image_file::ImageKind::Png)?;
     }
     match args.max_flip {
         Some(max) if s.flip_mean > max => {

@@ -10,6 +10,7 @@ pub mod cli;
 pub mod compare;
 #[cfg(not(target_arch = "wasm32"))]
 pub mod figures;
+pub mod image_file;
 #[cfg(not(target_arch = "wasm32"))]
 pub mod lobe;
 #[cfg(not(target_arch = "wasm32"))]

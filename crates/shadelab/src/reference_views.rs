@@ -2,7 +2,7 @@
 //! of the term on show) in place of the GPU's image, or the FLIP map of the one against the
 //! other, so that each term has its reference and its difference map from the command line too.
 
-use crate::render::{ImageKind, save};
+use crate::image_file::{ImageKind, save};
 use crate::{Failure, cli};
 use anyhow::Context;
 use shadelab_model::reference::{PathSettings, ReferenceImage, ReferenceJob};

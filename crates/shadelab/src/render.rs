@@ -1,6 +1,7 @@
 //! `shadelab render`: one headless frame to PNG or EXR.
 
-use crate::cli::SmallAreaLights;
+use crate::cli::{Overlay, SmallAreaLights};
+use crate::image_file::{ImageKind, image_kind, save};
 use crate::{Failure, cli};
 use anyhow::Context;
 use shadelab_model::ShadingMode;
@@ -9,51 +10,13 @@ use shadelab_model::params::NamedValue;
 use shadelab_render::{AdapterChoice, Gpu, LinearImage, RenderSettings, UploadError};
 use std::path::Path;
 
-/// What `render --overlay` draws over the image.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Overlay {
-    /// The self-shadow boundary: the edges where the side facing a light changes
-    /// (`shadelab_model::terminator`), in `overlay_pass::TERMINATOR_COLOR`.
-    Terminator,
-    /// The smooth meshes' vertex normals (`shadelab_model::mesh_lines`), in `NORMALS_COLOR`.
-    Normals,
-    /// The edges the crease-angle rule keeps sharp (`mesh_lines`), in `CREASES_COLOR`.
-    Creases,
-}
-
-impl NamedValue for Overlay {
-    const FLAG: &'static str = "--overlay";
-    const ALL: &'static [(&'static str, Self)] =
-        &[("terminator", Overlay::Terminator), ("normals", Overlay::Normals), ("creases", Overlay::Creases)];
-}
-
-impl Overlay {
-    /// The overlay's lines for `scene`, in world space, and their colour.
-    fn lines(self, scene: &shadelab_model::Scene) -> (Vec<[glam::DVec3; 2]>, [f32; 3]) {
-        use shadelab_render::overlay_pass::{CREASES_COLOR, NORMALS_COLOR, TERMINATOR_COLOR};
-        match self {
-            Overlay::Terminator => (shadelab_model::terminator::scene_terminator(scene), TERMINATOR_COLOR),
-            Overlay::Normals => (shadelab_model::mesh_lines::normal_segments(scene), NORMALS_COLOR),
-            Overlay::Creases => (shadelab_model::mesh_lines::crease_segments(scene), CREASES_COLOR),
-        }
-    }
-}
-
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum ImageKind {
-    Png,
-    Exr,
-}
-
-/// The output kind from the file's extension.
-pub fn image_kind(path: &Path) -> Result<ImageKind, Failure> {
-    match path.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase).as_deref() {
-        Some("png") => Ok(ImageKind::Png),
-        Some("exr") => Ok(ImageKind::Exr),
-        _ => Err(Failure::Usage(format!(
-            "--output: '{}' has an unsupported extension (allowed: .png, .exr)",
-            path.display()
-        ))),
+/// The overlay's lines for `scene`, in world space, and their colour.
+fn overlay_lines(overlay: Overlay, scene: &shadelab_model::Scene) -> (Vec<[glam::DVec3; 2]>, [f32; 3]) {
+    use shadelab_render::overlay_pass::{CREASES_COLOR, NORMALS_COLOR, TERMINATOR_COLOR};
+    match overlay {
+        Overlay::Terminator => (shadelab_model::terminator::scene_terminator(scene), TERMINATOR_COLOR),
+        Overlay::Normals => (shadelab_model::mesh_lines::normal_segments(scene), NORMALS_COLOR),
+        Overlay::Creases => (shadelab_model::mesh_lines::crease_segments(scene), CREASES_COLOR),
     }
 }
 
@@ -204,7 +167,7 @@ fn render_with_overlays(
             overlays.push(*o);
         }
     }
-    let lines: Vec<_> = overlays.iter().map(|o| (*o, o.lines(scene))).collect();
+    let lines: Vec<_> = overlays.iter().map(|o| (*o, overlay_lines(*o, scene))).collect();
     for (o, (l, _)) in &lines {
         log::info!("overlay {}: {} lines", o.name(), l.len());
     }
@@ -272,21 +235,4 @@ pub fn explain(scene: &shadelab_model::Scene, settings: &shadelab_render::Render
         ));
     }
     s
-}
-
-/// Write a linear image: PNG as 8-bit sRGB, EXR as linear 32-bit float RGBA.
-pub fn save(image: &LinearImage, path: &Path, kind: ImageKind) -> anyhow::Result<()> {
-    match kind {
-        ImageKind::Png => {
-            let img =
-                image::RgbImage::from_raw(image.width, image.height, image.to_srgb8()).context("image buffer size")?;
-            img.save(path)?;
-        }
-        ImageKind::Exr => {
-            let flat: Vec<f32> = image.pixels.iter().flatten().copied().collect();
-            let img = image::Rgba32FImage::from_raw(image.width, image.height, flat).context("image buffer size")?;
-            img.save(path)?;
-        }
-    }
-    Ok(())
 }

@@ -335,6 +335,24 @@ impl shadelab_model::params::NamedValue for SmallAreaLights {
     const ALL: &'static [(&'static str, Self)] = &[("point", SmallAreaLights::Point), ("area", SmallAreaLights::Area)];
 }
 
+/// What `render --overlay` draws over the image.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Overlay {
+    /// The self-shadow boundary: the edges where the side facing a light changes
+    /// (`shadelab_model::terminator`), in `overlay_pass::TERMINATOR_COLOR`.
+    Terminator,
+    /// The smooth meshes' vertex normals (`shadelab_model::mesh_lines`), in `NORMALS_COLOR`.
+    Normals,
+    /// The edges the crease-angle rule keeps sharp (`mesh_lines`), in `CREASES_COLOR`.
+    Creases,
+}
+
+impl shadelab_model::params::NamedValue for Overlay {
+    const FLAG: &'static str = "--overlay";
+    const ALL: &'static [(&'static str, Self)] =
+        &[("terminator", Overlay::Terminator), ("normals", Overlay::Normals), ("creases", Overlay::Creases)];
+}
+
 #[derive(Args, Debug)]
 #[command(allow_negative_numbers = true)]
 pub struct RenderArgs {
@@ -417,8 +435,8 @@ pub struct RenderArgs {
     /// self-shadow boundary, cyan), normals (the smooth meshes' vertex normals, yellow), creases
     /// (the edges the crease-angle rule keeps sharp, orange).
     #[arg(long, value_name = "NAME,...", value_delimiter = ',',
-          value_parser = values::named::<crate::render::Overlay>())]
-    pub overlay: Vec<crate::render::Overlay>,
+          value_parser = values::named::<Overlay>())]
+    pub overlay: Vec<Overlay>,
 }
 
 impl RenderArgs {

@@ -3,7 +3,7 @@
 
 use super::Viewer;
 #[cfg(not(target_arch = "wasm32"))]
-use crate::render;
+use crate::image_file;
 use eframe::egui;
 use shadelab_render::Target;
 use std::path::PathBuf;
@@ -202,7 +202,7 @@ impl Viewer {
         let image = shadelab_render::target::read_back(&self.renderer.device, &self.renderer.queue, &target);
         self.saved_count += 1;
         let path = PathBuf::from(format!("shadelab-screenshot-{}.png", self.saved_count));
-        self.message = Some(match render::save(&image, &path, render::ImageKind::Png) {
+        self.message = Some(match image_file::save(&image, &path, image_file::ImageKind::Png) {
             Ok(()) => (format!("saved {} ({w}×{h})", path.display()), false),
             Err(e) => (format!("screenshot failed: {e:#}"), true),
         });

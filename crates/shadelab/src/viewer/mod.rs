@@ -28,7 +28,7 @@ pub use link::{Link, parse_query};
 
 use crate::cli;
 #[cfg(not(target_arch = "wasm32"))]
-use crate::{Failure, render};
+use crate::{Failure, image_file};
 use difference::DifferenceView;
 use eframe::egui::{self, Key};
 use eframe::egui_wgpu;
@@ -60,7 +60,7 @@ pub fn run(options: Options) -> Result<(), Failure> {
     let mut loaded = cli::load(&scene)?;
     let settings = mode.settle(&mut loaded, &scene)?;
     if let Some(p) = &screenshot
-        && render::image_kind(p)? != render::ImageKind::Png
+        && image_file::image_kind(p)? != image_file::ImageKind::Png
     {
         return Err(Failure::Usage(format!("--screenshot: '{}' must be a .png file", p.display())));
     }

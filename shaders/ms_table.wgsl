@@ -1,8 +1,8 @@
-// The lobe's albedo E from the project's table (globals.ms_albedo, multiscatter.rs's ms_table):
+// The lobe's albedo E from the project's table (globals.ms_albedo, ms_table.rs's ms_table):
 // per D × G pair, MS_TABLE_SIDE × MS_TABLE_SIDE nodes over N·V (across) and m (down), each in
 // [0, 1], read bilinearly. Only with the multiple-scattering effect or the environment's split sum
 // (the whole file is one #if).
-// The f64 twin is crates/shadelab-model/src/lighting/multiscatter.rs.
+// The f64 twin is crates/shadelab-model/src/lighting/ms_table.rs.
 
 #if EFFECT_MULTIPLE_SCATTERING||EFFECT_ENVIRONMENT_SPECULAR
 

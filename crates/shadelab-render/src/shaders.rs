@@ -132,15 +132,15 @@ pub fn raw_lighting_source() -> String {
 /// copy behind.
 pub fn generated_constants() -> Vec<(&'static str, usize)> {
     use shadelab_model::lighting::microfacet::{Distribution, Fresnel, Masking};
-    use shadelab_model::lighting::{environment::ENV_SPLIT_B_VEC4S, multiscatter};
+    use shadelab_model::lighting::{environment::ENV_SPLIT_B_VEC4S, ms_table};
     use shadelab_model::params::NamedValue;
     vec![
         ("DISTRIBUTION_COUNT", Distribution::ALL.len()),
         ("MASKING_COUNT", Masking::ALL.len()),
         ("FRESNEL_COUNT", Fresnel::ALL.len()),
-        ("MS_PAIRS", multiscatter::MS_PAIRS),
-        ("MS_TABLE_SIDE", multiscatter::MS_TABLE_SIDE),
-        ("MS_TABLE_VEC4S", multiscatter::MS_TABLE_VEC4S),
+        ("MS_PAIRS", ms_table::MS_PAIRS),
+        ("MS_TABLE_SIDE", ms_table::MS_TABLE_SIDE),
+        ("MS_TABLE_VEC4S", ms_table::MS_TABLE_VEC4S),
         ("ENV_SPLIT_B_VEC4S", ENV_SPLIT_B_VEC4S),
     ]
 }

@@ -40,7 +40,7 @@ const TWINS: [(&str, &str); 22] = [
     ("types.wgsl", ""),
     ("bindings.wgsl", ""),
     // The table lookup of the compensation.
-    ("ms_table.wgsl", include_str!("../../shadelab-model/src/lighting/multiscatter.rs")),
+    ("ms_table.wgsl", include_str!("../../shadelab-model/src/lighting/ms_table.rs")),
     ("environment.wgsl", include_str!("../../shadelab-model/src/lighting/environment.rs")),
     ("occlusion.wgsl", include_str!("../../shadelab-model/src/lighting/occlusion.rs")),
     (
@@ -287,9 +287,9 @@ fn wgsl_codes_equal_rust_codes() {
     {
         assert_eq!(wgsl_constant(&lighting, name), Some(*bit as f64), "{name}: WGSL vs textures::MAP_BITS");
     }
-    // The compensation's table: its shape, as multiscatter.rs lays it out, generated into the
+    // The compensation's table: its shape, as ms_table.rs lays it out, generated into the
     // WGSL and written by no shipped file (a hand-written copy could fall behind the tables).
-    use shadelab_model::lighting::multiscatter::{MS_PAIRS, MS_TABLE_SIDE, MS_TABLE_VEC4S};
+    use shadelab_model::lighting::ms_table::{MS_PAIRS, MS_TABLE_SIDE, MS_TABLE_VEC4S};
     for (name, value) in crate::shaders::generated_constants() {
         assert_eq!(wgsl_constant(&lighting, name), Some(value as f64), "{name}: the generated constant");
         let written: Vec<&str> =

@@ -5,7 +5,7 @@
 
 use bytemuck::{Pod, Zeroable};
 use shadelab_model::lighting::area::{AreaShape, disk_polygon_scale};
-use shadelab_model::lighting::multiscatter::MS_TABLE_VEC4S;
+use shadelab_model::lighting::ms_table::MS_TABLE_VEC4S;
 use shadelab_model::scene::MAX_LIGHTS;
 use shadelab_model::scene::UvTransform;
 use shadelab_model::shadows::MAX_SHADOW_LAYERS;
@@ -52,7 +52,7 @@ pub struct GlobalsUniform {
     pub specular_model: u32,
     pub illumination: u32,
     pub lights: [LightUniform; MAX_LIGHTS],
-    /// The multiple-scattering compensation's table (`multiscatter::ms_table_vec4s`); zero when
+    /// The multiple-scattering compensation's table (`ms_table::ms_table_vec4s`); zero when
     /// no material uses it, so a scene without it never computes the table.
     pub ms_albedo: [[f32; 4]; MS_TABLE_VEC4S],
     /// The environment's nine SH coefficients ([`env_sh`]); zero without one.
@@ -252,7 +252,7 @@ impl GlobalsUniform {
             ms_albedo: if scene.materials.iter().any(|m| m.microfacet.multiple_scattering)
                 || scene.environment.is_some()
             {
-                shadelab_model::lighting::multiscatter::ms_table_vec4s()
+                shadelab_model::lighting::ms_table::ms_table_vec4s()
             } else {
                 [[0.0; 4]; MS_TABLE_VEC4S]
             },

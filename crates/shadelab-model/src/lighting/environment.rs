@@ -179,11 +179,11 @@ pub fn env_prefiltered(pre: &[[f32; 4]], r: DVec3, m: f64) -> [f64; 3] {
 }
 
 /// Every D × G pair's B (the lobe's albedo weighed by `(1 − V·H)⁵`, [`crate::furnace::weighted_albedo`])
-/// at the nodes of the compensation's table (`multiscatter::ms_table`: m down, `N·V` across),
+/// at the nodes of the compensation's table (`ms_table::ms_table`: m down, `N·V` across),
 /// computed once; `globals.env_split_b` holds it four floats a slot.
 pub fn env_split_b_table() -> &'static [f32] {
     use super::microfacet::{Distribution, Masking, Microfacet};
-    use super::multiscatter::{MS_TABLE_SAMPLES, MS_TABLE_SIDE};
+    use super::ms_table::{MS_TABLE_SAMPLES, MS_TABLE_SIDE};
     use crate::params::NamedValue;
     static TABLE: std::sync::OnceLock<Vec<f32>> = std::sync::OnceLock::new();
     TABLE.get_or_init(|| {
@@ -217,23 +217,23 @@ pub fn env_split_b_vec4s() -> [[f32; 4]; ENV_SPLIT_B_VEC4S] {
 
 /// vec4 slots of `globals.env_split_b` (WGSL `ENV_SPLIT_B_VEC4S`, generated): every D × G pair's
 /// nodes, four floats a slot, laid out as the E table.
-pub const ENV_SPLIT_B_VEC4S: usize = super::multiscatter::MS_TABLE_VEC4S;
+pub const ENV_SPLIT_B_VEC4S: usize = super::ms_table::MS_TABLE_VEC4S;
 
 /// One node of the B table: pair `base`'s row j (m), column i (N·V).
 pub fn env_split_b_node(base: usize, j: usize, i: usize) -> f64 {
-    f64::from(env_split_b_table()[base + j * super::multiscatter::MS_TABLE_SIDE + i])
+    f64::from(env_split_b_table()[base + j * super::ms_table::MS_TABLE_SIDE + i])
 }
 
 /// B of the material's D and G at `n_dot_v` and `m`, bilinear between the nodes as the
 /// compensation's E.
 pub fn env_split_b(terms: super::microfacet::Microfacet, n_dot_v: f64, m: f64) -> f64 {
-    use super::multiscatter::MS_TABLE_SIDE;
+    use super::ms_table::MS_TABLE_SIDE;
     let last = (MS_TABLE_SIDE - 1) as f64;
     let u = n_dot_v.clamp(0.0, 1.0) * last;
     let w = m.clamp(0.0, 1.0) * last;
     let (i, j) = ((u.floor() as usize).min(MS_TABLE_SIDE - 2), (w.floor() as usize).min(MS_TABLE_SIDE - 2));
     let (fu, fw) = (u - i as f64, w - j as f64);
-    let base = super::multiscatter::ms_pair(terms) * MS_TABLE_SIDE * MS_TABLE_SIDE;
+    let base = super::ms_table::ms_pair(terms) * MS_TABLE_SIDE * MS_TABLE_SIDE;
     let low = env_split_b_node(base, j, i) * (1.0 - fu) + env_split_b_node(base, j, i + 1) * fu;
     let high = env_split_b_node(base, j + 1, i) * (1.0 - fu) + env_split_b_node(base, j + 1, i + 1) * fu;
     low * (1.0 - fw) + high * fw
@@ -257,7 +257,7 @@ pub fn env_specular(
     }
     let r = super::common::safe_normalize(n * (2.0 * n_dot_v) - v, n);
     let l = env_prefiltered(pre, r, m);
-    let e = super::multiscatter::ms_albedo(terms, n_dot_v, m);
+    let e = super::ms_table::ms_albedo(terms, n_dot_v, m);
     let b = env_split_b(terms, n_dot_v, m);
     let f0 = super::microfacet::microfacet_f(terms, 1.0, v_index);
     std::array::from_fn(|i| l[i] * (f0[i] * (e - b) + b))
@@ -326,11 +326,11 @@ mod tests {
                     let exact = crate::furnace::weighted_albedo(terms, m, n_dot_v, 256, grazing);
                     let table = env_split_b(terms, n_dot_v, m);
                     worst = worst.max((exact - table).abs());
-                    assert!(table <= crate::lighting::multiscatter::ms_albedo(terms, n_dot_v, m) + 1e-6);
+                    assert!(table <= crate::lighting::ms_table::ms_albedo(terms, n_dot_v, m) + 1e-6);
                 }
             }
         }
-        // Measured 5.2e-3; the E table's bound between its nodes (multiscatter.rs) is 1e-2.
+        // Measured 5.2e-3; the E table's bound between its nodes (ms_table.rs) is 1e-2.
         assert!(worst < 1e-2, "largest |table − integral| {worst}");
     }
 

@@ -34,6 +34,7 @@ pub mod environment;
 pub mod lights;
 pub mod microfacet;
 pub mod models;
+pub mod ms_table;
 pub mod multiscatter;
 pub mod occlusion;
 pub mod shading;

@@ -115,7 +115,7 @@ pub fn shade_exact(
     let v_index = mat.mu.map(fresnel_v_from_mu);
     // The lobe's albedo for its multiple-scattering compensation: once a point, as the WGSL.
     let ms_e = if specular == SpecularModel::CookTorrance && mat.microfacet.multiple_scattering {
-        super::multiscatter::ms_albedo(mat.microfacet, n.dot(v), mat.m)
+        super::ms_table::ms_albedo(mat.microfacet, n.dot(v), mat.m)
     } else {
         1.0
     };

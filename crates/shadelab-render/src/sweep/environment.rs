@@ -13,7 +13,7 @@ use crate::gpu::Gpu;
 use glam::DVec3;
 use shadelab_model::lighting::environment::{self as env, SH_RINGING_BOUND, ShCoefficients};
 use shadelab_model::lighting::microfacet::{Distribution, Masking, Microfacet, fresnel_v_from_mu};
-use shadelab_model::lighting::multiscatter::MS_PAIRS;
+use shadelab_model::lighting::ms_table::MS_PAIRS;
 use shadelab_model::lighting::{common::safe_normalize, occlusion};
 use shadelab_model::params::NamedValue;
 use wgpu::util::DeviceExt;
@@ -358,7 +358,7 @@ impl Kernel {
 fn globals(prep: &Prepared) -> crate::uniforms::GlobalsUniform {
     use bytemuck::Zeroable;
     let mut g = crate::uniforms::GlobalsUniform::zeroed();
-    g.ms_albedo = shadelab_model::lighting::multiscatter::ms_table_vec4s();
+    g.ms_albedo = shadelab_model::lighting::ms_table::ms_table_vec4s();
     g.env_sh = prep.sh.map(|c| [c[0] as f32, c[1] as f32, c[2] as f32, 0.0]);
     g.env_split_b = env::env_split_b_vec4s();
     g.env_occlusion = prep.case.grid.gpu_placement();

@@ -236,7 +236,7 @@ pub struct FurnaceRow {
 /// The white furnace over every D × G pair, roughness and view angle (f64, no GPU).
 pub fn furnace_rows() -> Vec<FurnaceRow> {
     use shadelab_model::furnace::{FURNACE_SAMPLES, directional_albedo, pairs};
-    use shadelab_model::lighting::multiscatter::{ms_albedo, ms_compensation};
+    use shadelab_model::lighting::{ms_table::ms_albedo, multiscatter::ms_compensation};
     let grid = |f: &dyn Fn(f64, f64) -> f64| -> Vec<Vec<f64>> {
         FURNACE_M.iter().map(|&m| FURNACE_VIEW_DEG.iter().map(|deg| f(m, deg.to_radians().cos())).collect()).collect()
     };

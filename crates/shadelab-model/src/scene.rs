@@ -7,7 +7,7 @@
 mod builtin;
 mod camera;
 mod cornell;
-mod material;
+pub(crate) mod material;
 mod texture;
 
 pub use crate::lighting::lights::{LIGHT_STAND_OFF, Light, MAX_LIGHTS, SPOT_OUTER_CONE_DEFAULT};

@@ -11,7 +11,7 @@ pub use super::microfacet::{
 };
 use crate::guards::*;
 use crate::params::NamedValue;
-use crate::scene::{FresnelMix, Material};
+use crate::scene::material::{FresnelMix, Material};
 use glam::DVec3;
 
 /// Which specular term the illumination model uses (docs/model.md §3, §5).
@@ -101,6 +101,21 @@ pub(crate) fn rho_s_forms(n: DVec3, v: DVec3, l: DVec3, m: f64, v_index: f64) ->
     (seed, modern)
 }
 
+/// One light at one point, as the illumination model uses it (WGSL `LightSample`).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LightSample {
+    /// Unit direction from the point towards the light (an area light's representative point).
+    pub l: DVec3,
+    /// Incident intensity `I_L` per channel after falloff.
+    pub radiance: [f64; 3],
+    /// The diffuse term's cosine factor: `N·L` for a point, spot or directional light; an area
+    /// light's [`super::area::area_form`].
+    pub form: f64,
+    /// What the specular term at `l` is scaled by: 1, or an area light's [`super::area::area_specular_point`]
+    /// scale.
+    pub spec_scale: f64,
+}
+
 /// The share of the diffuse the dielectric layer passes (`microfacet::fresnel_mix_weight`): only
 /// under Cook–Torrance, for a material with a specular layer (r_s > 0) whose terms ask for it.
 pub fn diffuse_weight(l: DVec3, n: DVec3, v: DVec3, mat: &Material, specular: SpecularModel) -> f64 {
@@ -147,7 +162,7 @@ pub fn light_specular(
 /// for the light's sample `s` ([`super::lights::light_sample`]; `form` is `N·L` for a point
 /// light), the specular zero where `N·L ≤ 0` (the point's own shadow).
 pub fn light_contribution(
-    s: &super::lights::LightSample,
+    s: &LightSample,
     n: DVec3,
     v: DVec3,
     mat: &Material,

@@ -3,6 +3,7 @@
 //! both the GPU and the f64 reference, and its f64 terms.
 
 use super::area::{AreaLight, AreaShape, area_form, area_specular_point};
+pub use super::brdf::LightSample;
 use super::common::safe_normalize;
 use crate::guards::*;
 use crate::params::{NamedValue, ParamRange};
@@ -429,21 +430,6 @@ pub fn window_range(d: f64, range: f64) -> f64 {
     let x = (d.max(0.0) / range).min(1.0);
     let x2 = x * x;
     1.0 - x2 * x2
-}
-
-/// One light at one point, as the illumination model uses it (WGSL `LightSample`).
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct LightSample {
-    /// Unit direction from the point towards the light (an area light's representative point).
-    pub l: DVec3,
-    /// Incident intensity `I_L` per channel after falloff.
-    pub radiance: [f64; 3],
-    /// The diffuse term's cosine factor: `N·L` for a point, spot or directional light; an area
-    /// light's [`area_form`].
-    pub form: f64,
-    /// What the specular term at `l` is scaled by: 1, or an area light's [`area_specular_point`]
-    /// scale.
-    pub spec_scale: f64,
 }
 
 /// Direction to a light (unit), its incident intensity `I_L` per channel, and the diffuse and

@@ -1,7 +1,7 @@
 //! Surface materials: the parameters of the chapter's model per surface (docs/model.md §3, §5,
 //! §7).
 
-use super::{ColorSpace, Texture, TextureRef, UvFootprint};
+use super::texture::{ColorSpace, Texture, TextureRef, UvFootprint};
 use crate::guards::NORMALIZE_MIN_LEN2;
 use crate::lighting::common::safe_normalize;
 use crate::params::PhongExponent;
@@ -161,7 +161,7 @@ impl Material {
 
     /// The refractive index `v` per channel: given, or from μ (docs/model.md §5).
     pub fn refractive_index(&self) -> [f64; 3] {
-        self.ior.unwrap_or(self.mu.map(crate::lighting::brdf::fresnel_v_from_mu))
+        self.ior.unwrap_or(self.mu.map(crate::lighting::microfacet::fresnel_v_from_mu))
     }
 
     /// Whether the channels' indices differ, so each channel takes its own path.

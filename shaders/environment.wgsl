@@ -99,19 +99,10 @@ fn env_split_b_node(base: u32, j: u32, i: u32) -> f32 {
 // B, the share of the lobe's albedo Schlick's F adds toward grazing, of the material's D and G
 // at n_dot_v and m, bilinear between the nodes as the E table.
 fn env_split_b(terms: u32, n_dot_v: f32, m: f32) -> f32 {
-    let d = terms & MICROFACET_FIELD_MASK;
-    let g = (terms >> MICROFACET_FIELD_BITS) & MICROFACET_FIELD_MASK;
-    let base = (d * MASKING_COUNT + g) * MS_TABLE_SIDE * MS_TABLE_SIDE;
-    let last = f32(MS_TABLE_SIDE - 1u);
-    let u = clamp(n_dot_v, 0.0, 1.0) * last;
-    let w = clamp(m, 0.0, 1.0) * last;
-    let i = min(u32(floor(u)), MS_TABLE_SIDE - 2u);
-    let j = min(u32(floor(w)), MS_TABLE_SIDE - 2u);
-    let fu = u - f32(i);
-    let fw = w - f32(j);
-    let low = env_split_b_node(base, j, i) * (1.0 - fu) + env_split_b_node(base, j, i + 1u) * fu;
-    let high = env_split_b_node(base, j + 1u, i) * (1.0 - fu) + env_split_b_node(base, j + 1u, i + 1u) * fu;
-    return low * (1.0 - fw) + high * fw;
+    let c = table_cell(terms, n_dot_v, m);
+    let low = vec2(env_split_b_node(c.base, c.j, c.i), env_split_b_node(c.base, c.j, c.i + 1u));
+    let high = vec2(env_split_b_node(c.base, c.j + 1u, c.i), env_split_b_node(c.base, c.j + 1u, c.i + 1u));
+    return table_bilinear(c, low, high);
 }
 
 // The split sum before r_s: the prefiltered environment toward the mirror direction, times

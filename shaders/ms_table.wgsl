@@ -12,9 +12,18 @@ fn ms_node(base: u32, j: u32, i: u32) -> f32 {
     return globals.ms_albedo[k / 4u][k % 4u];
 }
 
-// docs/microfacet.md: E of the material's D and G (`terms`) at `n_dot_v` and `m`, both clamped to
-// [0, 1], bilinear between the table's nodes.
-fn ms_albedo(terms: u32, n_dot_v: f32, m: f32) -> f32 {
+// Where (n_dot_v, m) falls in a D × G pair's table (the E table and the split sum's B share its
+// layout): the pair's first node, the cell's corner (j down in m, i across in N·V), both clamped
+// to [0, 1], and the fractions inside the cell.
+struct TableCell {
+    base: u32,
+    j: u32,
+    i: u32,
+    fw: f32,
+    fu: f32,
+}
+
+fn table_cell(terms: u32, n_dot_v: f32, m: f32) -> TableCell {
     let d = terms & MICROFACET_FIELD_MASK;
     let g = (terms >> MICROFACET_FIELD_BITS) & MICROFACET_FIELD_MASK;
     let base = (d * MASKING_COUNT + g) * MS_TABLE_SIDE * MS_TABLE_SIDE;
@@ -23,10 +32,22 @@ fn ms_albedo(terms: u32, n_dot_v: f32, m: f32) -> f32 {
     let w = clamp(m, 0.0, 1.0) * last;
     let i = min(u32(floor(u)), MS_TABLE_SIDE - 2u);
     let j = min(u32(floor(w)), MS_TABLE_SIDE - 2u);
-    let fu = u - f32(i);
-    let fw = w - f32(j);
-    let low = ms_node(base, j, i) * (1.0 - fu) + ms_node(base, j, i + 1u) * fu;
-    let high = ms_node(base, j + 1u, i) * (1.0 - fu) + ms_node(base, j + 1u, i + 1u) * fu;
-    return low * (1.0 - fw) + high * fw;
+    return TableCell(base, j, i, w - f32(j), u - f32(i));
+}
+
+// Bilinear between a cell's four nodes: `low` the row at j (i, i + 1), `high` the row at j + 1.
+fn table_bilinear(c: TableCell, low: vec2<f32>, high: vec2<f32>) -> f32 {
+    let l = low.x * (1.0 - c.fu) + low.y * c.fu;
+    let h = high.x * (1.0 - c.fu) + high.y * c.fu;
+    return l * (1.0 - c.fw) + h * c.fw;
+}
+
+// docs/microfacet.md: E of the material's D and G (`terms`) at `n_dot_v` and `m`, both clamped to
+// [0, 1], bilinear between the table's nodes.
+fn ms_albedo(terms: u32, n_dot_v: f32, m: f32) -> f32 {
+    let c = table_cell(terms, n_dot_v, m);
+    let low = vec2(ms_node(c.base, c.j, c.i), ms_node(c.base, c.j, c.i + 1u));
+    let high = vec2(ms_node(c.base, c.j + 1u, c.i), ms_node(c.base, c.j + 1u, c.i + 1u));
+    return table_bilinear(c, low, high);
 }
 #endif

@@ -69,8 +69,7 @@ const TWINS: [(&str, &str); 22] = [
 
 /// WGSL functions with no f64 twin, by file, and why. (Entry points are left out by naga's list:
 /// they are the GPU's stages, whose f64 counterpart is `reference::render_reference`.)
-const NO_TWIN: [(&str, &str, &str); 42] = [
-    ("ms_table.wgsl", "ms_node", "one node of the uniform table; the twin's ms_albedo indexes its slice"),
+const NO_TWIN: [(&str, &str, &str); 41] = [
     ("entry_points.wgsl", "pixel_inputs", "the interpolants at a pixel; the reference has the exact hit"),
     ("glass.wgsl", "project_to_pixel", "a point on the target; the reference traces rays, it has no target"),
     ("glass.wgsl", "texel", "a pixel of the target; the reference traces rays, it has no target"),

@@ -227,16 +227,11 @@ pub fn env_split_b_node(base: usize, j: usize, i: usize) -> f64 {
 /// B of the material's D and G at `n_dot_v` and `m`, bilinear between the nodes as the
 /// compensation's E.
 pub fn env_split_b(terms: super::microfacet::Microfacet, n_dot_v: f64, m: f64) -> f64 {
-    use super::ms_table::MS_TABLE_SIDE;
-    let last = (MS_TABLE_SIDE - 1) as f64;
-    let u = n_dot_v.clamp(0.0, 1.0) * last;
-    let w = m.clamp(0.0, 1.0) * last;
-    let (i, j) = ((u.floor() as usize).min(MS_TABLE_SIDE - 2), (w.floor() as usize).min(MS_TABLE_SIDE - 2));
-    let (fu, fw) = (u - i as f64, w - j as f64);
-    let base = super::ms_table::ms_pair(terms) * MS_TABLE_SIDE * MS_TABLE_SIDE;
-    let low = env_split_b_node(base, j, i) * (1.0 - fu) + env_split_b_node(base, j, i + 1) * fu;
-    let high = env_split_b_node(base, j + 1, i) * (1.0 - fu) + env_split_b_node(base, j + 1, i + 1) * fu;
-    low * (1.0 - fw) + high * fw
+    use super::ms_table::{table_bilinear, table_cell};
+    let c = table_cell(terms, n_dot_v, m);
+    let low = [env_split_b_node(c.base, c.j, c.i), env_split_b_node(c.base, c.j, c.i + 1)];
+    let high = [env_split_b_node(c.base, c.j + 1, c.i), env_split_b_node(c.base, c.j + 1, c.i + 1)];
+    table_bilinear(c, low, high)
 }
 
 /// The split sum (docs/environment.md): the environment's specular light at a point seen along

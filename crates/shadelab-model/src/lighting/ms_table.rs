@@ -57,20 +57,46 @@ pub fn ms_table_vec4s() -> [[f32; 4]; MS_TABLE_VEC4S] {
     out
 }
 
-/// docs/microfacet.md: E of the material's D and G at `n_dot_v` and `m`, bilinear between the
-/// table's nodes (both clamped to [0, 1]).
-pub fn ms_albedo(terms: Microfacet, n_dot_v: f64, m: f64) -> f64 {
-    let table = ms_table();
+/// Where (`n_dot_v`, `m`) falls in a D × G pair's table (the E table and the split sum's B share
+/// its layout): the pair's first node, the cell's corner (j down in m, i across in `N·V`), both
+/// clamped to [0, 1], and the fractions inside the cell.
+#[derive(Clone, Copy, Debug)]
+pub struct TableCell {
+    pub base: usize,
+    pub j: usize,
+    pub i: usize,
+    pub fw: f64,
+    pub fu: f64,
+}
+
+pub fn table_cell(terms: Microfacet, n_dot_v: f64, m: f64) -> TableCell {
     let last = (MS_TABLE_SIDE - 1) as f64;
     let u = n_dot_v.clamp(0.0, 1.0) * last;
     let w = m.clamp(0.0, 1.0) * last;
     let (i, j) = ((u.floor() as usize).min(MS_TABLE_SIDE - 2), (w.floor() as usize).min(MS_TABLE_SIDE - 2));
-    let (fu, fw) = (u - i as f64, w - j as f64);
     let base = ms_pair(terms) * MS_TABLE_SIDE * MS_TABLE_SIDE;
-    let at = |jj: usize, ii: usize| table[base + jj * MS_TABLE_SIDE + ii] as f64;
-    let low = at(j, i) * (1.0 - fu) + at(j, i + 1) * fu;
-    let high = at(j + 1, i) * (1.0 - fu) + at(j + 1, i + 1) * fu;
-    low * (1.0 - fw) + high * fw
+    TableCell { base, j, i, fw: w - j as f64, fu: u - i as f64 }
+}
+
+/// Bilinear between a cell's four nodes: `low` the row at j (i, i + 1), `high` the row at j + 1.
+pub fn table_bilinear(c: TableCell, low: [f64; 2], high: [f64; 2]) -> f64 {
+    let l = low[0] * (1.0 - c.fu) + low[1] * c.fu;
+    let h = high[0] * (1.0 - c.fu) + high[1] * c.fu;
+    l * (1.0 - c.fw) + h * c.fw
+}
+
+/// One node of the E table: pair `base`'s row j (m), column i (`N·V`).
+pub fn ms_node(base: usize, j: usize, i: usize) -> f64 {
+    f64::from(ms_table()[base + j * MS_TABLE_SIDE + i])
+}
+
+/// docs/microfacet.md: E of the material's D and G at `n_dot_v` and `m`, bilinear between the
+/// table's nodes (both clamped to [0, 1]).
+pub fn ms_albedo(terms: Microfacet, n_dot_v: f64, m: f64) -> f64 {
+    let c = table_cell(terms, n_dot_v, m);
+    let low = [ms_node(c.base, c.j, c.i), ms_node(c.base, c.j, c.i + 1)];
+    let high = [ms_node(c.base, c.j + 1, c.i), ms_node(c.base, c.j + 1, c.i + 1)];
+    table_bilinear(c, low, high)
 }
 
 #[cfg(test)]

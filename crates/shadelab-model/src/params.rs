@@ -176,15 +176,19 @@ pub const TRANSMISSION: ParamRange = ParamRange {
 /// without it `v` follows μ. 1 is no interface; diamond is 2.42, and 3 covers every clear solid.
 pub const IOR: ParamRange =
     ParamRange { flag: "--ior", symbol: "v", meaning: "refractive index v (per channel)", min: 1.0, max: 3.0 };
-/// Absorption coefficient `a` per channel, per metre (docs/transparency.md): 100/m takes a 5 cm
-/// path past a·d = 5, where e^(−a·d) leaves under 1 % of the light.
+/// Absorption coefficient `a` per channel, per metre (docs/transparency.md), from the flag, the
+/// panel or a file: 5/m leaves under 1 % of the light after a metre (a·d = 5); a metal's 1e6/m
+/// the same after 5 µm, and `e^(−a·d)` is 0 in f64 long before that.
 pub const ABSORPTION: ParamRange = ParamRange {
     flag: "--absorption-coef",
     symbol: "a",
     meaning: "absorption coefficient a per metre (per channel)",
     min: 0.0,
-    max: 100.0,
+    max: 1e6,
 };
+/// A material's thickness `d` in metres, read from a file (`KHR_materials_volume`, extras).
+pub const THICKNESS: ParamRange =
+    ParamRange { flag: "d", symbol: "d", meaning: "thickness d in metres", min: 0.0, max: 1e6 };
 /// Phong exponent `h` (docs/model.md §3); "mirror" is accepted besides the numbers.
 pub const H: ParamRange = ParamRange {
     flag: "--h",

@@ -77,9 +77,9 @@ ranges! {
     /// Reflectance at normal incidence μ.
     Mu = params::MU;
     /// Absorption coefficient a.
-    Absorption = super::materials::ABSORPTION;
+    Absorption = params::ABSORPTION;
     /// Thickness d.
-    Thickness = super::materials::THICKNESS;
+    Thickness = params::THICKNESS;
     /// Refractive index v given directly.
     Ior = crate::params::IOR;
     /// Light intensity I_L.

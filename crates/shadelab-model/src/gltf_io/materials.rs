@@ -6,20 +6,12 @@ use super::extras::{self, Absorption, Flag, Ior, Mu, Named, Num, Phong, Rgb, Rou
 use super::scene_file::{Reader, num, rgb};
 use super::{ATTENUATION_COLOR_MIN, DEFAULT_IOR, DIELECTRIC_MU_MAX, GltfError, dielectric_f0, m_from_roughness};
 use crate::lighting::microfacet::{Distribution, Fresnel, Masking, Microfacet};
-use crate::params::{ParamRange, PhongExponent};
+use crate::params::PhongExponent;
 use crate::scene::{FresnelMix, Material, MetalRoughnessMap, NormalMap, OcclusionMap, Scene};
 use gltf::json;
 use gltf::json::validation::Checked;
 use serde::{Deserialize, Serialize};
 use serde_json::{Value, json};
-
-/// Absorption coefficient `a` read from extras (per unit length): `e^(−a·d)` is 0 in f64 long
-/// before 1e6.
-pub(super) const ABSORPTION: ParamRange =
-    ParamRange { flag: "a", symbol: "a", meaning: "absorption coefficient a", min: 0.0, max: 1e6 };
-/// Thickness `d` read from extras.
-pub(super) const THICKNESS: ParamRange =
-    ParamRange { flag: "d", symbol: "d", meaning: "thickness d", min: 0.0, max: 1e6 };
 
 /// An index of refraction this close to glTF's default is not written (`KHR_materials_ior`
 /// left out).
@@ -315,10 +307,10 @@ pub(super) fn pbr_material(m: &json::Material) -> Material {
             let c = (c as f64).clamp(ATTENUATION_COLOR_MIN, 1.0);
             // Beer's law: c^(x/D) = e^(−a·x) with a = −ln(c)/D (docs/model.md §7); D = ∞ (the
             // default): none.
-            if dist > 0.0 && dist.is_finite() { (-c.ln() / dist).min(ABSORPTION.max) } else { 0.0 }
+            if dist > 0.0 && dist.is_finite() { (-c.ln() / dist).min(crate::params::ABSORPTION.max) } else { 0.0 }
         });
         let d = v.thickness_factor.0 as f64;
-        (a, if d.is_finite() { d.clamp(0.0, THICKNESS.max) } else { 0.0 })
+        (a, if d.is_finite() { d.clamp(0.0, crate::params::THICKNESS.max) } else { 0.0 })
     });
     Material {
         name: String::new(),

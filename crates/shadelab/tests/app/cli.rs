@@ -43,7 +43,7 @@ fn bad_values_exit_2_with_one_line_naming_flag_and_range() {
         (&["--output", "x.bmp"], &["--output", ".png, .exr"]),
         (&["--ior", "0.5"], &["--ior", "[1, 3]"]),
         (&["--ior", "1.5,1.6"], &["--ior", "R,G,B"]),
-        (&["--absorption-coef", "-1"], &["--absorption-coef", "[0, 100]"]),
+        (&["--absorption-coef", "-1"], &["--absorption-coef", "[0, 1000000]"]),
         (&["--absorption", "approximate"], &["--absorption", "exact, rule"]),
         (&["--glass-exit", "rays"], &["--glass-exit", "analytic, back-faces"]),
         (&["--glass-view", "depth"], &["--glass-view", "color, tir, path, regime"]),

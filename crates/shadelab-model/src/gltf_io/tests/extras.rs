@@ -32,7 +32,7 @@ fn extras_null_values_and_several_bad_keys() {
     let e = error(json!({ "shadelab": { "d": -1, "a": [1, 2], "m": "rough" } }));
     assert!(e.contains("extras.shadelab.m = \"rough\" is not a number in [0, 1]"), "{e}");
     let e = error(json!({ "shadelab": { "a": [1, 2] } }));
-    assert!(e.contains("extras.shadelab.a = [1,2] is not 3 numbers in [0, 1000000] (absorption coefficient a)"), "{e}");
+    assert!(e.contains("extras.shadelab.a = [1,2] is not 3 numbers in [0, 1000000] (absorption coefficient a per metre (per channel))"), "{e}");
     assert!(error(json!({ "shadelab": 3 })).contains("material 0: extras.shadelab is not an object"));
     // Keys shadelab does not write are ignored; so are extras without `shadelab`.
     let s = load(&material(json!({ "shadelab": { "unknown": true, "m": 0.5 }, "other": 1 })));

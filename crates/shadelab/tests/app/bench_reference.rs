@@ -1,7 +1,7 @@
 //! `bench reference` and the reference on a mesh past the old brute-force limit of 10⁴ triangles
 //! (docs/reference.md): correctness only; the times are reported, never asserted.
 
-use crate::common::{out_dir, shadelab};
+use crate::common::{out_dir, render, shadelab};
 
 /// A 20 000-triangle generated sphere renders as a reference (through its hierarchy), and `bench
 /// reference` reports its triangles, its hierarchy's bytes and both timings.
@@ -18,20 +18,7 @@ fn a_large_mesh_has_a_reference_and_bench_reference_reports_it() {
         .find(|p| p.extension().is_some_and(|x| x == "glb"))
         .expect("bench mesh wrote a .glb");
     let (scene, png) = (glb.to_str().unwrap(), dir.join("reference.png"));
-    let o = shadelab(&[
-        "render",
-        "--reference",
-        "--scene",
-        scene,
-        "--width",
-        "64",
-        "--height",
-        "36",
-        "--output",
-        png.to_str().unwrap(),
-    ]);
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-    let img = image::open(&png).unwrap().to_rgba8();
+    let img = render(&["--reference", "--scene", scene], (64, 36), &png).to_rgba8();
     // The sphere is in the middle of the view, lit; the corner is the background.
     assert!(img.get_pixel(32, 18)[0] > 2 * img.get_pixel(0, 0)[0].max(20), "{:?}", img.get_pixel(32, 18));
     let o = shadelab(&["bench", "reference", "--scene", scene, "--width", "32", "--height", "18", "--runs", "1"]);

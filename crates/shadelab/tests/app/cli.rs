@@ -4,7 +4,7 @@
 //! `cli_compare.rs`.
 
 use crate::common;
-use crate::common::{error_lines, out_dir, shadelab};
+use crate::common::{error_lines, out_dir, render, shadelab};
 use shadelab_model::shadows::{ShadowFilter, ShadowSettings};
 
 #[test]
@@ -70,21 +70,7 @@ fn every_shading_and_specular_combination_renders_a_png() {
     for shading in ["flat", "gouraud", "phong"] {
         for specular in ["phong", "cook-torrance"] {
             let path = out_dir().join(format!("{shading}-{specular}.png"));
-            let o = shadelab(&[
-                "render",
-                "--shading",
-                shading,
-                "--specular",
-                specular,
-                "--width",
-                "97",
-                "--height",
-                "41",
-                "--output",
-                path.to_str().unwrap(),
-            ]);
-            assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-            let img = image::open(&path).unwrap();
+            let img = render(&["--shading", shading, "--specular", specular], (97, 41), &path);
             assert_eq!((img.width(), img.height()), (97, 41));
         }
     }
@@ -168,35 +154,10 @@ fn extreme_legal_values_write_an_exr_without_nonfinite_pixels() {
         ("phong", "field", "256", "hard", "spot"),
     ];
     for (specular, scene, side, filter, light) in cases {
-        let o = shadelab(&[
-            "render",
-            "--scene",
-            scene,
-            "--shadow-resolution",
-            side,
-            "--shadow-filter",
-            filter,
-            "--specular",
-            specular,
-            "--m",
-            "0",
-            "--h",
-            "1e9",
-            "--mu",
-            "1",
-            "--falloff",
-            "1e6",
-            "--light",
-            light,
-            "--width",
-            "160",
-            "--height",
-            "90",
-            "--output",
-            path.to_str().unwrap(),
-        ]);
-        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-        let img = image::open(&path).unwrap().to_rgba32f();
+        let extremes = ["--m", "0", "--h", "1e9", "--mu", "1", "--falloff", "1e6"];
+        let shadows = ["--scene", scene, "--shadow-resolution", side, "--shadow-filter", filter];
+        let args = [&shadows[..], &["--specular", specular, "--light", light], &extremes].concat();
+        let img = render(&args, (160, 90), &path).to_rgba32f();
         assert_eq!((img.width(), img.height()), (160, 90));
         assert!(img.pixels().all(|p| p.0.iter().all(|c| c.is_finite() && *c >= 0.0)), "{specular} {scene}");
         // Linear float: the background is stored as-is, not sRGB-encoded.
@@ -517,28 +478,11 @@ fn bench_mesh_and_bench_load_report_phases_and_peak_memory() {
 #[test]
 fn camera_picks_one_of_the_files_cameras() {
     let file = common::two_camera_scene(&out_dir(), "two-cameras.gltf");
-    let render = |camera: &str| {
+    let view = |camera: &str| {
         let png = out_dir().join(format!("camera-{camera}.png"));
-        let o = shadelab(&[
-            "render",
-            "--scene",
-            file.to_str().unwrap(),
-            "--camera",
-            camera,
-            "--width",
-            "96",
-            "--height",
-            "54",
-            "--output",
-            png.to_str().unwrap(),
-        ]);
-        (o, png)
+        render(&["--scene", file.to_str().unwrap(), "--camera", camera], (96, 54), &png).to_rgb8()
     };
-    let (o, first) = render("0");
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-    let (o, above) = render("1");
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-    let (a, b) = (image::open(&first).unwrap().to_rgb8(), image::open(&above).unwrap().to_rgb8());
+    let (a, b) = (view("0"), view("1"));
     let differ = a.pixels().zip(b.pixels()).filter(|(p, q)| p != q).count();
     assert!(differ > (96 * 54) / 4, "a camera from above sees another picture: {differ} pixels differ");
     for (args, says) in [

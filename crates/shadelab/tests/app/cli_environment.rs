@@ -1,7 +1,7 @@
 //! `render --environment` (docs/environment.md): the environment takes I_amb's place, its effect
 //! is explained, a map file is read, and bad flags and files are one line each.
 
-use crate::common::{error_lines, out_dir, shadelab};
+use crate::common::{error_lines, out_dir, render, shadelab};
 
 /// The sky turns the environment's effect on and says why; a map file lights the scene, and a
 /// 1×1 map of I_amb's colour draws the image I_amb draws.
@@ -42,11 +42,7 @@ fn the_environment_replaces_the_ambient() {
     std::fs::write(&map, shadelab_model::lighting::env_file::write_env_exr(&one).unwrap()).unwrap();
     let draw = |extra: &[&str], name: &str| {
         let path = dir.join(name);
-        let o = shadelab(
-            &[&["render", "--width", "96", "--height", "54", "--output", path.to_str().unwrap()][..], extra].concat(),
-        );
-        assert_eq!(o.status.code(), Some(0), "{extra:?}: {:?}", error_lines(&o));
-        image::open(path).unwrap().to_rgb8().into_raw()
+        render(extra, (96, 54), &path).to_rgb8().into_raw()
     };
     let constant = draw(&[], "constant.png");
     let mapped = draw(&["--environment", map.to_str().unwrap(), "--env-specular", "off"], "mapped.png");

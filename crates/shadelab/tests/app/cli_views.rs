@@ -2,7 +2,7 @@
 //! `render --term` (one term alone, the shadow factor) and `shadelab figures`.
 
 use crate::common;
-use crate::common::{error_lines, out_dir, shadelab};
+use crate::common::{error_lines, out_dir, render, shadelab};
 use std::process::Command;
 
 /// `render --overlay`: the self-shadow boundary is accepted and drawn.
@@ -11,39 +11,11 @@ fn overlay_terminator_renders_and_a_bad_value_is_one_line() {
     let figure = common::root().join("assets/figure-7-3-pyramid.gltf");
     let png = out_dir().join("terminator.png");
     for scene in [figure.to_str().unwrap(), "pyramid"] {
-        let o = shadelab(&[
-            "render",
-            "--scene",
-            scene,
-            "--overlay",
-            "terminator",
-            "--width",
-            "160",
-            "--height",
-            "90",
-            "--output",
-            png.to_str().unwrap(),
-        ]);
-        assert!(o.status.success(), "{scene}: {}", String::from_utf8_lossy(&o.stderr));
-        let img = image::open(&png).unwrap().to_rgb8();
+        let img = render(&["--scene", scene, "--overlay", "terminator"], (160, 90), &png).to_rgb8();
         assert!(img.pixels().any(|p| p.0 == [0, 255, 255]), "{scene}: no boundary pixel");
     }
     // Normals (yellow) and creases (orange, sRGB-encoded) over the cylinder, in one image.
-    let o = shadelab(&[
-        "render",
-        "--scene",
-        "cylinder",
-        "--overlay",
-        "normals,creases,normals",
-        "--width",
-        "320",
-        "--height",
-        "180",
-        "--output",
-        png.to_str().unwrap(),
-    ]);
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-    let img = image::open(&png).unwrap().to_rgb8();
+    let img = render(&["--scene", "cylinder", "--overlay", "normals,creases,normals"], (320, 180), &png).to_rgb8();
     assert!(img.pixels().any(|p| p.0 == [255, 255, 0]), "no normal pixel");
     assert!(img.pixels().any(|p| p.0[0] == 255 && p.0[2] == 0 && p.0[1] > 100 && p.0[1] < 200), "no crease pixel");
     for bad in ["outline", "terminator,outline", ""] {

@@ -13,6 +13,16 @@ pub fn shadelab(args: &[&str]) -> Output {
         .expect("run shadelab")
 }
 
+/// `shadelab render ARGS --width W --height H --output OUT`, which must succeed (its stderr is the
+/// failure's message), and the image it wrote.
+pub fn render(args: &[&str], (w, h): (u32, u32), out: &Path) -> image::DynamicImage {
+    let (w, h) = (w.to_string(), h.to_string());
+    let size = ["--width", w.as_str(), "--height", h.as_str(), "--output", out.to_str().unwrap()];
+    let o = shadelab(&[&["render"][..], args, &size].concat());
+    assert!(o.status.success(), "{args:?}: {}", String::from_utf8_lossy(&o.stderr));
+    image::open(out).unwrap_or_else(|e| panic!("{}: {e}", out.display()))
+}
+
 /// The folder the CLI tests write into.
 pub fn out_dir() -> PathBuf {
     let d = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("cli");

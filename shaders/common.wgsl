@@ -16,6 +16,7 @@ const G_V_DOT_H_MIN: f32 = 1e-30;
 const FRESNEL_SQRT_MU_MAX: f32 = 0.9999;
 const FRESNEL_G_PLUS_C_MIN: f32 = 1e-6;
 const SMITH_DENOM_MIN: f32 = 1e-30;
+const BLINN_PHONG_COS_MIN: f32 = 1e-12;
 const MS_ALBEDO_MIN: f32 = 0.05;
 const LIGHT_DIST_MIN: f32 = 1e-4;
 const D0_MIN: f32 = 1e-3;

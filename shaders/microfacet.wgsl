@@ -12,6 +12,7 @@ const MICROFACET_FIELD_MASK: u32 = 255u;
 // Each term's codes (Distribution::code, Masking::code, Fresnel::code).
 const DISTRIBUTION_BECKMANN: u32 = 0u;
 const DISTRIBUTION_GGX: u32 = 1u;
+const DISTRIBUTION_BLINN_PHONG: u32 = 2u;
 const MASKING_V_GROOVE: u32 = 0u;
 const MASKING_SMITH: u32 = 1u;
 const MASKING_SMITH_CORRELATED: u32 = 2u;
@@ -51,16 +52,84 @@ fn d_ggx(n_dot_h: f32, sin2_nh: f32, m: f32) -> f32 {
     return select(0.0, a2 / (4.0 * k * k), n_dot_h > 0.0);
 }
 
+// docs/microfacet.md: the normalized Blinn–Phong distribution (h + 2)/2π · cos^h θ_h in the
+// chapter's scale, (h + 2)/8 · (N·H)^h with h = 2/m² − 2 held at 0 or more: its peak 1/(4m²) is
+// Beckmann's and GGX's at the same m. (N·H)^h is exp(h/2 · ln(1 − sin²θ_h)) from `sin2_nh`
+// (|N × H|², as Beckmann's): at h = 2·10⁶ a rounded N·H would be off by 10 %.
+fn d_blinn_phong(n_dot_h: f32, sin2_nh: f32, m: f32) -> f32 {
+    let a = max(m, M_MIN);
+    let h = max(2.0 / (a * a) - 2.0, 0.0);
+    let d = (h + 2.0) / 8.0 * exp(h / 2.0 * ln_one_minus(clamp(sin2_nh, 0.0, 1.0)));
+    return select(0.0, d, n_dot_h > 0.0);
+}
+
+// Γ(x + ½)/Γ(x) for x ≥ 1: the recurrence x/(x + ½) · Γ(x + 3/2)/Γ(x + 1) up to x ≥ 5, then the
+// asymptotic series √x·(1 − 1/8x + 1/128x² + 5/1024x³ − 21/32768x⁴), within 5e-7 there.
+fn gamma_half_ratio(x_in: f32) -> f32 {
+    var x = max(x_in, 1.0);
+    var r = 1.0;
+    for (var i = 0u; i < 4u; i++) {
+        if (x < 5.0) {
+            r *= x / (x + 0.5);
+            x += 1.0;
+        }
+    }
+    let y = 1.0 / x;
+    return r * sqrt(x) * (1.0 - y / 8.0 + y * y / 128.0 + 5.0 * y * y * y / 1024.0 - 21.0 * y * y * y * y / 32768.0);
+}
+
+// 1 − eˣ for x ≤ 0, by its series −x − x²/2 − x³/6 where |x| < 1e-2: 1 − exp(x) in f32 would keep
+// none of its digits there.
+fn one_minus_exp(x: f32) -> f32 {
+    return select(1.0 - exp(x), -x * (1.0 + x * (0.5 + x / 6.0)), abs(x) < 1e-2);
+}
+
+// ln(1 − y) for y in [0, 1), by its series −y − y²/2 − y³/3 − y⁴/4 where y < 1e-2: 1 − y in f32
+// would round y away there. (At y = 1, log(0) is discarded by the select and by its caller.)
+fn ln_one_minus(y: f32) -> f32 {
+    let far = log(max(1.0 - y, PHONG_LOG2_ARG_MIN));
+    return select(far, -y * (1.0 + y * (0.5 + y * (1.0 / 3.0 + y / 4.0))), y < 1e-2);
+}
+
+// docs/microfacet.md: Smith's Λ of the normalized Blinn–Phong D at N·X = c, h = 2/m² − 2 held at
+// 0 or more: Student's t slopes with h + 2 degrees of freedom, Λ = sⁿ⁺¹/(n·B(½, (n + 1)/2)) ·
+// ∫₀¹ (1/c − u^(1/n)/√(1 − s²·u^(2/n))) du, n = h + 1, by BLINN_PHONG_LAMBDA_NODES on
+// u = 1 − (1 − t)² (generated from the f64 twin's table). c is held at BLINN_PHONG_COS_MIN or more.
+fn lambda_blinn_phong(c_in: f32, m: f32) -> f32 {
+    let c = clamp(c_in, BLINN_PHONG_COS_MIN, 1.0);
+    let a = max(m, M_MIN);
+    let h = max(2.0 / (a * a) - 2.0, 0.0);
+    let n = h + 1.0;
+    var k = 0.0;
+    for (var i = 0u; i < 8u; i++) {
+        let t = BLINN_PHONG_LAMBDA_NODES[i].x;
+        let u = t * (2.0 - t);
+        let root = exp(log(u) / n);
+        // 1 − s²·u^(2/n) = (1 − u^(2/n)) + c²·u^(2/n), each part kept to its digits.
+        let d = one_minus_exp(2.0 * log(u) / n) + c * c * root * root;
+        k += BLINN_PHONG_LAMBDA_NODES[i].y * 2.0 * (1.0 - t) * (1.0 / c - root / sqrt(d));
+    }
+    let s_pow = exp((n + 1.0) / 2.0 * ln_one_minus(c * c));
+    // 1/B(½, (n + 1)/2) = Γ((n + 2)/2)/(√π·Γ((n + 1)/2)); 0.5641896 is 1/√π.
+    let inv_beta = gamma_half_ratio((h + 2.0) / 2.0) * 0.5641896;
+    return select(s_pow * inv_beta / n * k, 0.0, c >= 1.0);
+}
+
 // Smith's single-direction masking G1 = 1/(1 + Λ) at N·X = c for the distribution `d`, α = m.
 // GGX: 2c/(c + √(α² + (1 − α²)c²)), exact. Beckmann: Walter et al. 2007's rational fit (eq. 27)
 // in a = c/(α sin θ), multiplied through by (α sin θ)² so that sin θ = 0 never divides; 1 from
-// a = 1.6 up.
+// a = 1.6 up. Blinn–Phong: its own Λ (lambda_blinn_phong), 0 at c = 0.
 fn smith_g1(d: u32, c_in: f32, m: f32) -> f32 {
     let c = clamp(c_in, 0.0, 1.0);
     let a = max(m, M_MIN);
     if (d == DISTRIBUTION_GGX) {
         return 2.0 * c / (c + sqrt(a * a + (1.0 - a * a) * c * c));
     }
+#if EFFECT_D_BLINN_PHONG
+    if (d == DISTRIBUTION_BLINN_PHONG) {
+        return select(0.0, 1.0 / (1.0 + lambda_blinn_phong(c, a)), c > 0.0);
+    }
+#endif
     let t = a * sqrt((1.0 - c) * (1.0 + c));
     // min(…, 1): the fit overshoots 1 by 3e-7 just below a = 1.6.
     let fit = min((3.535 * c * t + 2.181 * c * c) / (t * t + 2.276 * c * t + 2.577 * c * c), 1.0);
@@ -189,6 +258,11 @@ fn microfacet_d(terms: u32, n_dot_h: f32, sin2_nh: f32, m: f32) -> f32 {
 #if EFFECT_D_GGX
     if (d == DISTRIBUTION_GGX) {
         return d_ggx(n_dot_h, sin2_nh, m);
+    }
+#endif
+#if EFFECT_D_BLINN_PHONG
+    if (d == DISTRIBUTION_BLINN_PHONG) {
+        return d_blinn_phong(n_dot_h, sin2_nh, m);
     }
 #endif
     return 0.0;

@@ -35,6 +35,8 @@ pub fn weighted_albedo(terms: Microfacet, m: f64, cos_v: f64, n: usize, weight: 
         let tan2 = match terms.d {
             Distribution::Beckmann => -a2 * (1.0 - u).ln(),
             Distribution::Ggx => a2 * u / (1.0 - u),
+            // N·H = (1 − u)^(1/(h + 2)) with h + 2 = 2/α² (h ≥ 0: α² ≤ 1).
+            Distribution::BlinnPhong => (-a2.min(1.0) * (1.0 - u).ln()).exp_m1(),
         };
         let cos_h = 1.0 / (1.0 + tan2).sqrt();
         let sin_h = (tan2 / (1.0 + tan2)).sqrt();

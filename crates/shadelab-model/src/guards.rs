@@ -61,6 +61,11 @@ pub const FRESNEL_G_PLUS_C_MIN: f64 = 1e-6;
 /// which it makes 0; 1e-30 is a normal f32.
 pub const SMITH_DENOM_MIN: f64 = 1e-30;
 
+/// Smallest `N·X` Blinn–Phong's Smith Λ evaluates (a smaller positive cosine is clamped to it):
+/// its `1/c` and `1/√(c²·u^(2/n))` stay at most 1e12, far inside f32, and `c²` a normal f32;
+/// G1 there is at most 4e-9 (about `c·√(2π(h + 1))` at the largest h), so the clamp moves no pixel.
+pub const BLINN_PHONG_COS_MIN: f64 = 1e-12;
+
 /// Smallest lobe albedo E the multiple-scattering compensation `1 + F0·(1 − E)/E` divides by.
 /// The table's albedos are all above 0.3 (GGX with Smith at m = 1, normal view); the floor only
 /// keeps a value the table does not hold from dividing by 0, and bounds the factor by 20.
@@ -119,6 +124,7 @@ pub const ALL: &[(&str, f64)] = &[
     ("FRESNEL_SQRT_MU_MAX", FRESNEL_SQRT_MU_MAX),
     ("FRESNEL_G_PLUS_C_MIN", FRESNEL_G_PLUS_C_MIN),
     ("SMITH_DENOM_MIN", SMITH_DENOM_MIN),
+    ("BLINN_PHONG_COS_MIN", BLINN_PHONG_COS_MIN),
     ("MS_ALBEDO_MIN", MS_ALBEDO_MIN),
     ("LIGHT_DIST_MIN", LIGHT_DIST_MIN),
     ("D0_MIN", D0_MIN),

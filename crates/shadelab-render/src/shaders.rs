@@ -145,12 +145,21 @@ pub fn generated_constants() -> Vec<(&'static str, usize)> {
     ]
 }
 
+/// Blinn–Phong's Λ quadrature (t, w) as a WGSL constant, from the f64 twin's table, so that both
+/// integrate with the same nodes.
+fn blinn_phong_lambda_nodes() -> String {
+    use shadelab_model::lighting::microfacet::BLINN_PHONG_LAMBDA_NODES as NODES;
+    let items: Vec<String> = NODES.iter().map(|[t, w]| format!("vec2({:?}, {:?})", *t as f32, *w as f32)).collect();
+    format!("const BLINN_PHONG_LAMBDA_NODES = array<vec2<f32>, {}>({});\n", NODES.len(), items.join(", "))
+}
+
 /// The generated constants, then `files`, one after another.
 fn assemble<'a>(files: impl Iterator<Item = &'a str>) -> String {
     let mut out = String::from("// Generated from the model's term tables (shaders.rs, generated_constants).\n");
     for (name, value) in generated_constants() {
         out += &format!("const {name}: u32 = {value}u;\n");
     }
+    out += &blinn_phong_lambda_nodes();
     out + &files.collect::<Vec<_>>().join("\n")
 }
 

@@ -128,6 +128,16 @@ declare_effects! {
         functions: &["d_ggx"],
         members: &[],
     },
+    /// The normalized Blinn–Phong D, the chapter's Phong lobe as a facet distribution
+    /// (docs/microfacet.md).
+    DistributionBlinnPhong {
+        explain: "Blinn–Phong D (the Phong lobe as facets)",
+        name: "Blinn–Phong D",
+        label: "blinn-phong",
+        define: Some("EFFECT_D_BLINN_PHONG"),
+        functions: &["d_blinn_phong", "lambda_blinn_phong", "gamma_half_ratio", "one_minus_exp", "ln_one_minus"],
+        members: &[],
+    },
     /// The chapter's V-groove G `min{1, …}` (docs/model.md §5).
     MaskingVGroove {
         explain: "V-groove G min{1, …} (the chapter's)",

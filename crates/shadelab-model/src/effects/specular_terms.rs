@@ -6,9 +6,10 @@ use super::analyze::Analysis;
 use super::declared::Effect;
 
 /// The microfacet terms' effects: each D, G and F of [`crate::lighting::microfacet`].
-pub const MICROFACET_EFFECTS: [Effect; 7] = [
+pub const MICROFACET_EFFECTS: [Effect; 8] = [
     Effect::DistributionBeckmann,
     Effect::DistributionGgx,
+    Effect::DistributionBlinnPhong,
     Effect::MaskingVGroove,
     Effect::MaskingSmith,
     Effect::MaskingSmithCorrelated,
@@ -23,6 +24,7 @@ pub fn microfacet_effects(t: crate::lighting::microfacet::Microfacet) -> [Effect
         match t.d {
             Distribution::Beckmann => Effect::DistributionBeckmann,
             Distribution::Ggx => Effect::DistributionGgx,
+            Distribution::BlinnPhong => Effect::DistributionBlinnPhong,
         },
         match t.g {
             Masking::VGroove => Effect::MaskingVGroove,

@@ -17,6 +17,9 @@ pub enum Distribution {
     Beckmann,
     /// Trowbridge–Reitz, called GGX ([`d_ggx`]): glTF's, Filament's and Bevy's D.
     Ggx,
+    /// The normalized Blinn–Phong lobe `(h + 2)/2π · cos^h θ_h` ([`d_blinn_phong`]): the chapter's
+    /// Phong lobe written as a facet distribution, h from m by the project's rule.
+    BlinnPhong,
 }
 
 /// The masking–shadowing term G.
@@ -65,7 +68,8 @@ impl Fresnel {
 
 impl NamedValue for Distribution {
     const FLAG: &'static str = "--distribution";
-    const ALL: &'static [(&'static str, Self)] = &[("beckmann", Distribution::Beckmann), ("ggx", Distribution::Ggx)];
+    const ALL: &'static [(&'static str, Self)] =
+        &[("beckmann", Distribution::Beckmann), ("ggx", Distribution::Ggx), ("blinn-phong", Distribution::BlinnPhong)];
 }
 
 impl NamedValue for Masking {
@@ -204,16 +208,102 @@ pub fn d_ggx(n_dot_h: f64, sin2_nh: f64, m: f64) -> f64 {
     a2 / (4.0 * k * k)
 }
 
+/// docs/microfacet.md: the normalized Blinn–Phong distribution `(h + 2)/2π · cos^h θ_h` in the
+/// chapter's scale (π/4 × it, as the other two): `D = (h + 2)/8 · (N·H)^h` with `h = 2/m² − 2`
+/// (`PhongExponent::from_m`'s rule, without its clamp to [1, H_MAX]: h = 0, a uniform lobe, is a
+/// valid D), so that its peak `1/(4m²)` equals Beckmann's and GGX's at the same m. h is held at
+/// 0 or more, where the normalization holds. `(N·H)^h` is taken as `exp(h/2 · ln(1 − sin²θ_h))`
+/// from `sin2_nh` (|N × H|², as Beckmann's): at h = 2·10⁶ a rounded N·H would be off by 10 %.
+pub fn d_blinn_phong(n_dot_h: f64, sin2_nh: f64, m: f64) -> f64 {
+    if n_dot_h <= 0.0 {
+        return 0.0;
+    }
+    let h = (2.0 / m.max(M_MIN).powi(2) - 2.0).max(0.0);
+    (h + 2.0) / 8.0 * (h / 2.0 * ln_one_minus(sin2_nh.clamp(0.0, 1.0))).exp()
+}
+
+/// Gauss–Legendre nodes and weights (t, w) on [0, 1], 8 of them, for [`lambda_blinn_phong`]'s
+/// integral; the WGSL's `BLINN_PHONG_LAMBDA_NODES` is generated from this table (`shaders.rs`).
+pub const BLINN_PHONG_LAMBDA_NODES: [[f64; 2]; 8] = [
+    [0.019855071751231884, 0.05061426814518813],
+    [0.10166676129318663, 0.11119051722668724],
+    [0.23723379504183551, 0.15685332293894364],
+    [0.4082826787521751, 0.18134189168918099],
+    [0.5917173212478249, 0.18134189168918099],
+    [0.7627662049581645, 0.15685332293894364],
+    [0.8983332387068134, 0.11119051722668724],
+    [0.9801449282487681, 0.05061426814518813],
+];
+
+/// `Γ(x + ½)/Γ(x)` for x ≥ 1: the recurrence `Γ(x + ½)/Γ(x) = x/(x + ½) · Γ(x + 3/2)/Γ(x + 1)`
+/// up to x ≥ 5, then the asymptotic series `√x·(1 − 1/8x + 1/128x² + 5/1024x³ − 21/32768x⁴)`,
+/// whose next term is under 5e-7 of it there.
+pub fn gamma_half_ratio(x_in: f64) -> f64 {
+    let (mut x, mut r) = (x_in.max(1.0), 1.0);
+    for _ in 0..4 {
+        if x < 5.0 {
+            r *= x / (x + 0.5);
+            x += 1.0;
+        }
+    }
+    let y = 1.0 / x;
+    r * x.sqrt() * (1.0 - y / 8.0 + y * y / 128.0 + 5.0 * y * y * y / 1024.0 - 21.0 * y * y * y * y / 32768.0)
+}
+
+/// `1 − eˣ` for x ≤ 0, by its series `−x − x²/2 − x³/6` where |x| < 1e-2 (error under 5e-10 of
+/// it), where `1 − exp(x)` in f32 would keep none of its digits.
+pub fn one_minus_exp(x: f64) -> f64 {
+    if x.abs() < 1e-2 { -x * (1.0 + x * (0.5 + x / 6.0)) } else { 1.0 - x.exp() }
+}
+
+/// `ln(1 − y)` for y in [0, 1], by its series `−y − y²/2 − y³/3 − y⁴/4` where y < 1e-2 (error
+/// under 3e-11 of it), where `1 − y` in f32 would round y away; `1 − y` is floored at
+/// `PHONG_LOG2_ARG_MIN`, as the WGSL's, so that y = 1 gives a finite −87.
+pub fn ln_one_minus(y: f64) -> f64 {
+    if y < 1e-2 { -y * (1.0 + y * (0.5 + y * (1.0 / 3.0 + y / 4.0))) } else { (1.0 - y).max(PHONG_LOG2_ARG_MIN).ln() }
+}
+
+/// docs/microfacet.md: Smith's Λ of the normalized Blinn–Phong D at `N·X = c`, h = 2/m² − 2 held
+/// at 0 or more. Its slopes follow Student's t-distribution with h + 2 degrees of freedom, for
+/// which `Λ = sⁿ⁺¹/(n·B(½, (n + 1)/2)) · ∫₀¹ (1/c − u^(1/n)/√(1 − s²·u^(2/n))) du`, n = h + 1,
+/// s = sin θ; the integral by [`BLINN_PHONG_LAMBDA_NODES`] on `u = 1 − (1 − t)²`. 0 at c = 1;
+/// c is held at `BLINN_PHONG_COS_MIN` or more.
+pub fn lambda_blinn_phong(c_in: f64, m: f64) -> f64 {
+    let c = c_in.clamp(BLINN_PHONG_COS_MIN, 1.0);
+    let a = m.max(M_MIN);
+    let h = (2.0 / (a * a) - 2.0).max(0.0);
+    let n = h + 1.0;
+    let mut k = 0.0;
+    for [t, w] in BLINN_PHONG_LAMBDA_NODES {
+        let u = t * (2.0 - t);
+        let root = (u.ln() / n).exp();
+        // 1 − s²·u^(2/n) = (1 − u^(2/n)) + c²·u^(2/n), each part kept to its digits.
+        let d = one_minus_exp(2.0 * u.ln() / n) + c * c * root * root;
+        k += w * 2.0 * (1.0 - t) * (1.0 / c - root / d.sqrt());
+    }
+    let s_pow = ((n + 1.0) / 2.0 * ln_one_minus(c * c)).exp();
+    // 1/B(½, (n + 1)/2) = Γ((n + 2)/2)/(√π·Γ((n + 1)/2)).
+    let inv_beta = gamma_half_ratio((h + 2.0) / 2.0) * 0.5 * std::f64::consts::FRAC_2_SQRT_PI;
+    if c >= 1.0 { 0.0 } else { s_pow * inv_beta / n * k }
+}
+
 /// Smith's single-direction masking `G1 = 1/(1 + Λ)` at `N·X = c` for the material's D, with α = m:
 /// - GGX: `2c/(c + √(α² + (1 − α²)c²))`, exact; the denominator is at least min(α, 1).
 /// - Beckmann: Walter et al. 2007's rational fit (their eq. 27) in `a = c/(α sin θ)`,
 ///   `(3.535a + 2.181a²)/(1 + 2.276a + 2.577a²)` below a = 1.6 and 1 above, multiplied through by
 ///   (α sin θ)² so that nothing divides by sin θ = 0.
+/// - Blinn–Phong: its own Λ ([`lambda_blinn_phong`]), `1/(1 + Λ)`; 0 at c = 0.
 pub fn smith_g1(d: Distribution, c_in: f64, m: f64) -> f64 {
     let c = c_in.clamp(0.0, 1.0);
     let a = m.max(M_MIN);
     match d {
         Distribution::Ggx => 2.0 * c / (c + (a * a + (1.0 - a * a) * c * c).sqrt()),
+        Distribution::BlinnPhong => {
+            if c <= 0.0 {
+                return 0.0;
+            }
+            1.0 / (1.0 + lambda_blinn_phong(c, a))
+        }
         Distribution::Beckmann => {
             let t = a * ((1.0 - c) * (1.0 + c)).sqrt();
             if c >= 1.6 * t {
@@ -342,6 +432,7 @@ pub fn microfacet_d(terms: Microfacet, n_dot_h: f64, sin2_nh: f64, m: f64) -> f6
     match terms.d {
         Distribution::Beckmann => d_beckmann(n_dot_h, sin2_nh, m),
         Distribution::Ggx => d_ggx(n_dot_h, sin2_nh, m),
+        Distribution::BlinnPhong => d_blinn_phong(n_dot_h, sin2_nh, m),
     }
 }
 
@@ -467,9 +558,84 @@ mod tests {
         }
     }
 
+    /// The Blinn–Phong D in the chapter's scale is π/4 of a normalized D, peaks as Beckmann does,
+    /// and is the chapter's Phong lobe (N·H)^h with h = 2/m² − 2 times its normalization.
+    #[test]
+    fn blinn_phong_in_the_chapters_scale_is_pi_over_four_of_a_normalized_d() {
+        for m in [0.05, 0.2, 0.5, 1.0] {
+            let a = projected_area(|c, s2| d_blinn_phong(c, s2, m)) * 4.0 / PI;
+            assert!((a - 1.0).abs() < 1e-3, "m = {m}: ∫D cos = {a}");
+            assert!((d_blinn_phong(1.0, 0.0, m) - d_beckmann(1.0, 0.0, m)).abs() < 1e-9, "m = {m}");
+            let h = 2.0 / (m * m) - 2.0;
+            for c in [0.3f64, 0.9, 0.999] {
+                let lobe = (h + 2.0) / 8.0 * c.powf(h);
+                assert!((d_blinn_phong(c, 1.0 - c * c, m) - lobe).abs() <= 1e-9 * lobe.max(1.0), "m = {m} c = {c}");
+            }
+        }
+        // Hard cases: below the surface, at M_MIN (h = 2·10⁶), and m = 0.
+        assert_eq!(d_blinn_phong(-0.5, 0.75, 0.3), 0.0);
+        let grazing = d_blinn_phong(0.999, 1.0 - 0.999 * 0.999, M_MIN);
+        assert!(grazing.is_finite() && grazing >= 0.0);
+        assert_eq!(d_blinn_phong(1.0, 0.0, 0.0), d_blinn_phong(1.0, 0.0, M_MIN));
+        // Past its domain (sin² > 1 from a short normal) it stays finite.
+        assert!(d_blinn_phong(0.5, 2.0, 0.3).is_finite());
+    }
+
+    /// Blinn–Phong's Λ against Smith's own definition, computed independently: `(1 + Λ)·c` is the
+    /// facets' projected area toward the direction, `∫ max(0, ω·ω_m)·D(ω_m) dω_m` of the normalized
+    /// lobe `(h + 2)/2π·cos^h θ_m`, summed over a fine grid of facet normals. At h = 0 (m = 1) Λ is
+    /// `(1 − c)/(2c)`, GGX's at α = 1 (both lobes are uniform there).
+    #[test]
+    fn blinn_phong_lambda_is_smiths_projected_area() {
+        let projected = |c: f64, h: f64| {
+            let (s, theta_max) =
+                ((1.0 - c * c).sqrt(), if h > 0.0 { (1e-14f64.ln() / h).exp().acos() } else { 0.5 * PI });
+            let (nt, np) = (2000, 512);
+            let (dt, dp) = (theta_max / nt as f64, 2.0 * PI / np as f64);
+            let mut sum = 0.0;
+            for i in 0..nt {
+                let t = (i as f64 + 0.5) * dt;
+                let d = (h + 2.0) / (2.0 * PI) * t.cos().powf(h) * t.sin() * dt * dp;
+                for j in 0..np {
+                    let p = (j as f64 + 0.5) * dp;
+                    sum += d * (c * t.cos() + s * t.sin() * p.cos()).max(0.0);
+                }
+            }
+            sum
+        };
+        let mut worst = 0.0f64;
+        for m in [0.1, 0.3, 0.6, 0.9, 1.0] {
+            let h = 2.0 / (m * m) - 2.0;
+            for c in [0.05, 0.2, 0.5, 0.9] {
+                let reference = c / projected(c, h);
+                let g1 = smith_g1(Distribution::BlinnPhong, c, m);
+                worst = worst.max((g1 - reference).abs());
+            }
+        }
+        eprintln!("|G1 − Smith's projected area|: at most {worst:.2e}");
+        assert!(worst < BLINN_PHONG_G1_ERROR, "{worst}");
+        for c in [0.01, 0.3, 0.99] {
+            let g1 = smith_g1(Distribution::BlinnPhong, c, 1.0);
+            assert!((g1 - 2.0 * c / (1.0 + c)).abs() < 1e-5, "c = {c}: {g1}");
+        }
+        // Hard cases: at the normal, at grazing, below the guard and at the smallest m.
+        assert_eq!(lambda_blinn_phong(1.0, 0.3), 0.0);
+        assert_eq!(smith_g1(Distribution::BlinnPhong, 0.0, 0.3), 0.0);
+        for m in [0.0, M_MIN, 0.5, 1.0] {
+            for c in [1e-30, BLINN_PHONG_COS_MIN, 1e-6, 0.5, 1.0 - 1e-9] {
+                let l = lambda_blinn_phong(c, m);
+                assert!(l.is_finite() && l >= 0.0, "m = {m} c = {c}: {l}");
+            }
+        }
+    }
+
+    /// Measured: 9.8e-5 at most over the grid above (the 8-node quadrature; the grid's own sum is
+    /// good to about 1e-6). About twice that.
+    const BLINN_PHONG_G1_ERROR: f64 = 2e-4;
+
     #[test]
     fn smith_g1_is_one_at_the_normal_zero_at_grazing_and_falls_between() {
-        for d in [Distribution::Ggx, Distribution::Beckmann] {
+        for d in [Distribution::Ggx, Distribution::Beckmann, Distribution::BlinnPhong] {
             for m in [M_MIN, 0.1, 0.5, 1.0] {
                 assert!((smith_g1(d, 1.0, m) - 1.0).abs() < 1e-12, "{d:?} m = {m}");
                 assert_eq!(smith_g1(d, 0.0, m), 0.0, "{d:?} m = {m}");
@@ -494,7 +660,7 @@ mod tests {
 
     #[test]
     fn height_correlated_smith_lies_between_the_product_and_the_smaller_g1() {
-        for d in [Distribution::Ggx, Distribution::Beckmann] {
+        for d in [Distribution::Ggx, Distribution::Beckmann, Distribution::BlinnPhong] {
             for (nv, nl, m) in [(0.9, 0.2, 0.3), (0.5, 0.5, 0.8), (0.05, 0.99, 0.1), (0.0, 0.0, 0.5)] {
                 let (gv, gl) = (smith_g1(d, nv, m), smith_g1(d, nl, m));
                 let hc = g_smith_correlated(d, nv, nl, m);

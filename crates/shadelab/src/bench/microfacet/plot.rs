@@ -7,14 +7,18 @@ use plotters::prelude::*;
 use shadelab_model::lighting::microfacet::{Distribution, Masking};
 use std::path::Path;
 
-/// A hue per G, dark for Beckmann and light for GGX.
+/// A hue per G, dark for Beckmann, light for GGX and between them for Blinn–Phong.
 fn color(row: &FurnaceRow) -> RGBColor {
     let (r, g, b) = match row.terms.g {
         Masking::VGroove => (200, 60, 40),
         Masking::Smith => (40, 110, 190),
         Masking::SmithCorrelated => (40, 150, 60),
     };
-    let lift = |c: u8| if row.terms.d == Distribution::Ggx { c / 2 + 110 } else { c };
+    let lift = |c: u8| match row.terms.d {
+        Distribution::Beckmann => c,
+        Distribution::Ggx => c / 2 + 110,
+        Distribution::BlinnPhong => c / 4 * 3 + 55,
+    };
     RGBColor(lift(r), lift(g), lift(b))
 }
 

@@ -192,6 +192,7 @@ pub struct Uploader {
     queue: wgpu::Queue,
     globals_layout: wgpu::BindGroupLayout,
     object_layout: wgpu::BindGroupLayout,
+    tables: wgpu::Buffer,
 }
 
 impl Renderer {
@@ -202,6 +203,7 @@ impl Renderer {
             queue: self.queue.clone(),
             globals_layout: self.globals_layout.clone(),
             object_layout: self.object_layout.clone(),
+            tables: self.tables.clone(),
         }
     }
 
@@ -262,6 +264,7 @@ impl Uploader {
                 wgpu::BindGroupEntry { binding: 0, resource: globals.as_entire_binding() },
                 wgpu::BindGroupEntry { binding: 1, resource: env_levels.as_entire_binding() },
                 wgpu::BindGroupEntry { binding: 2, resource: env_occlusion.as_entire_binding() },
+                wgpu::BindGroupEntry { binding: 3, resource: self.tables.as_entire_binding() },
             ],
         });
         let (sets, object_bind_of) = crate::textures::bind_sets(scene);

@@ -4,7 +4,7 @@
 //! at `N·V` and m. A single-scatter lobe drops the light that bounces between facets; E says how
 //! much, and the factor puts it back, coloured by F0 as the bounces are. E comes from a table the
 //! project computes from [`crate::furnace::directional_albedo`] ([`ms_table`]), the same f32
-//! values on the GPU (`globals.ms_albedo`) and here.
+//! values on the GPU (`tables.ms_albedo`) and here.
 
 use super::microfacet::{Distribution, Masking, Microfacet};
 use crate::guards::MS_ALBEDO_MIN;
@@ -16,7 +16,7 @@ pub const MS_TABLE_SIDE: usize = 16;
 /// The D × G pairs, `d.code()·MASKING_COUNT + g.code()`, from the term tables (the WGSL's
 /// `MS_PAIRS` is generated from it, `shaders::generated_constants`).
 pub const MS_PAIRS: usize = Distribution::ALL.len() * Masking::ALL.len();
-/// vec4 slots of `globals.ms_albedo` (WGSL `MS_TABLE_VEC4S`, generated): every pair's nodes, four
+/// vec4 slots of `tables.ms_albedo` (WGSL `MS_TABLE_VEC4S`, generated): every pair's nodes, four
 /// floats a slot.
 pub const MS_TABLE_VEC4S: usize = (MS_PAIRS * MS_TABLE_SIDE * MS_TABLE_SIDE).div_ceil(4);
 /// Half vectors per side the table's integrals take (64² each: its error is under the
@@ -51,7 +51,7 @@ pub fn ms_table() -> &'static [f32] {
     })
 }
 
-/// The table as `globals.ms_albedo` holds it: four floats a slot, the rest zero.
+/// The table as `tables.ms_albedo` holds it: four floats a slot, the rest zero.
 pub fn ms_table_vec4s() -> [[f32; 4]; MS_TABLE_VEC4S] {
     let mut out = [[0.0; 4]; MS_TABLE_VEC4S];
     for (k, e) in ms_table().iter().enumerate() {

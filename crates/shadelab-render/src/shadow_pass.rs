@@ -342,8 +342,8 @@ impl Renderer {
     /// uniform for an image of `aspect` (`write_uniforms` calls it when the program has cast
     /// shadows). With `casting` false only an existing uniform is zeroed (every light
     /// unshadowed), so a stand-in program that still samples the maps shows no stale shadows.
-    pub(crate) fn write_shadows(&self, gpu_scene: &SceneGpu, scene: &Scene, casting: bool, aspect: f64) {
-        let mut slot = gpu_scene.shadows.lock().unwrap_or_else(|e| e.into_inner());
+    pub(crate) fn write_shadows(&self, gpu_scene: &mut SceneGpu, scene: &Scene, casting: bool, aspect: f64) {
+        let slot = &mut gpu_scene.shadows;
         if !casting {
             if let Some(maps) = slot.as_mut().filter(|m| m.casting) {
                 self.queue.write_buffer(&maps.uniform, 0, bytemuck::bytes_of(&ShadowsUniform::zeroed()));
@@ -368,16 +368,16 @@ impl Renderer {
     pub(crate) fn encode_shadow_passes(
         &mut self,
         encoder: &mut wgpu::CommandEncoder,
-        gpu_scene: &SceneGpu,
+        gpu_scene: &mut SceneGpu,
         timestamp: Option<(&wgpu::QuerySet, u32)>,
     ) -> (wgpu::BindGroup, bool) {
         let pipeline = shadow_pipeline(&mut self.pipelines).clone();
-        let mut slot = gpu_scene.shadows.lock().unwrap_or_else(|e| e.into_inner());
-        if slot.is_none() {
+        if gpu_scene.shadows.is_none() {
             let plan = ShadowPlan { side: 1, layers: 1, lights: Vec::new() };
-            *slot = Some(self.create_shadow_maps(plan));
+            gpu_scene.shadows = Some(self.create_shadow_maps(plan));
         }
-        let maps = slot.as_ref().expect("made above");
+        let gpu_scene: &SceneGpu = gpu_scene;
+        let maps = gpu_scene.shadows.as_ref().expect("made above");
         let mut timestamp = timestamp;
         if maps.casting {
             for (map, &drawn) in maps.plan.lights.iter().zip(&maps.drawn) {
@@ -423,15 +423,14 @@ impl Renderer {
     /// The plan of a scene's shadow maps as last written (`None` before a program with cast
     /// shadows drew it).
     pub fn shadow_plan(&self, gpu_scene: &SceneGpu) -> Option<ShadowPlan> {
-        gpu_scene.shadows.lock().unwrap_or_else(|e| e.into_inner()).as_ref().map(|m| m.plan.clone())
+        gpu_scene.shadows.as_ref().map(|m| m.plan.clone())
     }
 
     /// Read back one layer of light `light`'s shadow map (`face` 0…5 of a point light, else 0)
     /// after a frame drew it: its `resolution²` texels, the stored depth in [0, 1] (1: nothing)
     /// in r, g and b, rows top to bottom as the map is addressed. `None` if the light has no map.
     pub fn read_shadow_map(&self, gpu_scene: &SceneGpu, light: usize, face: u32) -> Option<LinearImage> {
-        let slot = gpu_scene.shadows.lock().unwrap_or_else(|e| e.into_inner());
-        let maps = slot.as_ref()?;
+        let maps = gpu_scene.shadows.as_ref()?;
         let map = (*maps.plan.lights.get(light)?)?;
         if face >= map.layers {
             return None;

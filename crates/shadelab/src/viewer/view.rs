@@ -79,10 +79,10 @@ impl Viewer {
         let drawn = self.derived.get(&self.scene, &self.settings, self.term, (w, h));
         // Which derivation the uniforms hold, and the write count after writing them (the panel
         // may have made this frame's derivation already).
-        let now = (drawn.derivation, self.gpu_scene.uniform_writes.load(std::sync::atomic::Ordering::Relaxed));
+        let now = (drawn.derivation, self.gpu_scene.uniform_writes);
         if self.uniforms_written != Some(now) {
             self.renderer.write_uniforms_for(
-                &self.gpu_scene,
+                &mut self.gpu_scene,
                 &drawn.scene,
                 &view.target,
                 &self.settings,
@@ -95,9 +95,9 @@ impl Viewer {
         // With timestamps the frame is timed in the ring and never waited for (the panel shows
         // the newest time read back); without them the CPU's submit + wait is the only clock.
         self.frame_ms = if self.ring.timed() {
-            self.ring.frame(&mut self.renderer, &self.gpu_scene, &view.target, program).or(self.frame_ms)
+            self.ring.frame(&mut self.renderer, &mut self.gpu_scene, &view.target, program).or(self.frame_ms)
         } else {
-            Some(self.timer.frame(&mut self.renderer, &self.gpu_scene, &view.target, program))
+            Some(self.timer.frame(&mut self.renderer, &mut self.gpu_scene, &view.target, program))
         };
         self.boundary.draw(&self.renderer, &view.target, &drawn.scene);
         self.creases.draw(&self.renderer, &view.target, &drawn.scene);
@@ -114,7 +114,7 @@ impl Viewer {
             shown = Some(self.shadow_factor.update(
                 &ctx,
                 &mut self.renderer,
-                &self.gpu_scene,
+                &mut self.gpu_scene,
                 &drawn.scene,
                 &self.settings,
                 (w, h),
@@ -122,7 +122,7 @@ impl Viewer {
         } else if self.difference.enabled && covered {
             let ctx = ui.ctx().clone();
             shown =
-                self.difference.update(&ctx, &mut self.renderer, &self.gpu_scene, &drawn.scene, &self.settings, (w, h));
+                self.difference.update(&ctx, &mut self.renderer, &mut self.gpu_scene, &drawn.scene, &self.settings, (w, h));
         }
         (shown, self.difference.enabled && covered && !factor)
     }

@@ -122,7 +122,7 @@ impl FrameTimer {
 
     /// [`FrameTimer::interleaved`] over draws that may each have their own scene (e.g. other
     /// shadow settings) and upload in `uploads`, in the same order: warm-up per draw, then
-    /// `frames` rounds of every draw.
+    /// `frames` rounds of every draw. Every frame draws its shadow maps, as one after a change.
     pub fn interleaved_draws(
         &self,
         r: &mut Renderer,
@@ -135,6 +135,7 @@ impl FrameTimer {
         for d in draws {
             for _ in 0..warmup.max(1) {
                 let gs = &mut uploads[d.upload];
+                gs.redraw_shadows();
                 r.write_uniforms(gs, d.scene, target, &d.settings);
                 self.frame(r, gs, target, d.program);
             }
@@ -143,6 +144,7 @@ impl FrameTimer {
         for _ in 0..frames {
             for (i, d) in draws.iter().enumerate() {
                 let gs = &mut uploads[d.upload];
+                gs.redraw_shadows();
                 r.write_uniforms(gs, d.scene, target, &d.settings);
                 samples[i].push(self.frame(r, gs, target, d.program));
             }

@@ -124,6 +124,9 @@ pub struct SceneGpu {
     /// The shadow maps, made by the first frame whose program has cast shadows
     /// (`shadow_pass.rs`): the frame owns them, writing and drawing through `&mut SceneGpu`.
     pub(crate) shadows: Option<crate::shadow_pass::ShadowMaps>,
+    /// How many shadow-map layers the shadow passes have drawn: a layer is drawn again only when
+    /// its light's projection, its resolution or an object's transform changed.
+    pub shadow_layer_draws: u64,
     /// The transparent objects far to near, and each object's exit shape as last written
     /// (`write_uniforms`): what the glass pass draws and how.
     pub(crate) glass_order: Vec<usize>,
@@ -285,6 +288,7 @@ impl Uploader {
             object_stride,
             triangle_count,
             shadows: None,
+            shadow_layer_draws: 0,
             glass_order: Default::default(),
             glass_exits: Default::default(),
             clear: crate::uniforms::CLEAR_COLOR,

@@ -77,9 +77,10 @@ impl Viewer {
         // The frame as drawn, derived once per change (derive.rs); the uniforms written when it
         // changed or when another draw (the difference view's, a screenshot's) wrote over them.
         let drawn = self.derived.get(&self.scene, &self.settings, self.term, (w, h));
-        // Which derivation the uniforms hold, and the write count after writing them (the panel
-        // may have made this frame's derivation already).
-        let now = (drawn.derivation, self.gpu_scene.uniform_writes);
+        // Which derivation and camera the uniforms hold, and the write count after writing them
+        // (the panel may have made this frame's derivation already). An orbit writes them again
+        // without deriving; the shadow maps are redrawn only where a layer's projection changed.
+        let now = (drawn.derivation, self.gpu_scene.uniform_writes, drawn.scene.camera);
         if self.uniforms_written != Some(now) {
             self.renderer.write_uniforms_for(
                 &mut self.gpu_scene,
@@ -89,7 +90,7 @@ impl Viewer {
                 drawn.program,
             );
             self.small_area_lights = drawn.small_area_lights.clone();
-            self.uniforms_written = Some((now.0, now.1 + 1));
+            self.uniforms_written = Some((now.0, now.1 + 1, now.2));
         }
         let program = drawn.program;
         // With timestamps the frame is timed in the ring and never waited for (the panel shows
@@ -121,8 +122,14 @@ impl Viewer {
             ));
         } else if self.difference.enabled && covered {
             let ctx = ui.ctx().clone();
-            shown =
-                self.difference.update(&ctx, &mut self.renderer, &mut self.gpu_scene, &drawn.scene, &self.settings, (w, h));
+            shown = self.difference.update(
+                &ctx,
+                &mut self.renderer,
+                &mut self.gpu_scene,
+                &drawn.scene,
+                &self.settings,
+                (w, h),
+            );
         }
         (shown, self.difference.enabled && covered && !factor)
     }

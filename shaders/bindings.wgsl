@@ -12,6 +12,8 @@
 // The environment's occlusion grid (occlusion.wgsl), written only when a scene asks for it.
 @group(0) @binding(2) var<storage, read> env_occlusion_nodes: array<vec2<u32>>;
 #endif
+// The constant tables (ms_table.wgsl, environment.wgsl), written once per device.
+@group(0) @binding(3) var<uniform> tables: Tables;
 @group(1) @binding(0) var<uniform> object: Object;
 
 // The per-vertex modes' lighting passes (@group(3); binding 0 is the shadow pass's): a compute

@@ -90,10 +90,10 @@ fn env_prefiltered(r: vec3<f32>, m: f32) -> vec3<f32> {
     return env_level_sample(k, r) * (1.0 - f) + env_level_sample(k + 1u, r) * f;
 }
 
-// One node of the B table (globals.env_split_b, laid out as the compensation's E table).
+// One node of the B table (tables.env_split_b, laid out as the compensation's E table).
 fn env_split_b_node(base: u32, j: u32, i: u32) -> f32 {
     let k = base + j * MS_TABLE_SIDE + i;
-    return globals.env_split_b[k / 4u][k % 4u];
+    return tables.env_split_b[k / 4u][k % 4u];
 }
 
 // B, the share of the lobe's albedo Schlick's F adds toward grazing, of the material's D and G

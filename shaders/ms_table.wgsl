@@ -1,4 +1,4 @@
-// The lobe's albedo E from the project's table (globals.ms_albedo, ms_table.rs's ms_table):
+// The lobe's albedo E from the project's table (tables.ms_albedo, ms_table.rs's ms_table):
 // per D × G pair, MS_TABLE_SIDE × MS_TABLE_SIDE nodes over N·V (across) and m (down), each in
 // [0, 1], read bilinearly. Only with the multiple-scattering effect or the environment's split sum
 // (the whole file is one #if).
@@ -9,7 +9,7 @@
 // One node of pair `base`'s table: row j (m), column i (N·V).
 fn ms_node(base: u32, j: u32, i: u32) -> f32 {
     let k = base + j * MS_TABLE_SIDE + i;
-    return globals.ms_albedo[k / 4u][k % 4u];
+    return tables.ms_albedo[k / 4u][k % 4u];
 }
 
 // Where (n_dot_v, m) falls in a D × G pair's table (the E table and the split sum's B share its

@@ -1,5 +1,5 @@
 // The shading module's uniform structs and the constants of their layout, shared with Rust:
-// Globals and Object (crates/shadelab-render/src/uniforms.rs), the shadow uniforms
+// Globals, Tables and Object (crates/shadelab-render/src/uniforms.rs), the shadow uniforms
 // (crates/shadelab-render/src/shadow_pass.rs) and the light loop's pipeline constants
 // (crates/shadelab-render/src/light_loop.rs). Bindings are in bindings.wgsl.
 
@@ -18,19 +18,22 @@ struct Globals {
     // Which illumination model: ILLUMINATION_PHONG, _LAMBERT or _SUM (models.wgsl).
     illumination: u32,
     lights: array<Light, MAX_LIGHTS>,
-    // The multiple-scattering compensation's table (multiscatter.rs's ms_table), four floats a
-    // slot; zero unless a material uses it.
-    ms_albedo: array<vec4<f32>, MS_TABLE_VEC4S>,
     // The environment's nine SH coefficients (rgb; environment.wgsl); zero without one.
     env_sh: array<vec4<f32>, 9>,
-    // The split sum's B table (environment.rs's env_split_b_table), four floats a slot; zero
-    // without an environment.
-    env_split_b: array<vec4<f32>, ENV_SPLIT_B_VEC4S>,
     // The occlusion grid's origin (xyz) and cell (w), then its node counts (xyz; occlusion.wgsl);
     // zero without one.
     env_occlusion: array<vec4<f32>, 2>,
     // The inverse of view_proj: the background's direction through each pixel (background.wgsl).
     inv_view_proj: mat4x4<f32>,
+}
+
+// The constant tables, written once per device beside the globals (they never change).
+struct Tables {
+    // The multiple-scattering compensation's table (ms_table.rs's ms_table), four floats a
+    // slot.
+    ms_albedo: array<vec4<f32>, MS_TABLE_VEC4S>,
+    // The split sum's B table (environment.rs's env_split_b_table), four floats a slot.
+    env_split_b: array<vec4<f32>, ENV_SPLIT_B_VEC4S>,
 }
 
 struct Object {

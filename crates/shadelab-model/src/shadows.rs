@@ -164,19 +164,22 @@ pub fn scene_box(scene: &Scene) -> Option<(DVec3, DVec3)> {
     (lo.is_finite() && hi.is_finite()).then_some((lo, hi))
 }
 
+/// An object's box `(lo, hi)` in its own space: its shape's, or its mesh's bounds (`None` for a
+/// mesh without any).
+pub fn object_local_box(scene: &Scene, o: &crate::scene::Object) -> Option<(DVec3, DVec3)> {
+    match o.shape {
+        Shape::Mesh(i) => scene.meshes.bounds(i),
+        Shape::Plane => Some((DVec3::new(-1.0, 0.0, -1.0), DVec3::new(1.0, 0.0, 1.0))),
+        _ => Some((DVec3::splat(-1.0), DVec3::splat(1.0))),
+    }
+}
+
 /// Each object's world-space box `(lo, hi)`: the corners of its shape's box carried by its
 /// transform, non-finite corners left out (an object with none is left out).
 pub fn object_boxes(scene: &Scene) -> Vec<(DVec3, DVec3)> {
     let mut out = Vec::new();
     for o in &scene.objects {
-        let (a, b) = match o.shape {
-            Shape::Mesh(i) => match scene.meshes.bounds(i) {
-                Some(b) => b,
-                None => continue,
-            },
-            Shape::Plane => (DVec3::new(-1.0, 0.0, -1.0), DVec3::new(1.0, 0.0, 1.0)),
-            _ => (DVec3::splat(-1.0), DVec3::splat(1.0)),
-        };
+        let Some((a, b)) = object_local_box(scene, o) else { continue };
         let m = o.transform.matrix();
         let mut lo = DVec3::splat(f64::INFINITY);
         let mut hi = DVec3::splat(f64::NEG_INFINITY);

@@ -10,10 +10,10 @@ use shadelab_model::Scene;
 impl Renderer {
     /// The environment's SH terms, projected again only when the environment (or the sun it
     /// follows) changed since the last write: orbiting writes the uniforms every frame.
-    pub(crate) fn env_sh(&self, gpu_scene: &SceneGpu, scene: &Scene) -> [[f32; 4]; 9] {
+    pub(crate) fn env_sh(&self, gpu_scene: &mut SceneGpu, scene: &Scene) -> [[f32; 4]; 9] {
         let Some(env) = &scene.environment else { return [[0.0; 4]; 9] };
         let sun = env_sun(scene);
-        let mut of = gpu_scene.env_sh_of.lock().unwrap_or_else(|e| e.into_inner());
+        let of = &mut gpu_scene.env_sh_of;
         match of.as_ref() {
             Some((e, s, sh)) if e == env && *s == sun => *sh,
             _ => {
@@ -26,9 +26,9 @@ impl Renderer {
 
     /// The environment's occlusion grid's placement, the grid baked and written only when the
     /// geometry changed since the last write (the bake traces rays from every node).
-    pub(crate) fn write_env_occlusion(&self, gpu_scene: &SceneGpu, scene: &Scene) -> [[f32; 4]; 2] {
+    pub(crate) fn write_env_occlusion(&self, gpu_scene: &mut SceneGpu, scene: &Scene) -> [[f32; 4]; 2] {
         let key = OcclusionKey::of(scene);
-        let mut of = gpu_scene.env_occlusion_of.lock().unwrap_or_else(|e| e.into_inner());
+        let of = &mut gpu_scene.env_occlusion_of;
         if let Some((k, placement)) = of.as_ref()
             && *k == key
         {
@@ -48,10 +48,10 @@ impl Renderer {
 
     /// The environment's prefiltered levels, computed and written only when the environment (or
     /// the sun it follows) changed since the last write.
-    pub(crate) fn write_env_levels(&self, gpu_scene: &SceneGpu, scene: &Scene) {
+    pub(crate) fn write_env_levels(&self, gpu_scene: &mut SceneGpu, scene: &Scene) {
         let Some(env) = &scene.environment else { return };
         let sun = env_sun(scene);
-        let mut of = gpu_scene.env_levels_of.lock().unwrap_or_else(|e| e.into_inner());
+        let of = &mut gpu_scene.env_levels_of;
         if of.as_ref().is_some_and(|(e, s)| e == env && *s == sun) {
             return;
         }

@@ -14,7 +14,7 @@ use shadelab_model::effects::Effect;
 impl Renderer {
     /// Write a scene's parameters (materials, lights, camera) into its uniforms. Cheap: the
     /// viewer calls it whenever a parameter changes; geometry stays.
-    pub fn write_uniforms(&self, gpu_scene: &SceneGpu, scene: &Scene, target: &Target, settings: &RenderSettings) {
+    pub fn write_uniforms(&self, gpu_scene: &mut SceneGpu, scene: &Scene, target: &Target, settings: &RenderSettings) {
         self.write_uniforms_for(gpu_scene, scene, target, settings, Program::for_scene(scene, settings));
     }
 
@@ -22,14 +22,14 @@ impl Renderer {
     /// (the viewer derives it once per change). Counts the write in `gpu_scene.uniform_writes`.
     pub fn write_uniforms_for(
         &self,
-        gpu_scene: &SceneGpu,
+        gpu_scene: &mut SceneGpu,
         scene: &Scene,
         target: &Target,
         settings: &RenderSettings,
         program: Program,
     ) {
-        gpu_scene.uniform_writes.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
-        *gpu_scene.clear.lock().unwrap_or_else(|e| e.into_inner()) = crate::uniforms::clear_color(scene);
+        gpu_scene.uniform_writes += 1;
+        gpu_scene.clear = crate::uniforms::clear_color(scene);
         let flags = if settings.debug_nonfinite { crate::uniforms::FLAG_DEBUG_NONFINITE } else { 0 }
             | settings.glass_view.code() << crate::uniforms::GLASS_VIEW_SHIFT;
         let env_sh = self.env_sh(gpu_scene, scene);
@@ -50,10 +50,10 @@ impl Renderer {
             bytes[at..at + size_of::<ObjectUniform>()].copy_from_slice(bytemuck::bytes_of(&u));
         }
         self.queue.write_buffer(&gpu_scene.objects_buf, 0, &bytes);
-        *gpu_scene.glass_exits.lock().expect("not poisoned") = exits;
-        *gpu_scene.glass_order.lock().expect("not poisoned") = crate::glass_pass::glass_order(scene);
+        gpu_scene.glass_exits = exits;
+        gpu_scene.glass_order = crate::glass_pass::glass_order(scene);
         let background = program.effects().has(Effect::EnvironmentBackground);
-        gpu_scene.env_background.store(background, std::sync::atomic::Ordering::Relaxed);
+        gpu_scene.env_background = background;
         if program.effects().has(Effect::EnvironmentSpecular) || background {
             self.write_env_levels(gpu_scene, scene);
         }
@@ -69,7 +69,7 @@ impl Renderer {
     pub fn encode(
         &mut self,
         encoder: &mut wgpu::CommandEncoder,
-        gpu_scene: &SceneGpu,
+        gpu_scene: &mut SceneGpu,
         target: &Target,
         program: Program,
         timestamps: Option<(&wgpu::QuerySet, u32)>,
@@ -82,6 +82,8 @@ impl Renderer {
             .effects()
             .has(Effect::CastShadows)
             .then(|| self.encode_shadow_passes(encoder, gpu_scene, timestamps));
+        // The rest of the frame only reads the scene's state.
+        let gpu_scene: &SceneGpu = gpu_scene;
         let mut begun = shadows.as_ref().is_some_and(|s| s.1);
         let flat = key.program.draws_flat_mesh();
         let lit_pass = key.program.lighting_pass();
@@ -100,12 +102,8 @@ impl Renderer {
             begun |= start.is_some();
         }
         // Transparent objects are drawn after the scene pass, over it (glass_pass.rs).
-        let glass: Vec<usize> = if fx.has(Effect::Transmission) {
-            gpu_scene.glass_order.lock().expect("not poisoned").clone()
-        } else {
-            Vec::new()
-        };
-        let clear = *gpu_scene.clear.lock().unwrap_or_else(|e| e.into_inner());
+        let glass: Vec<usize> = if fx.has(Effect::Transmission) { gpu_scene.glass_order.clone() } else { Vec::new() };
+        let clear = gpu_scene.clear;
         let pipeline = self.pipelines.pipeline(key);
         // Opened here unless an earlier pass opened it; closed here unless the glass pass follows.
         let mut pass = scene_pass(encoder, target, clear, timestamps, !begun, glass.is_empty());
@@ -116,8 +114,7 @@ impl Renderer {
         }
         self.draw_objects(&mut pass, gpu_scene, lit_colors, &glass, flat, surfaces);
         // The environment behind the opaque scene, before the glass, which sees it through.
-        if fx.has(Effect::EnvironmentBackground) && gpu_scene.env_background.load(std::sync::atomic::Ordering::Relaxed)
-        {
+        if fx.has(Effect::EnvironmentBackground) && gpu_scene.env_background {
             let background =
                 crate::environment_gpu::background_pipeline(&mut self.pipelines, key.program, target.format);
             pass.set_pipeline(background);
@@ -213,7 +210,7 @@ impl Renderer {
 
     /// Draw the scene into `target` with `settings` and submit: the program is the one
     /// [`Program::for_scene`] resolves.
-    pub fn render(&mut self, gpu_scene: &SceneGpu, scene: &Scene, target: &Target, settings: &RenderSettings) {
+    pub fn render(&mut self, gpu_scene: &mut SceneGpu, scene: &Scene, target: &Target, settings: &RenderSettings) {
         let program = Program::for_scene(scene, settings);
         self.write_uniforms(gpu_scene, scene, target, settings);
         let mut encoder = self.device.create_command_encoder(&Default::default());

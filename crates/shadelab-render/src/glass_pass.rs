@@ -294,7 +294,7 @@ impl Renderer {
             self.glass = Some(GlassTextures::new(&self.device, target));
         }
         let bind = self.glass.as_mut().expect("made above").bind_group(&self.device, &self.glass_layout, target);
-        let exits = gpu_scene.glass_exits.lock().expect("not poisoned").clone();
+        let exits = gpu_scene.glass_exits.clone();
         let fx = program.effects();
         let surfaces = fx.samples_textures() || fx.has(Effect::VertexColors);
         let front = glass_pipeline(&mut self.pipelines, program, target.format, false).clone();

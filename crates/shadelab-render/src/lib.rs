@@ -44,9 +44,9 @@ pub fn render_image(
     settings: &RenderSettings,
 ) -> Result<LinearImage, UploadError> {
     let mut r = Renderer::new(&gpu.device, &gpu.queue);
-    let gs = r.upload(scene)?;
+    let mut gs = r.upload(scene)?;
     let target = Target::new(&gpu.device, width, height, target::HDR_FORMAT);
-    r.render(&gs, scene, &target, settings);
+    r.render(&mut gs, scene, &target, settings);
     Ok(target::read_back(&gpu.device, &gpu.queue, &target))
 }
 
@@ -60,16 +60,16 @@ pub fn render_shadow_factor(
     settings: &RenderSettings,
 ) -> Result<LinearImage, UploadError> {
     let mut r = Renderer::new(&gpu.device, &gpu.queue);
-    let gs = r.upload(scene)?;
+    let mut gs = r.upload(scene)?;
     let target = Target::new(&gpu.device, width, height, target::HDR_FORMAT);
-    Ok(shadow_factor_with(&mut r, &gs, scene, &target, settings))
+    Ok(shadow_factor_with(&mut r, &mut gs, scene, &target, settings))
 }
 
 /// The cast-shadow factor of `scene` drawn by `r` into `target` (an HDR target), the scene
 /// already uploaded as `gs`: the frame with its shadows and without, read back and divided.
 pub fn shadow_factor_with(
     r: &mut Renderer,
-    gs: &SceneGpu,
+    gs: &mut SceneGpu,
     scene: &shadelab_model::Scene,
     target: &Target,
     settings: &RenderSettings,

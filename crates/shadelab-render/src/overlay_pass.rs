@@ -245,9 +245,9 @@ pub fn render_image_with_line_sets(
     sets: &[(&[[DVec3; 2]], [f32; 3])],
 ) -> Result<LinearImage, UploadError> {
     let mut r = Renderer::new(&gpu.device, &gpu.queue);
-    let gs = r.upload(scene)?;
+    let mut gs = r.upload(scene)?;
     let target = Target::new(&gpu.device, width, height, target::HDR_FORMAT);
-    r.render(&gs, scene, &target, settings);
+    r.render(&mut gs, scene, &target, settings);
     let mut overlay = OverlayPass::new(&gpu.device);
     for (segments, color) in sets {
         overlay.set_lines(&gpu.device, segments, *color);

@@ -112,7 +112,8 @@ pub struct PipelineCache {
     /// Build missing pipelines on a worker thread and draw with the uber pipeline meanwhile
     /// (the viewer); off, a missing pipeline is built before the draw (renders, tests, benches).
     pub build_in_background: bool,
-    /// How many pipelines have been built (the viewer shows it: it must not grow per frame).
+    /// How many pipelines have been built, the programs' and the other passes' (the viewer shows
+    /// it: it must not grow per frame).
     pub pipeline_builds: u32,
     /// The last pipeline built and how long it took (module + pipeline creation).
     pub last_build: Option<(PipelineKey, Duration)>,
@@ -192,6 +193,7 @@ impl PipelineCache {
         if !self.pass_pipelines.contains_key(&key) {
             let module = self.module(key.effects);
             let p = build(&BuildContext { device: &self.device, layouts: &self.layouts, module: &module });
+            self.pipeline_builds += 1;
             self.pass_pipelines.insert(key, p);
         }
         &self.pass_pipelines[&key]
@@ -206,6 +208,7 @@ impl PipelineCache {
         if !self.pass_computes.contains_key(&key) {
             let module = self.module(key.effects);
             let p = build(&BuildContext { device: &self.device, layouts: &self.layouts, module: &module });
+            self.pipeline_builds += 1;
             self.pass_computes.insert(key, p);
         }
         &self.pass_computes[&key]

@@ -4,13 +4,16 @@
 //! shadow passes (`shadow_pass.rs`) and the cache (`pipelines.rs`) live beside it.
 
 use crate::pipelines::{Layouts, PipelineCache};
-use crate::uniforms::{GlobalsUniform, ObjectUniform};
+use crate::uniforms::{GlobalsUniform, ObjectUniform, TablesUniform};
 
 pub struct Renderer {
     pub device: wgpu::Device,
     pub queue: wgpu::Queue,
     pub(crate) globals_layout: wgpu::BindGroupLayout,
     pub(crate) object_layout: wgpu::BindGroupLayout,
+    /// The constant tables (`TablesUniform`), written once here and bound in every scene's
+    /// globals group (binding 3).
+    pub(crate) tables: wgpu::Buffer,
     /// @group(2) of the permutations with cast shadows: `Shadows`, the maps, two samplers.
     pub(crate) shadow_layout: wgpu::BindGroupLayout,
     /// @group(3) of the shadow pass: `ShadowCasters`.
@@ -29,8 +32,13 @@ pub struct Renderer {
 }
 
 fn uniform_entry(dynamic: bool, size: u64) -> wgpu::BindGroupLayoutEntry {
+    uniform_entry_at(0, dynamic, size)
+}
+
+/// A uniform buffer at `binding`, with a dynamic offset or not, of `size` bytes.
+fn uniform_entry_at(binding: u32, dynamic: bool, size: u64) -> wgpu::BindGroupLayoutEntry {
     wgpu::BindGroupLayoutEntry {
-        binding: 0,
+        binding,
         // Compute too: flat shading's per-face pass shades in a compute stage.
         visibility: wgpu::ShaderStages::VERTEX_FRAGMENT.union(wgpu::ShaderStages::COMPUTE),
         ty: wgpu::BindingType::Buffer {
@@ -66,8 +74,16 @@ impl Renderer {
                 uniform_entry(false, size_of::<GlobalsUniform>() as u64),
                 storage_entry(1, 16),
                 storage_entry(2, 8),
+                uniform_entry_at(3, false, size_of::<TablesUniform>() as u64),
             ],
         });
+        let tables = device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("tables"),
+            size: size_of::<TablesUniform>() as u64,
+            usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
+            mapped_at_creation: false,
+        });
+        queue.write_buffer(&tables, 0, bytemuck::bytes_of(&TablesUniform::new()));
         let object_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("object"),
             entries: &[vec![uniform_entry(true, size_of::<ObjectUniform>() as u64)], crate::textures::layout_entries()]
@@ -122,6 +138,7 @@ impl Renderer {
             queue: queue.clone(),
             globals_layout,
             object_layout,
+            tables,
             shadow_layout,
             casters_layout,
             flat_compute_layout,

@@ -8,6 +8,12 @@
 //! Memory: every layer has the array's side, the largest resolution a casting light asks for,
 //! halved until all layers fit in `SHADOW_MAP_BUDGET_BYTES`; a light asking for less uses the
 //! top-left `resolution²` of its layer (`ShadowLight.uv_scale`).
+//!
+//! Redraws: a layer is drawn again only when its view-projection, its side or an object's
+//! transform changed (`LayerState`), each time with only the objects in its frustum. Single maps
+//! are fitted to the scene's bounds and cube faces sit at the light, so neither follows the camera;
+//! a directional light's cascades are fitted to the view's slices, so an orbit redraws the
+//! cascades whose projection it moved (each snapped to its texel grid), and those alone.
 
 use crate::light_loop::LightLoop;
 use crate::pipelines::{DEPTH_FORMAT, PassKey, PipelineCache};
@@ -17,12 +23,13 @@ use crate::uniforms::{ShadowLightUniform, ShadowsUniform};
 use crate::upload::SceneGpu;
 use crate::vertex::SmoothVertex;
 use bytemuck::Zeroable;
+use glam::DVec3;
 use shadelab_model::effects::{Effect, EffectKey};
 use shadelab_model::lighting::area_points::area_emitter;
 use shadelab_model::shadows::{
     MAX_SHADOW_LAYERS, SHADOW_CONSTANT_BIAS, SHADOW_DEPTH_BIAS_CLAMP, SHADOW_MAP_BUDGET_BYTES, SHADOW_RESOLUTION,
-    SHADOW_SLOPE_BIAS, SHADOW_TEXEL_BYTES, cascade_projection, drawn_layers, light_layers, scene_bounds, shadow_cubes,
-    shadow_projection,
+    SHADOW_SLOPE_BIAS, SHADOW_TEXEL_BYTES, cascade_projection, drawn_layers, light_layers, object_local_box,
+    scene_bounds, shadow_cubes, shadow_projection,
 };
 use shadelab_model::{Light, Scene};
 
@@ -100,9 +107,20 @@ pub(crate) struct ShadowMaps {
     casters_bind: wgpu::BindGroup,
     /// Whether the uniform's lights cast (false: zeroed, every light unshadowed).
     casting: bool,
-    /// Per plan light, the layers the uniform uses this frame (a directional light's cascades
-    /// may be fewer than its layers): the shadow passes draw only these.
-    drawn: Vec<u32>,
+    /// What each layer holds: the light view-projection, side and casters' transforms it was
+    /// last drawn with (`None`: never drawn). A layer whose state is unchanged is not redrawn.
+    layer_states: Vec<Option<LayerState>>,
+    /// The layers to draw at the next shadow pass, each with the objects inside its frustum.
+    pending: Vec<(u32, Vec<usize>)>,
+}
+
+/// What one layer of the maps was drawn from: its matrix, its side in texels and every object's
+/// model matrix (the casters), as the uniforms hold them.
+#[derive(Clone, PartialEq)]
+struct LayerState {
+    matrix: [[f32; 4]; 4],
+    resolution: u32,
+    casters: std::sync::Arc<Vec<[[f32; 4]; 4]>>,
 }
 
 /// The maps' bind group layout (@group(2)): `Shadows`, the depth array, two comparison samplers.
@@ -277,6 +295,59 @@ pub fn shadows_uniform(scene: &Scene, plan: &ShadowPlan, aspect: f64) -> Shadows
     u
 }
 
+/// Each object's box in its own space (`shadows::object_local_box`); `None`: never culled.
+fn object_bounds(scene: &Scene) -> Vec<Option<(DVec3, DVec3)>> {
+    scene.objects.iter().map(|o| object_local_box(scene, o)).collect()
+}
+
+/// The objects whose box reaches the clip volume of a layer's view-projection `matrix` (wgpu's:
+/// |x|, |y| ≤ w, 0 ≤ z ≤ w), each box carried by its model matrix in `models`: an object with all
+/// eight corners beyond one plane covers no texel of the layer. A small margin covers f32 rounding.
+fn layer_casters(bounds: &[Option<(DVec3, DVec3)>], models: &[[[f32; 4]; 4]], matrix: &[[f32; 4]; 4]) -> Vec<usize> {
+    let vp = glam::Mat4::from_cols_array_2d(matrix).as_dmat4();
+    let outside = |(lo, hi): (DVec3, DVec3), model: &[[f32; 4]; 4]| {
+        let m = vp * glam::Mat4::from_cols_array_2d(model).as_dmat4();
+        let corners = (0..8).map(|k| {
+            let c = DVec3::new(
+                if k & 1 == 0 { lo.x } else { hi.x },
+                if k & 2 == 0 { lo.y } else { hi.y },
+                if k & 4 == 0 { lo.z } else { hi.z },
+            );
+            m * c.extend(1.0)
+        });
+        let corners: Vec<glam::DVec4> = corners.collect();
+        (0..6).any(|plane| {
+            corners.iter().all(|v| {
+                let d = match plane {
+                    0 => v.w + v.x,
+                    1 => v.w - v.x,
+                    2 => v.w + v.y,
+                    3 => v.w - v.y,
+                    4 => v.z,
+                    _ => v.w - v.z,
+                };
+                d < -1e-4 * (v.x.abs() + v.y.abs() + v.z.abs() + v.w.abs())
+            })
+        })
+    };
+    (0..models.len())
+        .filter(|&i| match bounds.get(i).copied().flatten() {
+            Some(b) if b.0.is_finite() && b.1.is_finite() => !outside(b, &models[i]),
+            _ => true,
+        })
+        .collect()
+}
+
+impl SceneGpu {
+    /// Forget what the shadow maps hold, so the next uniforms' write queues every layer again:
+    /// the benches time a frame with its shadow passes, as a changed light or object draws them.
+    pub fn redraw_shadows(&mut self) {
+        if let Some(maps) = self.shadows.as_mut() {
+            maps.layer_states.iter_mut().for_each(|s| *s = None);
+        }
+    }
+}
+
 impl Renderer {
     fn create_shadow_maps(&self, plan: ShadowPlan) -> ShadowMaps {
         let device = &self.device;
@@ -335,15 +406,27 @@ impl Renderer {
                 }),
             }],
         });
-        ShadowMaps { plan, texture, layer_views, uniform, bind, casters_bind, casting: false, drawn: Vec::new() }
+        let layer_states = vec![None; plan.layers as usize];
+        ShadowMaps {
+            plan,
+            texture,
+            layer_views,
+            uniform,
+            bind,
+            casters_bind,
+            casting: false,
+            layer_states,
+            pending: Vec::new(),
+        }
     }
 
     /// Plan the scene's shadow maps, (re)allocate them when the plan changed, and write their
     /// uniform for an image of `aspect` (`write_uniforms` calls it when the program has cast
     /// shadows). With `casting` false only an existing uniform is zeroed (every light
     /// unshadowed), so a stand-in program that still samples the maps shows no stale shadows.
-    pub(crate) fn write_shadows(&self, gpu_scene: &SceneGpu, scene: &Scene, casting: bool, aspect: f64) {
-        let mut slot = gpu_scene.shadows.lock().unwrap_or_else(|e| e.into_inner());
+    /// Queues for drawing only the layers whose state changed (`LayerState`).
+    pub(crate) fn write_shadows(&self, gpu_scene: &mut SceneGpu, scene: &Scene, casting: bool, aspect: f64) {
+        let slot = &mut gpu_scene.shadows;
         if !casting {
             if let Some(maps) = slot.as_mut().filter(|m| m.casting) {
                 self.queue.write_buffer(&maps.uniform, 0, bytemuck::bytes_of(&ShadowsUniform::zeroed()));
@@ -358,80 +441,96 @@ impl Renderer {
         }
         let maps = slot.as_mut().expect("made above");
         self.queue.write_buffer(&maps.uniform, 0, bytemuck::bytes_of(&u));
-        maps.drawn = u.lights.iter().zip(&maps.plan.lights).map(|(l, m)| m.map_or(0, |_| l.layers)).collect();
         maps.casting = true;
+        let casters = std::sync::Arc::new(
+            scene.objects.iter().map(|o| o.transform.matrix().as_mat4().to_cols_array_2d()).collect::<Vec<_>>(),
+        );
+        let bounds = object_bounds(scene);
+        for (light, map) in u.lights.iter().zip(&maps.plan.lights) {
+            let Some(map) = map else { continue };
+            // The layers the uniform uses this frame (a directional light's cascades may be
+            // fewer than its layers).
+            for layer in map.first_layer..map.first_layer + light.layers.min(map.layers) {
+                let Some(&matrix) = u.matrices.get(layer as usize) else { continue };
+                let state = LayerState { matrix, resolution: map.resolution, casters: casters.clone() };
+                if maps.layer_states[layer as usize].as_ref() == Some(&state) {
+                    continue;
+                }
+                let inside = layer_casters(&bounds, &casters, &matrix);
+                maps.pending.retain(|(l, _)| *l != layer);
+                maps.pending.push((layer, inside));
+                maps.layer_states[layer as usize] = Some(state);
+            }
+        }
     }
 
-    /// Record the shadow passes into `encoder` (one per layer of a casting light), and return the
-    /// scene pass's @group(2). Maps are made (unshadowed) if the uniforms never asked for them.
-    /// `timestamp` is written at the start of the first pass.
+    /// Record the shadow passes into `encoder` (one per layer queued by `write_shadows`, drawing
+    /// only the objects in its frustum), and return the scene pass's @group(2). Maps are made
+    /// (unshadowed) if the uniforms never asked for them. `timestamp` is written at the start of
+    /// the first pass; the second value says whether a pass wrote it.
     pub(crate) fn encode_shadow_passes(
         &mut self,
         encoder: &mut wgpu::CommandEncoder,
-        gpu_scene: &SceneGpu,
+        gpu_scene: &mut SceneGpu,
         timestamp: Option<(&wgpu::QuerySet, u32)>,
     ) -> (wgpu::BindGroup, bool) {
         let pipeline = shadow_pipeline(&mut self.pipelines).clone();
-        let mut slot = gpu_scene.shadows.lock().unwrap_or_else(|e| e.into_inner());
-        if slot.is_none() {
+        if gpu_scene.shadows.is_none() {
             let plan = ShadowPlan { side: 1, layers: 1, lights: Vec::new() };
-            *slot = Some(self.create_shadow_maps(plan));
+            gpu_scene.shadows = Some(self.create_shadow_maps(plan));
         }
-        let maps = slot.as_ref().expect("made above");
+        let maps = gpu_scene.shadows.as_mut().expect("made above");
+        let pending = if maps.casting { std::mem::take(&mut maps.pending) } else { Vec::new() };
+        let resolution = |layer: u32| {
+            maps.plan.lights.iter().flatten().find(|m| (m.first_layer..m.first_layer + m.layers).contains(&layer))
+        };
         let mut timestamp = timestamp;
-        if maps.casting {
-            for (map, &drawn) in maps.plan.lights.iter().zip(&maps.drawn) {
-                let Some(map) = map else { continue };
-                for layer in map.first_layer..map.first_layer + drawn.min(map.layers) {
-                    let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
-                        label: Some("shadow pass"),
-                        color_attachments: &[],
-                        depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
-                            view: &maps.layer_views[layer as usize],
-                            depth_ops: Some(wgpu::Operations {
-                                load: wgpu::LoadOp::Clear(1.0),
-                                store: wgpu::StoreOp::Store,
-                            }),
-                            stencil_ops: None,
-                        }),
-                        timestamp_writes: timestamp.take().map(|(qs, i)| wgpu::RenderPassTimestampWrites {
-                            query_set: qs,
-                            beginning_of_pass_write_index: Some(i),
-                            end_of_pass_write_index: None,
-                        }),
-                        occlusion_query_set: None,
-                        multiview_mask: None,
-                    });
-                    let r = map.resolution as f32;
-                    pass.set_viewport(0.0, 0.0, r, r, 0.0, 1.0);
-                    pass.set_pipeline(&pipeline);
-                    pass.set_bind_group(3, &maps.casters_bind, &[]);
-                    for (i, k) in gpu_scene.objects.iter().enumerate() {
-                        let mesh = &gpu_scene.meshes[k];
-                        let offset = (i as u64 * gpu_scene.object_stride) as u32;
-                        pass.set_bind_group(1, gpu_scene.object_bind(i), &[offset]);
-                        pass.set_vertex_buffer(0, mesh.smooth.slice(..));
-                        pass.set_index_buffer(mesh.indices.slice(..), wgpu::IndexFormat::Uint32);
-                        pass.draw_indexed(0..mesh.index_count, 0, layer..layer + 1);
-                    }
-                }
+        for (layer, objects) in &pending {
+            let r = resolution(*layer).map_or(maps.plan.side, |m| m.resolution) as f32;
+            let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+                label: Some("shadow pass"),
+                color_attachments: &[],
+                depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
+                    view: &maps.layer_views[*layer as usize],
+                    depth_ops: Some(wgpu::Operations { load: wgpu::LoadOp::Clear(1.0), store: wgpu::StoreOp::Store }),
+                    stencil_ops: None,
+                }),
+                timestamp_writes: timestamp.take().map(|(qs, i)| wgpu::RenderPassTimestampWrites {
+                    query_set: qs,
+                    beginning_of_pass_write_index: Some(i),
+                    end_of_pass_write_index: None,
+                }),
+                occlusion_query_set: None,
+                multiview_mask: None,
+            });
+            pass.set_viewport(0.0, 0.0, r, r, 0.0, 1.0);
+            pass.set_pipeline(&pipeline);
+            pass.set_bind_group(3, &maps.casters_bind, &[]);
+            for &i in objects {
+                let Some(k) = gpu_scene.objects.get(i) else { continue };
+                let mesh = &gpu_scene.meshes[k];
+                let offset = (i as u64 * gpu_scene.object_stride) as u32;
+                pass.set_bind_group(1, &gpu_scene.objects_binds[gpu_scene.object_bind_of[i]], &[offset]);
+                pass.set_vertex_buffer(0, mesh.smooth.slice(..));
+                pass.set_index_buffer(mesh.indices.slice(..), wgpu::IndexFormat::Uint32);
+                pass.draw_indexed(0..mesh.index_count, 0, *layer..*layer + 1);
             }
         }
+        gpu_scene.shadow_layer_draws += pending.len() as u64;
         (maps.bind.clone(), timestamp.is_none())
     }
 
     /// The plan of a scene's shadow maps as last written (`None` before a program with cast
     /// shadows drew it).
     pub fn shadow_plan(&self, gpu_scene: &SceneGpu) -> Option<ShadowPlan> {
-        gpu_scene.shadows.lock().unwrap_or_else(|e| e.into_inner()).as_ref().map(|m| m.plan.clone())
+        gpu_scene.shadows.as_ref().map(|m| m.plan.clone())
     }
 
     /// Read back one layer of light `light`'s shadow map (`face` 0…5 of a point light, else 0)
     /// after a frame drew it: its `resolution²` texels, the stored depth in [0, 1] (1: nothing)
     /// in r, g and b, rows top to bottom as the map is addressed. `None` if the light has no map.
     pub fn read_shadow_map(&self, gpu_scene: &SceneGpu, light: usize, face: u32) -> Option<LinearImage> {
-        let slot = gpu_scene.shadows.lock().unwrap_or_else(|e| e.into_inner());
-        let maps = slot.as_ref()?;
+        let maps = gpu_scene.shadows.as_ref()?;
         let map = (*maps.plan.lights.get(light)?)?;
         if face >= map.layers {
             return None;
@@ -503,6 +602,22 @@ mod tests {
             l.shadow.filter = filter;
         }
         s
+    }
+
+    /// A layer draws the objects whose box reaches its clip volume: inside, straddling its edge,
+    /// or without a box; none wholly beyond one plane (a side, behind the light, past the far plane).
+    #[test]
+    fn a_layer_draws_only_the_objects_in_its_frustum() {
+        use glam::DMat4;
+        // Looking down from 5 m up, a 4 × 4 m window, depths 0.1 to 10 m.
+        let view = DMat4::look_at_rh(DVec3::new(0.0, 5.0, 0.0), DVec3::ZERO, DVec3::Z);
+        let vp = DMat4::orthographic_rh(-2.0, 2.0, -2.0, 2.0, 0.1, 10.0) * view;
+        let matrix = vp.as_mat4().to_cols_array_2d();
+        let at = |x: f64, y: f64| DMat4::from_translation(DVec3::new(x, y, 0.0)).as_mat4().to_cols_array_2d();
+        let unit = Some((DVec3::splat(-1.0), DVec3::splat(1.0)));
+        let models = [at(0.0, 0.0), at(2.5, 0.0), at(4.0, 0.0), at(0.0, 10.0), at(0.0, -20.0), at(0.0, -20.0)];
+        let bounds = [unit, unit, unit, unit, unit, None];
+        assert_eq!(layer_casters(&bounds, &models, &matrix), vec![0, 1, 5]);
     }
 
     /// The plan keeps each light's own side, and halves the array's side only past the budget.

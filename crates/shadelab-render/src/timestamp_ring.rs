@@ -86,7 +86,13 @@ impl TimestampRing {
 
     /// Draw one frame of `program` (uniforms last written) and submit it, timed in a free slot
     /// when there is one; never waits for the GPU. Returns the newest time collected so far.
-    pub fn frame(&mut self, r: &mut Renderer, gpu_scene: &SceneGpu, target: &Target, program: Program) -> Option<f64> {
+    pub fn frame(
+        &mut self,
+        r: &mut Renderer,
+        gpu_scene: &mut SceneGpu,
+        target: &Target,
+        program: Program,
+    ) -> Option<f64> {
         let latest = self.collect(&r.device);
         let mut enc = r.device.create_command_encoder(&Default::default());
         let free = self.queries.as_mut().and_then(|(set, slots)| {

@@ -62,7 +62,7 @@ impl FrameTimer {
 
     /// Draw one frame of `program` with the uniforms last written, wait for it, and return its
     /// time in milliseconds.
-    pub fn frame(&self, r: &mut Renderer, gpu_scene: &SceneGpu, target: &Target, program: Program) -> f64 {
+    pub fn frame(&self, r: &mut Renderer, gpu_scene: &mut SceneGpu, target: &Target, program: Program) -> f64 {
         let mut enc = r.device.create_command_encoder(&Default::default());
         let start = Instant::now();
         match &self.queries {
@@ -88,11 +88,12 @@ impl FrameTimer {
     }
 }
 
-/// One draw of an interleaved measurement: a scene on the GPU, the parameters its uniforms are
-/// written from, and the program that draws it.
+/// One draw of an interleaved measurement: which of the uploaded scenes it draws (an index into
+/// the slice given to [`FrameTimer::interleaved_draws`]), the parameters its uniforms are written
+/// from, and the program that draws it.
 #[derive(Clone, Copy)]
 pub struct TimedDraw<'a> {
-    pub gpu_scene: &'a SceneGpu,
+    pub upload: usize,
     pub scene: &'a shadelab_model::Scene,
     pub program: Program,
     pub settings: RenderSettings,
@@ -107,7 +108,7 @@ impl FrameTimer {
     pub fn interleaved(
         &self,
         r: &mut Renderer,
-        gpu_scene: &SceneGpu,
+        gpu_scene: &mut SceneGpu,
         scene: &shadelab_model::Scene,
         target: &Target,
         programs: &[(Program, RenderSettings)],
@@ -115,31 +116,37 @@ impl FrameTimer {
         warmup: usize,
     ) -> Vec<Vec<f64>> {
         let draws: Vec<TimedDraw> =
-            programs.iter().map(|&(program, settings)| TimedDraw { gpu_scene, scene, program, settings }).collect();
-        self.interleaved_draws(r, target, &draws, frames, warmup)
+            programs.iter().map(|&(program, settings)| TimedDraw { upload: 0, scene, program, settings }).collect();
+        self.interleaved_draws(r, std::slice::from_mut(gpu_scene), target, &draws, frames, warmup)
     }
 
     /// [`FrameTimer::interleaved`] over draws that may each have their own scene (e.g. other
-    /// shadow settings), in the same order: warm-up per draw, then `frames` rounds of every draw.
+    /// shadow settings) and upload in `uploads`, in the same order: warm-up per draw, then
+    /// `frames` rounds of every draw. Every frame draws its shadow maps, as one after a change.
     pub fn interleaved_draws(
         &self,
         r: &mut Renderer,
+        uploads: &mut [SceneGpu],
         target: &Target,
         draws: &[TimedDraw],
         frames: usize,
         warmup: usize,
     ) -> Vec<Vec<f64>> {
         for d in draws {
-            r.write_uniforms(d.gpu_scene, d.scene, target, &d.settings);
             for _ in 0..warmup.max(1) {
-                self.frame(r, d.gpu_scene, target, d.program);
+                let gs = &mut uploads[d.upload];
+                gs.redraw_shadows();
+                r.write_uniforms(gs, d.scene, target, &d.settings);
+                self.frame(r, gs, target, d.program);
             }
         }
         let mut samples = vec![Vec::with_capacity(frames); draws.len()];
         for _ in 0..frames {
             for (i, d) in draws.iter().enumerate() {
-                r.write_uniforms(d.gpu_scene, d.scene, target, &d.settings);
-                samples[i].push(self.frame(r, d.gpu_scene, target, d.program));
+                let gs = &mut uploads[d.upload];
+                gs.redraw_shadows();
+                r.write_uniforms(gs, d.scene, target, &d.settings);
+                samples[i].push(self.frame(r, gs, target, d.program));
             }
         }
         samples

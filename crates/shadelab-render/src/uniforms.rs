@@ -52,18 +52,42 @@ pub struct GlobalsUniform {
     pub specular_model: u32,
     pub illumination: u32,
     pub lights: [LightUniform; MAX_LIGHTS],
-    /// The multiple-scattering compensation's table (`ms_table::ms_table_vec4s`); zero when
-    /// no material uses it, so a scene without it never computes the table.
-    pub ms_albedo: [[f32; 4]; MS_TABLE_VEC4S],
     /// The environment's nine SH coefficients ([`env_sh`]); zero without one.
     pub env_sh: [[f32; 4]; 9],
-    /// The split sum's B table (`environment::env_split_b_vec4s`); zero without an environment.
-    pub env_split_b: [[f32; 4]; shadelab_model::lighting::environment::ENV_SPLIT_B_VEC4S],
     /// The occlusion grid's placement (`OcclusionGrid::gpu_placement`); zero without one, set by
     /// the frame, which bakes the grid once per change of the geometry.
     pub env_occlusion: [[f32; 4]; 2],
     /// The inverse of `view_proj`, for the background's ray through each pixel.
     pub inv_view_proj: [[f32; 4]; 4],
+}
+
+/// `types.wgsl`'s `Tables` (@group(0) @binding(3)): the constant tables, written once per
+/// device by the renderer ([`TablesUniform::new`]), so the globals written on each change stay
+/// small.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Pod, Zeroable)]
+pub struct TablesUniform {
+    /// The multiple-scattering compensation's table (`ms_table::ms_table_vec4s`); the split
+    /// sum reads it too (its E).
+    pub ms_albedo: [[f32; 4]; MS_TABLE_VEC4S],
+    /// The split sum's B table (`environment::env_split_b_vec4s`).
+    pub env_split_b: [[f32; 4]; shadelab_model::lighting::environment::ENV_SPLIT_B_VEC4S],
+}
+
+impl TablesUniform {
+    /// Both tables, as the shaders read them.
+    pub fn new() -> Self {
+        TablesUniform {
+            ms_albedo: shadelab_model::lighting::ms_table::ms_table_vec4s(),
+            env_split_b: shadelab_model::lighting::environment::env_split_b_vec4s(),
+        }
+    }
+}
+
+impl Default for TablesUniform {
+    fn default() -> Self {
+        Self::new()
+    }
 }
 
 #[repr(C)]
@@ -248,20 +272,7 @@ impl GlobalsUniform {
             specular_model: specular.code(),
             illumination: scene.illumination.code(),
             lights,
-            // The split sum reads the same table (its E), with or without the compensation.
-            ms_albedo: if scene.materials.iter().any(|m| m.microfacet.multiple_scattering)
-                || scene.environment.is_some()
-            {
-                shadelab_model::lighting::ms_table::ms_table_vec4s()
-            } else {
-                [[0.0; 4]; MS_TABLE_VEC4S]
-            },
             env_sh,
-            env_split_b: if scene.environment.is_some() {
-                shadelab_model::lighting::environment::env_split_b_vec4s()
-            } else {
-                [[0.0; 4]; shadelab_model::lighting::environment::ENV_SPLIT_B_VEC4S]
-            },
             env_occlusion: [[0.0; 4]; 2],
             // Inverted in f64: the far plane's points are large, f32's inverse loses them.
             inv_view_proj: {

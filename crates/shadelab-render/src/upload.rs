@@ -101,16 +101,14 @@ pub struct SceneGpu {
     /// The environment's prefiltered levels (86 KiB), written only when a program draws its
     /// split sum, and the environment (with the sun it follows) they were written for.
     pub(crate) env_levels: wgpu::Buffer,
-    pub(crate) env_levels_of:
-        std::sync::Mutex<Option<(shadelab_model::lighting::env_map::Environment, Option<glam::DVec3>)>>,
+    pub(crate) env_levels_of: Option<(shadelab_model::lighting::env_map::Environment, Option<glam::DVec3>)>,
     /// The environment's occlusion grid (64 KiB), written only when a program draws it, and
     /// the geometry it was baked for with the grid's placement in the globals.
     pub(crate) env_occlusion: wgpu::Buffer,
-    pub(crate) env_occlusion_of: std::sync::Mutex<Option<(crate::environment_gpu::OcclusionKey, [[f32; 4]; 2])>>,
+    pub(crate) env_occlusion_of: Option<(crate::environment_gpu::OcclusionKey, [[f32; 4]; 2])>,
     /// The environment's nine SH terms as the globals hold them, and the environment (with its
     /// sun) they were projected for: a large map's projection reads every texel.
-    pub(crate) env_sh_of:
-        std::sync::Mutex<Option<(shadelab_model::lighting::env_map::Environment, Option<glam::DVec3>, [[f32; 4]; 9])>>,
+    pub(crate) env_sh_of: Option<(shadelab_model::lighting::env_map::Environment, Option<glam::DVec3>, [[f32; 4]; 9])>,
     pub(crate) objects_buf: wgpu::Buffer,
     /// The object groups (uniforms, each slot's texture and sampler), one per distinct set of
     /// textures (`textures::bind_sets`): 0 with white texels for objects without any.
@@ -124,20 +122,23 @@ pub struct SceneGpu {
     pub(crate) object_stride: u64,
     pub triangle_count: usize,
     /// The shadow maps, made by the first frame whose program has cast shadows
-    /// (`shadow_pass.rs`); behind a lock because frames are written through `&SceneGpu`.
-    pub(crate) shadows: std::sync::Mutex<Option<crate::shadow_pass::ShadowMaps>>,
+    /// (`shadow_pass.rs`): the frame owns them, writing and drawing through `&mut SceneGpu`.
+    pub(crate) shadows: Option<crate::shadow_pass::ShadowMaps>,
+    /// How many shadow-map layers the shadow passes have drawn: a layer is drawn again only when
+    /// its light's projection, its resolution or an object's transform changed.
+    pub shadow_layer_draws: u64,
     /// The transparent objects far to near, and each object's exit shape as last written
     /// (`write_uniforms`): what the glass pass draws and how.
-    pub(crate) glass_order: std::sync::Mutex<Vec<usize>>,
-    pub(crate) glass_exits: std::sync::Mutex<Vec<u32>>,
+    pub(crate) glass_order: Vec<usize>,
+    pub(crate) glass_exits: Vec<u32>,
     /// The scene pass's clear colour as last written (`uniforms::clear_color` of the scene).
-    pub(crate) clear: std::sync::Mutex<wgpu::Color>,
+    pub(crate) clear: wgpu::Color,
     /// Whether the last uniforms written draw the environment as the background (the uber
     /// pipeline, which a frame may draw with meanwhile, holds the background for every scene).
-    pub(crate) env_background: std::sync::atomic::AtomicBool,
+    pub(crate) env_background: bool,
     /// How many times the uniforms were written: a caller that keeps them between frames sees
     /// here whether another draw (another target, another scene's parameters) wrote over them.
-    pub uniform_writes: std::sync::atomic::AtomicU64,
+    pub uniform_writes: u64,
 }
 
 impl SceneGpu {
@@ -192,6 +193,7 @@ pub struct Uploader {
     queue: wgpu::Queue,
     globals_layout: wgpu::BindGroupLayout,
     object_layout: wgpu::BindGroupLayout,
+    tables: wgpu::Buffer,
 }
 
 impl Renderer {
@@ -202,6 +204,7 @@ impl Renderer {
             queue: self.queue.clone(),
             globals_layout: self.globals_layout.clone(),
             object_layout: self.object_layout.clone(),
+            tables: self.tables.clone(),
         }
     }
 
@@ -262,6 +265,7 @@ impl Uploader {
                 wgpu::BindGroupEntry { binding: 0, resource: globals.as_entire_binding() },
                 wgpu::BindGroupEntry { binding: 1, resource: env_levels.as_entire_binding() },
                 wgpu::BindGroupEntry { binding: 2, resource: env_occlusion.as_entire_binding() },
+                wgpu::BindGroupEntry { binding: 3, resource: self.tables.as_entire_binding() },
             ],
         });
         let (sets, object_bind_of) = crate::textures::bind_sets(scene);
@@ -283,11 +287,12 @@ impl Uploader {
             has_surfaces: surfaces,
             object_stride,
             triangle_count,
-            shadows: std::sync::Mutex::new(None),
+            shadows: None,
+            shadow_layer_draws: 0,
             glass_order: Default::default(),
             glass_exits: Default::default(),
-            clear: std::sync::Mutex::new(crate::uniforms::CLEAR_COLOR),
-            env_background: Default::default(),
+            clear: crate::uniforms::CLEAR_COLOR,
+            env_background: false,
             uniform_writes: Default::default(),
         })
     }

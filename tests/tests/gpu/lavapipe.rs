@@ -165,19 +165,19 @@ fn the_timestamp_ring_times_frames_without_waiting() {
     let g = gpu();
     let scene = Scene::builtin("default").expect("built-in");
     let mut r = shadelab_render::Renderer::new(&g.device, &g.queue);
-    let gs = r.upload(&scene).expect("upload");
+    let mut gs = r.upload(&scene).expect("upload");
     let target = Target::new(&g.device, 160, 90, target::HDR_FORMAT);
     let settings = settings(ShadingMode::Phong, SpecularModel::CookTorrance);
-    r.write_uniforms(&gs, &scene, &target, &settings);
+    r.write_uniforms(&mut gs, &scene, &target, &settings);
     let program = shadelab_render::Program::for_scene(&scene, &settings);
     let mut ring = TimestampRing::new(&g.device, &g.queue);
     assert!(ring.timed(), "lavapipe has timestamp queries");
-    assert_eq!(ring.frame(&mut r, &gs, &target, program), None, "nothing has been read back yet");
+    assert_eq!(ring.frame(&mut r, &mut gs, &target, program), None, "nothing has been read back yet");
     let mut times = Vec::new();
     for _ in 0..3 * RING_SLOTS {
         // More frames than slots in flight: the extra ones are drawn untimed, none waits.
         for _ in 0..RING_SLOTS + 1 {
-            ring.frame(&mut r, &gs, &target, program);
+            ring.frame(&mut r, &mut gs, &target, program);
         }
         g.device.poll(wgpu::PollType::wait_indefinitely()).expect("poll");
         times.push(ring.collect(&g.device).expect("a time once the GPU is idle"));
@@ -224,7 +224,7 @@ fn the_light_loop_built_for_the_scene_draws_what_the_uniform_loop_draws() {
     let (w, h) = (96, 54);
     let gpu = gpu();
     let mut r = Renderer::new(&gpu.device, &gpu.queue);
-    let gs = r.upload(&scene).unwrap();
+    let mut gs = r.upload(&scene).unwrap();
     let target = Target::new(&gpu.device, w, h, target::HDR_FORMAT);
     for shading in ShadingMode::ALL_MODES {
         let settings = settings(shading, SpecularModel::CookTorrance);
@@ -232,10 +232,10 @@ fn the_light_loop_built_for_the_scene_draws_what_the_uniform_loop_draws() {
         let Program::Lit { shading, effects, interpolation, lights } = fixed else { panic!("{fixed:?}") };
         assert_eq!(lights, LightLoop::for_scene(&scene));
         let dynamic = Program::Lit { shading, effects, interpolation, lights: LightLoop::Dynamic };
-        let draw = |r: &mut Renderer, program: Program| {
-            r.write_uniforms(&gs, &scene, &target, &settings);
+        let mut draw = |r: &mut Renderer, program: Program| {
+            r.write_uniforms(&mut gs, &scene, &target, &settings);
             let mut encoder = r.device.create_command_encoder(&Default::default());
-            r.encode(&mut encoder, &gs, &target, program, None);
+            r.encode(&mut encoder, &mut gs, &target, program, None);
             r.queue.submit([encoder.finish()]);
             target::read_back(&r.device, &r.queue, &target)
         };

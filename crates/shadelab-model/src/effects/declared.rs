@@ -192,7 +192,7 @@ declare_effects! {
         name: "multiple-scattering compensation",
         label: "ms",
         define: Some("EFFECT_MULTIPLE_SCATTERING"),
-        // The table's lookup (ms_albedo, and the globals' table) is shared with the environment's
+        // The table's lookup (ms_albedo, and the tables' uniform) is shared with the environment's
         // split sum, so it is neither effect's alone.
         functions: &["ms_compensation"],
         members: &[],
@@ -250,7 +250,7 @@ declare_effects! {
             "env_split_b",
             "env_specular",
         ],
-        members: &[("Globals", "env_split_b")],
+        members: &[("Tables", "env_split_b")],
     },
     /// The environment drawn where the camera sees nothing, from its prefiltered level 0
     /// (docs/environment.md, "As the background").

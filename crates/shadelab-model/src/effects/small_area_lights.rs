@@ -1,10 +1,11 @@
-//! Area lights too small on screen for their area to show (docs/area-lights.md): where, seen
-//! from the camera, an area light's penumbra and its highlight would both be under a pixel wide
-//! and its diffuse light within an 8-bit step of its centre's, it is drawn as one point source
-//! (its centre, with a flat light's emitter cosine) and the reason is printed. One pure function
-//! decides ([`small_area_light`]); the CLI, the viewer and `bench effects` apply it the same way
-//! ([`draw_small_area_lights_as_points`]), so the analysis, the uniforms and the shadow maps all
-//! see the same lights.
+//! Area lights too small on screen for their area to show (docs/area-lights.md): where, in an
+//! image that frames the whole scene, an area light's penumbra and its highlight would both be
+//! under a pixel wide and its diffuse light within an 8-bit step of its centre's, it is drawn as
+//! one point source (its centre, with a flat light's emitter cosine) and the reason is printed.
+//! The camera takes no part, so orbiting and zooming never change the lights drawn (nor the
+//! pipeline). One pure function decides ([`small_area_light`]); the CLI, the viewer and `bench
+//! effects` apply it the same way ([`draw_small_area_lights_as_points`]), so the analysis, the
+//! uniforms and the shadow maps all see the same lights.
 
 use crate::params::{LightKind, NamedValue};
 use crate::scene::{Light, MAX_LIGHTS, Scene};
@@ -18,15 +19,15 @@ pub const SMALL_AREA_MAX_PX: f64 = 1.0;
 /// 1/256, under one step of an 8-bit image.
 pub const SMALL_AREA_MAX_RADIUS_OVER_DISTANCE: f64 = 1.0 / 16.0;
 
-/// The bounds that decide: the largest penumbra and highlight the light can draw, in pixels,
-/// and its radius over the distance to the nearest object.
+/// The bounds that decide: the largest penumbra and highlight the light can draw, in pixels of
+/// the framing image, and its radius over the distance to the nearest object.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct SmallAreaLight {
     pub penumbra_px: f64,
     pub highlight_px: f64,
     pub radius_over_distance: f64,
-    /// The distance from the camera to the light.
-    pub distance: f64,
+    /// The distance from the light's centre to the nearest object's box.
+    pub nearest: f64,
 }
 
 impl SmallAreaLight {
@@ -45,81 +46,67 @@ fn box_distances(p: DVec3, (lo, hi): (DVec3, DVec3)) -> (f64, f64) {
     (near, far)
 }
 
-/// The bounds for area light `light` of `scene` in an image `height` pixels high; `None` for a
-/// light without an area or a scene without objects. Bounds, not estimates:
+/// The bounds for area light `light` of `scene` in an image `height` pixels high that frames the
+/// scene: its objects' bounding sphere just spans the height, so a pixel is the sphere's diameter
+/// over `height`, whatever the lens (a perspective camera at the framing distance, or an
+/// orthographic one as tall as the sphere). The camera itself is not read: the rule holds for
+/// every view at least that far out, and a view zoomed closer may show an area the rule dropped.
+/// `None` for a light without an area or a scene without objects. Bounds, not estimates:
 /// - the penumbra: the similar triangles' w·(d_r − d_b)/d_b ≤ w·d_r/d_b, with w the light's full
 ///   extent, the blocker no nearer than the nearest object less the light's radius, and the
-///   receiver d_r within each object's box, in pixels at that box's distance from the camera
-///   (0 if shadows are off: no penumbra);
-/// - the highlight: a flat or convex mirror shows the light no larger than the light itself
-///   seen from the camera, w/|light − camera| (a rough surface blurs point and area alike);
-/// - a camera or light inside an object's box, or an object within the light's radius: no bound
-///   (infinite), so the light keeps its area.
+///   receiver d_r within each object's box (0 if shadows are off: no penumbra);
+/// - the highlight: a flat or convex mirror shows the light no larger than the light itself,
+///   w, seen from at least the mirror's distance to the camera (a rough surface blurs point and
+///   area alike);
+/// - an object within the light's radius: no bound (infinite), so the light keeps its area.
 pub fn small_area_light(scene: &Scene, light: &Light, height: u32) -> Option<SmallAreaLight> {
-    bounds_of(scene, &object_boxes(scene), light, height)
+    bounds_of(&object_boxes(scene), light, height)
 }
 
 /// [`small_area_light`] with the scene's object boxes already made (they walk every mesh).
-fn bounds_of(scene: &Scene, boxes: &[(DVec3, DVec3)], light: &Light, height: u32) -> Option<SmallAreaLight> {
+fn bounds_of(boxes: &[(DVec3, DVec3)], light: &Light, height: u32) -> Option<SmallAreaLight> {
     let area = light.area_light()?;
     if boxes.is_empty() {
         return None;
     }
     let r = area.area_radius();
     let w = 2.0 * r;
-    let eye = scene.camera.eye;
-    let distance = (area.center - eye).length();
-    // World size of one pixel at distance z: z·angle (perspective) or a constant (orthographic).
-    let h = height.max(1) as f64;
-    let (angle, ortho) = match scene.camera.orthographic {
-        Some(ymag) => (0.0, 2.0 * ymag / h),
-        None => (2.0 * (0.5 * scene.camera.fov_y_deg.to_radians()).tan() / h, 0.0),
-    };
-    let pixels = |world: f64, z: f64| {
+    // One pixel of the framing image, in world units: the scene's diameter over the height.
+    let lo = boxes.iter().fold(DVec3::splat(f64::INFINITY), |a, b| a.min(b.0));
+    let hi = boxes.iter().fold(DVec3::splat(f64::NEG_INFINITY), |a, b| a.max(b.1));
+    let pixel = (hi - lo).length() / height.max(1) as f64;
+    let pixels = |world: f64| {
         if world == 0.0 {
-            return 0.0;
+            0.0
+        } else if pixel > 0.0 {
+            world / pixel
+        } else {
+            f64::INFINITY
         }
-        let px = z * angle + ortho;
-        if px > 0.0 { world / px } else { f64::INFINITY }
     };
     let d_near = boxes.iter().map(|b| box_distances(area.center, *b).0).fold(f64::INFINITY, f64::min);
-    // On a receiver at x, d(x) from the light, the penumbra is at most w·d(x)/(d_near − r), and
-    // d(x) ≤ |x − eye| + |eye − light|: per box, the nearer of that and its farthest corner.
+    // On a receiver at x, d(x) from the light, the penumbra is at most w·d(x)/(d_near − r), with
+    // d(x) at most each box's farthest corner from the light.
     let penumbra = if !light.shadow.casts {
         0.0
     } else if d_near > r {
-        boxes
-            .iter()
-            .map(|b| {
-                let (cam, far) = (box_distances(eye, *b).0, box_distances(area.center, *b).1 + r);
-                let reach = match scene.camera.orthographic {
-                    Some(_) => far,
-                    None => far.min(cam + distance + r),
-                };
-                pixels(w * reach / (d_near - r), cam)
-            })
-            .fold(0.0, f64::max)
+        boxes.iter().map(|b| pixels(w * (box_distances(area.center, *b).1 + r) / (d_near - r))).fold(0.0, f64::max)
     } else {
         f64::INFINITY
     };
-    // The light's image in a mirror: its angular size from the camera, w/distance.
-    let highlight = match scene.camera.orthographic {
-        Some(_) => pixels(w, 1.0),
-        None if distance > r => w / distance / angle,
-        None => f64::INFINITY,
-    };
     Some(SmallAreaLight {
         penumbra_px: penumbra,
-        highlight_px: highlight,
+        highlight_px: pixels(w),
         radius_over_distance: if d_near > 0.0 { r / d_near } else { f64::INFINITY },
-        distance,
+        nearest: d_near,
     })
 }
 
 /// Draw every area light of `scene` (the first `MAX_LIGHTS`) that is drawn with its exact form
-/// but too small to show it in an image `height` pixels high as one point source
-/// (`area_points` = 1), and say why, one line each, e.g. "rect light L2: 0.02 × 0.02 m at 40 m,
-/// penumbra ≤ 0.4 px, highlight ≤ 0.3 px, r/d 0.001: drawn as a point light".
+/// but too small to show it in an image `height` pixels high framing the scene as one point
+/// source (`area_points` = 1), and say why, one line each, e.g. "rect light L2: 0.02 × 0.02 m,
+/// 40.000 m from the nearest object, penumbra ≤ 0.4 px, highlight ≤ 0.3 px, r/d 0.001: drawn as
+/// a point light".
 pub fn draw_small_area_lights_as_points(scene: &mut Scene, height: u32) -> Vec<String> {
     let mut lines = Vec::new();
     let exact = |l: &Light| l.kind.is_area() && l.area_points == 0;
@@ -132,17 +119,17 @@ pub fn draw_small_area_lights_as_points(scene: &mut Scene, height: u32) -> Vec<S
         if !exact(light) {
             continue;
         }
-        let Some(b) = bounds_of(scene, &boxes, light, height).filter(SmallAreaLight::is_small) else { continue };
+        let Some(b) = bounds_of(&boxes, light, height).filter(SmallAreaLight::is_small) else { continue };
         let size = match light.kind {
             LightKind::Rect => format!("{} × {} m", light.size[0], light.size[1]),
             LightKind::Disk | LightKind::Sphere => format!("{} m across", light.size[0]),
             LightKind::Directional | LightKind::Point | LightKind::Spot => continue,
         };
         lines.push(format!(
-            "{} light L{}: {size} at {:.3} m, penumbra ≤ {:.2} px, highlight ≤ {:.2} px, r/d {:.2e}: drawn as a point light",
+            "{} light L{}: {size}, {:.3} m from the nearest object, penumbra ≤ {:.2} px, highlight ≤ {:.2} px, r/d {:.2e}: drawn as a point light",
             light.kind.name(),
             i + 1,
-            b.distance,
+            b.nearest,
             b.penumbra_px,
             b.highlight_px,
             b.radius_over_distance
@@ -168,7 +155,7 @@ mod tests {
         let mut s = penumbra_with(1e-4);
         let lines = draw_small_area_lights_as_points(&mut s, 720);
         assert_eq!(lines.len(), 1, "{lines:?}");
-        assert!(lines[0].starts_with("rect light L1: 0.0001 × 0.0001 m at ") && lines[0].ends_with("point light"));
+        assert!(lines[0].starts_with("rect light L1: 0.0001 × 0.0001 m, ") && lines[0].ends_with("point light"));
         assert_eq!(s.lights[0].area_points, 1);
     }
 
@@ -196,6 +183,23 @@ mod tests {
         let mut off = s.clone();
         off.set_shadows(false);
         assert_eq!(small_area_light(&off, &off.lights[0], 720).unwrap().penumbra_px, 0.0);
+    }
+
+    /// The camera decides nothing: near, far or orthographic, the bounds and the lights drawn
+    /// stay; the image's height still scales them.
+    #[test]
+    fn the_camera_decides_nothing() {
+        let s = penumbra_with(0.001);
+        let at = |s: &Scene| small_area_light(s, &s.lights[0], 720).unwrap();
+        let mut moved = s.clone();
+        moved.camera.eye = moved.camera.target + (s.camera.eye - s.camera.target) * 0.05;
+        let mut ortho = s.clone();
+        ortho.camera.orthographic = Some(0.01);
+        assert_eq!(at(&moved), at(&s));
+        assert_eq!(at(&ortho), at(&s));
+        let small = |s: &Scene, h| draw_small_area_lights_as_points(&mut s.clone(), h).len();
+        assert_eq!((small(&s, 720), small(&moved, 720), small(&ortho, 720)), (1, 1, 1), "{:?}", at(&s));
+        assert_eq!(small(&s, 100_000), 0, "at a height of 10⁵ pixels the light shows its area");
     }
 
     #[test]

@@ -180,7 +180,7 @@ pub fn env_prefiltered(pre: &[[f32; 4]], r: DVec3, m: f64) -> [f64; 3] {
 
 /// Every D × G pair's B (the lobe's albedo weighed by `(1 − V·H)⁵`, [`crate::furnace::weighted_albedo`])
 /// at the nodes of the compensation's table (`ms_table::ms_table`: m down, `N·V` across),
-/// computed once; `globals.env_split_b` holds it four floats a slot.
+/// computed once; `tables.env_split_b` holds it four floats a slot.
 pub fn env_split_b_table() -> &'static [f32] {
     use super::microfacet::{Distribution, Masking, Microfacet};
     use super::ms_table::{MS_TABLE_SAMPLES, MS_TABLE_SIDE};
@@ -206,7 +206,7 @@ pub fn env_split_b_table() -> &'static [f32] {
     })
 }
 
-/// The table as `globals.env_split_b` holds it: four floats a slot.
+/// The table as `tables.env_split_b` holds it: four floats a slot.
 pub fn env_split_b_vec4s() -> [[f32; 4]; ENV_SPLIT_B_VEC4S] {
     let mut out = [[0.0; 4]; ENV_SPLIT_B_VEC4S];
     for (k, b) in env_split_b_table().iter().enumerate() {
@@ -215,7 +215,7 @@ pub fn env_split_b_vec4s() -> [[f32; 4]; ENV_SPLIT_B_VEC4S] {
     out
 }
 
-/// vec4 slots of `globals.env_split_b` (WGSL `ENV_SPLIT_B_VEC4S`, generated): every D × G pair's
+/// vec4 slots of `tables.env_split_b` (WGSL `ENV_SPLIT_B_VEC4S`, generated): every D × G pair's
 /// nodes, four floats a slot, laid out as the E table.
 pub const ENV_SPLIT_B_VEC4S: usize = super::ms_table::MS_TABLE_VEC4S;
 

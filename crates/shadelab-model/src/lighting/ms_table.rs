@@ -2,7 +2,7 @@
 //! with F = 1 (docs/microfacet.md), every D × G pair at `N·V` and m, which the multiple-scattering
 //! compensation (`multiscatter.rs`) and the environment's split sum read. The project computes it
 //! from [`crate::furnace::directional_albedo`] ([`ms_table`]), the same f32 values on the GPU
-//! (`globals.ms_albedo`) and here.
+//! (`tables.ms_albedo`) and here.
 
 use super::microfacet::{Distribution, Masking, Microfacet};
 use crate::params::NamedValue;
@@ -13,7 +13,7 @@ pub const MS_TABLE_SIDE: usize = 16;
 /// The D × G pairs, `d.code()·MASKING_COUNT + g.code()`, from the term tables (the WGSL's
 /// `MS_PAIRS` is generated from it, `shaders::generated_constants`).
 pub const MS_PAIRS: usize = Distribution::ALL.len() * Masking::ALL.len();
-/// vec4 slots of `globals.ms_albedo` (WGSL `MS_TABLE_VEC4S`, generated): every pair's nodes, four
+/// vec4 slots of `tables.ms_albedo` (WGSL `MS_TABLE_VEC4S`, generated): every pair's nodes, four
 /// floats a slot.
 pub const MS_TABLE_VEC4S: usize = (MS_PAIRS * MS_TABLE_SIDE * MS_TABLE_SIDE).div_ceil(4);
 /// Half vectors per side the table's integrals take (64² each: its error is under the
@@ -48,7 +48,7 @@ pub fn ms_table() -> &'static [f32] {
     })
 }
 
-/// The table as `globals.ms_albedo` holds it: four floats a slot, the rest zero.
+/// The table as `tables.ms_albedo` holds it: four floats a slot, the rest zero.
 pub fn ms_table_vec4s() -> [[f32; 4]; MS_TABLE_VEC4S] {
     let mut out = [[0.0; 4]; MS_TABLE_VEC4S];
     for (k, e) in ms_table().iter().enumerate() {

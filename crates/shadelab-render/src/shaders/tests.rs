@@ -2,7 +2,7 @@
 //! and the WGSL compiles (the guards and codes shared with Rust: `twins.rs`).
 
 use super::*;
-use crate::uniforms::{GlobalsUniform, LightUniform, ObjectUniform, ShadowLightUniform, ShadowsUniform};
+use crate::uniforms::{GlobalsUniform, LightUniform, ObjectUniform, ShadowLightUniform, ShadowsUniform, TablesUniform};
 use std::mem::offset_of;
 
 pub(crate) fn parse(src: &str) -> naga::Module {
@@ -56,8 +56,9 @@ fn uniform_layouts_match_wgsl() {
     );
     assert_eq!(
         wgsl_layout(&module, "Globals"),
-        rust_layout!(GlobalsUniform: view_proj, camera_pos, ambient, light_count, flags, specular_model, illumination, lights, ms_albedo, env_sh, env_split_b, env_occlusion, inv_view_proj)
+        rust_layout!(GlobalsUniform: view_proj, camera_pos, ambient, light_count, flags, specular_model, illumination, lights, env_sh, env_occlusion, inv_view_proj)
     );
+    assert_eq!(wgsl_layout(&module, "Tables"), rust_layout!(TablesUniform: ms_albedo, env_split_b));
     assert_eq!(
         wgsl_layout(&module, "Object"),
         rust_layout!(ObjectUniform: model, normal_matrix, color, mu, r_s, r_d, r_a, m, h, mirror, transmission, uv_rotation, mu_tinted, uv_offset_scale, metallic_f0, emission, metal_roughness_uv, occlusion_uv, emissive_uv, uv_rotations, maps, occlusion_strength, normal_scale, phong_normalized, normal_uv, inverse_model, ior, absorption, exit_shape, absorption_form, longest_chord, microfacet, fresnel_mix)

@@ -299,6 +299,8 @@ impl Kernel {
         };
         let globals =
             init("environment sweep globals", bytemuck::bytes_of(&globals(prep)), wgpu::BufferUsages::UNIFORM);
+        let tables = crate::uniforms::TablesUniform::new();
+        let tables = init("environment sweep tables", bytemuck::bytes_of(&tables), wgpu::BufferUsages::UNIFORM);
         let levels = init("environment sweep levels", bytemuck::cast_slice(&prep.pre), wgpu::BufferUsages::STORAGE);
         let nodes = prep.case.grid.gpu_words();
         let nodes = init("environment sweep grid", bytemuck::cast_slice(&nodes), wgpu::BufferUsages::STORAGE);
@@ -337,7 +339,7 @@ impl Kernel {
                 entries: &entries,
             })
         };
-        let environment = group(0, &[(0, &globals), (1, &levels), (2, &nodes)]);
+        let environment = group(0, &[(0, &globals), (1, &levels), (2, &nodes), (3, &tables)]);
         let own = group(1, &[(11, &counts), (12, &self.table), (13, &out)]);
         let mut enc = device.create_command_encoder(&Default::default());
         {
@@ -354,13 +356,11 @@ impl Kernel {
 }
 
 /// The globals as the frame writes them for a scene with this environment and grid: its SH
-/// terms, the albedo and B tables and the grid's placement; nothing else is read.
+/// terms and the grid's placement; nothing else is read (the tables are bound beside them).
 fn globals(prep: &Prepared) -> crate::uniforms::GlobalsUniform {
     use bytemuck::Zeroable;
     let mut g = crate::uniforms::GlobalsUniform::zeroed();
-    g.ms_albedo = shadelab_model::lighting::ms_table::ms_table_vec4s();
     g.env_sh = prep.sh.map(|c| [c[0] as f32, c[1] as f32, c[2] as f32, 0.0]);
-    g.env_split_b = env::env_split_b_vec4s();
     g.env_occlusion = prep.case.grid.gpu_placement();
     g
 }

@@ -132,7 +132,7 @@ pub fn run_plan(gpu: &Gpu, plan: &Plan, command: &str, mut progress: impl FnMut(
     let mut rows = Vec::new();
     for g in groups(plan) {
         let (w, h) = g.size;
-        let gs = r.upload(&g.scene).expect("the study scenes are analytic shapes, far below any buffer limit");
+        let mut gs = r.upload(&g.scene).expect("the study scenes are analytic shapes, far below any buffer limit");
         let target = Target::new(&gpu.device, w, h, target::HDR_FORMAT);
         let programs = g.programs();
         let draws: Vec<(Program, RenderSettings)> = programs
@@ -142,11 +142,11 @@ pub fn run_plan(gpu: &Gpu, plan: &Plan, command: &str, mut progress: impl FnMut(
                 None => (Program::NullBaseline, RenderSettings::default()),
             })
             .collect();
-        let mut samples = timer.interleaved(&mut r, &gs, &g.scene, &target, &draws, plan.frames, plan.warmup);
+        let mut samples = timer.interleaved(&mut r, &mut gs, &g.scene, &target, &draws, plan.frames, plan.warmup);
         let baseline_ms = median(&mut samples[0]);
         for (i, s) in programs.iter().enumerate() {
             let error = s.map(|s| {
-                r.render(&gs, &g.scene, &target, &s);
+                r.render(&mut gs, &g.scene, &target, &s);
                 let image = target::read_back(&gpu.device, &gpu.queue, &target);
                 let lit = format!("{:?} {:?}", g.scene.illumination, g.scene.lights);
                 let key = (g.name.to_string(), lit, g.size, s.specular);

@@ -31,7 +31,7 @@ pub fn run(args: &cli::BenchEffectsArgs) -> Result<(), Failure> {
             println!("# {}: {line}", kept.name);
         }
         let scene = &drawn;
-        let gs = r.upload(scene).map_err(|e| Failure::Usage(format!("{}: {e}", scene.name)))?;
+        let mut gs = r.upload(scene).map_err(|e| Failure::Usage(format!("{}: {e}", scene.name)))?;
         for shading in ShadingMode::ALL_MODES {
             let base = RenderSettings::new(shading, specular);
             let programs = shading_programs(scene, base);
@@ -43,14 +43,10 @@ pub fn run(args: &cli::BenchEffectsArgs) -> Result<(), Failure> {
             }
             let draws: Vec<TimedDraw> = rows
                 .iter()
-                .map(|(sc, _, s)| TimedDraw {
-                    gpu_scene: &gs,
-                    scene: sc,
-                    program: Program::for_scene(sc, s),
-                    settings: *s,
-                })
+                .map(|(sc, _, s)| TimedDraw { upload: 0, scene: sc, program: Program::for_scene(sc, s), settings: *s })
                 .collect();
-            let mut samples = timer.interleaved_draws(&mut r, &target, &draws, frames, warmup);
+            let mut samples =
+                timer.interleaved_draws(&mut r, std::slice::from_mut(&mut gs), &target, &draws, frames, warmup);
             let specialized = median(&mut samples[0]);
             for (i, (sc, name, s)) in rows.iter().enumerate() {
                 let effects = Program::for_scene(sc, s).effects();

@@ -132,21 +132,21 @@ pub fn run(args: &cli::BenchAmbientArgs) -> Result<(), Failure> {
 fn gpu_times(scenes: &[&Scene; 4], settings: &RenderSettings, (w, h): (u32, u32)) -> anyhow::Result<[f64; 5]> {
     let gpu = Gpu::headless(shadelab_render::AdapterChoice::from_env()).context("opening a GPU adapter")?;
     let mut r = Renderer::new(&gpu.device, &gpu.queue);
-    let gs = r.upload(scenes[0])?;
+    let mut gs = r.upload(scenes[0])?;
     let target = Target::new(&gpu.device, w, h, shadelab_render::target::HDR_FORMAT);
     let mut draws = vec![TimedDraw {
-        gpu_scene: &gs,
+        upload: 0,
         scene: scenes[0],
         program: Program::NullBaseline,
         settings: RenderSettings::default(),
     }];
     draws.extend(scenes.iter().map(|s| TimedDraw {
-        gpu_scene: &gs,
+        upload: 0,
         scene: s,
         program: Program::for_scene(s, settings),
         settings: *settings,
     }));
     let timer = FrameTimer::new(&gpu.device, &gpu.queue);
-    let mut samples = timer.interleaved_draws(&mut r, &target, &draws, FRAMES, WARMUP);
+    let mut samples = timer.interleaved_draws(&mut r, std::slice::from_mut(&mut gs), &target, &draws, FRAMES, WARMUP);
     Ok(std::array::from_fn(|i| median(&mut samples[i])))
 }

@@ -54,7 +54,7 @@ pub struct RuleRow {
 fn draw(
     r: &mut Renderer,
     gpu: &Gpu,
-    gs: &SceneGpu,
+    gs: &mut SceneGpu,
     scene: &Scene,
     target: &Target,
     settings: &RenderSettings,
@@ -67,13 +67,14 @@ fn draw(
 fn time(
     r: &mut Renderer,
     gpu: &Gpu,
+    gs: &mut SceneGpu,
     target: &Target,
     draws: &[TimedDraw],
     frames: usize,
     warmup: usize,
 ) -> Vec<(f64, f64, f64)> {
     let timer = FrameTimer::new(&gpu.device, &gpu.queue);
-    let mut samples = timer.interleaved_draws(r, target, draws, frames, warmup);
+    let mut samples = timer.interleaved_draws(r, std::slice::from_mut(gs), target, draws, frames, warmup);
     samples
         .iter_mut()
         .map(|s| {
@@ -103,18 +104,18 @@ pub fn methods(gpu: &Gpu, (w, h): (u32, u32), frames: usize, warmup: usize) -> a
         ("glass, back-face exit", &scene, back),
     ];
     let mut r = Renderer::new(&gpu.device, &gpu.queue);
-    let gs = r.upload(&scene)?;
+    let mut gs = r.upload(&scene)?;
     let target = Target::new(&gpu.device, w, h, shadelab_render::target::HDR_FORMAT);
     let draws: Vec<TimedDraw> = rows
         .iter()
         .map(|(_, s, settings)| TimedDraw {
-            gpu_scene: &gs,
+            upload: 0,
             scene: s,
             program: Program::for_scene(s, settings),
             settings: *settings,
         })
         .collect();
-    let times = time(&mut r, gpu, &target, &draws, frames, warmup);
+    let times = time(&mut r, gpu, &mut gs, &target, &draws, frames, warmup);
     let started = Instant::now();
     let reference = render_reference(&scene, SpecularModel::CookTorrance, w, h);
     let reference_ms = started.elapsed().as_secs_f64() * 1e3;
@@ -122,7 +123,7 @@ pub fn methods(gpu: &Gpu, (w, h): (u32, u32), frames: usize, warmup: usize) -> a
     let pixels: Vec<(u32, u32)> = glass.iter().flat_map(|&i| reference.interior(i)).collect();
     let mut out = Vec::new();
     for ((method, s, settings), (median_ms, p10_ms, p90_ms)) in rows.iter().zip(times) {
-        let img = draw(&mut r, gpu, &gs, s, &target, settings);
+        let img = draw(&mut r, gpu, &mut gs, s, &target, settings);
         let flip = shadelab_render::image_error::compare(&img, &reference).stats.flip_mean;
         out.push(MethodRow {
             method,
@@ -160,7 +161,7 @@ pub fn rule(
     let pixels = render_reference(&scene, SpecularModel::CookTorrance, w, h).interior(cyl);
     let base = RenderSettings::new(ShadingMode::Phong, SpecularModel::CookTorrance);
     let mut r = Renderer::new(&gpu.device, &gpu.queue);
-    let gs = r.upload(&scene)?;
+    let mut gs = r.upload(&scene)?;
     let target = Target::new(&gpu.device, w, h, shadelab_render::target::HDR_FORMAT);
     let (mut rows, mut maps) = (Vec::new(), Vec::new());
     for &ad in depths {
@@ -170,10 +171,11 @@ pub fn rule(
         let by_rule = Scene { absorption: AbsorptionChoice::Rule, ..scene.clone() };
         let draws: Vec<TimedDraw> = [&exact, &by_rule]
             .iter()
-            .map(|s| TimedDraw { gpu_scene: &gs, scene: s, program: Program::for_scene(s, &base), settings: base })
+            .map(|s| TimedDraw { upload: 0, scene: s, program: Program::for_scene(s, &base), settings: base })
             .collect();
-        let times = time(&mut r, gpu, &target, &draws, frames, warmup);
-        let (a, b) = (draw(&mut r, gpu, &gs, &exact, &target, &base), draw(&mut r, gpu, &gs, &by_rule, &target, &base));
+        let times = time(&mut r, gpu, &mut gs, &target, &draws, frames, warmup);
+        let a = draw(&mut r, gpu, &mut gs, &exact, &target, &base);
+        let b = draw(&mut r, gpu, &mut gs, &by_rule, &target, &base);
         let (mut sum, mut max) = (0.0f64, 0.0f64);
         for &(x, y) in &pixels {
             for c in 0..3 {

@@ -149,22 +149,22 @@ pub fn combos(
     let all = studied();
     let scenes: Vec<Scene> = all.iter().map(|t| with_terms(&scene, *t)).collect();
     let mut r = Renderer::new(&gpu.device, &gpu.queue);
-    let gs = r.upload(&scene)?;
+    let mut gs = r.upload(&scene)?;
     let target = Target::new(&gpu.device, w, h, shadelab_render::target::HDR_FORMAT);
     let mut draws = vec![TimedDraw {
-        gpu_scene: &gs,
+        upload: 0,
         scene: &scene,
         program: Program::NullBaseline,
         settings: RenderSettings::default(),
     }];
     draws.extend(scenes.iter().map(|s| TimedDraw {
-        gpu_scene: &gs,
+        upload: 0,
         scene: s,
         program: Program::for_scene(s, &settings),
         settings,
     }));
     let timer = FrameTimer::new(&gpu.device, &gpu.queue);
-    let mut samples = timer.interleaved_draws(&mut r, &target, &draws, frames, warmup);
+    let mut samples = timer.interleaved_draws(&mut r, std::slice::from_mut(&mut gs), &target, &draws, frames, warmup);
     let times: Vec<f64> = samples.iter_mut().map(|s| median(s)).collect();
     let null_ms = times[0];
     let chapter = render_reference(&scene, SpecularModel::CookTorrance, w, h);
@@ -173,7 +173,7 @@ pub fn combos(
     for (i, (terms, s)) in all.iter().zip(&scenes).enumerate() {
         let reference = render_reference(s, SpecularModel::CookTorrance, w, h);
         let (mean_change, max_change) = change(&reference, &chapter, &pixels);
-        r.render(&gs, s, &target, &settings);
+        r.render(&mut gs, s, &target, &settings);
         let img = shadelab_render::target::read_back(&gpu.device, &gpu.queue, &target);
         rows.push(ComboRow {
             terms: *terms,

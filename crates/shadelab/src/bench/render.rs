@@ -25,7 +25,7 @@ pub fn run(args: &cli::BenchRenderArgs) -> Result<(), Failure> {
     };
     let gpu = Gpu::headless(AdapterChoice::from_env()).context("opening a GPU adapter")?;
     let mut r = Renderer::new(&gpu.device, &gpu.queue);
-    let gs = r.upload(&scene).map_err(|e| Failure::Usage(format!("{}: {e}", args.scene.scene)))?;
+    let mut gs = r.upload(&scene).map_err(|e| Failure::Usage(format!("{}: {e}", args.scene.scene)))?;
     let target = Target::new(&gpu.device, width, height, shadelab_render::target::HDR_FORMAT);
     let timer = FrameTimer::new(&gpu.device, &gpu.queue);
     let combos: Vec<RenderSettings> = ShadingMode::ALL_MODES
@@ -38,7 +38,7 @@ pub fn run(args: &cli::BenchRenderArgs) -> Result<(), Failure> {
     let programs: Vec<_> = std::iter::once((shadelab_render::Program::NullBaseline, RenderSettings::default()))
         .chain(combos.iter().map(|s| (shadelab_render::Program::for_scene(&scene, s), *s)))
         .collect();
-    let mut samples = timer.interleaved(&mut r, &gs, &scene, &target, &programs, frames, warmup);
+    let mut samples = timer.interleaved(&mut r, &mut gs, &scene, &target, &programs, frames, warmup);
     println!(
         "# shadelab bench render — scene '{}', {}×{}, {} triangles, {} lights",
         scene.name,

@@ -191,24 +191,22 @@ pub fn run_plan(
     let mut r = Renderer::new(&gpu.device, &gpu.queue);
     let timer = FrameTimer::new(&gpu.device, &gpu.queue);
     let target = Target::new(&gpu.device, size.0, size.1, target::HDR_FORMAT);
-    let (uploads, configs) = plan(&mut r, scene, resolutions)?;
+    let (mut uploads, configs) = plan(&mut r, scene, resolutions)?;
     let program = |c: Config, s: &Scene| match c {
         Config::Baseline => Program::NullBaseline,
         _ => Program::for_scene(s, &settings),
     };
     // Interleaved frame by frame, each row with its own scene (its shadow settings).
-    let draws: Vec<TimedDraw> = configs
-        .iter()
-        .map(|(c, g, s)| TimedDraw { gpu_scene: &uploads[*g], scene: s, program: program(*c, s), settings })
-        .collect();
-    let mut samples = timer.interleaved_draws(&mut r, &target, &draws, frames, warmup);
+    let draws: Vec<TimedDraw> =
+        configs.iter().map(|(c, g, s)| TimedDraw { upload: *g, scene: s, program: program(*c, s), settings }).collect();
+    let mut samples = timer.interleaved_draws(&mut r, &mut uploads, &target, &draws, frames, warmup);
     // The exact image, once: the reference's shadows do not depend on the map.
     let reference =
         render_reference(&with_shadows(scene, RESOLUTIONS[0], ShadowFilter::Pcf), settings.specular, size.0, size.1);
     let mut images = Vec::new();
     for (c, g, s) in &configs {
         let image = (*c != Config::Baseline).then(|| {
-            r.render(&uploads[*g], s, &target, &settings);
+            r.render(&mut uploads[*g], s, &target, &settings);
             target::read_back(&gpu.device, &gpu.queue, &target)
         });
         images.push(image);

@@ -320,8 +320,8 @@ pub struct SceneArgs {
     pub env_background: Option<bool>,
 }
 
-/// `render --small-area-lights`: how an area light too small on screen for its area to show
-/// is drawn.
+/// `render --small-area-lights`: how an area light too small in an image framing the scene for
+/// its area to show is drawn.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum SmallAreaLights {
     /// Drawn as a point light (the reason is printed).
@@ -375,8 +375,8 @@ pub struct RenderArgs {
     /// Print the effects the scene calls for (the shader holds only those), each with its reason.
     #[arg(long)]
     pub explain: bool,
-    /// How to draw an area light whose penumbra and highlight would be under a pixel wide from
-    /// the camera: as a point light, printing why (point), or with its area all the same (area).
+    /// How to draw an area light whose penumbra and highlight would be under a pixel wide in an
+    /// image framing the scene: as a point light, printing why (point), or with its area (area).
     #[arg(long, value_name = "point|area", default_value = "point", value_parser = values::named::<SmallAreaLights>())]
     pub small_area_lights: SmallAreaLights,
     /// Where the glass pass finds a path's exit from a transparent object: analytic (exact for

@@ -2,6 +2,7 @@
 //! extract step. The scene is never changed to draw a view of it; its copy as drawn (one term
 //! alone, small area lights drawn as points) shares its meshes and textures, so the copy is cheap.
 //! Everything the frame needs is derived from that copy once: the effect analysis, the program.
+//! The camera is no input: orbiting changes it alone, and the copy takes it without deriving.
 
 use shadelab_model::Scene;
 use shadelab_model::effects::{Analysis, analyze};
@@ -21,8 +22,8 @@ pub struct Drawn {
     pub small_area_lights: Vec<String>,
 }
 
-/// What the derivation depends on.
-#[derive(PartialEq)]
+/// What the derivation depends on: the scene but its camera (of which only whether it is
+/// orthographic counts, for a directional light's cascade layers).
 struct Inputs {
     scene: Scene,
     settings: RenderSettings,
@@ -41,19 +42,24 @@ pub struct Derived {
 }
 
 impl Derived {
-    /// The frame as drawn for these inputs, derived again only if they changed.
+    /// The frame as drawn for these inputs, derived again only if they changed; the camera alone
+    /// changing (an orbit) is given to the drawn copy as it is.
     pub fn get(&mut self, scene: &Scene, settings: &RenderSettings, term: Term, size: (u32, u32)) -> &Drawn {
-        let same = self
-            .last
-            .as_ref()
-            .is_some_and(|(i, _)| i.settings == *settings && i.term == term && i.size == size && i.scene == *scene);
+        let same = self.last.as_mut().is_some_and(|(i, _)| {
+            let projection = i.scene.camera.orthographic.is_some() == scene.camera.orthographic.is_some();
+            // The kept copy takes the current camera, so comparing the scenes leaves it out.
+            i.scene.camera = scene.camera;
+            projection && i.settings == *settings && i.term == term && i.size == size && i.scene == *scene
+        });
         if !same {
             let inputs = Inputs { scene: scene.clone(), settings: *settings, term, size };
             self.count += 1;
             self.last = Some((inputs, derive(scene, settings, term, size.1, self.count)));
             self.recent.push_back(Instant::now());
         }
-        &self.last.as_ref().expect("derived above").1
+        let drawn = &mut self.last.as_mut().expect("derived above").1;
+        drawn.scene.camera = scene.camera;
+        drawn
     }
 
     /// Derivations so far.

@@ -162,7 +162,7 @@ impl DifferenceView {
         &mut self,
         ctx: &egui::Context,
         renderer: &mut Renderer,
-        gpu_scene: &SceneGpu,
+        gpu_scene: &mut SceneGpu,
         scene: &Scene,
         settings: &RenderSettings,
         view_size: (u32, u32),
@@ -308,7 +308,7 @@ impl DifferenceView {
     fn start_reading(
         &self,
         renderer: &mut Renderer,
-        gpu_scene: &SceneGpu,
+        gpu_scene: &mut SceneGpu,
         scene: &Scene,
         settings: &RenderSettings,
         key: ReferenceKey,

@@ -162,7 +162,7 @@ impl Viewer {
         let Some(view) = &self.view else { return };
         let (w, h) = (view.target.width, view.target.height);
         let target = Target::new(&self.renderer.device, w, h, shadelab_render::target::HDR_FORMAT);
-        self.renderer.render(&self.gpu_scene, &self.scene, &target, &self.settings);
+        self.renderer.render(&mut self.gpu_scene, &self.scene, &target, &self.settings);
         self.screenshot_reading =
             Some(shadelab_render::target::start_read_back(&self.renderer.device, &self.renderer.queue, &target));
     }
@@ -198,7 +198,7 @@ impl Viewer {
         let Some(view) = &self.view else { return };
         let (w, h) = (view.target.width, view.target.height);
         let target = Target::new(&self.renderer.device, w, h, shadelab_render::target::HDR_FORMAT);
-        self.renderer.render(&self.gpu_scene, &self.scene, &target, &self.settings);
+        self.renderer.render(&mut self.gpu_scene, &self.scene, &target, &self.settings);
         let image = shadelab_render::target::read_back(&self.renderer.device, &self.renderer.queue, &target);
         self.saved_count += 1;
         let path = PathBuf::from(format!("shadelab-screenshot-{}.png", self.saved_count));

@@ -164,9 +164,9 @@ pub struct Viewer {
     frames: u64,
     /// The frame as drawn, derived once per change (`derive.rs`).
     derived: derive::Derived,
-    /// The derivation the view's uniforms were written from, and `SceneGpu::uniform_writes`
-    /// after that write: another count means another draw wrote over them.
-    uniforms_written: Option<(u64, u64)>,
+    /// The derivation and camera the view's uniforms were written from, and
+    /// `SceneGpu::uniform_writes` after that write: another count means another draw wrote over them.
+    uniforms_written: Option<(u64, u64, Camera)>,
     /// The link "copy link" wrote last, shown under the button.
     copied_link: Option<(String, Option<String>)>,
     /// The I_amb an environment chosen in the panel took the place of, given back with "none".
@@ -339,6 +339,17 @@ impl Viewer {
     /// How many pipelines have been built so far (must not grow per frame).
     pub fn pipeline_builds(&self) -> u32 {
         self.renderer.pipelines.pipeline_builds
+    }
+
+    /// Whether pipelines are being built in the background (the uber pipeline draws meanwhile).
+    pub fn pipelines_building(&self) -> bool {
+        self.renderer.pipelines.building()
+    }
+
+    /// How many shadow-map layers the shadow passes have drawn so far (none while only the
+    /// camera moves, but for a directional light's cascades fitted to the view).
+    pub fn shadow_layer_draws(&self) -> u64 {
+        self.gpu_scene.shadow_layer_draws
     }
 
     /// The last frame's area lights drawn as point lights, each with its reason (the panel's lines).

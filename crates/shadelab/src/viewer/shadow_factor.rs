@@ -20,7 +20,7 @@ impl ShadowFactorView {
         &mut self,
         ctx: &egui::Context,
         renderer: &mut Renderer,
-        gpu_scene: &SceneGpu,
+        gpu_scene: &mut SceneGpu,
         scene: &Scene,
         settings: &RenderSettings,
         view_size: (u32, u32),

@@ -77,27 +77,28 @@ impl Viewer {
         // The frame as drawn, derived once per change (derive.rs); the uniforms written when it
         // changed or when another draw (the difference view's, a screenshot's) wrote over them.
         let drawn = self.derived.get(&self.scene, &self.settings, self.term, (w, h));
-        // Which derivation the uniforms hold, and the write count after writing them (the panel
-        // may have made this frame's derivation already).
-        let now = (drawn.derivation, self.gpu_scene.uniform_writes.load(std::sync::atomic::Ordering::Relaxed));
+        // Which derivation and camera the uniforms hold, and the write count after writing them
+        // (the panel may have made this frame's derivation already). An orbit writes them again
+        // without deriving; the shadow maps are redrawn only where a layer's projection changed.
+        let now = (drawn.derivation, self.gpu_scene.uniform_writes, drawn.scene.camera);
         if self.uniforms_written != Some(now) {
             self.renderer.write_uniforms_for(
-                &self.gpu_scene,
+                &mut self.gpu_scene,
                 &drawn.scene,
                 &view.target,
                 &self.settings,
                 drawn.program,
             );
             self.small_area_lights = drawn.small_area_lights.clone();
-            self.uniforms_written = Some((now.0, now.1 + 1));
+            self.uniforms_written = Some((now.0, now.1 + 1, now.2));
         }
         let program = drawn.program;
         // With timestamps the frame is timed in the ring and never waited for (the panel shows
         // the newest time read back); without them the CPU's submit + wait is the only clock.
         self.frame_ms = if self.ring.timed() {
-            self.ring.frame(&mut self.renderer, &self.gpu_scene, &view.target, program).or(self.frame_ms)
+            self.ring.frame(&mut self.renderer, &mut self.gpu_scene, &view.target, program).or(self.frame_ms)
         } else {
-            Some(self.timer.frame(&mut self.renderer, &self.gpu_scene, &view.target, program))
+            Some(self.timer.frame(&mut self.renderer, &mut self.gpu_scene, &view.target, program))
         };
         self.boundary.draw(&self.renderer, &view.target, &drawn.scene);
         self.creases.draw(&self.renderer, &view.target, &drawn.scene);
@@ -114,15 +115,21 @@ impl Viewer {
             shown = Some(self.shadow_factor.update(
                 &ctx,
                 &mut self.renderer,
-                &self.gpu_scene,
+                &mut self.gpu_scene,
                 &drawn.scene,
                 &self.settings,
                 (w, h),
             ));
         } else if self.difference.enabled && covered {
             let ctx = ui.ctx().clone();
-            shown =
-                self.difference.update(&ctx, &mut self.renderer, &self.gpu_scene, &drawn.scene, &self.settings, (w, h));
+            shown = self.difference.update(
+                &ctx,
+                &mut self.renderer,
+                &mut self.gpu_scene,
+                &drawn.scene,
+                &self.settings,
+                (w, h),
+            );
         }
         (shown, self.difference.enabled && covered && !factor)
     }

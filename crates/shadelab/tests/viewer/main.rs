@@ -8,6 +8,7 @@ mod harness;
 mod area_lights;
 mod boundary;
 mod environment;
+mod orbit;
 mod panel;
 mod reference;
 mod shadows;

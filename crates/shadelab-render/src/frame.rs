@@ -29,6 +29,7 @@ impl Renderer {
         program: Program,
     ) {
         gpu_scene.uniform_writes += 1;
+        self.write_tables(program);
         gpu_scene.clear = crate::uniforms::clear_color(scene);
         let flags = if settings.debug_nonfinite { crate::uniforms::FLAG_DEBUG_NONFINITE } else { 0 }
             | settings.glass_view.code() << crate::uniforms::GLASS_VIEW_SHIFT;

@@ -11,9 +11,12 @@ pub struct Renderer {
     pub queue: wgpu::Queue,
     pub(crate) globals_layout: wgpu::BindGroupLayout,
     pub(crate) object_layout: wgpu::BindGroupLayout,
-    /// The constant tables (`TablesUniform`), written once here and bound in every scene's
-    /// globals group (binding 3).
+    /// The constant tables (`TablesUniform`), bound in every scene's globals group (binding 3)
+    /// and written once, by the first frame whose program reads them ([`Renderer::write_tables`]).
     pub(crate) tables: wgpu::Buffer,
+    /// Set once the tables are written: a renderer whose scenes never read them never computes
+    /// them (about 0.8 s for both).
+    tables_written: std::sync::OnceLock<()>,
     /// @group(2) of the permutations with cast shadows: `Shadows`, the maps, two samplers.
     pub(crate) shadow_layout: wgpu::BindGroupLayout,
     /// @group(3) of the shadow pass: `ShadowCasters`.
@@ -83,7 +86,6 @@ impl Renderer {
             usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
             mapped_at_creation: false,
         });
-        queue.write_buffer(&tables, 0, bytemuck::bytes_of(&TablesUniform::new()));
         let object_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("object"),
             entries: &[vec![uniform_entry(true, size_of::<ObjectUniform>() as u64)], crate::textures::layout_entries()]
@@ -139,6 +141,7 @@ impl Renderer {
             globals_layout,
             object_layout,
             tables,
+            tables_written: std::sync::OnceLock::new(),
             shadow_layout,
             casters_layout,
             flat_compute_layout,
@@ -147,6 +150,19 @@ impl Renderer {
             glass: None,
             shadow_samplers: crate::shadow_pass::samplers(device),
             pipelines: PipelineCache::new(device, layouts),
+        }
+    }
+}
+
+impl Renderer {
+    /// Write the constant tables, once per renderer, if `program` reads them (the compensation's
+    /// E or the split sum's E and B); a program that does not leaves them uncomputed.
+    pub(crate) fn write_tables(&self, program: crate::Program) {
+        use shadelab_model::effects::Effect;
+        let effects = program.effects();
+        if effects.has(Effect::MultipleScattering) || effects.has(Effect::EnvironmentSpecular) {
+            self.tables_written
+                .get_or_init(|| self.queue.write_buffer(&self.tables, 0, bytemuck::bytes_of(&TablesUniform::new())));
         }
     }
 }

@@ -95,8 +95,8 @@ fn sweep(@builtin(global_invocation_id) gid: vec3<u32>, @builtin(num_workgroups)
     pcss_columns(base, inp);
 }
 
-// The microfacet terms beyond the chapter's: GGX's and Blinn–Phong's D, Smith's G on each D's Λ,
-// Schlick's F and the glTF preset's whole specular.
+// The microfacet terms beyond the chapter's: every D and Smith's G on each D's Λ, Schlick's F and
+// the glTF preset's whole specular.
 fn microfacet_columns(base: u32, inp: SweepCombination) {
     let n = inp.n;
     let v = inp.v;
@@ -106,14 +106,12 @@ fn microfacet_columns(base: u32, inp: SweepCombination) {
     let n_x_h = cross(n, half);
     let nv = dot(n, v);
     let nl = dot(n, l);
-    outputs[base + COL_D_GGX] = d_ggx(dot(n, half), dot(n_x_h, n_x_h), m);
-    outputs[base + COL_D_BLINN_PHONG] = d_blinn_phong(dot(n, half), dot(n_x_h, n_x_h), m);
-    outputs[base + COL_G_SMITH_SEPARABLE] = g_smith_separable(DISTRIBUTION_GGX, nv, nl, m);
-    outputs[base + COL_G_SMITH_SEPARABLE + 1u] = g_smith_separable(DISTRIBUTION_BECKMANN, nv, nl, m);
-    outputs[base + COL_G_SMITH_SEPARABLE + 2u] = g_smith_separable(DISTRIBUTION_BLINN_PHONG, nv, nl, m);
-    outputs[base + COL_G_SMITH_CORRELATED] = g_smith_correlated(DISTRIBUTION_GGX, nv, nl, m);
-    outputs[base + COL_G_SMITH_CORRELATED + 1u] = g_smith_correlated(DISTRIBUTION_BECKMANN, nv, nl, m);
-    outputs[base + COL_G_SMITH_CORRELATED + 2u] = g_smith_correlated(DISTRIBUTION_BLINN_PHONG, nv, nl, m);
+    // Every D of the term table and its Smith G, each at its code's channel.
+    for (var d = 0u; d < DISTRIBUTION_COUNT; d++) {
+        outputs[base + COL_MICROFACET_D + d] = microfacet_d(d, dot(n, half), dot(n_x_h, n_x_h), m);
+        outputs[base + COL_G_SMITH_SEPARABLE + d] = g_smith_separable(d, nv, nl, m);
+        outputs[base + COL_G_SMITH_CORRELATED + d] = g_smith_correlated(d, nv, nl, m);
+    }
     put_rgb(base + COL_MICROFACET_F_SCHLICK, microfacet_f(MICROFACET_GLTF, dot(v, half), inp.v_index));
     put_rgb(base + COL_SPECULAR_MICROFACET_GLTF, specular_microfacet(n, v, l, m, inp.v_index, MICROFACET_GLTF, 1.0));
     // The compensation over E = m (0 to 1, the floor at 0 included).

@@ -31,13 +31,7 @@ pub fn weighted_albedo(terms: Microfacet, m: f64, cos_v: f64, n: usize, weight: 
         let t = (i as f64 + 0.5) / n as f64;
         let u = 1.0 - (1.0 - t).powi(3);
         let du_dt = 3.0 * (1.0 - t).powi(2);
-        // tan²θ_h from u by D's inverse CDF of N·H.
-        let tan2 = match terms.d {
-            Distribution::Beckmann => -a2 * (1.0 - u).ln(),
-            Distribution::Ggx => a2 * u / (1.0 - u),
-            // N·H = (1 − u)^(1/(h + 2)) with h + 2 = 2/α² (h ≥ 0: α² ≤ 1).
-            Distribution::BlinnPhong => (-a2.min(1.0) * (1.0 - u).ln()).exp_m1(),
-        };
+        let tan2 = terms.d.sample_tan2(a2, u);
         let cos_h = 1.0 / (1.0 + tan2).sqrt();
         let sin_h = (tan2 / (1.0 + tan2)).sqrt();
         for j in 0..n {

@@ -3,39 +3,68 @@
 //! material with `r_s > 0` uses it.
 
 use super::analyze::Analysis;
-use super::declared::Effect;
+use super::declared::{DECLARED, Effect};
 
-/// The microfacet terms' effects: each D, G and F of [`crate::lighting::microfacet`].
-pub const MICROFACET_EFFECTS: [Effect; 8] = [
-    Effect::DistributionBeckmann,
-    Effect::DistributionGgx,
-    Effect::DistributionBlinnPhong,
-    Effect::MaskingVGroove,
-    Effect::MaskingSmith,
-    Effect::MaskingSmithCorrelated,
-    Effect::FresnelExact,
-    Effect::FresnelSchlick,
-];
+/// Whether a define names a microfacet term's effect: `EFFECT_D_…`, `EFFECT_G_…` or `EFFECT_F_…`.
+const fn is_term_define(define: Option<&str>) -> bool {
+    let Some(d) = define else { return false };
+    let (b, prefix) = (d.as_bytes(), b"EFFECT_");
+    if b.len() < 10 || b[8] != b'_' || !matches!(b[7], b'D' | b'G' | b'F') {
+        return false;
+    }
+    let mut i = 0;
+    while i < prefix.len() {
+        if b[i] != prefix[i] {
+            return false;
+        }
+        i += 1;
+    }
+    true
+}
+
+/// How many declared effects are microfacet terms.
+const fn term_count() -> usize {
+    let (mut i, mut n) = (0, 0);
+    while i < DECLARED.len() {
+        if is_term_define(DECLARED[i].define) {
+            n += 1;
+        }
+        i += 1;
+    }
+    n
+}
+
+/// The microfacet terms' effects: each D, G and F of [`crate::lighting::microfacet`], found in
+/// the declared effects by their defines, in declaration order.
+pub const MICROFACET_EFFECTS: [Effect; term_count()] = {
+    let mut out = [Effect::Diffuse; term_count()];
+    let (mut i, mut n) = (0, 0);
+    while i < DECLARED.len() {
+        if is_term_define(DECLARED[i].define) {
+            out[n] = DECLARED[i].effect;
+            n += 1;
+        }
+        i += 1;
+    }
+    out
+};
+
+/// The effect of one term: the declared effect whose define is `EFFECT_<kind>_<NAME>`, NAME the
+/// term's name in capitals with `_` for `-` (the WGSL's convention; a test holds every term of
+/// the tables to exactly one).
+fn term_effect(kind: char, name: &str) -> Effect {
+    let define = format!("EFFECT_{kind}_{}", name.to_uppercase().replace('-', "_"));
+    DECLARED
+        .iter()
+        .find(|d| d.define == Some(define.as_str()))
+        .map(|d| d.effect)
+        .unwrap_or_else(|| panic!("{define}: every microfacet term declares its effect"))
+}
 
 /// The effects of a material's three microfacet terms.
 pub fn microfacet_effects(t: crate::lighting::microfacet::Microfacet) -> [Effect; 3] {
-    use crate::lighting::microfacet::{Distribution, Fresnel, Masking};
-    [
-        match t.d {
-            Distribution::Beckmann => Effect::DistributionBeckmann,
-            Distribution::Ggx => Effect::DistributionGgx,
-            Distribution::BlinnPhong => Effect::DistributionBlinnPhong,
-        },
-        match t.g {
-            Masking::VGroove => Effect::MaskingVGroove,
-            Masking::Smith => Effect::MaskingSmith,
-            Masking::SmithCorrelated => Effect::MaskingSmithCorrelated,
-        },
-        match t.f {
-            Fresnel::Exact => Effect::FresnelExact,
-            Fresnel::Schlick => Effect::FresnelSchlick,
-        },
-    ]
+    use crate::params::NamedValue;
+    [term_effect('D', t.d.name()), term_effect('G', t.g.name()), term_effect('F', t.f.name())]
 }
 
 /// Phong's normalized lobe: on when Phong specular is and a material with r_s > 0 asks for it.
@@ -109,6 +138,30 @@ mod tests {
     use crate::effects::analyze;
     use crate::params::SpecularModel;
     use crate::scene::Scene;
+
+    /// Every D, G and F of the term tables has exactly its own effect, and the term effects are
+    /// exactly those: a new term without its declared effect fails here, not in a material.
+    #[test]
+    fn every_term_of_the_tables_has_its_own_effect() {
+        use crate::lighting::microfacet::{Distribution, Fresnel, Masking, Microfacet};
+        use crate::params::NamedValue;
+        let mut found = Vec::new();
+        for &(_, d) in Distribution::ALL {
+            found.push(microfacet_effects(Microfacet { d, ..Microfacet::CHAPTER })[0]);
+        }
+        for &(_, g) in Masking::ALL {
+            found.push(microfacet_effects(Microfacet { g, ..Microfacet::CHAPTER })[1]);
+        }
+        for &(_, f) in Fresnel::ALL {
+            found.push(microfacet_effects(Microfacet { f, ..Microfacet::CHAPTER })[2]);
+        }
+        let mut expected = MICROFACET_EFFECTS.to_vec();
+        let key = |e: &Effect| format!("{e:?}");
+        found.sort_by_key(key);
+        expected.sort_by_key(key);
+        assert_eq!(found, expected);
+        assert_eq!(MICROFACET_EFFECTS.len(), Distribution::ALL.len() + Masking::ALL.len() + Fresnel::ALL.len());
+    }
 
     #[test]
     fn the_compensation_is_in_only_with_cook_torrance_and_a_material_asking() {

@@ -50,6 +50,17 @@ impl Distribution {
     pub fn code(self) -> u32 {
         self as u32
     }
+
+    /// `tan²θ_h` of the half vector at `u` in [0, 1) of the D's inverse CDF of `N·H` (its
+    /// projected area's), for `α² = m²`: the furnace samples each D by it.
+    pub fn sample_tan2(self, a2: f64, u: f64) -> f64 {
+        match self {
+            Distribution::Beckmann => -a2 * (1.0 - u).ln(),
+            Distribution::Ggx => a2 * u / (1.0 - u),
+            // N·H = (1 − u)^(1/(h + 2)) with h + 2 = 2/α² (h ≥ 0: α² ≤ 1).
+            Distribution::BlinnPhong => (-a2.min(1.0) * (1.0 - u).ln()).exp_m1(),
+        }
+    }
 }
 
 impl Masking {

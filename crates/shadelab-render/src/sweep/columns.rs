@@ -29,11 +29,14 @@ pub struct Column {
     pub signed: bool,
 }
 
+/// The D terms of the table: the D and Smith G columns have one channel each, by code.
+const D_COUNT: usize = <microfacet::Distribution as shadelab_model::params::NamedValue>::ALL.len();
+
 /// The peak of the chapter's Beckmann D, `1/(4 m²)` at `m = M_MIN`.
 const D_MAX: f64 = 1.0 / (4.0 * M_MIN * M_MIN);
 
 /// Every column in the order the kernel writes them (and the report lists them).
-pub const COLUMNS: [Column; 55] = [
+pub const COLUMNS: [Column; 54] = [
     col("diffuse_lambert", "DIFFUSE_LAMBERT", 1, 1.0, "N·L of unit vectors"),
     col("specular_phong", "SPECULAR_PHONG", 1, 1.0, "(V·R)^h with V·R clamped to [0, 1]"),
     col(
@@ -53,10 +56,15 @@ pub const COLUMNS: [Column; 55] = [
         D_MAX / N_DOT_V_MIN,
         "F·D·G/(N·V) ≤ 1 · 1/(4 M_MIN²) · 1 / N_DOT_V_MIN",
     ),
-    col("d_ggx", "D_GGX", 1, D_MAX, "peak 1/(4 α²) at α = m = M_MIN, as Beckmann's"),
-    col("d_blinn_phong", "D_BLINN_PHONG", 1, D_MAX, "peak (h + 2)/8 = 1/(4 m²) at m = M_MIN, as Beckmann's"),
-    col("g_smith_separable (GGX, Beckmann, Blinn–Phong)", "G_SMITH_SEPARABLE", 3, 1.0, "a product of two G1 in [0, 1]"),
-    col("g_smith_correlated (GGX, Beckmann, Blinn–Phong)", "G_SMITH_CORRELATED", 3, 1.0, "1/(1 + Λv + Λl), Λ ≥ 0"),
+    col(
+        "microfacet_d (each D, by code)",
+        "MICROFACET_D",
+        D_COUNT,
+        D_MAX,
+        "each D peaks at 1/(4 m²) at m = M_MIN, as Beckmann's",
+    ),
+    col("g_smith_separable (each D's Λ, by code)", "G_SMITH_SEPARABLE", D_COUNT, 1.0, "a product of two G1 in [0, 1]"),
+    col("g_smith_correlated (each D's Λ, by code)", "G_SMITH_CORRELATED", D_COUNT, 1.0, "1/(1 + Λv + Λl), Λ ≥ 0"),
     col("microfacet_f (fresnel_schlick at V·H)", "MICROFACET_F_SCHLICK", 3, 1.0, "F0 + (1 − F0)(1 − c)⁵, F0 in [0, 1]"),
     col(
         "specular_microfacet (glTF: GGX, correlated Smith, Schlick)",
@@ -262,8 +270,7 @@ const D_BECKMANN: usize = offset("D_BECKMANN");
 const G_COOK_TORRANCE: usize = offset("G_COOK_TORRANCE");
 const MICROFACET_F: usize = offset("MICROFACET_F");
 const SPECULAR_COOK_TORRANCE: usize = offset("SPECULAR_COOK_TORRANCE");
-const D_GGX: usize = offset("D_GGX");
-const D_BLINN_PHONG: usize = offset("D_BLINN_PHONG");
+const MICROFACET_D: usize = offset("MICROFACET_D");
 const G_SMITH_SEPARABLE: usize = offset("G_SMITH_SEPARABLE");
 const G_SMITH_CORRELATED: usize = offset("G_SMITH_CORRELATED");
 const MICROFACET_F_SCHLICK: usize = offset("MICROFACET_F_SCHLICK");
@@ -428,21 +435,22 @@ fn light_columns(out: &mut [f64; OUTPUTS], inp: &Combination) {
     out[WINDOW_RANGE] = lights::window_range(d, d0);
 }
 
-/// The microfacet terms beyond the chapter's: GGX's and Blinn–Phong's D, Smith's G on each D's
-/// Λ, Schlick's F and the glTF preset's whole specular.
+/// The microfacet terms beyond the chapter's: every D and Smith's G on each D's Λ, Schlick's F
+/// and the glTF preset's whole specular.
 fn microfacet_columns(out: &mut [f64; OUTPUTS], inp: &Combination) {
-    use microfacet::Distribution::{Beckmann, BlinnPhong, Ggx};
+    use microfacet::Distribution;
+    use shadelab_model::params::NamedValue;
     let Combination { n, v, l, m, v_index, .. } = *inp;
     let half = common::safe_normalize(l + v, n);
     let (nv, nl) = (n.dot(v), n.dot(l));
-    out[D_GGX] = microfacet::d_ggx(n.dot(half), n.cross(half).length_squared(), m);
-    out[D_BLINN_PHONG] = microfacet::d_blinn_phong(n.dot(half), n.cross(half).length_squared(), m);
-    out[G_SMITH_SEPARABLE] = microfacet::g_smith_separable(Ggx, nv, nl, m);
-    out[G_SMITH_SEPARABLE + 1] = microfacet::g_smith_separable(Beckmann, nv, nl, m);
-    out[G_SMITH_SEPARABLE + 2] = microfacet::g_smith_separable(BlinnPhong, nv, nl, m);
-    out[G_SMITH_CORRELATED] = microfacet::g_smith_correlated(Ggx, nv, nl, m);
-    out[G_SMITH_CORRELATED + 1] = microfacet::g_smith_correlated(Beckmann, nv, nl, m);
-    out[G_SMITH_CORRELATED + 2] = microfacet::g_smith_correlated(BlinnPhong, nv, nl, m);
+    // Every D of the term table and its Smith G, each at its code's channel.
+    for &(_, d) in Distribution::ALL {
+        let k = d.code() as usize;
+        let terms = Microfacet { d, ..Microfacet::CHAPTER };
+        out[MICROFACET_D + k] = microfacet::microfacet_d(terms, n.dot(half), n.cross(half).length_squared(), m);
+        out[G_SMITH_SEPARABLE + k] = microfacet::g_smith_separable(d, nv, nl, m);
+        out[G_SMITH_CORRELATED + k] = microfacet::g_smith_correlated(d, nv, nl, m);
+    }
     rgb(out, MICROFACET_F_SCHLICK, microfacet::microfacet_f(Microfacet::GLTF, v.dot(half), v_index));
     rgb(out, SPECULAR_MICROFACET_GLTF, microfacet::specular_microfacet(n, v, l, m, v_index, Microfacet::GLTF, 1.0));
     // The compensation over E = m (0 to 1, the floor at 0 included).

@@ -4,21 +4,19 @@
 use super::FurnaceRow;
 use crate::plots::{draw_legend, plot_err, register_font, save};
 use plotters::prelude::*;
-use shadelab_model::lighting::microfacet::{Distribution, Masking};
+use shadelab_model::lighting::microfacet::Distribution;
+use shadelab_model::params::NamedValue;
 use std::path::Path;
 
-/// A hue per G, dark for Beckmann, light for GGX and between them for Blinn–Phong.
+/// The G's hues by code (red, blue, green, then around again for a G beyond them).
+const G_HUES: [(u8, u8, u8); 3] = [(200, 60, 40), (40, 110, 190), (40, 150, 60)];
+
+/// A hue per G; each D after Beckmann's (dark) a step lighter, by its code, so a new term gets a
+/// colour of its own without an edit here.
 fn color(row: &FurnaceRow) -> RGBColor {
-    let (r, g, b) = match row.terms.g {
-        Masking::VGroove => (200, 60, 40),
-        Masking::Smith => (40, 110, 190),
-        Masking::SmithCorrelated => (40, 150, 60),
-    };
-    let lift = |c: u8| match row.terms.d {
-        Distribution::Beckmann => c,
-        Distribution::Ggx => c / 2 + 110,
-        Distribution::BlinnPhong => c / 4 * 3 + 55,
-    };
+    let (r, g, b) = G_HUES[row.terms.g.code() as usize % G_HUES.len()];
+    let step = 0.6 * f64::from(row.terms.d.code()) / (Distribution::ALL.len() - 1).max(1) as f64;
+    let lift = |c: u8| (f64::from(c) + (255.0 - f64::from(c)) * step).round() as u8;
     RGBColor(lift(r), lift(g), lift(b))
 }
 

@@ -27,7 +27,7 @@ impl Renderer {
     /// The environment's occlusion grid's placement, the grid baked and written only when the
     /// geometry changed since the last write (the bake traces rays from every node).
     pub(crate) fn write_env_occlusion(&self, gpu_scene: &mut SceneGpu, scene: &Scene) -> [[f32; 4]; 2] {
-        let key = OcclusionKey::of(scene);
+        let key = crate::upload::OcclusionKey::of(scene);
         let of = &mut gpu_scene.env_occlusion_of;
         if let Some((k, placement)) = of.as_ref()
             && *k == key
@@ -103,20 +103,4 @@ pub(crate) fn background_pipeline(
 /// what the frame keeps of an environment.
 fn env_sun(scene: &Scene) -> Option<glam::DVec3> {
     scene.lights.iter().find(|l| l.kind.is_directional()).map(|l| l.direction)
-}
-
-/// What the occlusion grid is baked from: each object's shape and transform, and the meshes.
-#[derive(PartialEq)]
-pub(crate) struct OcclusionKey {
-    objects: Vec<(shadelab_model::Shape, shadelab_model::Transform)>,
-    meshes: shadelab_model::mesh::Meshes,
-}
-
-impl OcclusionKey {
-    fn of(scene: &Scene) -> OcclusionKey {
-        OcclusionKey {
-            objects: scene.objects.iter().map(|o| (o.shape, o.transform)).collect(),
-            meshes: scene.meshes.clone(),
-        }
-    }
 }

@@ -8,13 +8,12 @@
 use crate::light_loop::LightLoop;
 use crate::program::Program;
 use crate::shaders;
+use crate::target::DEPTH_FORMAT;
 use crate::vertex::{FlatVertex, SmoothVertex};
 use shadelab_model::effects::{Effect, EffectKey};
 use std::collections::HashMap;
 use std::time::Duration;
 use web_time::Instant;
-
-pub const DEPTH_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Depth32Float;
 
 /// A pass drawn over the scene's depth without writing it: its fragments where they are not behind
 /// what is drawn (the overlay's lines, the environment's background at the far plane).

@@ -29,7 +29,7 @@ pub struct Renderer {
     /// @group(3) of the glass pass (`glass_pass.rs`).
     pub(crate) glass_layout: wgpu::BindGroupLayout,
     /// The glass pass's textures, made for the last target it drew into.
-    pub(crate) glass: Option<crate::glass_pass::GlassTextures>,
+    pub(crate) glass: Option<crate::glass_textures::GlassTextures>,
     /// The shader modules and pipelines, by program and colour format.
     pub pipelines: PipelineCache,
 }
@@ -91,11 +91,11 @@ impl Renderer {
             entries: &[vec![uniform_entry(true, size_of::<ObjectUniform>() as u64)], crate::textures::layout_entries()]
                 .concat(),
         });
-        let shadow_layout = crate::shadow_pass::maps_layout(device);
-        let casters_layout = crate::shadow_pass::casters_layout(device);
+        let shadow_layout = crate::shadow_maps::maps_layout(device);
+        let casters_layout = crate::shadow_maps::casters_layout(device);
         let flat_compute_layout = crate::lighting_pass::compute_layout(device);
         let flat_colors_layout = crate::lighting_pass::colors_layout(device);
-        let glass_layout = crate::glass_pass::layout(device);
+        let glass_layout = crate::glass_textures::layout(device);
         let layout = |label: &str, groups: &[Option<&wgpu::BindGroupLayout>]| {
             device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
                 label: Some(label),
@@ -148,7 +148,7 @@ impl Renderer {
             flat_colors_layout,
             glass_layout,
             glass: None,
-            shadow_samplers: crate::shadow_pass::samplers(device),
+            shadow_samplers: crate::shadow_maps::samplers(device),
             pipelines: PipelineCache::new(device, layouts),
         }
     }
@@ -157,7 +157,7 @@ impl Renderer {
 impl Renderer {
     /// Write the constant tables, once per renderer, if `program` reads them (the compensation's
     /// E or the split sum's E and B); a program that does not leaves them uncomputed.
-    pub(crate) fn write_tables(&self, program: crate::Program) {
+    pub(crate) fn write_tables(&self, program: crate::program::Program) {
         use shadelab_model::effects::Effect;
         let effects = program.effects();
         if effects.has(Effect::MultipleScattering) || effects.has(Effect::EnvironmentSpecular) {

@@ -250,6 +250,6 @@ pub fn lighting_entry_point(shading: shadelab_model::ShadingMode) -> Option<&'st
 }
 
 #[cfg(test)]
-mod effect_structure;
+mod effect_structure_tests;
 #[cfg(test)]
 pub(crate) mod tests;

@@ -1,8 +1,11 @@
 //! Render targets and readback: an offscreen colour + depth target of any size, and a linear
 //! float image read back from it (rows padded to 256 bytes on the GPU side).
 
-use crate::pipelines::DEPTH_FORMAT;
 use std::sync::{Arc, OnceLock};
+
+/// The depth format of every target and depth pass (the shadow maps', the glass pass's back
+/// faces'): 32-bit float, which every backend renders to and samples.
+pub const DEPTH_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Depth32Float;
 
 /// A colour texture with its depth buffer: what the renderer draws into. The viewer and
 /// `shadelab render` both draw into one of these.

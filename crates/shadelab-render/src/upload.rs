@@ -105,7 +105,7 @@ pub struct SceneGpu {
     /// The environment's occlusion grid (64 KiB), written only when a program draws it, and
     /// the geometry it was baked for with the grid's placement in the globals.
     pub(crate) env_occlusion: wgpu::Buffer,
-    pub(crate) env_occlusion_of: Option<(crate::environment_gpu::OcclusionKey, [[f32; 4]; 2])>,
+    pub(crate) env_occlusion_of: Option<(OcclusionKey, [[f32; 4]; 2])>,
     /// The environment's nine SH terms as the globals hold them, and the environment (with its
     /// sun) they were projected for: a large map's projection reads every texel.
     pub(crate) env_sh_of: Option<(shadelab_model::lighting::env_map::Environment, Option<glam::DVec3>, [[f32; 4]; 9])>,
@@ -123,7 +123,7 @@ pub struct SceneGpu {
     pub triangle_count: usize,
     /// The shadow maps, made by the first frame whose program has cast shadows
     /// (`shadow_pass.rs`): the frame owns them, writing and drawing through `&mut SceneGpu`.
-    pub(crate) shadows: Option<crate::shadow_pass::ShadowMaps>,
+    pub(crate) shadows: Option<crate::shadow_maps::ShadowMaps>,
     /// How many shadow-map layers the shadow passes have drawn: a layer is drawn again only when
     /// its light's projection, its resolution or an object's transform changed.
     pub shadow_layer_draws: u64,
@@ -506,4 +506,20 @@ fn buffer_from_pieces<T: bytemuck::Pod>(
         }
     }
     buffer
+}
+
+/// What the occlusion grid is baked from: each object's shape and transform, and the meshes.
+#[derive(PartialEq)]
+pub(crate) struct OcclusionKey {
+    objects: Vec<(shadelab_model::Shape, shadelab_model::Transform)>,
+    meshes: shadelab_model::mesh::Meshes,
+}
+
+impl OcclusionKey {
+    pub(crate) fn of(scene: &Scene) -> OcclusionKey {
+        OcclusionKey {
+            objects: scene.objects.iter().map(|o| (o.shape, o.transform)).collect(),
+            meshes: scene.meshes.clone(),
+        }
+    }
 }

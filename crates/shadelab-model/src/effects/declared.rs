@@ -172,7 +172,7 @@ declare_effects! {
         label: "exact-f",
         define: Some("EFFECT_F_EXACT"),
         // fresnel_dielectric is the glass's Fresnel too: a glass pass reaches it without this
-        // effect, so only the specular's call is this effect's (effect_structure checks it); its
+        // effect, so only the specular's call is this effect's (effect_structure_tests checks it); its
         // complement serves the Fresnel-weighted diffuse.
         functions: &["fresnel_dielectric_complement"],
         members: &[],

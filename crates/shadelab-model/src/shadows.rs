@@ -8,7 +8,6 @@
 //! f64 twin of the shadow projection (the light's view-projections, the cube face, the map
 //! coordinate) that the render crate packs into the uniforms.
 
-use crate::params::LightKind;
 use crate::scene::{Light, Scene, Shape};
 use glam::{DMat4, DVec3, DVec4};
 
@@ -237,44 +236,41 @@ fn up_for(dir: DVec3) -> DVec3 {
 pub fn shadow_projection(light: &Light, centre: DVec3, radius: f64, resolution: u32) -> ShadowProjection {
     let radius = if radius.is_finite() { radius.max(SHADOW_BOUNDS_RADIUS_MIN) } else { SHADOW_BOUNDS_RADIUS_MIN };
     let n = resolution.max(1) as f64;
-    match light.kind {
-        LightKind::Directional => {
-            let dir = light.direction.try_normalize().unwrap_or(DVec3::NEG_Y);
-            // The eye stands a radius back from the sphere; depth spans the diameter, plus a
-            // margin so the nearest caster is not clipped at the near plane.
-            let eye = centre - dir * (radius * 2.0);
-            let view = DMat4::look_to_rh(eye, dir, up_for(dir));
-            let proj = DMat4::orthographic_rh(-radius, radius, -radius, radius, radius * 0.5, radius * 3.5);
+    if light.kind.is_directional() {
+        let dir = light.direction.try_normalize().unwrap_or(DVec3::NEG_Y);
+        // The eye stands a radius back from the sphere; depth spans the diameter, plus a
+        // margin so the nearest caster is not clipped at the near plane.
+        let eye = centre - dir * (radius * 2.0);
+        let view = DMat4::look_to_rh(eye, dir, up_for(dir));
+        let proj = DMat4::orthographic_rh(-radius, radius, -radius, radius, radius * 0.5, radius * 3.5);
+        ShadowProjection {
+            matrices: vec![proj * view],
+            texel_world: 2.0 * radius / n,
+            perspective: false,
+            near: radius * 0.5,
+            far: radius * 3.5,
+        }
+    } else {
+        // An area light's map is a point light's six faces from its centre (PCSS widens it).
+        let d = (centre - light.position).length();
+        let far = if (d + radius).is_finite() { (d + radius).max(SHADOW_BOUNDS_RADIUS_MIN) } else { radius };
+        let near = (d - radius).max(far * SHADOW_NEAR_OVER_FAR_MIN);
+        if light.kind.has_cone() {
+            let axis = light.spot_axis();
+            let half = light.outer_cone.clamp(1e-3, SPOT_SHADOW_HALF_ANGLE_MAX);
+            let view = DMat4::look_to_rh(light.position, axis, up_for(axis));
+            let proj = DMat4::perspective_rh(2.0 * half, 1.0, near, far);
             ShadowProjection {
                 matrices: vec![proj * view],
-                texel_world: 2.0 * radius / n,
-                perspective: false,
-                near: radius * 0.5,
-                far: radius * 3.5,
+                texel_world: 2.0 * half.tan() / n,
+                perspective: true,
+                near,
+                far,
             }
-        }
-        // An area light's map is a point light's six faces from its centre (PCSS widens it).
-        LightKind::Point | LightKind::Spot | LightKind::Rect | LightKind::Disk | LightKind::Sphere => {
-            let d = (centre - light.position).length();
-            let far = if (d + radius).is_finite() { (d + radius).max(SHADOW_BOUNDS_RADIUS_MIN) } else { radius };
-            let near = (d - radius).max(far * SHADOW_NEAR_OVER_FAR_MIN);
-            if light.kind.has_cone() {
-                let axis = light.spot_axis();
-                let half = light.outer_cone.clamp(1e-3, SPOT_SHADOW_HALF_ANGLE_MAX);
-                let view = DMat4::look_to_rh(light.position, axis, up_for(axis));
-                let proj = DMat4::perspective_rh(2.0 * half, 1.0, near, far);
-                ShadowProjection {
-                    matrices: vec![proj * view],
-                    texel_world: 2.0 * half.tan() / n,
-                    perspective: true,
-                    near,
-                    far,
-                }
-            } else {
-                let proj = DMat4::perspective_rh(std::f64::consts::FRAC_PI_2, 1.0, near, far);
-                let matrices = FACES.iter().map(|(f, up)| proj * DMat4::look_to_rh(light.position, *f, *up)).collect();
-                ShadowProjection { matrices, texel_world: 2.0 / n, perspective: true, near, far }
-            }
+        } else {
+            let proj = DMat4::perspective_rh(std::f64::consts::FRAC_PI_2, 1.0, near, far);
+            let matrices = FACES.iter().map(|(f, up)| proj * DMat4::look_to_rh(light.position, *f, *up)).collect();
+            ShadowProjection { matrices, texel_world: 2.0 / n, perspective: true, near, far }
         }
     }
 }
@@ -284,11 +280,14 @@ pub fn shadow_projection(light: &Light, centre: DVec3, radius: f64, resolution: 
 /// light, 1 for a spot's map. The one place a kind's layers are decided: [`shadow_cubes`], the
 /// renderer's shadow plan and the viewer's map menu read it.
 pub fn light_layers(scene: &Scene, light: &Light) -> u32 {
-    match light.kind {
-        _ if !light.shadow.casts => 0,
-        LightKind::Point | LightKind::Rect | LightKind::Disk | LightKind::Sphere => 6,
-        LightKind::Directional => cascade_layers(scene, light),
-        LightKind::Spot => 1,
+    if !light.shadow.casts {
+        0
+    } else if light.kind.is_directional() {
+        cascade_layers(scene, light)
+    } else if light.kind.has_cube_map() {
+        6
+    } else {
+        1
     }
 }
 
@@ -361,6 +360,7 @@ pub fn shadow_texel_world(texel_world: f64, perspective: bool, dist: f64) -> f64
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::params::LightKind;
 
     #[test]
     fn every_layer_sees_the_bounds_inside_its_depth_range() {

@@ -18,11 +18,11 @@
 //!
 //! Faces of zero area have no normal and take no part; their edges are skipped.
 
+use crate::Light;
 use crate::guards::NORMALIZE_MIN_LEN2;
 use crate::lighting::lights::MAX_LIGHTS;
 use crate::mesh::{face_normal, key as weld_key};
 use crate::scene::{Object, Scene, Shape};
-use crate::{Light, LightKind};
 use glam::DVec3;
 use std::collections::HashMap;
 
@@ -139,12 +139,7 @@ impl EdgeMesh {
         let mut out = Vec::new();
         for (e, &[a, b]) in self.edges.iter().enumerate() {
             let (pa, pb) = (self.positions[a as usize], self.positions[b as usize]);
-            let l = match light.kind {
-                LightKind::Directional => -light.direction,
-                LightKind::Point | LightKind::Spot | LightKind::Rect | LightKind::Disk | LightKind::Sphere => {
-                    light.position - (pa + pb) * 0.5
-                }
-            };
+            let l = if light.kind.is_directional() { -light.direction } else { light.position - (pa + pb) * 0.5 };
             let len2 = l.length_squared();
             if !(len2 > NORMALIZE_MIN_LEN2 && len2.is_finite()) {
                 // The light on the edge, or no direction: no face at this edge faces it.

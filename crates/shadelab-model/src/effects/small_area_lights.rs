@@ -7,7 +7,7 @@
 //! effects` apply it the same way ([`draw_small_area_lights_as_points`]), so the analysis, the
 //! uniforms and the shadow maps all see the same lights.
 
-use crate::params::{LightKind, NamedValue};
+use crate::params::NamedValue;
 use crate::scene::{Light, MAX_LIGHTS, Scene};
 use crate::shadows::object_boxes;
 use glam::DVec3;
@@ -120,10 +120,10 @@ pub fn draw_small_area_lights_as_points(scene: &mut Scene, height: u32) -> Vec<S
             continue;
         }
         let Some(b) = bounds_of(&boxes, light, height).filter(SmallAreaLight::is_small) else { continue };
-        let size = match light.kind {
-            LightKind::Rect => format!("{} × {} m", light.size[0], light.size[1]),
-            LightKind::Disk | LightKind::Sphere => format!("{} m across", light.size[0]),
-            LightKind::Directional | LightKind::Point | LightKind::Spot => continue,
+        let size = match light.kind.size_names() {
+            Some((_, Some(_))) => format!("{} × {} m", light.size[0], light.size[1]),
+            Some((_, None)) => format!("{} m across", light.size[0]),
+            None => continue,
         };
         lines.push(format!(
             "{} light L{}: {size}, {:.3} m from the nearest object, penumbra ≤ {:.2} px, highlight ≤ {:.2} px, r/d {:.2e}: drawn as a point light",

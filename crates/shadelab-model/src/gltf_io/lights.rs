@@ -275,16 +275,14 @@ fn exact_params(light: &mut Light, ex: &LightExtras) -> bool {
 /// agree far from the light. The exact parameters go in `extras.shadelab`.
 pub(super) fn write_light(i: usize, l: &Light) -> (Value, Value) {
     let pi = std::f64::consts::PI;
-    let (kind, intensity) = match l.kind {
-        LightKind::Directional => ("directional", l.intensity * pi),
-        LightKind::Point | LightKind::Spot | LightKind::Rect | LightKind::Disk | LightKind::Sphere => {
-            // Other viewers see a sphere light as a point light, a flat one as a spot lighting
-            // the half-space in front of it.
-            let kind = if l.kind.emits_all_round() { "point" } else { "spot" };
-            let far =
-                if l.falloff_form == FalloffForm::Quadratic && l.falloff_alpha > 0.0 { l.falloff_alpha } else { 1.0 };
-            (kind, l.intensity * pi / far)
-        }
+    let (kind, intensity) = if l.kind.is_directional() {
+        ("directional", l.intensity * pi)
+    } else {
+        // Other viewers see a sphere light as a point light, a flat one as a spot lighting
+        // the half-space in front of it.
+        let kind = if l.kind.emits_all_round() { "point" } else { "spot" };
+        let far = if l.falloff_form == FalloffForm::Quadratic && l.falloff_alpha > 0.0 { l.falloff_alpha } else { 1.0 };
+        (kind, l.intensity * pi / far)
     };
     let spot = l.kind.has_cone();
     let area = l.kind.is_area();

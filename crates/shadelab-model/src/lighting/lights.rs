@@ -92,6 +92,29 @@ impl LightKind {
         }
     }
 
+    /// What it is, for a tooltip beside its name (`None`: the name says it).
+    pub fn meaning(self) -> Option<&'static str> {
+        use LightKind::*;
+        match self {
+            Directional | Point => None,
+            Spot => Some("a point light that lights only a cone (glTF's spot light)"),
+            Rect => Some("a rectangle emitting from its front face: soft shadows"),
+            Disk => Some("a disk emitting from its front face: soft shadows"),
+            Sphere => Some("a sphere emitting all round: soft shadows"),
+        }
+    }
+
+    /// The names of its `size` values (an area light's: a rectangle's width and height, a disk's
+    /// or sphere's diameter); `None` for a kind without an area.
+    pub fn size_names(self) -> Option<(&'static str, Option<&'static str>)> {
+        use LightKind::*;
+        match self {
+            Rect => Some(("width", Some("height"))),
+            Disk | Sphere => Some(("diameter", None)),
+            Directional | Point | Spot => None,
+        }
+    }
+
     /// Its shadow map is a cube round its position (six faces), not one projection.
     pub fn has_cube_map(self) -> bool {
         use LightKind::*;

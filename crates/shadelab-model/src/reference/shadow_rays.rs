@@ -5,7 +5,7 @@
 use super::intersect::{Geometry, occluded};
 use crate::guards::LIGHT_DIST_MIN;
 use crate::lighting::area::area_visible_share;
-use crate::lighting::lights::{Light, LightKind};
+use crate::lighting::lights::Light;
 use crate::scene::{Scene, Shape};
 use glam::DVec3;
 use std::cmp::Ordering;
@@ -82,21 +82,20 @@ impl<'a> ShadowRays<'a> {
     pub fn hidden(&self, light: &Light, p: DVec3, ng: DVec3, l: DVec3) -> bool {
         let side = if ng.dot(l) >= 0.0 { 1.0 } else { -1.0 };
         let o = p + ng * (side * self.offset);
-        match light.kind {
-            LightKind::Directional => occluded(self.scene, self.geo, o, l, f64::INFINITY),
+        if light.kind.is_directional() {
+            occluded(self.scene, self.geo, o, l, f64::INFINITY)
+        } else {
             // An area light's hard shadow from its centre; `area_visibility` has its soft one.
-            LightKind::Point | LightKind::Spot | LightKind::Rect | LightKind::Disk | LightKind::Sphere => {
-                // Also a non-finite distance: no ray to trace.
-                let touching = (light.position - p).length().partial_cmp(&LIGHT_DIST_MIN) != Some(Ordering::Greater);
-                if touching {
-                    return false;
-                }
-                let to_light = light.position - o;
-                let d = to_light.length();
-                let end_offset = self.offset.max(SHADOW_RAY_OFFSET_REL * light.position.abs().max_element());
-                let t_max = d - end_offset;
-                t_max > 0.0 && occluded(self.scene, self.geo, o, to_light / d, t_max)
+            // Also a non-finite distance: no ray to trace.
+            let touching = (light.position - p).length().partial_cmp(&LIGHT_DIST_MIN) != Some(Ordering::Greater);
+            if touching {
+                return false;
             }
+            let to_light = light.position - o;
+            let d = to_light.length();
+            let end_offset = self.offset.max(SHADOW_RAY_OFFSET_REL * light.position.abs().max_element());
+            let t_max = d - end_offset;
+            t_max > 0.0 && occluded(self.scene, self.geo, o, to_light / d, t_max)
         }
     }
 

@@ -82,13 +82,7 @@ fn light_kind_row(ui: &mut egui::Ui, l: &mut Light) -> bool {
         let mut kind = l.kind;
         for (name, k) in LightKind::ALL {
             let choice = ui.selectable_value(&mut kind, *k, *name);
-            let meaning = match k {
-                LightKind::Directional | LightKind::Point => None,
-                LightKind::Spot => Some("a point light that lights only a cone (glTF's spot light)"),
-                LightKind::Rect => Some("a rectangle emitting from its front face: soft shadows"),
-                LightKind::Disk => Some("a disk emitting from its front face: soft shadows"),
-                LightKind::Sphere => Some("a sphere emitting all round: soft shadows"),
-            };
+            let meaning = k.meaning();
             if let Some(m) = meaning {
                 choice.on_hover_text(m);
             }
@@ -104,12 +98,8 @@ fn light_kind_row(ui: &mut egui::Ui, l: &mut Light) -> bool {
 /// An area light's size and how many point sources draw it.
 fn area_light_ui(ui: &mut egui::Ui, l: &mut Light) {
     // A rectangle has a width and a height; a disk or sphere one diameter.
-    let (w, h) = match l.kind {
-        LightKind::Rect => ("width m", Some("height m")),
-        LightKind::Disk | LightKind::Sphere | LightKind::Directional | LightKind::Point | LightKind::Spot => {
-            ("diameter m", None)
-        }
-    };
+    let (w, h) = l.kind.size_names().unwrap_or(("diameter", None));
+    let (w, h) = (format!("{w} m"), h.map(|h| format!("{h} m")));
     ui.add(
         egui::Slider::new(&mut l.size[0], params::LIGHT_SIZE.min..=params::LIGHT_SIZE.max).logarithmic(true).text(w),
     )

@@ -91,7 +91,7 @@ pub(crate) fn background_pipeline(
                 module: cx.module,
                 entry_point: Some(BACKGROUND_ENTRY_POINTS.1),
                 compilation_options: options,
-                targets: &[Some(wgpu::ColorTargetState { format, blend: None, write_mask: wgpu::ColorWrites::ALL })],
+                targets: &[crate::pipelines::opaque_target(format)],
             }),
             multiview_mask: None,
             cache: None,

@@ -4,10 +4,10 @@
 //! back faces drawn just before it give its exit (`shaders/glass.wgsl`).
 
 use crate::glass_textures::{BACK_FORMAT, GlassTextures};
-use crate::pipelines::{PassKey, PipelineCache};
+use crate::pipelines::{PassKey, PipelineCache, depth_state, opaque_target, triangles};
 use crate::program::Program;
 use crate::renderer::Renderer;
-use crate::target::{DEPTH_FORMAT, Target};
+use crate::target::Target;
 use crate::upload::{MeshGpu, SceneGpu};
 use crate::vertex::SmoothVertex;
 use shadelab_model::Scene;
@@ -113,25 +113,14 @@ fn build_pipeline(
     let (vs, fs) = if back { BACK_ENTRY_POINTS } else { GLASS_ENTRY_POINTS };
     let options = wgpu::PipelineCompilationOptions { constants, ..Default::default() };
     let buffers = &crate::vertex::buffers(SmoothVertex::LAYOUT, effects);
-    let target = |format| Some(wgpu::ColorTargetState { format, blend: None, write_mask: wgpu::ColorWrites::ALL });
-    let targets = if back { vec![target(BACK_FORMAT), target(BACK_FORMAT)] } else { vec![target(color_format)] };
+    let targets = if back { vec![opaque_target(BACK_FORMAT); 2] } else { vec![opaque_target(color_format)] };
     device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
         label: Some(if back { "shadelab glass back faces" } else { "shadelab glass" }),
         layout: Some(layout),
         vertex: wgpu::VertexState { module, entry_point: Some(vs), compilation_options: options.clone(), buffers },
-        primitive: wgpu::PrimitiveState {
-            topology: wgpu::PrimitiveTopology::TriangleList,
-            // Meshes wind their triangles counter-clockwise seen from outside.
-            cull_mode: Some(if back { wgpu::Face::Front } else { wgpu::Face::Back }),
-            ..Default::default()
-        },
-        depth_stencil: Some(wgpu::DepthStencilState {
-            format: DEPTH_FORMAT,
-            depth_write_enabled: Some(back),
-            depth_compare: Some(wgpu::CompareFunction::Less),
-            stencil: Default::default(),
-            bias: Default::default(),
-        }),
+        // Meshes wind their triangles counter-clockwise seen from outside.
+        primitive: triangles(Some(if back { wgpu::Face::Front } else { wgpu::Face::Back })),
+        depth_stencil: Some(depth_state(back, wgpu::CompareFunction::Less, Default::default())),
         multisample: Default::default(),
         fragment: Some(wgpu::FragmentState {
             module,

@@ -215,7 +215,7 @@ fn build_pipeline(
             module,
             entry_point: Some("fs_overlay"),
             compilation_options: options,
-            targets: &[Some(wgpu::ColorTargetState { format, blend: None, write_mask: wgpu::ColorWrites::ALL })],
+            targets: &[crate::pipelines::opaque_target(format)],
         }),
         multiview_mask: None,
         cache: None,

@@ -18,13 +18,29 @@ use web_time::Instant;
 /// A pass drawn over the scene's depth without writing it: its fragments where they are not behind
 /// what is drawn (the overlay's lines, the environment's background at the far plane).
 pub fn depth_tested_over() -> wgpu::DepthStencilState {
+    depth_state(false, wgpu::CompareFunction::LessEqual, Default::default())
+}
+
+/// A depth test on the targets' `DEPTH_FORMAT` with `compare`, writing depth or not, and `bias`:
+/// what every pass that meets the scene's depth shares.
+pub fn depth_state(write: bool, compare: wgpu::CompareFunction, bias: wgpu::DepthBiasState) -> wgpu::DepthStencilState {
     wgpu::DepthStencilState {
         format: DEPTH_FORMAT,
-        depth_write_enabled: Some(false),
-        depth_compare: Some(wgpu::CompareFunction::LessEqual),
+        depth_write_enabled: Some(write),
+        depth_compare: Some(compare),
         stencil: Default::default(),
-        bias: Default::default(),
+        bias,
     }
+}
+
+/// Triangle lists, culling `cull` (`None`: both faces drawn).
+pub fn triangles(cull: Option<wgpu::Face>) -> wgpu::PrimitiveState {
+    wgpu::PrimitiveState { topology: wgpu::PrimitiveTopology::TriangleList, cull_mode: cull, ..Default::default() }
+}
+
+/// A colour target of `format`, written whole and unblended.
+pub fn opaque_target(format: wgpu::TextureFormat) -> Option<wgpu::ColorTargetState> {
+    Some(wgpu::ColorTargetState { format, blend: None, write_mask: wgpu::ColorWrites::ALL })
 }
 
 /// Everything that selects a distinct pipeline. Plain `Copy + Hash`: pipelines are cached by it
@@ -272,30 +288,16 @@ fn build_pipeline(
         label: Some(&key.program.label()),
         layout: Some(layout),
         vertex: wgpu::VertexState { module, entry_point: Some(vs), compilation_options: options.clone(), buffers },
-        primitive: wgpu::PrimitiveState {
-            topology: wgpu::PrimitiveTopology::TriangleList,
-            // Every mesh is closed or seen from its front, but no culling keeps a wrong
-            // winding from making geometry vanish.
-            cull_mode: None,
-            ..Default::default()
-        },
-        depth_stencil: Some(wgpu::DepthStencilState {
-            format: DEPTH_FORMAT,
-            depth_write_enabled: Some(true),
-            depth_compare: Some(wgpu::CompareFunction::Less),
-            stencil: Default::default(),
-            bias: Default::default(),
-        }),
+        // Every mesh is closed or seen from its front, but no culling keeps a wrong winding from
+        // making geometry vanish.
+        primitive: triangles(None),
+        depth_stencil: Some(depth_state(true, wgpu::CompareFunction::Less, Default::default())),
         multisample: Default::default(),
         fragment: Some(wgpu::FragmentState {
             module,
             entry_point: Some(fs),
             compilation_options: options,
-            targets: &[Some(wgpu::ColorTargetState {
-                format: key.color_format,
-                blend: None,
-                write_mask: wgpu::ColorWrites::ALL,
-            })],
+            targets: &[opaque_target(key.color_format)],
         }),
         multiview_mask: None,
         cache: None,

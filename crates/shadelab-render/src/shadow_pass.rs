@@ -16,7 +16,7 @@
 //! cascades whose projection it moved (each snapped to its texel grid), and those alone.
 
 use crate::light_loop::LightLoop;
-use crate::pipelines::{PassKey, PipelineCache};
+use crate::pipelines::{PassKey, PipelineCache, depth_state, triangles};
 use crate::renderer::Renderer;
 use crate::shadow_maps::{CASTERS_BYTES, LayerState, ShadowMaps};
 pub use crate::shadow_maps::{LightMap, ShadowPlan};
@@ -58,22 +58,16 @@ fn build_pipeline(
             compilation_options: Default::default(),
             buffers: &[Some(SmoothVertex::LAYOUT)],
         },
-        primitive: wgpu::PrimitiveState {
-            topology: wgpu::PrimitiveTopology::TriangleList,
-            cull_mode: None,
-            ..Default::default()
-        },
-        depth_stencil: Some(wgpu::DepthStencilState {
-            format: DEPTH_FORMAT,
-            depth_write_enabled: Some(true),
-            depth_compare: Some(wgpu::CompareFunction::Less),
-            stencil: Default::default(),
-            bias: wgpu::DepthBiasState {
+        primitive: triangles(None),
+        depth_stencil: Some(depth_state(
+            true,
+            wgpu::CompareFunction::Less,
+            wgpu::DepthBiasState {
                 constant: SHADOW_CONSTANT_BIAS,
                 slope_scale: SHADOW_SLOPE_BIAS,
                 clamp: SHADOW_DEPTH_BIAS_CLAMP,
             },
-        }),
+        )),
         multisample: Default::default(),
         fragment: None,
         multiview_mask: None,

@@ -5,15 +5,40 @@
 // renormalized, lit per pixel. The lighting itself is shading.wgsl's; the screen-space variants
 // are in screen_space.wgsl and the glass pass's in glass.wgsl.
 
-struct SmoothIn {
-    @location(0) position: vec3<f32>,
-    @location(1) normal: vec3<f32>,
+// The optional vertex attributes, carried on as varyings at the same locations: texture
+// coordinates and vertex colours, each only in the permutations that use it.
+#block UV_TINT_FIELDS
 #if TEXTURE_COORDS
     @location(2) uv: vec2<f32>,
 #endif
 #if EFFECT_VERTEX_COLORS
     @location(3) tint: vec3<f32>,
 #endif
+#endblock
+
+// Those varyings copied from `in` to `out`.
+#block UV_TINT_COPY
+#if TEXTURE_COORDS
+    out.uv = in.uv;
+#endif
+#if EFFECT_VERTEX_COLORS
+    out.tint = in.tint;
+#endif
+#endblock
+
+// The lit colour of a face or vertex (`lit`, from read_lit) and the attributes into `out`.
+#block LIT_COPY
+    out.color = lit[0];
+#if EFFECT_BASE_COLOR_TEXTURE||EFFECT_VERTEX_COLORS
+    out.rest = lit[1];
+#endif
+#insert UV_TINT_COPY
+#endblock
+
+struct SmoothIn {
+    @location(0) position: vec3<f32>,
+    @location(1) normal: vec3<f32>,
+#insert UV_TINT_FIELDS
 #if EFFECT_NORMAL_TEXTURE
     @location(4) tangent: vec4<f32>,
 #endif
@@ -21,12 +46,7 @@ struct SmoothIn {
 
 struct FlatIn {
     @location(0) position: vec3<f32>,
-#if TEXTURE_COORDS
-    @location(2) uv: vec2<f32>,
-#endif
-#if EFFECT_VERTEX_COLORS
-    @location(3) tint: vec3<f32>,
-#endif
+#insert UV_TINT_FIELDS
 }
 
 // The per-vertex modes' outputs: the colour (with a split, C ⊙ A), its rest B, and what tints C.
@@ -36,12 +56,7 @@ struct ColorOut {
 #if EFFECT_BASE_COLOR_TEXTURE||EFFECT_VERTEX_COLORS
     @location(1) rest: vec3<f32>,
 #endif
-#if TEXTURE_COORDS
-    @location(2) uv: vec2<f32>,
-#endif
-#if EFFECT_VERTEX_COLORS
-    @location(3) tint: vec3<f32>,
-#endif
+#insert UV_TINT_FIELDS
 }
 
 struct FlatOut {
@@ -50,24 +65,14 @@ struct FlatOut {
 #if EFFECT_BASE_COLOR_TEXTURE||EFFECT_VERTEX_COLORS
     @location(1) @interpolate(flat) rest: vec3<f32>,
 #endif
-#if TEXTURE_COORDS
-    @location(2) uv: vec2<f32>,
-#endif
-#if EFFECT_VERTEX_COLORS
-    @location(3) tint: vec3<f32>,
-#endif
+#insert UV_TINT_FIELDS
 }
 
 struct PhongOut {
     @builtin(position) clip: vec4<f32>,
     @location(0) world_pos: vec3<f32>,
     @location(1) world_normal: vec3<f32>,
-#if TEXTURE_COORDS
-    @location(2) uv: vec2<f32>,
-#endif
-#if EFFECT_VERTEX_COLORS
-    @location(3) tint: vec3<f32>,
-#endif
+#insert UV_TINT_FIELDS
 #if EFFECT_NORMAL_TEXTURE
     // World tangent (xyz, by the model matrix) and bitangent sign (w).
     @location(4) world_tangent: vec4<f32>,
@@ -94,34 +99,20 @@ fn vs_flat(in: FlatIn, @builtin(vertex_index) corner: u32) -> FlatOut {
     var out: FlatOut;
     out.clip = globals.view_proj * vec4(to_world(in.position), 1.0);
     let lit = read_lit(corner / 3u);
-    out.color = lit[0];
-#if EFFECT_BASE_COLOR_TEXTURE||EFFECT_VERTEX_COLORS
-    out.rest = lit[1];
-#endif
-#if TEXTURE_COORDS
-    out.uv = in.uv;
-#endif
-#if EFFECT_VERTEX_COLORS
-    out.tint = in.tint;
-#endif
+#insert LIT_COPY
     return out;
 }
 
 @fragment
 fn fs_flat(in: FlatOut) -> @location(0) vec4<f32> {
-    var g: ColorOut;
-    g.clip = in.clip;
-    g.color = in.color;
+    var out: ColorOut;
+    out.clip = in.clip;
+    out.color = in.color;
 #if EFFECT_BASE_COLOR_TEXTURE||EFFECT_VERTEX_COLORS
-    g.rest = in.rest;
+    out.rest = in.rest;
 #endif
-#if TEXTURE_COORDS
-    g.uv = in.uv;
-#endif
-#if EFFECT_VERTEX_COLORS
-    g.tint = in.tint;
-#endif
-    return finish(per_vertex_pixel(g));
+#insert UV_TINT_COPY
+    return finish(per_vertex_pixel(out));
 }
 
 // One invocation per smooth vertex: the model at the vertex, the only evaluation Gouraud shading
@@ -145,16 +136,7 @@ fn gouraud_vertex(in: SmoothIn, vertex: u32) -> ColorOut {
     var out: ColorOut;
     out.clip = globals.view_proj * vec4(to_world(in.position), 1.0);
     let lit = read_lit(vertex);
-    out.color = lit[0];
-#if EFFECT_BASE_COLOR_TEXTURE||EFFECT_VERTEX_COLORS
-    out.rest = lit[1];
-#endif
-#if TEXTURE_COORDS
-    out.uv = in.uv;
-#endif
-#if EFFECT_VERTEX_COLORS
-    out.tint = in.tint;
-#endif
+#insert LIT_COPY
     return out;
 }
 
@@ -192,12 +174,7 @@ fn phong_vertex(in: SmoothIn) -> PhongOut {
     out.world_pos = to_world(in.position);
     out.clip = globals.view_proj * vec4(out.world_pos, 1.0);
     out.world_normal = normal_to_world(in.normal);
-#if TEXTURE_COORDS
-    out.uv = in.uv;
-#endif
-#if EFFECT_VERTEX_COLORS
-    out.tint = in.tint;
-#endif
+#insert UV_TINT_COPY
 #if EFFECT_NORMAL_TEXTURE
     out.world_tangent = vec4((object.model * vec4(in.tangent.xyz, 0.0)).xyz, in.tangent.w);
 #endif

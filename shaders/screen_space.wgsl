@@ -1,6 +1,30 @@
 // The shading modes' stages with the chapter's screen-space interpolation, beside the
 // perspective-correct ones of shading.wgsl (their vertex stages and per-pixel work are those).
 
+// The optional varyings in both interpolations, screen-space and perspective-correct.
+#block UV_TINT_SCREEN
+#if TEXTURE_COORDS
+    @location(4) @interpolate(linear) uv: vec2<f32>,
+    @location(5) uv_perspective: vec2<f32>,
+#endif
+#if EFFECT_VERTEX_COLORS
+    @location(6) @interpolate(linear) tint: vec3<f32>,
+    @location(7) tint_perspective: vec3<f32>,
+#endif
+#endblock
+
+// Those varyings from a perspective-correct vertex stage's output `v` into `out`.
+#block UV_TINT_SCREEN_COPY
+#if TEXTURE_COORDS
+    out.uv = v.uv;
+    out.uv_perspective = v.uv;
+#endif
+#if EFFECT_VERTEX_COLORS
+    out.tint = v.tint;
+    out.tint_perspective = v.tint;
+#endif
+#endblock
+
 // The chapter's interpolation (docs/model.md §8): linear in screen space along the scanlines, as
 // the chapter writes it, not perspective-correct; the same stages with `@interpolate(linear)`.
 // Screen-space interpolation has no meaning on a triangle clipped at the eye plane (a corner
@@ -14,14 +38,7 @@ struct ColorScreenOut {
     @location(2) @interpolate(linear) rest: vec3<f32>,
     @location(3) rest_perspective: vec3<f32>,
 #endif
-#if TEXTURE_COORDS
-    @location(4) @interpolate(linear) uv: vec2<f32>,
-    @location(5) uv_perspective: vec2<f32>,
-#endif
-#if EFFECT_VERTEX_COLORS
-    @location(6) @interpolate(linear) tint: vec3<f32>,
-    @location(7) tint_perspective: vec3<f32>,
-#endif
+#insert UV_TINT_SCREEN
 }
 
 struct PhongScreenOut {
@@ -30,14 +47,7 @@ struct PhongScreenOut {
     @location(1) @interpolate(linear) world_normal: vec3<f32>,
     @location(2) world_pos_perspective: vec3<f32>,
     @location(3) world_normal_perspective: vec3<f32>,
-#if TEXTURE_COORDS
-    @location(4) @interpolate(linear) uv: vec2<f32>,
-    @location(5) uv_perspective: vec2<f32>,
-#endif
-#if EFFECT_VERTEX_COLORS
-    @location(6) @interpolate(linear) tint: vec3<f32>,
-    @location(7) tint_perspective: vec3<f32>,
-#endif
+#insert UV_TINT_SCREEN
 #if EFFECT_NORMAL_TEXTURE
     // The tangent frame stays perspective-correct: a texture's frame, not the chapter's colour.
     @location(8) world_tangent: vec4<f32>,
@@ -51,23 +61,16 @@ fn screen_or_perspective(screen: vec3<f32>, perspective: vec3<f32>) -> vec3<f32>
 
 @vertex
 fn vs_gouraud_screen(in: SmoothIn, @builtin(vertex_index) vertex: u32) -> ColorScreenOut {
-    let g = gouraud_vertex(in, vertex);
+    let v = gouraud_vertex(in, vertex);
     var out: ColorScreenOut;
-    out.clip = g.clip;
-    out.color = g.color;
-    out.color_perspective = g.color;
+    out.clip = v.clip;
+    out.color = v.color;
+    out.color_perspective = v.color;
 #if EFFECT_BASE_COLOR_TEXTURE||EFFECT_VERTEX_COLORS
-    out.rest = g.rest;
-    out.rest_perspective = g.rest;
+    out.rest = v.rest;
+    out.rest_perspective = v.rest;
 #endif
-#if TEXTURE_COORDS
-    out.uv = g.uv;
-    out.uv_perspective = g.uv;
-#endif
-#if EFFECT_VERTEX_COLORS
-    out.tint = g.tint;
-    out.tint_perspective = g.tint;
-#endif
+#insert UV_TINT_SCREEN_COPY
     return out;
 }
 
@@ -90,23 +93,16 @@ fn fs_gouraud_screen(in: ColorScreenOut) -> @location(0) vec4<f32> {
 
 @vertex
 fn vs_phong_screen(in: SmoothIn) -> PhongScreenOut {
-    let o = phong_vertex(in);
+    let v = phong_vertex(in);
     var out: PhongScreenOut;
-    out.clip = o.clip;
-    out.world_pos = o.world_pos;
-    out.world_normal = o.world_normal;
-    out.world_pos_perspective = o.world_pos;
-    out.world_normal_perspective = o.world_normal;
-#if TEXTURE_COORDS
-    out.uv = o.uv;
-    out.uv_perspective = o.uv;
-#endif
-#if EFFECT_VERTEX_COLORS
-    out.tint = o.tint;
-    out.tint_perspective = o.tint;
-#endif
+    out.clip = v.clip;
+    out.world_pos = v.world_pos;
+    out.world_normal = v.world_normal;
+    out.world_pos_perspective = v.world_pos;
+    out.world_normal_perspective = v.world_normal;
+#insert UV_TINT_SCREEN_COPY
 #if EFFECT_NORMAL_TEXTURE
-    out.world_tangent = o.world_tangent;
+    out.world_tangent = v.world_tangent;
 #endif
     return out;
 }

@@ -51,47 +51,8 @@ pub const FILES: [(&str, &str); 22] = [
     ("glass.wgsl", include_str!("../../../shaders/glass.wgsl")),
 ];
 
-/// Keep or cut the `#if NAME` / `#else` / `#endif` blocks of a WGSL source: a block is kept when
-/// `NAME` is among `defines` (`#if A||B`: when either is). Blocks nest. Cut lines become empty lines, so line numbers in
-/// naga's messages stay those of the files. Any other line starting with `#` is an error.
-pub fn preprocess(source: &str, defines: &[&str]) -> Result<String, String> {
-    // Per open block: (this branch is kept, the enclosing block is kept, line of the #if).
-    let mut stack: Vec<(bool, bool, usize)> = Vec::new();
-    let mut out = String::with_capacity(source.len());
-    for (i, line) in source.lines().enumerate() {
-        let t = line.trim();
-        let keeping = stack.last().is_none_or(|b| b.0 && b.1);
-        if let Some(rest) = t.strip_prefix('#') {
-            let mut words = rest.split_whitespace();
-            match (words.next(), words.next(), words.next()) {
-                // `#if A||B`: kept when any of the names is defined.
-                (Some("if"), Some(names), None) => {
-                    stack.push((names.split("||").any(|n| defines.contains(&n)), keeping, i + 1))
-                }
-                (Some("else"), None, None) => match stack.last_mut() {
-                    Some(b) => b.0 = !b.0,
-                    None => return Err(format!("line {}: #else without #if", i + 1)),
-                },
-                (Some("endif"), None, None) => {
-                    if stack.pop().is_none() {
-                        return Err(format!("line {}: #endif without #if", i + 1));
-                    }
-                }
-                _ => return Err(format!("line {}: unknown directive '{t}' (allowed: #if NAME, #else, #endif)", i + 1)),
-            }
-            out.push('\n');
-            continue;
-        }
-        if keeping {
-            out.push_str(line);
-        }
-        out.push('\n');
-    }
-    match stack.last() {
-        Some(b) => Err(format!("line {}: #if without #endif", b.2)),
-        None => Ok(out),
-    }
-}
+mod preprocess;
+pub use preprocess::preprocess;
 
 fn uber_defines() -> Vec<&'static str> {
     EffectKey::UBER.defines()

@@ -30,6 +30,30 @@ fn preprocessor_keeps_and_cuts_blocks() {
     assert!(either(&["X"]) && either(&["Y"]) && either(&["X", "Y"]) && !either(&["Z"]));
 }
 
+#[test]
+fn preprocessor_inserts_named_blocks_on_one_line() {
+    let src = "#block B\n  a, // one\n#if X\n  b,\n#endif\n#endblock\nx {\n#insert B\n}\n#if Y\n#insert B\n#endif";
+    let out = |defs: &[&str]| preprocess(src, defs).unwrap();
+    // The insert's kept lines, comments dropped, on the insert's own line: line numbers are kept.
+    assert_eq!(out(&[]).lines().nth(7), Some("a,"));
+    assert_eq!(out(&["X"]).lines().nth(7), Some("a, b,"));
+    assert_eq!(out(&["X"]).lines().count(), src.lines().count());
+    // An insert inside a cut #if is cut; the block's own lines are never emitted where written.
+    assert_eq!(out(&["X"]).lines().filter(|l| l.contains("a,")).count(), 1);
+    assert_eq!(out(&["X", "Y"]).lines().filter(|l| l.contains("a,")).count(), 2);
+    let err = |s: &str| preprocess(s, &[]).unwrap_err();
+    assert!(err("#insert B").contains("line 1: #insert of unknown block B"));
+    assert!(err("#block B\na").contains("line 1: #block B without #endblock"));
+    assert!(err("#endblock").contains("#endblock without #block"));
+    assert!(err("#if X\n#block B\n#endblock\n#endif").contains("line 2: #block inside #if"));
+    assert!(err("#block B\n#block C\n#endblock").contains("#block inside block B"));
+    assert!(err("#block B\n#if X\n#endblock\n#insert B").contains("line 4: in block B: line 1: #if without #endif"));
+    // A block may insert an earlier one, never itself.
+    let nested = preprocess("#block A\na\n#endblock\n#block B\n#insert A\nb\n#endblock\n#insert B", &[]).unwrap();
+    assert_eq!(nested.lines().nth(7), Some("a b"));
+    assert!(err("#block A\n#insert A\n#endblock\n#insert A").contains("in block A: line 1: #insert of unknown block A"));
+}
+
 /// (size, [(field, offset)]) of a WGSL struct as naga lays it out.
 fn wgsl_layout(module: &naga::Module, name: &str) -> (u32, Vec<(String, u32)>) {
     let ty = module.types.iter().find(|(_, t)| t.name.as_deref() == Some(name)).unwrap_or_else(|| panic!("{name}"));

@@ -267,20 +267,8 @@ impl Light {
     pub fn directional(direction: DVec3, color: [f64; 3], intensity: f64) -> Self {
         Light {
             kind: LightKind::Directional,
-            position: -direction.normalize() * LIGHT_STAND_OFF,
             direction: direction.normalize(),
-            color,
-            intensity,
-            falloff_form: FalloffForm::Quadratic,
-            falloff_alpha: 0.0,
-            d0: 1.0,
-            inner_cone: 0.0,
-            outer_cone: SPOT_OUTER_CONE_DEFAULT,
-            range: None,
-            shadow: ShadowSettings::default(),
-            size: [LIGHT_SIZE_DEFAULT; 2],
-            tangent: DVec3::X,
-            area_points: 0,
+            ..Light::point(-direction.normalize() * LIGHT_STAND_OFF, color, intensity, 0.0)
         }
     }
     pub fn point(position: DVec3, color: [f64; 3], intensity: f64, falloff_alpha: f64) -> Self {

@@ -5,7 +5,7 @@
 use crate::pipelines::PipelineKey;
 use crate::program::{Program, RenderSettings};
 use crate::renderer::Renderer;
-use crate::target::Target;
+use crate::target::{Target, color_attachment};
 use crate::uniforms::{GlobalsUniform, ObjectUniform};
 use crate::upload::SceneGpu;
 use shadelab_model::Scene;
@@ -232,12 +232,7 @@ fn scene_pass<'e>(
 ) -> wgpu::RenderPass<'e> {
     encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
         label: Some("shadelab scene"),
-        color_attachments: &[Some(wgpu::RenderPassColorAttachment {
-            view: &target.color_view,
-            depth_slice: None,
-            resolve_target: None,
-            ops: wgpu::Operations { load: wgpu::LoadOp::Clear(clear), store: wgpu::StoreOp::Store },
-        })],
+        color_attachments: &[color_attachment(&target.color_view, wgpu::LoadOp::Clear(clear))],
         depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
             view: &target.depth_view,
             depth_ops: Some(wgpu::Operations { load: wgpu::LoadOp::Clear(1.0), store: wgpu::StoreOp::Store }),

@@ -7,7 +7,7 @@ use crate::glass_textures::{BACK_FORMAT, GlassTextures};
 use crate::pipelines::{PassKey, PipelineCache, depth_state, opaque_target, triangles};
 use crate::program::Program;
 use crate::renderer::Renderer;
-use crate::target::Target;
+use crate::target::{Target, color_attachment};
 use crate::upload::{MeshGpu, SceneGpu};
 use crate::vertex::SmoothVertex;
 use shadelab_model::Scene;
@@ -26,12 +26,7 @@ fn front_pass<'e>(
 ) -> wgpu::RenderPass<'e> {
     encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
         label: Some("shadelab glass"),
-        color_attachments: &[Some(wgpu::RenderPassColorAttachment {
-            view: &target.color_view,
-            depth_slice: None,
-            resolve_target: None,
-            ops: wgpu::Operations { load: wgpu::LoadOp::Load, store: wgpu::StoreOp::Store },
-        })],
+        color_attachments: &[color_attachment(&target.color_view, wgpu::LoadOp::Load)],
         // Read-only: the pass tests against the opaque depth and samples it.
         depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
             view: &target.depth_view,

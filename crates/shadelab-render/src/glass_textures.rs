@@ -2,7 +2,8 @@
 //! target's colour behind the glass, a mesh's back faces with their depth, and their bind-group
 //! layout, which the renderer builds. The pass that fills and reads them is `glass_pass.rs`.
 
-use crate::target::{DEPTH_FORMAT, Target};
+use crate::pipelines::fragment_texture;
+use crate::target::{DEPTH_FORMAT, Target, color_attachment};
 
 /// The back faces' world position (w = 1 where covered) and outward normal.
 pub const BACK_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba32Float;
@@ -10,16 +11,7 @@ pub const BACK_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba32Float;
 /// The glass bindings (@group(3), bindings 8–11 of `glass.wgsl`): four unfilterable textures read
 /// with `textureLoad`.
 pub(crate) fn layout(device: &wgpu::Device) -> wgpu::BindGroupLayout {
-    let entry = |binding| wgpu::BindGroupLayoutEntry {
-        binding,
-        visibility: wgpu::ShaderStages::FRAGMENT,
-        ty: wgpu::BindingType::Texture {
-            sample_type: wgpu::TextureSampleType::Float { filterable: false },
-            view_dimension: wgpu::TextureViewDimension::D2,
-            multisampled: false,
-        },
-        count: None,
-    };
+    let entry = |binding| fragment_texture(binding, wgpu::TextureSampleType::Float { filterable: false });
     device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
         label: Some("shadelab glass"),
         entries: &[entry(8), entry(9), entry(10), entry(11)],
@@ -110,17 +102,7 @@ impl GlassTextures {
     /// Begin the pass that draws a mesh's back faces into the two back targets and their depth,
     /// all cleared.
     pub(crate) fn back_faces_pass<'e>(&self, encoder: &'e mut wgpu::CommandEncoder) -> wgpu::RenderPass<'e> {
-        let clear = |view| {
-            Some(wgpu::RenderPassColorAttachment {
-                view,
-                depth_slice: None,
-                resolve_target: None,
-                ops: wgpu::Operations {
-                    load: wgpu::LoadOp::Clear(wgpu::Color::TRANSPARENT),
-                    store: wgpu::StoreOp::Store,
-                },
-            })
-        };
+        let clear = |view| color_attachment(view, wgpu::LoadOp::Clear(wgpu::Color::TRANSPARENT));
         encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
             label: Some("shadelab glass back faces"),
             color_attachments: &[clear(&self.back_position), clear(&self.back_normal)],

@@ -4,7 +4,7 @@
 //! depth that pass keeps (`LessEqual`), so that an edge behind an object is hidden.
 
 use crate::program::RenderSettings;
-use crate::target::{self, LinearImage, Target};
+use crate::target::{self, LinearImage, Target, color_attachment};
 use crate::upload::UploadError;
 use crate::{Gpu, Renderer};
 use glam::DVec3;
@@ -153,12 +153,7 @@ impl OverlayPass {
             .or_insert_with(|| build_pipeline(device, layout, module, target.format));
         let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
             label: Some("shadelab overlay"),
-            color_attachments: &[Some(wgpu::RenderPassColorAttachment {
-                view: &target.color_view,
-                depth_slice: None,
-                resolve_target: None,
-                ops: wgpu::Operations { load: wgpu::LoadOp::Load, store: wgpu::StoreOp::Store },
-            })],
+            color_attachments: &[color_attachment(&target.color_view, wgpu::LoadOp::Load)],
             depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
                 view: &target.depth_view,
                 // Kept: a later overlay pass tests its lines against the same depth.

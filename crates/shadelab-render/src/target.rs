@@ -114,6 +114,15 @@ impl LinearImage {
     }
 }
 
+/// A colour attachment of `view` that begins with `load` and keeps what the pass draws.
+pub(crate) fn color_attachment(
+    view: &wgpu::TextureView,
+    load: wgpu::LoadOp<wgpu::Color>,
+) -> Option<wgpu::RenderPassColorAttachment<'_>> {
+    let ops = wgpu::Operations { load, store: wgpu::StoreOp::Store };
+    Some(wgpu::RenderPassColorAttachment { view, depth_slice: None, resolve_target: None, ops })
+}
+
 /// Bytes a buffer row needs for `width` texels of `bytes_per_texel`, padded to the copy
 /// alignment (256).
 pub fn padded_bytes_per_row(width: u32, bytes_per_texel: u32) -> u32 {

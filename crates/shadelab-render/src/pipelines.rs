@@ -33,6 +33,16 @@ pub fn depth_state(write: bool, compare: wgpu::CompareFunction, bias: wgpu::Dept
     }
 }
 
+/// A 2D texture of `sample_type` at `binding`, read by the fragment stage.
+pub fn fragment_texture(binding: u32, sample_type: wgpu::TextureSampleType) -> wgpu::BindGroupLayoutEntry {
+    wgpu::BindGroupLayoutEntry {
+        binding,
+        visibility: wgpu::ShaderStages::FRAGMENT,
+        ty: wgpu::BindingType::Texture { sample_type, view_dimension: wgpu::TextureViewDimension::D2, multisampled: false },
+        count: None,
+    }
+}
+
 /// Triangle lists, culling `cull` (`None`: both faces drawn).
 pub fn triangles(cull: Option<wgpu::Face>) -> wgpu::PrimitiveState {
     wgpu::PrimitiveState { topology: wgpu::PrimitiveTopology::TriangleList, cull_mode: cull, ..Default::default() }

@@ -46,16 +46,7 @@ pub(crate) fn layout_entries() -> Vec<wgpu::BindGroupLayoutEntry> {
     (0..SLOTS.len() as u32)
         .flat_map(|k| {
             [
-                wgpu::BindGroupLayoutEntry {
-                    binding: 1 + 2 * k,
-                    visibility: wgpu::ShaderStages::FRAGMENT,
-                    ty: wgpu::BindingType::Texture {
-                        sample_type: wgpu::TextureSampleType::Float { filterable: true },
-                        view_dimension: wgpu::TextureViewDimension::D2,
-                        multisampled: false,
-                    },
-                    count: None,
-                },
+                crate::pipelines::fragment_texture(1 + 2 * k, wgpu::TextureSampleType::Float { filterable: true }),
                 wgpu::BindGroupLayoutEntry {
                     binding: 2 + 2 * k,
                     visibility: wgpu::ShaderStages::FRAGMENT,

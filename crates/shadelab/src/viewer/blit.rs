@@ -5,6 +5,7 @@
 
 use eframe::egui;
 use eframe::egui_wgpu::{self, CallbackResources, CallbackTrait};
+use shadelab_render::pipelines::fragment_texture;
 
 const BLIT_WGSL: &str = r"
 @group(0) @binding(0) var view: texture_2d<f32>;
@@ -49,16 +50,7 @@ impl BlitResources {
         });
         let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("shadelab view blit"),
-            entries: &[wgpu::BindGroupLayoutEntry {
-                binding: 0,
-                visibility: wgpu::ShaderStages::FRAGMENT,
-                ty: wgpu::BindingType::Texture {
-                    sample_type: wgpu::TextureSampleType::Float { filterable: false },
-                    view_dimension: wgpu::TextureViewDimension::D2,
-                    multisampled: false,
-                },
-                count: None,
-            }],
+            entries: &[fragment_texture(0, wgpu::TextureSampleType::Float { filterable: false })],
         });
         let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
             label: Some("shadelab view blit"),

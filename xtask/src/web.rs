@@ -3,7 +3,8 @@
 //!
 //! The toolchain: rustup's `wasm32-unknown-unknown` target where it is installed; otherwise
 //! Debian's `rustc-web` with its library source, std built for wasm32 (`-Zbuild-std`), linked by
-//! `wasm-ld-22`. `wasm-bindgen-cli` is installed once, at the version Cargo.lock pins.
+//! `wasm-ld-22`. The JS glue comes from `wasm-bindgen-cli-support`, the library of the
+//! `wasm-bindgen` command, at the version of the crate the page links.
 
 use crate::{apt_install, run};
 use std::io::{BufRead, BufReader, Write};
@@ -17,7 +18,7 @@ const DEBIAN_RUSTC: &str = "/usr/bin/rustc";
 const DEBIAN_CARGO: &str = "/usr/bin/cargo";
 const DEBIAN_STD_SOURCE: &str = "/usr/lib/rustlib/src/rust/library";
 const DEBIAN_WASM_LD: &str = "/usr/bin/wasm-ld-22";
-/// The page and what it loads, as `wasm-bindgen --target web` names them.
+/// The page and what it loads, as wasm-bindgen's web target names them.
 pub const SITE_FILES: &[&str] = &["index.html", "shadelab_web.js", "shadelab_web_bg.wasm"];
 
 pub fn root() -> PathBuf {
@@ -66,58 +67,20 @@ fn wasm_build_command() -> Result<Command, String> {
     Ok(cmd)
 }
 
-/// The `wasm-bindgen` version Cargo.lock pins (the CLI must be the same).
-fn locked_wasm_bindgen() -> Result<String, String> {
-    let lock = std::fs::read_to_string(root().join("Cargo.lock")).map_err(|e| format!("reading Cargo.lock: {e}"))?;
-    let at = lock.find("name = \"wasm-bindgen\"\n").ok_or("Cargo.lock has no wasm-bindgen")?;
-    let rest = &lock[at..];
-    let v = rest.lines().nth(1).and_then(|l| l.strip_prefix("version = \"")).and_then(|l| l.strip_suffix('"'));
-    v.map(str::to_string).ok_or_else(|| "Cargo.lock: wasm-bindgen has no version line".into())
-}
-
-/// `wasm-bindgen` of the locked version: the one installed by cargo, or installed now (once per
-/// machine; about 7 minutes on two cores).
-fn ensure_wasm_bindgen() -> Result<PathBuf, String> {
-    let version = locked_wasm_bindgen()?;
-    let home = std::env::var_os("CARGO_HOME")
-        .map(PathBuf::from)
-        .or_else(|| std::env::var_os("HOME").map(|h| Path::new(&h).join(".cargo")))
-        .ok_or("neither CARGO_HOME nor HOME is set")?;
-    let bin = home.join("bin/wasm-bindgen");
-    let matches = || {
-        Command::new(&bin)
-            .arg("--version")
-            .output()
-            .is_ok_and(|o| String::from_utf8_lossy(&o.stdout).split_whitespace().nth(1) == Some(version.as_str()))
-    };
-    if matches() {
-        return Ok(bin);
-    }
-    eprintln!("xtask: installing wasm-bindgen-cli {version} (once per machine)");
-    let ok = run(Command::new(rustup_cargo()).args([
-        "install",
-        "wasm-bindgen-cli",
-        "--version",
-        &version,
-        "--no-default-features",
-        "--force",
-    ]));
-    if ok && matches() { Ok(bin) } else { Err(format!("installing wasm-bindgen-cli {version} failed")) }
-}
-
 /// Build the site into `out`: the wasm module, its JS glue and the page.
 pub fn build_site(out: &Path) -> Result<(), String> {
     let mut cmd = wasm_build_command()?;
     if !run(&mut cmd) {
         return Err("building shadelab-web for wasm32 failed".into());
     }
-    let bindgen = ensure_wasm_bindgen()?;
     let wasm = root().join("target/web").join(WASM_TARGET).join("release/shadelab_web.wasm");
     std::fs::create_dir_all(out).map_err(|e| format!("creating {}: {e}", out.display()))?;
-    let ok = run(Command::new(&bindgen).arg(&wasm).args(["--target", "web", "--no-typescript", "--out-dir"]).arg(out));
-    if !ok {
-        return Err("wasm-bindgen failed".into());
-    }
+    // What `wasm-bindgen --target web --no-typescript` writes, made by the library it wraps.
+    wasm_bindgen_cli_support::Bindgen::new()
+        .input_path(&wasm)
+        .web(true)
+        .and_then(|b| b.typescript(false).omit_default_module_path(false).generate(out))
+        .map_err(|e| format!("wasm-bindgen on {}: {e:#}", wasm.display()))?;
     let page = root().join("crates/shadelab-web/static/index.html");
     std::fs::copy(&page, out.join("index.html")).map_err(|e| format!("copying {}: {e}", page.display()))?;
     Ok(())

@@ -75,15 +75,27 @@ pub fn build_site(out: &Path) -> Result<(), String> {
     }
     let wasm = root().join("target/web").join(WASM_TARGET).join("release/shadelab_web.wasm");
     std::fs::create_dir_all(out).map_err(|e| format!("creating {}: {e}", out.display()))?;
-    // What `wasm-bindgen --target web --no-typescript` writes, made by the library it wraps.
-    wasm_bindgen_cli_support::Bindgen::new()
-        .input_path(&wasm)
-        .web(true)
-        .and_then(|b| b.typescript(false).omit_default_module_path(false).generate(out))
-        .map_err(|e| format!("wasm-bindgen on {}: {e:#}", wasm.display()))?;
+    bindgen(&wasm, out)?;
     let page = root().join("crates/shadelab-web/static/index.html");
     std::fs::copy(&page, out.join("index.html")).map_err(|e| format!("copying {}: {e}", page.display()))?;
     Ok(())
+}
+
+/// Write the JS glue and the final module of `wasm` into `out`: what `wasm-bindgen --target web
+/// --no-typescript` writes, made by the library it wraps.
+#[cfg(feature = "bindgen")]
+fn bindgen(wasm: &Path, out: &Path) -> Result<(), String> {
+    wasm_bindgen_cli_support::Bindgen::new()
+        .input_path(wasm)
+        .web(true)
+        .and_then(|b| b.typescript(false).omit_default_module_path(false).generate(out))
+        .map_err(|e| format!("wasm-bindgen on {}: {e:#}", wasm.display()))
+}
+
+/// Without the library (xtask built by the workspace's test build, not by `cargo xtask`).
+#[cfg(not(feature = "bindgen"))]
+fn bindgen(_wasm: &Path, _out: &Path) -> Result<(), String> {
+    Err("this xtask was built without its `bindgen` feature: run it as `cargo xtask`".into())
 }
 
 /// Serve `dir` on 127.0.0.1:`port` (0: any free port) on a thread; returns the address.

@@ -11,6 +11,23 @@ use shadelab_render::image_error::{compare_images, reference_image};
 use shadelab_render::{Gpu, LinearImage, RenderSettings};
 use std::io::{IsTerminal, Write};
 
+/// Which reference a scene under an environment light gets, in one line (`None` without one):
+/// the exact reference evaluates the environment as the GPU does (its twin), only the path tracer
+/// integrates it (the truth), so a difference from the twin is not an error against the truth.
+pub fn environment_reference(scene: &shadelab_model::Scene, paths: Option<PathSettings>) -> Option<String> {
+    scene.environment.as_ref()?;
+    Some(match paths {
+        None => "reference: under the environment light, the GPU's f64 twin (its nine SH terms, split sum and \
+                 occlusion grid, as drawn), not the truth; --bounces N path traces the truth"
+            .into(),
+        Some(p) => format!(
+            "reference: the path-traced truth, the environment integrated over the BRDF with visibility by ray \
+             ({} vertices, {} paths a pixel)",
+            p.bounces, p.spp
+        ),
+    })
+}
+
 /// Rows a progress step traces: a fiftieth of the image, so the bar moves in 2 % steps.
 const PROGRESS_STEPS: u32 = 50;
 
@@ -84,6 +101,10 @@ pub fn run(
 ) -> Result<(), Failure> {
     let start = web_time::Instant::now();
     let paths = args.paths();
+    // Which reference this is (`--explain` has said it already).
+    if let Some(line) = environment_reference(scene, paths).filter(|_| !args.explain) {
+        println!("{line}");
+    }
     let label = if paths.is_some() { "path-traced reference" } else { "f64 reference" };
     let traced = traced_with_progress(reference_job(scene, settings, size, paths)?, label, size.1);
     let reference = reference_of(&traced, args.term);

@@ -405,11 +405,13 @@ pub struct RenderArgs {
     /// (scenes of analytic shapes; with --term shadow, its exact factor). An area light is
     /// integrated over its area, its specular too, not taken at the GPU's representative point;
     /// under the Lambert rule and the four-term sum its form is the drawn one (a disk as its
-    /// 16-gon, within 0.3 %).
+    /// 16-gon, within 0.3 %). Under an environment light it is the GPU's f64 twin (the nine SH
+    /// terms and the split sum, as drawn), not the truth: --bounces path traces the truth.
     #[arg(long, conflicts_with_all = ["difference", "interpolation_difference", "overlay"])]
     pub reference: bool,
     /// Write the FLIP error map (magma) of the GPU's image against the f64 reference instead of
-    /// the image (PNG; scenes of analytic shapes), and print RMSE, FLIP and the share off.
+    /// the image (PNG; scenes of analytic shapes), and print RMSE, FLIP and the share off. Under
+    /// an environment light that reference is the GPU's twin unless --bounces asks for the truth.
     #[arg(long, conflicts_with_all = ["interpolation_difference", "overlay"])]
     pub difference: bool,
     /// With --reference or --difference: path trace the reference, the light between surfaces

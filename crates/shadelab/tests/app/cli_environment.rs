@@ -93,3 +93,31 @@ fn the_study_prints_its_rungs() {
     let grid = rmse("| + the diffuse occluded by the precomputed grid");
     assert!(grid.is_finite() && grid > 0.0, "grid {grid}: {out}");
 }
+
+/// Under an environment, `--reference` says which reference it is: the GPU's twin, or with
+/// `--bounces` the path-traced truth; `--explain` says it once, `--help` says it, and a scene
+/// without an environment gets no such line.
+#[test]
+fn the_reference_under_an_environment_says_whether_it_is_the_twin_or_the_truth() {
+    let dir = out_dir();
+    let out = |extra: &[&str]| {
+        let path = dir.join("which-reference.png");
+        let mut args = vec!["render", "--reference", "--width", "32", "--height", "18"];
+        args.extend_from_slice(extra);
+        args.extend_from_slice(&["--output", path.to_str().unwrap()]);
+        let o = shadelab(&args);
+        assert_eq!(o.status.code(), Some(0), "{extra:?}: {:?}", error_lines(&o));
+        String::from_utf8_lossy(&o.stdout).into_owned()
+    };
+    let twin = out(&["--environment", "sky"]);
+    assert!(twin.contains("the GPU's f64 twin") && twin.contains("not the truth"), "{twin}");
+    let truth = out(&["--environment", "sky", "--bounces", "2", "--spp", "1"]);
+    assert!(truth.contains("the path-traced truth") && truth.contains("(2 vertices, 1 paths a pixel)"), "{truth}");
+    assert!(!truth.contains("twin"), "{truth}");
+    let explained = out(&["--environment", "sky", "--explain"]);
+    assert_eq!(explained.matches("reference: under the environment light").count(), 1, "{explained}");
+    assert!(!out(&[]).contains("reference: "), "a scene without an environment");
+    // clap wraps the help to the terminal's width: compared with its line breaks as spaces.
+    let help = String::from_utf8_lossy(&shadelab(&["render", "--help"]).stdout).split_whitespace().collect::<Vec<_>>().join(" ");
+    assert!(help.contains("Under an environment light it is the GPU's f64 twin"), "{help}");
+}

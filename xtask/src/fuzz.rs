@@ -12,9 +12,10 @@ use std::path::Path;
 use std::process::Command;
 
 /// Each target and its seed folders (relative to the repository).
-pub const TARGETS: [(&str, &[&str]); 3] = [
+pub const TARGETS: [(&str, &[&str]); 4] = [
     ("load_scene", &["tests/gltf-corpus", "assets"]),
     ("texture_image", &["fuzz/seeds/texture_image"]),
+    ("env_image", &["fuzz/seeds/env_image", "assets/mitsuba"]),
     ("extras", &["fuzz/seeds/extras"]),
 ];
 /// Seconds the targets run in `cargo xtask test`, side by side.

@@ -24,6 +24,27 @@ use shadelab_model::{
 use shadelab_render::RenderSettings;
 use std::path::PathBuf;
 
+/// Parse `args` (the program's name first) as the command line: [`Cli::try_parse_from`] with
+/// the command built once. clap otherwise builds every flag's definition, help and range on each
+/// parse, which a link pays once per parameter (`viewer/link.rs`).
+pub fn parse_args<I, T>(args: I) -> Result<Cli, clap::Error>
+where
+    I: IntoIterator<Item = T>,
+    T: Into<std::ffi::OsString> + Clone,
+{
+    use clap::{CommandFactory, FromArgMatches};
+    static COMMAND: std::sync::OnceLock<std::sync::Mutex<clap::Command>> = std::sync::OnceLock::new();
+    let command = COMMAND.get_or_init(|| {
+        let mut c = Cli::command();
+        c.build();
+        std::sync::Mutex::new(c)
+    });
+    // A panic while parsing leaves the command as it was: the poison is only the flag.
+    let mut cmd = command.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
+    let mut matches = cmd.try_get_matches_from_mut(args)?;
+    Cli::from_arg_matches_mut(&mut matches).map_err(|e| e.format(&mut cmd))
+}
+
 #[derive(Parser, Debug)]
 #[command(
     name = "shadelab",

@@ -6,7 +6,6 @@
 use super::Viewer;
 use super::difference::DifferenceKind;
 use crate::cli;
-use clap::Parser;
 use shadelab_model::params::NamedValue;
 use shadelab_model::terms::Term;
 use shadelab_model::{ModelChoice, SpecularModel};
@@ -92,7 +91,7 @@ fn take(link: &mut Link, key: &str, value: &str) -> Result<(), String> {
         }
         k => {
             let flag = format!("--{k}");
-            cli::Cli::try_parse_from(["shadelab", flag.as_str(), value]).map_err(|e| cli::one_line(&e))?;
+            cli::parse_args(["shadelab", flag.as_str(), value]).map_err(|e| cli::one_line(&e))?;
             link.args.extend([flag, value.to_string()]);
         }
     }
@@ -126,7 +125,7 @@ impl Viewer {
     pub fn open_link(&mut self, link: &Link) {
         let mut errors = link.errors.clone();
         let args = std::iter::once("shadelab".to_string()).chain(link.args.iter().cloned());
-        match cli::Cli::try_parse_from(args) {
+        match cli::parse_args(args) {
             Ok(c) => {
                 if let Err(e) = self.open_scene_args(&c.scene, &c.mode) {
                     errors.push(format!("link: {e}"));

@@ -51,7 +51,9 @@ fn preprocessor_inserts_named_blocks_on_one_line() {
     // A block may insert an earlier one, never itself.
     let nested = preprocess("#block A\na\n#endblock\n#block B\n#insert A\nb\n#endblock\n#insert B", &[]).unwrap();
     assert_eq!(nested.lines().nth(7), Some("a b"));
-    assert!(err("#block A\n#insert A\n#endblock\n#insert A").contains("in block A: line 1: #insert of unknown block A"));
+    assert!(
+        err("#block A\n#insert A\n#endblock\n#insert A").contains("in block A: line 1: #insert of unknown block A")
+    );
 }
 
 /// (size, [(field, offset)]) of a WGSL struct as naga lays it out.

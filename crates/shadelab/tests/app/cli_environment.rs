@@ -118,6 +118,9 @@ fn the_reference_under_an_environment_says_whether_it_is_the_twin_or_the_truth()
     assert_eq!(explained.matches("reference: under the environment light").count(), 1, "{explained}");
     assert!(!out(&[]).contains("reference: "), "a scene without an environment");
     // clap wraps the help to the terminal's width: compared with its line breaks as spaces.
-    let help = String::from_utf8_lossy(&shadelab(&["render", "--help"]).stdout).split_whitespace().collect::<Vec<_>>().join(" ");
+    let help = String::from_utf8_lossy(&shadelab(&["render", "--help"]).stdout)
+        .split_whitespace()
+        .collect::<Vec<_>>()
+        .join(" ");
     assert!(help.contains("Under an environment light it is the GPU's f64 twin"), "{help}");
 }

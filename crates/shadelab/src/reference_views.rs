@@ -101,8 +101,8 @@ pub fn run(
 ) -> Result<(), Failure> {
     let start = web_time::Instant::now();
     let paths = args.paths();
-    // Which reference this is (`--explain` has said it already).
-    if let Some(line) = environment_reference(scene, paths).filter(|_| !args.explain) {
+    // Which reference this is: the twin and the truth differ under an environment.
+    if let Some(line) = environment_reference(scene, paths) {
         println!("{line}");
     }
     let label = if paths.is_some() { "path-traced reference" } else { "f64 reference" };

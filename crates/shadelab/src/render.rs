@@ -80,13 +80,6 @@ pub fn run(args: &cli::RenderArgs) -> Result<(), Failure> {
     }
     if args.explain {
         print!("{}", explain(&scene, &settings));
-        // Which reference a scene under an environment gets, when one is asked for.
-        if let Some(line) = (args.reference || args.difference)
-            .then(|| crate::reference_views::environment_reference(&scene, args.paths()))
-            .flatten()
-        {
-            println!("{line}");
-        }
     }
     check_difference_flags(args, &scene, &settings, kind)?;
     if args.ambient_error {

@@ -95,7 +95,7 @@ fn the_study_prints_its_rungs() {
 }
 
 /// Under an environment, `--reference` says which reference it is: the GPU's twin, or with
-/// `--bounces` the path-traced truth; `--explain` says it once, `--help` says it, and a scene
+/// `--bounces` the path-traced truth, once with `--explain` too; `--help` says it, and a scene
 /// without an environment gets no such line.
 #[test]
 fn the_reference_under_an_environment_says_whether_it_is_the_twin_or_the_truth() {

@@ -38,11 +38,7 @@ pub enum Interpolation {
     Screen,
 }
 
-impl NamedValue for Interpolation {
-    const FLAG: &'static str = "--interpolation";
-    const ALL: &'static [(&'static str, Self)] =
-        &[("perspective", Interpolation::Perspective), ("screen", Interpolation::Screen)];
-}
+crate::named_values!(Interpolation, "--interpolation", "perspective" => Perspective, "screen" => Screen);
 
 /// The Phong exponent `h`: a finite sharpness in `[1, H_MAX]`, or the perfect mirror (`h = ∞`).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -281,11 +277,19 @@ pub trait NamedValue: Sized + Copy + 'static {
     }
 }
 
-impl NamedValue for ShadingMode {
-    const FLAG: &'static str = "--shading";
-    const ALL: &'static [(&'static str, Self)] =
-        &[("flat", ShadingMode::Flat), ("gouraud", ShadingMode::Gouraud), ("phong", ShadingMode::Phong)];
+crate::named_values!(ShadingMode, "--shading", "flat" => Flat, "gouraud" => Gouraud, "phong" => Phong);
+/// Implements [`NamedValue`] for an enum from its flag and its `"name" => Variant` table, one
+/// line a few values, so each table is written once in the crate's own words.
+#[macro_export]
+macro_rules! named_values {
+    ($t:ident, $flag:literal, $($name:literal => $v:ident),+ $(,)?) => {
+        impl $crate::params::NamedValue for $t {
+            const FLAG: &'static str = $flag;
+            const ALL: &'static [(&'static str, Self)] = &[$(($name, $t::$v)),+];
+        }
+    };
 }
+
 macro_rules! from_str_named {
     ($($t:ty),*) => {$(
         impl FromStr for $t {

@@ -3,7 +3,7 @@
 //! and the layer plan (`shadows`), so that lights and the scene hold them without depending on
 //! the code that reads the scene.
 
-use crate::params::{NamedValue, ParamRange};
+use crate::params::ParamRange;
 
 /// How the shadow map is filtered where a point is compared with it.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -32,15 +32,9 @@ impl ShadowFilter {
     }
 }
 
-impl NamedValue for ShadowFilter {
-    const FLAG: &'static str = "--shadow-filter";
-    const ALL: &'static [(&'static str, Self)] = &[
-        ("hard", ShadowFilter::Hard),
-        ("pcf", ShadowFilter::Pcf),
-        ("poisson", ShadowFilter::Poisson),
-        ("pcss", ShadowFilter::Pcss),
-    ];
-}
+crate::named_values!(ShadowFilter, "--shadow-filter",
+    "hard" => Hard, "pcf" => Pcf, "poisson" => Poisson, "pcss" => Pcss
+);
 
 /// Side of a light's shadow map in texels (a cube face's side for a point light).
 pub const SHADOW_RESOLUTION: ParamRange = ParamRange {

@@ -5,7 +5,7 @@
 //! and the f64 reference draw the same transformed scene, so each term has both, and the terms add
 //! up to the full image.
 
-use crate::params::{IlluminationModel, NamedValue};
+use crate::params::IlluminationModel;
 use crate::scene::Scene;
 
 /// Which part of the model an image shows.
@@ -33,18 +33,10 @@ pub enum Term {
     Shadow,
 }
 
-impl NamedValue for Term {
-    const FLAG: &'static str = "--term";
-    const ALL: &'static [(&'static str, Self)] = &[
-        ("all", Term::All),
-        ("ambient", Term::Ambient),
-        ("diffuse", Term::Diffuse),
-        ("specular", Term::Specular),
-        ("environment-specular", Term::EnvSpecular),
-        ("transmitted", Term::Transmitted),
-        ("shadow", Term::Shadow),
-    ];
-}
+crate::named_values!(Term, "--term",
+    "all" => All, "ambient" => Ambient, "diffuse" => Diffuse, "specular" => Specular,
+    "environment-specular" => EnvSpecular, "transmitted" => Transmitted, "shadow" => Shadow
+);
 
 impl Term {
     /// The terms that add up to [`Term::All`] (in every model; a model without a term draws it

@@ -10,7 +10,6 @@ pub use super::microfacet::{
     Microfacet, d_beckmann, fresnel_dielectric, fresnel_v_from_mu, g_cook_torrance, specular_microfacet,
 };
 use crate::guards::*;
-use crate::params::NamedValue;
 use crate::scene::material::{FresnelMix, Material};
 use glam::DVec3;
 
@@ -36,11 +35,7 @@ impl SpecularModel {
     }
 }
 
-impl NamedValue for SpecularModel {
-    const FLAG: &'static str = "--specular";
-    const ALL: &'static [(&'static str, Self)] =
-        &[("phong", SpecularModel::Phong), ("cook-torrance", SpecularModel::CookTorrance)];
-}
+crate::named_values!(SpecularModel, "--specular", "phong" => Phong, "cook-torrance" => CookTorrance);
 
 /// docs/model.md §1, §3: Lambert's cosine with the oriented angle; a face turned away
 /// (`N·L ≤ 0`) is in its own shadow and gets no direct light.

@@ -46,11 +46,7 @@ pub enum EnvKind {
     Image,
 }
 
-impl crate::params::NamedValue for EnvKind {
-    const FLAG: &'static str = "--environment";
-    const ALL: &'static [(&'static str, Self)] =
-        &[("uniform", EnvKind::Uniform), ("sky", EnvKind::Sky), ("image", EnvKind::Image)];
-}
+crate::named_values!(EnvKind, "--environment", "uniform" => Uniform, "sky" => Sky, "image" => Image);
 
 /// The analytic sky is sampled for its sampling density on a grid of this many columns and half
 /// as many rows: 1.4° cells, finer than the sky's features away from the sun.

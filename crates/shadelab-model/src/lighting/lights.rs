@@ -6,7 +6,7 @@ use super::area::{AreaLight, AreaShape, area_form, area_specular_point};
 pub use super::brdf::LightSample;
 use super::common::safe_normalize;
 use crate::guards::*;
-use crate::params::{NamedValue, ParamRange};
+use crate::params::ParamRange;
 use crate::shadow_settings::{ShadowFilter, ShadowSettings};
 use glam::DVec3;
 
@@ -125,17 +125,10 @@ impl LightKind {
     }
 }
 
-impl NamedValue for LightKind {
-    const FLAG: &'static str = "--light";
-    const ALL: &'static [(&'static str, Self)] = &[
-        ("directional", LightKind::Directional),
-        ("point", LightKind::Point),
-        ("spot", LightKind::Spot),
-        ("rect", LightKind::Rect),
-        ("disk", LightKind::Disk),
-        ("sphere", LightKind::Sphere),
-    ];
-}
+crate::named_values!(LightKind, "--light",
+    "directional" => Directional, "point" => Point, "spot" => Spot, "rect" => Rect, "disk" => Disk,
+    "sphere" => Sphere
+);
 
 /// Which distance falloff a point light uses.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -156,11 +149,7 @@ impl FalloffForm {
     }
 }
 
-impl NamedValue for FalloffForm {
-    const FLAG: &'static str = "--falloff-form";
-    const ALL: &'static [(&'static str, Self)] =
-        &[("quadratic", FalloffForm::Quadratic), ("linear", FalloffForm::Linear)];
-}
+crate::named_values!(FalloffForm, "--falloff-form", "quadratic" => Quadratic, "linear" => Linear);
 
 /// Most lights a scene may hold (the GPU uniform has this many slots; `MAX_LIGHTS` in WGSL).
 pub const MAX_LIGHTS: usize = 8;

@@ -77,28 +77,16 @@ impl Fresnel {
     }
 }
 
-impl NamedValue for Distribution {
-    const FLAG: &'static str = "--distribution";
-    const ALL: &'static [(&'static str, Self)] =
-        &[("beckmann", Distribution::Beckmann), ("ggx", Distribution::Ggx), ("blinn-phong", Distribution::BlinnPhong)];
-}
+crate::named_values!(Distribution, "--distribution", "beckmann" => Beckmann, "ggx" => Ggx, "blinn-phong" => BlinnPhong);
 
-impl NamedValue for Masking {
-    const FLAG: &'static str = "--masking";
-    const ALL: &'static [(&'static str, Self)] =
-        &[("v-groove", Masking::VGroove), ("smith", Masking::Smith), ("smith-correlated", Masking::SmithCorrelated)];
-}
+crate::named_values!(Masking, "--masking",
+    "v-groove" => VGroove, "smith" => Smith, "smith-correlated" => SmithCorrelated
+);
 
-impl NamedValue for Fresnel {
-    const FLAG: &'static str = "--fresnel";
-    const ALL: &'static [(&'static str, Self)] = &[("exact", Fresnel::Exact), ("schlick", Fresnel::Schlick)];
-}
+crate::named_values!(Fresnel, "--fresnel", "exact" => Exact, "schlick" => Schlick);
 
-/// The presets by name (`--microfacet`); a combination that is no preset has no name of its own.
-impl NamedValue for Microfacet {
-    const FLAG: &'static str = "--microfacet";
-    const ALL: &'static [(&'static str, Self)] = &[("chapter", Microfacet::CHAPTER), ("gltf", Microfacet::GLTF)];
-}
+// The presets by name (`--microfacet`); a combination that is no preset has no name of its own.
+crate::named_values!(Microfacet, "--microfacet", "chapter" => CHAPTER, "gltf" => GLTF);
 
 /// A term's name (the CLI's, the files' and the panel's word) and its parse.
 macro_rules! named_term {

@@ -3,8 +3,6 @@
 //! (1). [`IlluminationModel`] picks one of them or the Phong model (§3, with Phong or
 //! Cook–Torrance specular, [`super::brdf::SpecularModel`]).
 
-use crate::params::NamedValue;
-
 /// Which of the chapter's illumination models a scene is lit with (docs/model.md §3a).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub enum IlluminationModel {
@@ -33,14 +31,7 @@ impl IlluminationModel {
 
 // Given in scene files only (`extras.shadelab.illumination`); the command line's `--model` takes
 // a `ModelChoice`.
-impl NamedValue for IlluminationModel {
-    const FLAG: &'static str = "illumination";
-    const ALL: &'static [(&'static str, Self)] = &[
-        ("phong", IlluminationModel::Phong),
-        ("lambert", IlluminationModel::Lambert),
-        ("sum", IlluminationModel::Sum),
-    ];
-}
+crate::named_values!(IlluminationModel, "illumination", "phong" => Phong, "lambert" => Lambert, "sum" => Sum);
 
 /// The four models a user picks from (`--model`, the viewer's model menu): the chapter's 7.1
 /// (Lambert rule, four-term sum), 7.2 (Phong) and 7.3 (Cook–Torrance). The last two are the
@@ -100,15 +91,9 @@ impl ModelChoice {
     }
 }
 
-impl NamedValue for ModelChoice {
-    const FLAG: &'static str = "--model";
-    const ALL: &'static [(&'static str, Self)] = &[
-        ("lambert", ModelChoice::Lambert),
-        ("sum", ModelChoice::Sum),
-        ("phong", ModelChoice::Phong),
-        ("cook-torrance", ModelChoice::CookTorrance),
-    ];
-}
+crate::named_values!(ModelChoice, "--model",
+    "lambert" => Lambert, "sum" => Sum, "phong" => Phong, "cook-torrance" => CookTorrance
+);
 
 /// docs/model.md §1: the lit part of the Lambert rule for one light, `R·I·max(cos α, 0)`, per
 /// channel with `R` and `I` clamped to [0, 1] (the rule's domain).

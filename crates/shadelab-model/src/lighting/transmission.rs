@@ -37,11 +37,7 @@ pub enum AbsorptionChoice {
     Rule,
 }
 
-impl crate::params::NamedValue for AbsorptionChoice {
-    const FLAG: &'static str = "--absorption";
-    const ALL: &'static [(&'static str, Self)] =
-        &[("exact", AbsorptionChoice::Exact), ("rule", AbsorptionChoice::Rule)];
-}
+crate::named_values!(AbsorptionChoice, "--absorption", "exact" => Exact, "rule" => Rule);
 
 /// Where the glass pass finds a path's exit (`--glass-exit`, docs/transparency.md).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
@@ -53,11 +49,7 @@ pub enum GlassExit {
     BackFaces,
 }
 
-impl crate::params::NamedValue for GlassExit {
-    const FLAG: &'static str = "--glass-exit";
-    const ALL: &'static [(&'static str, Self)] =
-        &[("analytic", GlassExit::Analytic), ("back-faces", GlassExit::BackFaces)];
-}
+crate::named_values!(GlassExit, "--glass-exit", "analytic" => Analytic, "back-faces" => BackFaces);
 
 /// What a transparent object's pixels show (`--glass-view`, docs/transparency.md).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
@@ -74,15 +66,7 @@ pub enum GlassView {
     Regime,
 }
 
-impl crate::params::NamedValue for GlassView {
-    const FLAG: &'static str = "--glass-view";
-    const ALL: &'static [(&'static str, Self)] = &[
-        ("color", GlassView::Color),
-        ("tir", GlassView::Tir),
-        ("path", GlassView::Path),
-        ("regime", GlassView::Regime),
-    ];
-}
+crate::named_values!(GlassView, "--glass-view", "color" => Color, "tir" => Tir, "path" => Path, "regime" => Regime);
 
 impl GlassView {
     /// The view's code in the WGSL (`GLASS_VIEW_…`).

@@ -351,10 +351,7 @@ pub enum SmallAreaLights {
     Area,
 }
 
-impl shadelab_model::params::NamedValue for SmallAreaLights {
-    const FLAG: &'static str = "--small-area-lights";
-    const ALL: &'static [(&'static str, Self)] = &[("point", SmallAreaLights::Point), ("area", SmallAreaLights::Area)];
-}
+shadelab_model::named_values!(SmallAreaLights, "--small-area-lights", "point" => Point, "area" => Area);
 
 /// What `render --overlay` draws over the image.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -368,11 +365,9 @@ pub enum Overlay {
     Creases,
 }
 
-impl shadelab_model::params::NamedValue for Overlay {
-    const FLAG: &'static str = "--overlay";
-    const ALL: &'static [(&'static str, Self)] =
-        &[("terminator", Overlay::Terminator), ("normals", Overlay::Normals), ("creases", Overlay::Creases)];
-}
+shadelab_model::named_values!(Overlay, "--overlay",
+    "terminator" => Terminator, "normals" => Normals, "creases" => Creases
+);
 
 #[derive(Args, Debug)]
 #[command(allow_negative_numbers = true)]

@@ -155,68 +155,35 @@ impl ParamRange {
     }
 }
 
-/// Beckmann roughness `m` (docs/model.md §5). 0 is allowed (clamped to `M_MIN` inside the model); above 1
-/// the lobe is so wide the highlight has gone, and the white-furnace check covers [0.05, 1].
-pub const M: ParamRange =
-    ParamRange { flag: "--m", symbol: "m", meaning: "roughness m (Beckmann facet slope)", min: 0.0, max: 1.0 };
-/// The transmission share `1 − t` of the four-term sum's `I_t` (docs/model.md §2): glTF's
-/// transmission factor, 0 opaque.
-pub const TRANSMISSION: ParamRange = ParamRange {
-    flag: "--transmission",
-    symbol: "1 − t",
-    meaning: "transmission share 1 − t (0 opaque)",
-    min: 0.0,
-    max: 1.0,
-};
-/// A transparent material's refractive index `v` per channel, given directly (docs/transparency.md);
-/// without it `v` follows μ. 1 is no interface; diamond is 2.42, and 3 covers every clear solid.
-pub const IOR: ParamRange =
-    ParamRange { flag: "--ior", symbol: "v", meaning: "refractive index v (per channel)", min: 1.0, max: 3.0 };
-/// Absorption coefficient `a` per channel, per metre (docs/transparency.md), from the flag, the
-/// panel or a file: 5/m leaves under 1 % of the light after a metre (a·d = 5); a metal's 1e6/m
-/// the same after 5 µm, and `e^(−a·d)` is 0 in f64 long before that.
-pub const ABSORPTION: ParamRange = ParamRange {
-    flag: "--absorption-coef",
-    symbol: "a",
-    meaning: "absorption coefficient a per metre (per channel)",
-    min: 0.0,
-    max: 1e6,
-};
-/// A material's thickness `d` in metres, read from a file (`KHR_materials_volume`, extras).
-pub const THICKNESS: ParamRange =
-    ParamRange { flag: "d", symbol: "d", meaning: "thickness d in metres", min: 0.0, max: 1e6 };
-/// Phong exponent `h` (docs/model.md §3); "mirror" is accepted besides the numbers.
-pub const H: ParamRange = ParamRange {
-    flag: "--h",
-    symbol: "h",
-    meaning: "Phong exponent h (sharpness; 'mirror' for h = ∞)",
-    min: 1.0,
-    max: crate::guards::H_MAX,
-};
-/// Reflectance at normal incidence `μ`, per colour channel (docs/model.md §5).
-pub const MU: ParamRange = ParamRange {
-    flag: "--mu",
-    symbol: "μ",
-    meaning: "normal-incidence reflectance μ (per channel)",
-    min: 0.0,
-    max: 1.0,
-};
-/// Image width in pixels.
-pub const WIDTH: ParamRange =
-    ParamRange { flag: "--width", symbol: "w", meaning: "image width in pixels", min: 1.0, max: 8192.0 };
-/// Image height in pixels.
-pub const HEIGHT: ParamRange =
-    ParamRange { flag: "--height", symbol: "h", meaning: "image height in pixels", min: 1.0, max: 8192.0 };
-/// A shape's tessellation (segments around, or subdivisions per edge).
-pub const TESSELLATION: ParamRange = ParamRange {
-    flag: "--tessellation",
-    symbol: "n",
-    meaning: "tessellation (segments or subdivisions)",
-    min: 1.0,
-    max: 4096.0,
-};
-/// Colour channels, shares r_s, r_d, r_a and intensities in [0, 1].
-pub const UNIT: ParamRange = ParamRange { flag: "value", symbol: "", meaning: "a share or colour", min: 0.0, max: 1.0 };
+crate::param_ranges! {
+    /// Beckmann roughness `m` (docs/model.md §5). 0 is allowed (clamped to `M_MIN` inside the model); above 1
+    /// the lobe is so wide the highlight has gone, and the white-furnace check covers [0.05, 1].
+    pub const M = "--m", "m", "roughness m (Beckmann facet slope)", [0.0, 1.0];
+    /// The transmission share `1 − t` of the four-term sum's `I_t` (docs/model.md §2): glTF's
+    /// transmission factor, 0 opaque.
+    pub const TRANSMISSION = "--transmission", "1 − t", "transmission share 1 − t (0 opaque)", [0.0, 1.0];
+    /// A transparent material's refractive index `v` per channel, given directly (docs/transparency.md);
+    /// without it `v` follows μ. 1 is no interface; diamond is 2.42, and 3 covers every clear solid.
+    pub const IOR = "--ior", "v", "refractive index v (per channel)", [1.0, 3.0];
+    /// Absorption coefficient `a` per channel, per metre (docs/transparency.md), from the flag, the
+    /// panel or a file: 5/m leaves under 1 % of the light after a metre (a·d = 5); a metal's 1e6/m
+    /// the same after 5 µm, and `e^(−a·d)` is 0 in f64 long before that.
+    pub const ABSORPTION = "--absorption-coef", "a", "absorption coefficient a per metre (per channel)", [0.0, 1e6];
+    /// A material's thickness `d` in metres, read from a file (`KHR_materials_volume`, extras).
+    pub const THICKNESS = "d", "d", "thickness d in metres", [0.0, 1e6];
+    /// Phong exponent `h` (docs/model.md §3); "mirror" is accepted besides the numbers.
+    pub const H = "--h", "h", "Phong exponent h (sharpness; 'mirror' for h = ∞)", [1.0, crate::guards::H_MAX];
+    /// Reflectance at normal incidence `μ`, per colour channel (docs/model.md §5).
+    pub const MU = "--mu", "μ", "normal-incidence reflectance μ (per channel)", [0.0, 1.0];
+    /// Image width in pixels.
+    pub const WIDTH = "--width", "w", "image width in pixels", [1.0, 8192.0];
+    /// Image height in pixels.
+    pub const HEIGHT = "--height", "h", "image height in pixels", [1.0, 8192.0];
+    /// A shape's tessellation (segments around, or subdivisions per edge).
+    pub const TESSELLATION = "--tessellation", "n", "tessellation (segments or subdivisions)", [1.0, 4096.0];
+    /// Colour channels, shares r_s, r_d, r_a and intensities in [0, 1].
+    pub const UNIT = "value", "", "a share or colour", [0.0, 1.0];
+}
 /// Parse the Phong exponent: a number in `H`'s range, or `mirror`.
 pub fn parse_h(text: &str) -> Result<PhongExponent, ParamError> {
     if text.trim().eq_ignore_ascii_case("mirror") {
@@ -278,6 +245,18 @@ pub trait NamedValue: Sized + Copy + 'static {
 }
 
 crate::named_values!(ShadingMode, "--shading", "flat" => Flat, "gouraud" => Gouraud, "phong" => Phong);
+/// Declares [`ParamRange`] constants, one a line: `pub const NAME = flag, symbol, meaning,
+/// [min, max];`, each with its doc comment, so a range reads as the table row it is.
+#[macro_export]
+macro_rules! param_ranges {
+    ($($(#[$doc:meta])* $vis:vis const $name:ident = $flag:literal, $symbol:literal, $meaning:literal,
+        [$min:expr, $max:expr];)+) => {$(
+        $(#[$doc])*
+        $vis const $name: $crate::params::ParamRange =
+            $crate::params::ParamRange { flag: $flag, symbol: $symbol, meaning: $meaning, min: $min, max: $max };
+    )+};
+}
+
 /// Implements [`NamedValue`] for an enum from its flag and its `"name" => Variant` table, one
 /// line a few values, so each table is written once in the crate's own words.
 #[macro_export]
@@ -344,16 +323,11 @@ mod tests {
     }
 }
 
-/// Surface vertices a path-traced reference path has (docs/reference.md): 1 is the direct light
-/// alone; 64 carries a furnace of albedo 0.5 to within 1e-19 of its limit.
-pub const BOUNCES: ParamRange = ParamRange {
-    flag: "--bounces",
-    symbol: "N",
-    meaning: "surface vertices a path has (1: the direct light alone)",
-    min: 1.0,
-    max: 64.0,
-};
-/// Paths per pixel of the path-traced reference: 65 536 brings a pixel's noise 256 times under
-/// one path's.
-pub const SPP: ParamRange =
-    ParamRange { flag: "--spp", symbol: "spp", meaning: "paths per pixel", min: 1.0, max: 65536.0 };
+crate::param_ranges! {
+    /// Surface vertices a path-traced reference path has (docs/reference.md): 1 is the direct light
+    /// alone; 64 carries a furnace of albedo 0.5 to within 1e-19 of its limit.
+    pub const BOUNCES = "--bounces", "N", "surface vertices a path has (1: the direct light alone)", [1.0, 64.0];
+    /// Paths per pixel of the path-traced reference: 65 536 brings a pixel's noise 256 times under
+    /// one path's.
+    pub const SPP = "--spp", "spp", "paths per pixel", [1.0, 65536.0];
+}

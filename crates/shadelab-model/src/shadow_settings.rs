@@ -3,8 +3,6 @@
 //! and the layer plan (`shadows`), so that lights and the scene hold them without depending on
 //! the code that reads the scene.
 
-use crate::params::ParamRange;
-
 /// How the shadow map is filtered where a point is compared with it.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum ShadowFilter {
@@ -36,19 +34,14 @@ crate::named_values!(ShadowFilter, "--shadow-filter",
     "hard" => Hard, "pcf" => Pcf, "poisson" => Poisson, "pcss" => Pcss
 );
 
-/// Side of a light's shadow map in texels (a cube face's side for a point light).
-pub const SHADOW_RESOLUTION: ParamRange = ParamRange {
-    flag: "--shadow-resolution",
-    symbol: "N",
-    meaning: "shadow map resolution in texels",
-    min: 256.0,
-    max: 4096.0,
-};
+crate::param_ranges! {
+    /// Side of a light's shadow map in texels (a cube face's side for a point light).
+    pub const SHADOW_RESOLUTION = "--shadow-resolution", "N", "shadow map resolution in texels", [256.0, 4096.0];
 
-/// Taps of each of PCSS's two passes (blocker search, filter): 4 is a coarse but usable
-/// penumbra, 64 four times the default's cost; the study times several.
-pub const PCSS_TAPS: ParamRange =
-    ParamRange { flag: "--pcss-taps", symbol: "n", meaning: "taps of each PCSS pass", min: 4.0, max: 64.0 };
+    /// Taps of each of PCSS's two passes (blocker search, filter): 4 is a coarse but usable
+    /// penumbra, 64 four times the default's cost; the study times several.
+    pub const PCSS_TAPS = "--pcss-taps", "n", "taps of each PCSS pass", [4.0, 64.0];
+}
 
 /// The shadow map side a light gets unless it says otherwise.
 pub const SHADOW_RESOLUTION_DEFAULT: u32 = 2048;

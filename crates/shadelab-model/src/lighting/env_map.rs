@@ -11,32 +11,18 @@ use glam::DVec3;
 use std::f64::consts::{PI, TAU};
 use std::sync::Arc;
 
-/// The environment's scale: 0 (dark) to 10⁴ (a sky in the sun's units).
-pub const ENV_INTENSITY: ParamRange = ParamRange {
-    flag: "--env-intensity",
-    symbol: "I_env",
-    meaning: "the environment's intensity, a scale of its radiance",
-    min: 0.0,
-    max: 1e4,
-};
-/// The environment's turn about the up axis, in degrees.
-pub const ENV_ROTATION: ParamRange = ParamRange {
-    flag: "--env-rotation",
-    symbol: "φ_env",
-    meaning: "the environment's turn about the up axis, in degrees",
-    min: -360.0,
-    max: 360.0,
-};
+crate::param_ranges! {
+    /// The environment's scale: 0 (dark) to 10⁴ (a sky in the sun's units).
+    pub const ENV_INTENSITY = "--env-intensity", "I_env", "the environment's intensity, a scale of its radiance",
+        [0.0, 1e4];
+    /// The environment's turn about the up axis, in degrees.
+    pub const ENV_ROTATION = "--env-rotation", "φ_env", "the environment's turn about the up axis, in degrees",
+        [-360.0, 360.0];
 
-/// A uniform environment's radiance per channel: as `I_a`'s range, a little past 1 for a bright
-/// overcast sky.
-pub const ENV_RADIANCE: ParamRange = ParamRange {
-    flag: "--ambient",
-    symbol: "L_env",
-    meaning: "a uniform environment's radiance per channel",
-    min: 0.0,
-    max: 1e4,
-};
+    /// A uniform environment's radiance per channel: as `I_a`'s range, a little past 1 for a bright
+    /// overcast sky.
+    pub const ENV_RADIANCE = "--ambient", "L_env", "a uniform environment's radiance per channel", [0.0, 1e4];
+}
 
 /// The kinds of [`EnvSource`], by name (`extras.shadelab.environment.source`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

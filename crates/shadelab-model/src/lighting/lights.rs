@@ -163,50 +163,33 @@ pub const SPOT_OUTER_CONE_DEFAULT: f64 = std::f64::consts::FRAC_PI_4;
 /// about the same direction as before.
 pub const LIGHT_STAND_OFF: f64 = 6.0;
 
-/// Falloff factor `α` of `I0/(1 + α d²)` (docs/model.md §6).
-pub const FALLOFF: ParamRange =
-    ParamRange { flag: "--falloff", symbol: "α", meaning: "falloff factor α", min: 0.0, max: 1e6 };
-/// Minimum distance `d0` of the chapter's `1/(d + d0)` (docs/model.md §2); at least `D0_MIN`.
-pub const D0: ParamRange =
-    ParamRange { flag: "--d0", symbol: "d0", meaning: "minimum distance d0 of 1/(d + d0)", min: D0_MIN, max: 1e3 };
-/// Half-angle of a spot light's cone, radians (glTF `innerConeAngle`, `outerConeAngle`): from
-/// the axis (0) to a half-space (π/2).
-pub const CONE_ANGLE: ParamRange = ParamRange {
-    flag: "cone angle",
-    symbol: "θ",
-    meaning: "spot cone half-angle in radians",
-    min: 0.0,
-    max: std::f64::consts::FRAC_PI_2,
-};
+crate::param_ranges! {
+    /// Falloff factor `α` of `I0/(1 + α d²)` (docs/model.md §6).
+    pub const FALLOFF = "--falloff", "α", "falloff factor α", [0.0, 1e6];
+    /// Minimum distance `d0` of the chapter's `1/(d + d0)` (docs/model.md §2); at least `D0_MIN`.
+    pub const D0 = "--d0", "d0", "minimum distance d0 of 1/(d + d0)", [D0_MIN, 1e3];
+    /// Half-angle of a spot light's cone, radians (glTF `innerConeAngle`, `outerConeAngle`): from
+    /// the axis (0) to a half-space (π/2).
+    pub const CONE_ANGLE = "cone angle", "θ", "spot cone half-angle in radians", [0.0, std::f64::consts::FRAC_PI_2];
+}
 /// [`CONE_ANGLE`] with π/2 rounded up to f32, as glTF files store it.
 pub const CONE_ANGLE_F32: ParamRange = ParamRange { max: std::f32::consts::FRAC_PI_2 as f64, ..CONE_ANGLE };
-/// Distance at which a point or spot light ends (glTF `range`).
-pub const RANGE: ParamRange =
-    ParamRange { flag: "range", symbol: "r", meaning: "light range (where its light ends)", min: 1e-6, max: 1e9 };
-/// Light intensity `I_L` (an HDR multiplier of the light's colour).
-pub const INTENSITY: ParamRange =
-    ParamRange { flag: "intensity", symbol: "I_L", meaning: "light intensity I_L", min: 0.0, max: 1e3 };
+crate::param_ranges! {
+    /// Distance at which a point or spot light ends (glTF `range`).
+    pub const RANGE = "range", "r", "light range (where its light ends)", [1e-6, 1e9];
+    /// Light intensity `I_L` (an HDR multiplier of the light's colour).
+    pub const INTENSITY = "intensity", "I_L", "light intensity I_L", [0.0, 1e3];
 
-/// An area light's size in metres: a rectangle's width (and height), a disk's or sphere's
-/// diameter. 0 is the point-light limit; 10⁶ m is far beyond any scene (the sweep's huge light).
-pub const LIGHT_SIZE: ParamRange = ParamRange {
-    flag: "--light-size",
-    symbol: "w",
-    meaning: "area light size in m (rect side, disk or sphere diameter)",
-    min: 0.0,
-    max: 1e6,
-};
+    /// An area light's size in metres: a rectangle's width (and height), a disk's or sphere's
+    /// diameter. 0 is the point-light limit; 10⁶ m is far beyond any scene (the sweep's huge light).
+    pub const LIGHT_SIZE = "--light-size", "w", "area light size in m (rect side, disk or sphere diameter)", [0.0, 1e6];
 
-/// How many point sources an area light is replaced by (0: none, the exact area form). 16
-/// points take 96 shadow-map layers (a cube each), which is what one light may take of
-/// `MAX_SHADOW_LAYERS`.
-pub const AREA_POINTS: ParamRange = ParamRange {
-    flag: "--area-points",
-    symbol: "k",
-    meaning: "point sources an area light is replaced by (0: exact area form)",
-    min: 0.0,
-    max: 16.0,
-};
+    /// How many point sources an area light is replaced by (0: none, the exact area form). 16
+    /// points take 96 shadow-map layers (a cube each), which is what one light may take of
+    /// `MAX_SHADOW_LAYERS`.
+    pub const AREA_POINTS = "--area-points", "k", "point sources an area light is replaced by (0: exact area form)",
+        [0.0, 16.0];
+}
 
 /// The size an area light gets when a light is made one: half a metre, about the built-in
 /// scenes' objects' size, so its penumbra is plain to see.

@@ -6,14 +6,10 @@
 
 use glam::DVec3;
 
-/// The turbidity the model was fitted for: 2 (clear, arctic air) to 10 (haze).
-pub const TURBIDITY: crate::params::ParamRange = crate::params::ParamRange {
-    flag: "--turbidity",
-    symbol: "T",
-    meaning: "the sky's turbidity (2 clear to 10 hazy)",
-    min: 2.0,
-    max: 10.0,
-};
+crate::param_ranges! {
+    /// The turbidity the model was fitted for: 2 (clear, arctic air) to 10 (haze).
+    pub const TURBIDITY = "--turbidity", "T", "the sky's turbidity (2 clear to 10 hazy)", [2.0, 10.0];
+}
 
 /// The cosine of a view's angle from the zenith is taken as at least this in Perez's `1/cos θ`:
 /// at the horizon the term `e^{B/cos θ}` (with `B < 0`) is e^{-30} at most there, so the sky stays

@@ -170,14 +170,10 @@ pub struct BenchRenderArgs {
     pub point_lights: Option<u32>,
 }
 
-/// Runs of each timing: the table gives their median.
-pub const REFERENCE_RUNS: shadelab_model::params::ParamRange = shadelab_model::params::ParamRange {
-    flag: "--runs",
-    symbol: "runs",
-    meaning: "timed runs of each row",
-    min: 1.0,
-    max: 100.0,
-};
+shadelab_model::param_ranges! {
+    /// Runs of each timing: the table gives their median.
+    pub const REFERENCE_RUNS = "--runs", "runs", "timed runs of each row", [1.0, 100.0];
+}
 
 #[derive(Args, Debug)]
 pub struct BenchReferenceArgs {

@@ -115,14 +115,10 @@ pub struct CompareArgs {
     pub max_flip: Option<f64>,
 }
 
-/// `compare --max-flip`: a FLIP error lies in [0, 1].
-pub const FLIP_MEAN: shadelab_model::params::ParamRange = shadelab_model::params::ParamRange {
-    flag: "--max-flip",
-    symbol: "FLIP",
-    meaning: "largest FLIP mean accepted",
-    min: 0.0,
-    max: 1.0,
-};
+shadelab_model::param_ranges! {
+    /// `compare --max-flip`: a FLIP error lies in [0, 1].
+    pub const FLIP_MEAN = "--max-flip", "FLIP", "largest FLIP mean accepted", [0.0, 1.0];
+}
 
 #[derive(Args, Debug)]
 pub struct LobeArgs {

@@ -8,32 +8,22 @@ use shadelab_model::params::{self, NamedValue, ParamError, ParamRange, PhongExpo
 use std::ffi::OsStr;
 use std::sync::Arc;
 
-/// Warm-up frames of a benchmark (at least one is always drawn, to build the pipelines).
-pub const WARMUP: ParamRange =
-    ParamRange { flag: "--warmup", symbol: "N", meaning: "number of warm-up frames", min: 0.0, max: 1e6 };
+shadelab_model::param_ranges! {
+    /// Warm-up frames of a benchmark (at least one is always drawn, to build the pipelines).
+    pub const WARMUP = "--warmup", "N", "number of warm-up frames", [0.0, 1e6];
 
-/// Frames for benchmarks and the viewer's --exit-after-frames.
-pub const FRAMES: ParamRange =
-    ParamRange { flag: "--frames", symbol: "N", meaning: "number of frames", min: 1.0, max: 1e6 };
+    /// Frames for benchmarks and the viewer's --exit-after-frames.
+    pub const FRAMES = "--frames", "N", "number of frames", [1.0, 1e6];
 
-/// `bench render --point-lights`: how many point lights replace the scene's, each in
-/// [1, MAX_LIGHTS], the uniform's slots.
-pub const POINT_LIGHTS: ParamRange = ParamRange {
-    flag: "--point-lights",
-    symbol: "N",
-    meaning: "number of point lights (MAX_LIGHTS)",
-    min: 1.0,
-    max: shadelab_model::lighting::lights::MAX_LIGHTS as f64,
-};
+    /// `bench render --point-lights`: how many point lights replace the scene's, each in
+    /// [1, MAX_LIGHTS], the uniform's slots.
+    pub const POINT_LIGHTS = "--point-lights", "N", "number of point lights (MAX_LIGHTS)",
+        [1.0, shadelab_model::lighting::lights::MAX_LIGHTS as f64];
 
-/// Triangle counts of `bench mesh --triangles`: each in [1, MAX_TRIANGLES], what the loader takes.
-pub const MESH_TRIANGLES: ParamRange = ParamRange {
-    flag: "--triangles",
-    symbol: "N",
-    meaning: "triangle count (MAX_TRIANGLES)",
-    min: 1.0,
-    max: shadelab_model::gltf_io::MAX_TRIANGLES as f64,
-};
+    /// Triangle counts of `bench mesh --triangles`: each in [1, MAX_TRIANGLES], what the loader takes.
+    pub const MESH_TRIANGLES = "--triangles", "N", "triangle count (MAX_TRIANGLES)",
+        [1.0, shadelab_model::gltf_io::MAX_TRIANGLES as f64];
+}
 
 /// One of the model's rules reading a flag's text.
 type Rule<T> = Arc<dyn Fn(&str) -> Result<T, ParamError> + Send + Sync>;

@@ -26,29 +26,6 @@ pub fn shade(
     specular: SpecularModel,
     model: IlluminationModel,
 ) -> [f64; 3] {
-    shade_with_visibility(p, n_in, eye, mat, lights, ambient, specular, model, |_, _, _, _| 1.0)
-}
-
-/// [`shade`] with each light's term scaled by `visibility(i, light, j, l)`, the share of light
-/// `i` (its point source `j` where it is drawn as points, else 0) that reaches `p` along the unit
-/// direction `l` to it (1: lit, 0: in a cast shadow). It is
-/// asked only of lights that would add something (a non-zero term), so a point in its own
-/// shadow (N·L ≤ 0) costs no shadow query; a visibility of 1 adds the term exactly as `shade`.
-/// The Lambert rule's fill and the four-term sum's transmitted term are not shadowed: the fill
-/// stands for light from everywhere, and the transmitted light is what passes the body that the
-/// shadow test would find in the way.
-#[allow(clippy::too_many_arguments)]
-pub fn shade_with_visibility(
-    p: DVec3,
-    n_in: DVec3,
-    eye: DVec4,
-    mat: &Material,
-    lights: &[Light],
-    ambient: [f64; 3],
-    specular: SpecularModel,
-    model: IlluminationModel,
-    visibility: impl FnMut(usize, &Light, u32, DVec3) -> f64,
-) -> [f64; 3] {
     let at = ShadePoint {
         p,
         n_in,
@@ -61,7 +38,7 @@ pub fn shade_with_visibility(
         specular,
         model,
     };
-    shade_exact(&at, lights, visibility, &mut |_| None)
+    shade_exact(&at, lights, |_, _, _, _| 1.0, &mut |_| None)
 }
 
 /// Where and how [`shade_exact`] shades.
@@ -98,8 +75,14 @@ pub struct AreaAt<'a> {
     pub specular: SpecularModel,
 }
 
-/// [`shade_with_visibility`], where `exact` may give an area light's whole term, shadowed, in
-/// place of its drawn one: for an area light with its exact form under the Phong model, a `Some`
+/// [`shade`] at `at`, each light's term scaled by `visibility(i, light, j, l)`, the share of
+/// light `i` (its point source `j` where it is drawn as points, else 0) that reaches `p` along
+/// the unit direction `l` to it (1: lit, 0: in a cast shadow). It is asked only of lights that
+/// would add something, so a point in its own shadow (N·L ≤ 0) costs no shadow query. The Lambert
+/// rule's fill and the four-term sum's transmitted term are not shadowed: the fill stands for
+/// light from everywhere, and the transmitted light is what passes the body that the shadow test
+/// would find in the way. `exact` may give an area light's whole term, shadowed, in place of its
+/// drawn one: for an area light with its exact form under the Phong model, a `Some`
 /// is added as it is (the visibility is not asked), a `None` keeps the drawn term. The reference
 /// passes [`super::area_exact`]'s integral.
 pub fn shade_exact(

@@ -9,7 +9,6 @@ use super::scene_file::{Reader, num, quat, vec3};
 use crate::scene::{COMPOSED_ASPECT, Camera};
 use glam::{DMat3, DMat4, DQuat, DVec3};
 use gltf::json;
-use serde::{Deserialize, Serialize};
 use serde_json::{Value, json};
 
 /// Field of view of a camera placed by the loader (no camera in the file, or an orthographic one):
@@ -26,21 +25,20 @@ const UP_OFF_AXIS: f64 = 1e-12;
 /// …and give the node's view matrix to this.
 const UP_SAME_VIEW: f64 = 1e-6;
 
-/// `extras.shadelab` of a camera: the eye exactly (the node's fields are read as f32), the orbit
-/// pivot and the up vector (the node's rotation alone does not keep them) and the projection,
-/// each used when it agrees with the file's own fields (fields in the order they are checked).
-#[derive(Default, Serialize, Deserialize)]
-#[serde(default)]
-struct CameraExtras {
-    eye: Option<Vec3>,
-    fov_y_deg: Option<Number>,
-    near: Option<Number>,
-    far: Option<Number>,
-    target: Option<Vec3>,
-    up: Option<Vec3>,
-    /// An orthographic camera's half height (left out for a perspective camera).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    ymag: Option<Number>,
+super::extras_struct! {
+    /// `extras.shadelab` of a camera: the eye exactly (the node's fields are read as f32), the orbit
+    /// pivot and the up vector (the node's rotation alone does not keep them) and the projection,
+    /// each used when it agrees with the file's own fields (fields in the order they are checked).
+    struct CameraExtras {
+        eye: Option<Vec3>,
+        fov_y_deg: Option<Number>,
+        near: Option<Number>,
+        far: Option<Number>,
+        target: Option<Vec3>,
+        up: Option<Vec3>,
+        /// An orthographic camera's half height (left out for a perspective camera).
+        ymag: Option<Number>,
+    }
 }
 
 impl Reader<'_> {

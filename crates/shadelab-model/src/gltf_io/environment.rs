@@ -9,35 +9,27 @@ use super::extras::{EnvIntensity, EnvRadiance, EnvRotation, Flag, Named, Num, Rg
 use super::scene_file::Cx;
 use crate::lighting::env_file::{MAX_ENV_FILE_BYTES, read_env_image};
 use crate::lighting::env_map::{EnvKind, EnvSource, Environment};
-use serde::{Deserialize, Serialize};
 use std::sync::Arc;
 
-/// `extras.shadelab.environment` (fields in the order they are checked).
-#[derive(Default, Serialize, Deserialize)]
-#[serde(default)]
-pub(super) struct EnvironmentExtras {
-    source: Option<Named<EnvKind>>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    color: Option<Rgb<EnvRadiance>>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    turbidity: Option<Num<Turbidity>>,
-    /// Toward the sun; absent: the sky follows the first directional light.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    sun: Option<Vec3>,
-    /// The map file, relative to the scene file.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    uri: Option<String>,
-    intensity: Option<Num<EnvIntensity>>,
-    rotation: Option<Num<EnvRotation>>,
-    /// False: the GPU leaves out its split-sum specular; absent is true.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    specular: Option<Flag>,
-    /// True: the GPU occludes its diffuse light by the precomputed grid; absent is false.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    occlusion: Option<Flag>,
-    /// True: drawn where the camera sees nothing, in place of the background; absent is false.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    background: Option<Flag>,
+super::extras_struct! {
+    /// `extras.shadelab.environment` (fields in the order they are checked).
+    pub(super) struct EnvironmentExtras {
+        source: Option<Named<EnvKind>>,
+        color: Option<Rgb<EnvRadiance>>,
+        turbidity: Option<Num<Turbidity>>,
+        /// Toward the sun; absent: the sky follows the first directional light.
+        sun: Option<Vec3>,
+        /// The map file, relative to the scene file.
+        uri: Option<String>,
+        intensity: Option<Num<EnvIntensity>>,
+        rotation: Option<Num<EnvRotation>>,
+        /// False: the GPU leaves out its split-sum specular; absent is true.
+        specular: Option<Flag>,
+        /// True: the GPU occludes its diffuse light by the precomputed grid; absent is false.
+        occlusion: Option<Flag>,
+        /// True: drawn where the camera sees nothing, in place of the background; absent is false.
+        background: Option<Flag>,
+    }
 }
 
 /// The environment `ex` describes; its map from a data URI or a file read through `externals`. A source without what it

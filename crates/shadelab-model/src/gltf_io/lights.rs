@@ -18,50 +18,40 @@ use glam::{DMat4, DQuat, DVec3};
 use gltf::json;
 use gltf::json::extensions::scene::khr_lights_punctual as khr;
 use gltf::json::validation::Checked;
-use serde::{Deserialize, Serialize};
 use serde_json::{Value, json};
 
-/// `extras.shadelab` of a light: the chapter's parameters exactly, and the exact placement (the
-/// node's fields are read as f32), used when it agrees (fields in the order they are checked).
-#[derive(Default, Serialize, Deserialize)]
-#[serde(default)]
-struct LightExtras {
-    #[serde(rename = "I_L")]
-    intensity: Option<Num<Intensity>>,
-    color: Option<Rgb<Unit>>,
-    /// Falloff α.
-    alpha: Option<Num<Falloff>>,
-    d0: Option<Num<D0>>,
-    falloff_form: Option<Named<FalloffForm>>,
-    position: Option<Vec3>,
-    direction: Option<Vec3>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    inner_cone: Option<Num<Cone>>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    outer_cone: Option<Num<Cone>>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    range: Option<Num<LightRange>>,
-    /// The light's `ShadowSettings` (`crate::shadows`).
-    casts_shadows: Option<Flag>,
-    shadow_resolution: Option<Count<ShadowSide>>,
-    shadow_filter: Option<Named<ShadowFilter>>,
-    shadow_cascades: Option<Flag>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pcss_taps: Option<Count<PcssTaps>>,
-    /// An area light (`rect`, `disk`, `sphere`; KHR_lights_punctual has none): the file's light
-    /// is its point light (sphere) or hemisphere spot light (rectangle, disk), which other
-    /// viewers draw; shadelab draws the area light its centre, size and tangent describe.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    area: Option<Named<LightKind>>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    width: Option<Num<LightSize>>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    height: Option<Num<LightSize>>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    tangent: Option<Vec3>,
-    /// How many point sources the area light is drawn as (0: its exact area form).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    points: Option<Count<AreaPoints>>,
+super::extras_struct! {
+    /// `extras.shadelab` of a light: the chapter's parameters exactly, and the exact placement (the
+    /// node's fields are read as f32), used when it agrees (fields in the order they are checked).
+    struct LightExtras {
+        #[serde(rename = "I_L")]
+        intensity: Option<Num<Intensity>>,
+        color: Option<Rgb<Unit>>,
+        /// Falloff α.
+        alpha: Option<Num<Falloff>>,
+        d0: Option<Num<D0>>,
+        falloff_form: Option<Named<FalloffForm>>,
+        position: Option<Vec3>,
+        direction: Option<Vec3>,
+        inner_cone: Option<Num<Cone>>,
+        outer_cone: Option<Num<Cone>>,
+        range: Option<Num<LightRange>>,
+        /// The light's `ShadowSettings` (`crate::shadows`).
+        casts_shadows: Option<Flag>,
+        shadow_resolution: Option<Count<ShadowSide>>,
+        shadow_filter: Option<Named<ShadowFilter>>,
+        shadow_cascades: Option<Flag>,
+        pcss_taps: Option<Count<PcssTaps>>,
+        /// An area light (`rect`, `disk`, `sphere`; KHR_lights_punctual has none): the file's light
+        /// is its point light (sphere) or hemisphere spot light (rectangle, disk), which other
+        /// viewers draw; shadelab draws the area light its centre, size and tangent describe.
+        area: Option<Named<LightKind>>,
+        width: Option<Num<LightSize>>,
+        height: Option<Num<LightSize>>,
+        tangent: Option<Vec3>,
+        /// How many point sources the area light is drawn as (0: its exact area form).
+        points: Option<Count<AreaPoints>>,
+    }
 }
 
 impl Reader<'_> {

@@ -10,7 +10,6 @@ use crate::params::PhongExponent;
 use crate::scene::{FresnelMix, Material, MetalRoughnessMap, NormalMap, OcclusionMap, Scene};
 use gltf::json;
 use gltf::json::validation::Checked;
-use serde::{Deserialize, Serialize};
 use serde_json::{Value, json};
 
 /// An index of refraction this close to glTF's default is not written (`KHR_materials_ior`
@@ -19,62 +18,52 @@ const IOR_DEFAULT_TOLERANCE: f64 = 1e-9;
 /// μ channels this close are one grey μ (no `KHR_materials_specular` colour written).
 const MU_GREY_TOLERANCE: f64 = 1e-12;
 
-/// `extras.shadelab` of a material: every parameter of the chapter's material, exactly (fields in
-/// the order they are checked).
-#[derive(Default, Serialize, Deserialize)]
-#[serde(default)]
-struct MaterialExtras {
-    /// Diffuse colour C.
-    #[serde(rename = "C")]
-    color: Option<Rgb<Unit>>,
-    m: Option<Num<Roughness>>,
-    h: Option<Phong>,
-    mu: Option<Rgb<Mu>>,
-    r_s: Option<Num<Unit>>,
-    r_d: Option<Num<Unit>>,
-    r_a: Option<Num<Unit>>,
-    /// Transmission t.
-    t: Option<Num<Unit>>,
-    /// Absorption a per channel.
-    a: Option<Rgb<Absorption>>,
-    /// Thickness d.
-    d: Option<Num<Thickness>>,
-    /// The part of μ the base colour sets (`Material::mu_tinted`).
-    mu_t: Option<Rgb<Mu>>,
-    /// Emission I_e, exactly (glTF's `emissiveFactor` is f32).
-    #[serde(rename = "I_e", skip_serializing_if = "Option::is_none")]
-    emission: Option<Rgb<Unit>>,
-    /// `M·F0` of a metallic–roughness texture (`MetalRoughnessMap::metallic_f0`).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    mf0: Option<Rgb<Mu>>,
-    /// The refractive index v given directly (`Material::ior`); absent: from μ.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    ior: Option<Rgb<Ior>>,
-    /// The Cook–Torrance terms D, G and F (`Material::microfacet`); each absent: the chapter's
-    /// term when the material has `extras.shadelab`, else glTF's (docs/scene-files.md).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    distribution: Option<Named<Distribution>>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    masking: Option<Named<Masking>>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    fresnel: Option<Named<Fresnel>>,
-    /// Phong's lobe normalized (`Material::phong_normalized`); written only when true.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    phong_normalized: Option<Flag>,
-    /// The microfacet lobe's multiple-scattering compensation (`Microfacet::multiple_scattering`);
-    /// written only when true.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    multiple_scattering: Option<Flag>,
-    /// The diffuse weighted by the dielectric layer's Fresnel (`Microfacet::fresnel_mix`); absent:
-    /// as `distribution`. Its layer's F0 and weight (`Material::fresnel_mix`), each written
-    /// where it is not the default (0.04, 1); without `extras.shadelab` they come from the
-    /// file's ior and specular extensions.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    fresnel_mix: Option<Flag>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    mix_f0: Option<Num<Mu>>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    mix_weight: Option<Num<Unit>>,
+super::extras_struct! {
+    /// `extras.shadelab` of a material: every parameter of the chapter's material, exactly (fields in
+    /// the order they are checked).
+    struct MaterialExtras {
+        /// Diffuse colour C.
+        #[serde(rename = "C")]
+        color: Option<Rgb<Unit>>,
+        m: Option<Num<Roughness>>,
+        h: Option<Phong>,
+        mu: Option<Rgb<Mu>>,
+        r_s: Option<Num<Unit>>,
+        r_d: Option<Num<Unit>>,
+        r_a: Option<Num<Unit>>,
+        /// Transmission t.
+        t: Option<Num<Unit>>,
+        /// Absorption a per channel.
+        a: Option<Rgb<Absorption>>,
+        /// Thickness d.
+        d: Option<Num<Thickness>>,
+        /// The part of μ the base colour sets (`Material::mu_tinted`).
+        mu_t: Option<Rgb<Mu>>,
+        /// Emission I_e, exactly (glTF's `emissiveFactor` is f32).
+        #[serde(rename = "I_e")]
+        emission: Option<Rgb<Unit>>,
+        /// `M·F0` of a metallic–roughness texture (`MetalRoughnessMap::metallic_f0`).
+        mf0: Option<Rgb<Mu>>,
+        /// The refractive index v given directly (`Material::ior`); absent: from μ.
+        ior: Option<Rgb<Ior>>,
+        /// The Cook–Torrance terms D, G and F (`Material::microfacet`); each absent: the chapter's
+        /// term when the material has `extras.shadelab`, else glTF's (docs/scene-files.md).
+        distribution: Option<Named<Distribution>>,
+        masking: Option<Named<Masking>>,
+        fresnel: Option<Named<Fresnel>>,
+        /// Phong's lobe normalized (`Material::phong_normalized`); written only when true.
+        phong_normalized: Option<Flag>,
+        /// The microfacet lobe's multiple-scattering compensation (`Microfacet::multiple_scattering`);
+        /// written only when true.
+        multiple_scattering: Option<Flag>,
+        /// The diffuse weighted by the dielectric layer's Fresnel (`Microfacet::fresnel_mix`); absent:
+        /// as `distribution`. Its layer's F0 and weight (`Material::fresnel_mix`), each written
+        /// where it is not the default (0.04, 1); without `extras.shadelab` they come from the
+        /// file's ior and specular extensions.
+        fresnel_mix: Option<Flag>,
+        mix_f0: Option<Num<Mu>>,
+        mix_weight: Option<Num<Unit>>,
+    }
 }
 
 impl Reader<'_> {

@@ -14,7 +14,6 @@ use crate::scene::{Object, Scene, Shape};
 use glam::DVec3;
 use gltf::json;
 use gltf::json::validation::Checked;
-use serde::{Deserialize, Serialize};
 use serde_json::{Value, json};
 use std::collections::HashMap;
 
@@ -24,14 +23,14 @@ pub(super) const TRIANGLES: u32 = 4;
 /// Positions went through f32: 1e-6 relative is a few f32 ulps.
 const ANALYTIC_TOLERANCE: f64 = 1e-6;
 
-/// `extras.shadelab` of a mesh that is an analytic shape's tessellation. Both are read leniently:
-/// an unknown shape is a plain mesh, and the tessellation is checked only for a known shape.
-#[derive(Default, Serialize, Deserialize)]
-#[serde(default)]
-struct MeshExtras {
-    /// `Shape::name`.
-    shape: Option<Lenient<String>>,
-    tessellation: Option<Lenient<u64>>,
+super::extras_struct! {
+    /// `extras.shadelab` of a mesh that is an analytic shape's tessellation. Both are read leniently:
+    /// an unknown shape is a plain mesh, and the tessellation is checked only for a known shape.
+    struct MeshExtras {
+        /// `Shape::name`.
+        shape: Option<Lenient<String>>,
+        tessellation: Option<Lenient<u64>>,
+    }
 }
 
 /// One glTF mesh primitive, read once and shared by every node that shows it.

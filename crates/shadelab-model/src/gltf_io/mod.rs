@@ -64,6 +64,20 @@
 //! their checked decoding (each concept declares its own `extras.shadelab` object as a serde
 //! type, one field per key of the table above); `synthetic.rs` the generated benchmark meshes.
 
+/// Declares an `extras.shadelab` struct: every field an `Option`, absent when read as `None`,
+/// and left out when written as `None` (a key given as `null` is a bad value, not an absent one).
+macro_rules! extras_struct {
+    ($(#[$m:meta])* $vis:vis struct $name:ident { $($(#[$fm:meta])* $field:ident: $ty:ty,)* }) => {
+        $(#[$m])*
+        #[derive(Default, serde::Serialize, serde::Deserialize)]
+        #[serde(default)]
+        $vis struct $name {
+            $($(#[$fm])* #[serde(skip_serializing_if = "Option::is_none")] $field: $ty,)*
+        }
+    };
+}
+use extras_struct;
+
 mod accessors;
 mod cameras;
 mod confine;

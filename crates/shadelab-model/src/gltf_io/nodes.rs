@@ -12,7 +12,6 @@ use crate::mesh::TriangleMesh;
 use crate::scene::{Material, Object, Scene, Shape, Transform};
 use glam::{DMat3, DMat4, DQuat, DVec3};
 use gltf::json;
-use serde::{Deserialize, Serialize};
 use serde_json::{Value, json};
 
 /// A rotation's x or z component below this is no rotation about x or z: the world transform
@@ -22,14 +21,14 @@ const ABOUT_Y_ONLY: f64 = 1e-9;
 /// A quaternion whose squared length is below this names no rotation.
 const QUAT_LENGTH_SQUARED_MIN: f64 = 1e-12;
 
-/// `extras.shadelab` of an object's node: its exact f64 transform (the node's own fields are read
-/// as f32), used when it agrees with them (fields in the order they are checked).
-#[derive(Default, Serialize, Deserialize)]
-#[serde(default)]
-struct NodeExtras {
-    rotation_y: Option<Number>,
-    translation: Option<Vec3>,
-    scale: Option<Vec3>,
+super::extras_struct! {
+    /// `extras.shadelab` of an object's node: its exact f64 transform (the node's own fields are read
+    /// as f32), used when it agrees with them (fields in the order they are checked).
+    struct NodeExtras {
+        rotation_y: Option<Number>,
+        translation: Option<Vec3>,
+        scale: Option<Vec3>,
+    }
 }
 
 impl Reader<'_> {

@@ -12,7 +12,6 @@ use crate::params::{IlluminationModel, ShadingMode, SpecularModel};
 use crate::scene::{Camera, Scene};
 use glam::{DQuat, DVec3};
 use gltf::json;
-use serde::{Deserialize, Serialize};
 use serde_json::{Value, json};
 use std::borrow::Cow;
 use std::collections::HashMap;
@@ -31,25 +30,20 @@ pub const SUPPORTED_EXTENSIONS: &[&str] = &[
     "KHR_texture_transform",
 ];
 
-/// `extras.shadelab` of the glTF scene (fields in the order they are checked).
-#[derive(Default, Serialize, Deserialize)]
-#[serde(default)]
-struct SceneExtras {
-    /// `I_amb`.
-    ambient: Option<Rgb<Unit>>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    shading: Option<Named<ShadingMode>>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    specular: Option<Named<SpecularModel>>,
-    /// The illumination model; absent is the Phong model.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    illumination: Option<Named<IlluminationModel>>,
-    /// How transparent objects absorb; absent is the chapter's rule.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    absorption: Option<Named<crate::lighting::transmission::AbsorptionChoice>>,
-    /// The environment light; absent: none.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    environment: Option<super::environment::EnvironmentExtras>,
+super::extras_struct! {
+    /// `extras.shadelab` of the glTF scene (fields in the order they are checked).
+    struct SceneExtras {
+        /// `I_amb`.
+        ambient: Option<Rgb<Unit>>,
+        shading: Option<Named<ShadingMode>>,
+        specular: Option<Named<SpecularModel>>,
+        /// The illumination model; absent is the Phong model.
+        illumination: Option<Named<IlluminationModel>>,
+        /// How transparent objects absorb; absent is the chapter's rule.
+        absorption: Option<Named<crate::lighting::transmission::AbsorptionChoice>>,
+        /// The environment light; absent: none.
+        environment: Option<super::environment::EnvironmentExtras>,
+    }
 }
 
 /// Read a scene file (`.gltf` or `.glb`; external buffers and images inside the file's folder).

@@ -23,10 +23,6 @@ fn draw(scene: &Scene, specular: SpecularModel) -> LinearImage {
     render_image(gpu(), scene, W, H, &RenderSettings::new(ShadingMode::Phong, specular)).unwrap()
 }
 
-fn max_abs_diff(a: &LinearImage, b: &LinearImage) -> f32 {
-    a.pixels.iter().zip(&b.pixels).flat_map(|(p, q)| (0..3).map(move |c| (p[c] - q[c]).abs())).fold(0.0, f32::max)
-}
-
 /// Each area kind, 1.5 m wide above a fine sphere on the ground, drawn by the GPU matches its
 /// f64 twin (`render_drawn`: the exact edge formula or cap and the same representative point, in
 /// f64) on every interior pixel as closely as a point light does there, with either specular
@@ -78,12 +74,12 @@ fn a_zero_size_area_light_draws_the_point_light() {
     let specular = SpecularModel::CookTorrance;
     let point = draw(&scene_with(LightKind::Point, 0.0), specular);
     let sphere = draw(&scene_with(LightKind::Sphere, 0.0), specular);
-    let diff = max_abs_diff(&point, &sphere);
+    let diff = crate::max_rgb_gap(&point.pixels, &sphere.pixels);
     assert!(diff <= 1e-3, "zero-size sphere vs point light: {diff}");
     let rect = draw(&scene_with(LightKind::Rect, 0.0), specular);
     let darker = point.pixels.iter().zip(&rect.pixels).all(|(p, r)| (0..3).all(|c| r[c] <= p[c] + 1e-5));
     assert!(darker, "a Lambertian point never adds to the isotropic one");
-    assert!(max_abs_diff(&point, &rect) > 1e-2, "the rectangle's cos θ_l must show");
+    assert!(crate::max_rgb_gap(&point.pixels, &rect.pixels) > 1e-2, "the rectangle's cos θ_l must show");
 }
 
 /// The light the sphere of `scene` reflects to the camera, summed over its pixels, and the same
@@ -148,11 +144,6 @@ fn the_representative_point_against_the_exact_integral() {
         render_reference(&matte, SpecularModel::CookTorrance, w, h),
         render_drawn(&matte, SpecularModel::CookTorrance, w, h),
     );
-    let diffuse_gap = exact
-        .pixels
-        .iter()
-        .zip(&drawn.pixels)
-        .flat_map(|(a, b)| (0..3).map(move |c| (a[c] - b[c]).abs()))
-        .fold(0.0, f64::max);
+    let diffuse_gap = crate::max_rgb_gap(&exact.pixels, &drawn.pixels);
     assert!(diffuse_gap < 1e-12, "the diffuse moved by {diffuse_gap}");
 }

@@ -32,12 +32,7 @@ fn a_one_texel_map_draws_the_uniform_ambient() {
     lit.environment.as_mut().unwrap().specular = false;
     let env = draw(&lit);
     let constant = draw(&scene);
-    let worst = env
-        .pixels
-        .iter()
-        .zip(&constant.pixels)
-        .flat_map(|(p, q)| (0..3).map(move |c| (p[c] - q[c]).abs()))
-        .fold(0.0f32, f32::max);
+    let worst = crate::max_rgb_gap(&env.pixels, &constant.pixels);
     eprintln!("1×1 map against I_a: max |difference| {worst:.2e}");
     assert!(worst < 1e-5, "{worst}");
 }

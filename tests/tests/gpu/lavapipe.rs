@@ -242,12 +242,7 @@ fn the_light_loop_built_for_the_scene_draws_what_the_uniform_loop_draws() {
         let (a, b) = (draw(&mut r, fixed), draw(&mut r, dynamic));
         let lit = a.pixels.iter().filter(|p| p[..3] != a.pixels[0][..3]).count();
         assert!(lit > (w * h) as usize / 4, "{shading:?}: only {lit} pixels differ from the corner");
-        let worst = a
-            .pixels
-            .iter()
-            .zip(&b.pixels)
-            .flat_map(|(p, q)| (0..3).map(move |c| (p[c] - q[c]).abs()))
-            .fold(0.0, f32::max);
+        let worst = crate::max_rgb_gap(&a.pixels, &b.pixels);
         assert!(worst <= 1e-5, "{shading:?}: the fixed and the uniform light loops differ by {worst}");
     }
 }

@@ -1,7 +1,7 @@
 //! The viewer's area lights, driven by egui_kittest on lavapipe: a light too small on screen is
 //! drawn as a point light and the panel says why; a light as k point sources draws with its slider.
 
-use crate::harness::harness_of_height;
+use crate::harness::{click, harness_of_height, keep_for_a_look};
 use egui_kittest::kittest::Queryable;
 use shadelab_model::{LightKind, Overrides};
 
@@ -31,11 +31,9 @@ fn a_light_as_point_sources_has_its_slider_and_draws() {
     let points = Overrides { light: Some(LightKind::Disk), area_points: Some(4), ..Default::default() };
     h.state_mut().scene_mut().apply(&points);
     h.run_steps(2);
-    h.get_by_label("L1 — disk").click();
-    h.run_steps(3);
+    click(&mut h, "L1 — disk");
     assert!(h.query_all_by_label("points k (0 = exact)").next().is_some(), "the light's section has the k slider");
     assert!(h.state().message().is_none_or(|(_, error)| !error), "{:?}", h.state().message());
     let shot = h.render().expect("render");
-    // Kept for a look: target/tmp/viewer-area-points.png.
-    shot.save(std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join("viewer-area-points.png")).unwrap();
+    keep_for_a_look(&shot, "viewer-area-points.png");
 }

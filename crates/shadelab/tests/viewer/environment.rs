@@ -2,28 +2,21 @@
 //! the sky takes I_amb's place and changes the image, its occlusion and split sum are switched,
 //! its specular is shown alone, and "none" gives I_amb back.
 
-use crate::harness::{ViewerHarness, changed_view_pixels, harness};
+use crate::harness::{ViewerHarness, changed_view_pixels, click, harness, scroll_click};
 use egui_kittest::kittest::Queryable;
 use shadelab_model::lighting::env_map::EnvSource;
 
 /// Open the environment menu and pick `item`.
 fn choose(h: &mut ViewerHarness, item: &str) {
-    h.get_by_label("environment").scroll_to_me();
-    h.run_steps(5);
-    h.get_by_label("environment").click();
-    h.run_steps(3);
-    h.get_by_label(item).click();
-    h.run_steps(3);
+    scroll_click(h, "environment");
+    click(h, item);
 }
 
 #[test]
 fn the_sky_replaces_the_ambient_and_none_gives_it_back() {
     let mut h = harness();
     let ambient = h.state_mut().scene_mut().ambient;
-    h.get_by_label("environment light").scroll_to_me();
-    h.run_steps(5);
-    h.get_by_label("environment light").click();
-    h.run_steps(3);
+    scroll_click(&mut h, "environment light");
     let before = h.render().expect("render");
     choose(&mut h, "sky (Preetham)");
     let scene = h.state_mut().scene_mut().clone();
@@ -45,15 +38,11 @@ fn the_sky_replaces_the_ambient_and_none_gives_it_back() {
     let changed = changed_view_pixels(&after, &occluded);
     assert!(changed > 200, "the occlusion changed only {changed} pixels of the view");
     // The term row offers the environment's specular alone: only its reflections stay.
-    h.get_by_label("I_env,s").scroll_to_me();
-    h.run_steps(3);
-    h.get_by_label("I_env,s").click();
-    h.run_steps(3);
+    scroll_click(&mut h, "I_env,s");
     let env_specular = h.render().expect("render");
     let changed = changed_view_pixels(&occluded, &env_specular);
     assert!(changed > 20000, "the environment's specular alone changed only {changed} pixels");
-    h.get_by_label("all").click();
-    h.run_steps(3);
+    click(&mut h, "all");
     h.get_by_label("specular (split sum)").scroll_to_me();
     h.run_steps(3);
     h.get_by_label("specular (split sum)").click();
@@ -61,8 +50,7 @@ fn the_sky_replaces_the_ambient_and_none_gives_it_back() {
     assert!(h.state_mut().scene_mut().environment.as_ref().is_some_and(|e| !e.specular));
     // As the background, the sky fills the view's empty top.
     let plain = h.render().expect("render");
-    h.get_by_label("show as the background").click();
-    h.run_steps(3);
+    click(&mut h, "show as the background");
     assert!(h.state_mut().scene_mut().environment.as_ref().is_some_and(|e| e.background));
     let behind = h.render().expect("render");
     let changed = changed_view_pixels(&plain, &behind);

@@ -2,6 +2,7 @@
 //! window drawn by wgpu on lavapipe, and the waits and pixel counts the tests share.
 
 use egui_kittest::Harness;
+use egui_kittest::kittest::Queryable;
 use shadelab::viewer::Viewer;
 use std::time::{Duration, Instant};
 
@@ -50,11 +51,42 @@ pub fn wait_loaded(h: &mut ViewerHarness) -> u32 {
     frames
 }
 
-/// Pixels of the scene area (left of the panel) that differ by more than 8 in any channel.
+/// The pixels of the scene area (the left 6/10 of the window, beside the panel).
+fn view_pixels(image: &image::RgbaImage) -> impl Iterator<Item = (u32, u32)> {
+    let view_width = image.width() * 6 / 10;
+    (0..image.height()).flat_map(move |y| (0..view_width).map(move |x| (x, y)))
+}
+
+/// Pixels of the scene area that differ by more than 8 in any channel.
 pub fn changed_view_pixels(a: &image::RgbaImage, b: &image::RgbaImage) -> usize {
-    let view_width = a.width() * 6 / 10;
-    (0..a.height())
-        .flat_map(|y| (0..view_width).map(move |x| (x, y)))
-        .filter(|&(x, y)| (0..3).any(|c| a.get_pixel(x, y).0[c].abs_diff(b.get_pixel(x, y).0[c]) > 8))
+    view_pixels(a).filter(|&(x, y)| (0..3).any(|c| a.get_pixel(x, y).0[c].abs_diff(b.get_pixel(x, y).0[c]) > 8)).count()
+}
+
+/// Pixels of the scene area whose RGB satisfies `test`.
+pub fn view_pixels_where(image: &image::RgbaImage, test: impl Fn([u8; 3]) -> bool) -> usize {
+    view_pixels(image)
+        .filter(|&(x, y)| {
+            let [r, g, b, _] = image.get_pixel(x, y).0;
+            test([r, g, b])
+        })
         .count()
+}
+
+/// Clicks the widget labelled `label` and runs three frames, enough for the change to be drawn.
+pub fn click(h: &mut ViewerHarness, label: &str) {
+    h.get_by_label(label).click();
+    h.run_steps(3);
+}
+
+/// Scrolls the widget labelled `label` into view, runs the 20 frames of the animated scroll, then
+/// clicks it as [`click`] does.
+pub fn scroll_click(h: &mut ViewerHarness, label: &str) {
+    h.get_by_label(label).scroll_to_me();
+    h.run_steps(20);
+    click(h, label);
+}
+
+/// Saves a frame under the test build's temporary folder (target/tmp/`name`), kept for a look.
+pub fn keep_for_a_look(image: &image::RgbaImage, name: &str) {
+    image.save(std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join(name)).expect("save the frame");
 }

@@ -1,7 +1,9 @@
 //! The viewer driven by egui_kittest on lavapipe (wgpu): what a person sees and clicks.
 
 use crate::common;
-use crate::harness::{ViewerHarness, changed_view_pixels, harness, run_until, wait_loaded};
+use crate::harness::{
+    ViewerHarness, changed_view_pixels, click, harness, keep_for_a_look, run_until, scroll_click, wait_loaded,
+};
 use egui_kittest::kittest::Queryable;
 use shadelab_model::{ShadingMode, SpecularModel};
 
@@ -39,8 +41,7 @@ fn the_terms_section_switches_each_term_live() {
     h.run_steps(20);
     h.get_by_label_contains("Cook–Torrance terms").click();
     h.run_steps(3);
-    h.get_by_label("all gltf").click();
-    h.run_steps(3);
+    click(&mut h, "all gltf");
     let materials = h.state_mut().scene_mut().materials.clone();
     assert!(materials.iter().all(|m| m.microfacet == Microfacet::GLTF));
     // The header names a preset by its name, short enough to keep the panel's width.
@@ -48,17 +49,13 @@ fn the_terms_section_switches_each_term_live() {
     let after = h.render().expect("render");
     let changed = changed_view_pixels(&before, &after);
     assert!(changed > 2000, "only {changed} pixels of the view changed");
-    h.get_by_label("all chapter").click();
-    h.run_steps(3);
-    h.get_by_label("D").click();
-    h.run_steps(3);
-    h.get_by_label("ggx").click();
-    h.run_steps(3);
+    click(&mut h, "all chapter");
+    click(&mut h, "D");
+    click(&mut h, "ggx");
     let materials = h.state_mut().scene_mut().materials.clone();
     let ggx: Vec<bool> = materials.iter().map(|m| m.microfacet.d == Distribution::Ggx).collect();
     assert_eq!(ggx.iter().filter(|g| **g).count(), 1, "{ggx:?}");
-    h.get_by_label("multiple scattering").click();
-    h.run_steps(3);
+    click(&mut h, "multiple scattering");
     let materials = h.state_mut().scene_mut().materials.clone();
     assert_eq!(materials.iter().filter(|m| m.microfacet.multiple_scattering).count(), 1);
     h.get_by_label("diffuse × (1 − F)").click();
@@ -75,8 +72,7 @@ fn the_normalized_box_brightens_phongs_highlights() {
     h.get_by_label("Phong (V·R)^h").click();
     h.run_steps(3);
     let before = h.render().expect("render");
-    h.get_by_label("normalized").click();
-    h.run_steps(3);
+    click(&mut h, "normalized");
     let materials = h.state_mut().scene_mut().materials.clone();
     assert_eq!(materials.iter().filter(|m| m.phong_normalized).count(), 1);
     let after = h.render().expect("render");
@@ -91,16 +87,14 @@ fn the_term_row_shows_one_term_alone() {
     let mut h = harness();
     let before = h.render().expect("render");
     let r_s: Vec<f64> = h.state_mut().scene_mut().materials.iter().map(|m| m.r_s).collect();
-    h.get_by_label("I_s").click();
-    h.run_steps(3);
+    click(&mut h, "I_s");
     let specular = h.render().expect("render");
     // Without ambient and diffuse light only the highlights stay: most of the view darkens.
     let changed = changed_view_pixels(&before, &specular);
     assert!(changed > 20000, "only {changed} pixels of the view changed");
     let after: Vec<f64> = h.state_mut().scene_mut().materials.iter().map(|m| m.r_s).collect();
     assert_eq!(r_s, after, "the view's term does not change the scene");
-    h.get_by_label("all").click();
-    h.run_steps(3);
+    click(&mut h, "all");
     let back = h.render().expect("render");
     assert_eq!(changed_view_pixels(&before, &back), 0, "all: the whole model again");
 }
@@ -295,10 +289,8 @@ fn a_files_cameras_are_offered_in_a_menu() {
     h.run_steps(3);
     let before = h.render().expect("render");
     let eye = h.state_mut().scene_mut().camera.eye;
-    h.get_by_label("camera").click();
-    h.run_steps(2);
-    h.get_by_label("from above").click();
-    h.run_steps(3);
+    click(&mut h, "camera");
+    click(&mut h, "from above");
     let after_eye = h.state_mut().scene_mut().camera.eye;
     assert!((after_eye - glam::DVec3::new(0.0, 8.0, 0.0)).length() < 1e-5, "{eye} -> {after_eye}");
     let after = h.render().expect("render");
@@ -311,16 +303,10 @@ fn a_light_can_become_a_spot_light_in_the_panel() {
     let mut h = harness();
     let before = h.render().expect("render");
     // Below the panel's fold: scroll to it first (the scroll is animated).
-    h.get_by_label("L2 — point").scroll_to_me();
-    h.run_steps(20);
-    h.get_by_label("L2 — point").click();
-    h.run_steps(2);
+    scroll_click(&mut h, "L2 — point");
     let shown = |h: &ViewerHarness, label: &str| h.query_all_by_label(label).next().is_some();
     assert!(!shown(&h, "outer cone °"));
-    h.get_by_label("spot").scroll_to_me();
-    h.run_steps(20);
-    h.get_by_label("spot").click();
-    h.run_steps(4);
+    scroll_click(&mut h, "spot");
     let l = h.state_mut().scene_mut().lights[1].clone();
     assert_eq!(l.kind, shadelab_model::LightKind::Spot);
     assert_eq!(l.outer_cone, shadelab_model::scene::SPOT_OUTER_CONE_DEFAULT);
@@ -338,15 +324,9 @@ fn a_lights_casts_shadows_box_switches_its_shadows() {
     assert!(before.iter().all(|l| l.shadow.casts));
     // Collapsed sections show no shadow controls.
     assert!(h.query_by_label("casts shadows").is_none());
-    h.get_by_label("L1 — directional").scroll_to_me();
-    h.run_steps(20);
-    h.get_by_label("L1 — directional").click();
-    h.run_steps(2);
+    scroll_click(&mut h, "L1 — directional");
     // The box may be below the panel's fold: scroll to it first (the scroll is animated).
-    h.get_by_label("casts shadows").scroll_to_me();
-    h.run_steps(20);
-    h.get_by_label("casts shadows").click();
-    h.run_steps(3);
+    scroll_click(&mut h, "casts shadows");
     let after = h.state_mut().scene_mut().lights.clone();
     assert!(!after[0].shadow.casts, "the box did not switch L1's shadows off");
     assert_eq!(
@@ -354,8 +334,7 @@ fn a_lights_casts_shadows_box_switches_its_shadows() {
         (before[0].shadow.resolution, before[0].shadow.filter)
     );
     assert_eq!(after[1..], before[1..], "another light changed");
-    h.get_by_label("casts shadows").click();
-    h.run_steps(2);
+    click(&mut h, "casts shadows");
     assert!(h.state_mut().scene_mut().lights[0].shadow.casts);
 }
 
@@ -369,10 +348,8 @@ fn the_model_row_switches_models_and_v_shows_the_shadow_factor() {
     let mut h = harness();
     let before = h.render().expect("render");
     let pick = |h: &mut ViewerHarness, label: &str| {
-        h.get_by_label("model").click();
-        h.run_steps(2);
-        h.get_by_label(label).click();
-        h.run_steps(3);
+        click(h, "model");
+        click(h, label);
     };
     pick(&mut h, "Lambert rule");
     h.run_steps(3);
@@ -387,14 +364,12 @@ fn the_model_row_switches_models_and_v_shows_the_shadow_factor() {
     assert!(
         scene.lights.iter().filter(|l| l.kind != LightKind::Directional).all(|l| l.falloff_form == FalloffForm::Linear)
     );
-    h.get_by_label("I_r").click();
-    h.run_steps(2);
+    click(&mut h, "I_r");
     pick(&mut h, "Cook–Torrance model");
     assert_eq!(h.state().settings().specular, SpecularModel::CookTorrance);
     assert_eq!(h.state_mut().scene_mut().illumination, IlluminationModel::Phong);
     assert!(h.query_by_label("I_r").is_none() && h.query_by_label("I_t").is_none());
-    h.get_by_label("V").click();
-    h.run_steps(3);
+    click(&mut h, "V");
     assert!(h.state().shadow_factor_size().is_some(), "the factor image is drawn");
     let v = h.render().expect("render");
     // Grey: the view's pixels have equal channels where the factor image is shown.
@@ -453,7 +428,7 @@ fn clicking_a_pixel_shows_its_lobe_and_angles() {
     // The polar plot's legend names each curve with its maximum, and the other terms beside it.
     assert!(h.query_by_label_contains("Cook–Torrance (max").is_some());
     assert!(h.query_by_label_contains("CT ggx/smith-correlated/schlick").is_some());
-    h.render().expect("render").save(concat!(env!("CARGO_TARGET_TMPDIR"), "/lobe-window.png")).unwrap();
+    keep_for_a_look(&h.render().expect("render"), "lobe-window.png");
 }
 
 /// A large file opens on a worker thread: the panel shows a progress bar and a cancel button,
@@ -472,8 +447,7 @@ fn a_large_file_opens_with_progress_and_can_be_cancelled() {
     h.run_steps(1);
     assert!(h.state().loading());
     assert!(h.query_by_label_contains("viewer-large-sphere.glb").is_some(), "the bar names the file");
-    h.get_by_label("cancel").click();
-    h.run_steps(2);
+    click(&mut h, "cancel");
     assert!(!h.state().loading());
     assert!(h.state().message().unwrap().0.contains("cancelled opening"), "{:?}", h.state().message());
     assert_eq!(*h.state_mut().scene_mut(), before);
@@ -498,10 +472,8 @@ fn the_panel_names_a_materials_textures() {
     assert!(!h.state().message().unwrap().1, "{:?}", h.state().message());
     h.run_steps(2);
     assert!(h.query_by_label_contains("textures:").is_none(), "the first sphere has none");
-    h.get_by_label("material").click();
-    h.run_steps(2);
-    h.get_by_label("textured ground").click();
-    h.run_steps(3);
+    click(&mut h, "material");
+    click(&mut h, "textured ground");
     let line = "textures: base colour, metallic–roughness, occlusion, emissive, normal; emits I_e = (0.30, 0.15, 0.05)";
     h.get_by_label(line).scroll_to_me();
 }
@@ -509,8 +481,7 @@ fn the_panel_names_a_materials_textures() {
 #[test]
 fn a_link_written_by_the_viewer_opens_the_same_view() {
     let mut h = harness();
-    h.get_by_label("gouraud").click();
-    h.run_steps(2);
+    click(&mut h, "gouraud");
     h.state_mut().set_term(shadelab_model::terms::Term::Diffuse);
     h.state_mut().set_difference_view(true);
     h.run_steps(1);

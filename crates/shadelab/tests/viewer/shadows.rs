@@ -1,7 +1,7 @@
 //! The viewer's shadow views, driven by egui_kittest on lavapipe: a light's shadow map shown in
 //! its panel section, and the difference view's shadow error map with its shares.
 
-use crate::harness::{harness, run_until};
+use crate::harness::{click, harness, keep_for_a_look, run_until, scroll_click};
 use egui_kittest::kittest::Queryable;
 use shadelab_model::shadows::SHADOW_RESOLUTION;
 
@@ -14,10 +14,7 @@ fn the_show_shadow_map_box_shows_l1s_map_in_its_section() {
     let mut h = harness();
     assert!(h.query_by_label("show shadow map").is_none(), "collapsed sections show no map controls");
     // The light's header may be below the panel's fold: scroll to it first.
-    h.get_by_label("L1 — directional").scroll_to_me();
-    h.run_steps(20);
-    h.get_by_label("L1 — directional").click();
-    h.run_steps(2);
+    scroll_click(&mut h, "L1 — directional");
     assert_eq!(h.state().shadow_map_shown(0), None);
     // The box is below the panel's fold: scroll to it first (the scroll is animated).
     h.get_by_label("show shadow map").scroll_to_me();
@@ -30,18 +27,15 @@ fn the_show_shadow_map_box_shows_l1s_map_in_its_section() {
     assert_eq!(w, hgt);
     assert!(w.is_power_of_two() && w <= asked && w >= SHADOW_RESOLUTION.min as usize, "{w} × {hgt} for {asked}");
     let shot = h.render().expect("render");
-    // Kept for a look: target/tmp/viewer-shadow-map.png.
-    shot.save(std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join("viewer-shadow-map.png")).unwrap();
-    h.get_by_label("show shadow map").click();
-    h.run_steps(2);
+    keep_for_a_look(&shot, "viewer-shadow-map.png");
+    click(&mut h, "show shadow map");
     assert_eq!(h.state().shadow_map_shown(0), None);
 }
 
 #[test]
 fn the_shadow_error_map_reports_a_small_disagreement_on_the_default_scene() {
     let mut h = harness();
-    h.get_by_label("difference from reference").click();
-    h.run_steps(2);
+    click(&mut h, "difference from reference");
     h.get_by_label("shadow error").click();
     let s = run_until(&mut h, "shadow comparison", 90, |v| v.shadow_difference());
     assert!(s.share_disagreeing.is_finite(), "{s:?}");
@@ -50,9 +44,8 @@ fn the_shadow_error_map_reports_a_small_disagreement_on_the_default_scene() {
     assert!((s.share_false_shadow + s.share_missed_shadow - s.share_disagreeing).abs() < 1e-12, "{s:?}");
     assert!(h.state().difference().is_some(), "the FLIP numbers stay beside the shadow shares");
     h.run_steps(2);
-    // Kept for a look: target/tmp/viewer-shadow-error.png.
     let shot = h.render().expect("render");
-    shot.save(std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join("viewer-shadow-error.png")).unwrap();
+    keep_for_a_look(&shot, "viewer-shadow-error.png");
     // Back to the FLIP map: no shadow numbers.
     h.get_by_label("FLIP error").click();
     run_until(&mut h, "FLIP map", 90, |v| v.difference());
@@ -63,10 +56,7 @@ fn the_shadow_error_map_reports_a_small_disagreement_on_the_default_scene() {
 fn a_point_lights_map_shows_a_cube_face_with_a_face_menu() {
     let mut h = harness();
     // Below the panel's fold: scroll to it first (the scroll is animated).
-    h.get_by_label("L2 — point").scroll_to_me();
-    h.run_steps(20);
-    h.get_by_label("L2 — point").click();
-    h.run_steps(2);
+    scroll_click(&mut h, "L2 — point");
     h.state_mut().set_shadow_map_view(1, true);
     let [w, hgt] = run_until(&mut h, "cube face", 90, |v| v.shadow_map_shown(1));
     assert_eq!(w, hgt);
@@ -90,10 +80,7 @@ fn a_directional_lights_cascades_have_a_menu() {
     h.state_mut().show_loaded(loaded, "field").expect("shown");
     h.run_steps(2);
     // The light's header may be below the panel's fold: scroll to it first.
-    h.get_by_label("L1 — directional").scroll_to_me();
-    h.run_steps(20);
-    h.get_by_label("L1 — directional").click();
-    h.run_steps(2);
+    scroll_click(&mut h, "L1 — directional");
     h.state_mut().set_shadow_map_view(0, true);
     run_until(&mut h, "first cascade", 90, |v| v.shadow_map_shown(0));
     h.get_by_label("show shadow map").scroll_to_me();
@@ -101,8 +88,7 @@ fn a_directional_lights_cascades_have_a_menu() {
     assert!(h.query_by_value("cascade 1").is_some(), "the sun's map has a cascade menu");
     h.get_by_value("cascade 1").click();
     h.run_steps(2);
-    h.get_by_label("cascade 2").click();
-    h.run_steps(2);
+    click(&mut h, "cascade 2");
     run_until(&mut h, "second cascade", 90, |v| v.shadow_map_shown(0));
     assert!(h.query_by_value("cascade 2").is_some(), "the menu shows the chosen cascade");
 }

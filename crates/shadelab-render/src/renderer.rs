@@ -92,10 +92,10 @@ impl Renderer {
                 .concat(),
         });
         let shadow_layout = crate::shadow_maps::maps_layout(device);
-        let casters_layout = crate::shadow_maps::casters_layout(device);
-        let flat_compute_layout = crate::lighting_pass::compute_layout(device);
-        let flat_colors_layout = crate::lighting_pass::colors_layout(device);
-        let glass_layout = crate::glass_textures::layout(device);
+        let casters = crate::shadow_maps::casters_layout(device);
+        let flat_compute = crate::lighting_pass::compute_layout(device);
+        let flat_colors = crate::lighting_pass::colors_layout(device);
+        let glass = crate::glass_textures::layout(device);
         let layout = |label: &str, groups: &[Option<&wgpu::BindGroupLayout>]| {
             device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
                 label: Some(label),
@@ -103,37 +103,21 @@ impl Renderer {
                 immediate_size: 0,
             })
         };
+        // The groups every lit pipeline starts with: globals (0), the object (1), the shadow maps (2).
+        let (g, o, s) = (Some(&globals_layout), Some(&object_layout), Some(&shadow_layout));
         let layouts = Layouts {
-            lit: layout("shadelab", &[Some(&globals_layout), Some(&object_layout)]),
-            lit_shadows: layout(
-                "shadelab shadows",
-                &[Some(&globals_layout), Some(&object_layout), Some(&shadow_layout)],
-            ),
-            lit_vertex: layout(
-                "shadelab flat",
-                &[Some(&globals_layout), Some(&object_layout), None, Some(&flat_colors_layout)],
-            ),
-            lit_shadows_vertex: layout(
-                "shadelab flat shadows",
-                &[Some(&globals_layout), Some(&object_layout), Some(&shadow_layout), Some(&flat_colors_layout)],
-            ),
-            lighting_pass: layout(
-                "shadelab flat faces",
-                &[Some(&globals_layout), Some(&object_layout), None, Some(&flat_compute_layout)],
-            ),
-            lighting_pass_shadows: layout(
-                "shadelab flat faces shadows",
-                &[Some(&globals_layout), Some(&object_layout), Some(&shadow_layout), Some(&flat_compute_layout)],
-            ),
+            lit: layout("shadelab", &[g, o]),
+            lit_shadows: layout("shadelab shadows", &[g, o, s]),
+            lit_vertex: layout("shadelab flat", &[g, o, None, Some(&flat_colors)]),
+            lit_shadows_vertex: layout("shadelab flat shadows", &[g, o, s, Some(&flat_colors)]),
+            lighting_pass: layout("shadelab flat faces", &[g, o, None, Some(&flat_compute)]),
+            lighting_pass_shadows: layout("shadelab flat faces shadows", &[g, o, s, Some(&flat_compute)]),
             // The shadow pass reads only the object (group 1) and its layer's matrix (group 3).
-            shadow_pass: layout("shadelab shadow pass", &[None, Some(&object_layout), None, Some(&casters_layout)]),
-            glass: layout("shadelab glass", &[Some(&globals_layout), Some(&object_layout), None, Some(&glass_layout)]),
-            glass_shadows: layout(
-                "shadelab glass shadows",
-                &[Some(&globals_layout), Some(&object_layout), Some(&shadow_layout), Some(&glass_layout)],
-            ),
-            glass_back: layout("shadelab glass back faces", &[Some(&globals_layout), Some(&object_layout)]),
-            background: layout("shadelab environment background", &[Some(&globals_layout)]),
+            shadow_pass: layout("shadelab shadow pass", &[None, o, None, Some(&casters)]),
+            glass: layout("shadelab glass", &[g, o, None, Some(&glass)]),
+            glass_shadows: layout("shadelab glass shadows", &[g, o, s, Some(&glass)]),
+            glass_back: layout("shadelab glass back faces", &[g, o]),
+            background: layout("shadelab environment background", &[g]),
         };
         Renderer {
             device: device.clone(),
@@ -143,10 +127,10 @@ impl Renderer {
             tables,
             tables_written: std::sync::OnceLock::new(),
             shadow_layout,
-            casters_layout,
-            flat_compute_layout,
-            flat_colors_layout,
-            glass_layout,
+            casters_layout: casters,
+            flat_compute_layout: flat_compute,
+            flat_colors_layout: flat_colors,
+            glass_layout: glass,
             glass: None,
             shadow_samplers: crate::shadow_maps::samplers(device),
             pipelines: PipelineCache::new(device, layouts),

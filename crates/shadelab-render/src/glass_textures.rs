@@ -76,23 +76,15 @@ impl GlassTextures {
                 label: Some("shadelab glass"),
                 layout,
                 entries: &[
-                    wgpu::BindGroupEntry {
-                        binding: 8,
-                        resource: wgpu::BindingResource::TextureView(&self.behind_view),
-                    },
-                    wgpu::BindGroupEntry {
-                        binding: 9,
-                        resource: wgpu::BindingResource::TextureView(&target.depth_view),
-                    },
-                    wgpu::BindGroupEntry {
-                        binding: 10,
-                        resource: wgpu::BindingResource::TextureView(&self.back_position),
-                    },
-                    wgpu::BindGroupEntry {
-                        binding: 11,
-                        resource: wgpu::BindingResource::TextureView(&self.back_normal),
-                    },
-                ],
+                    (8, &self.behind_view),
+                    (9, &target.depth_view),
+                    (10, &self.back_position),
+                    (11, &self.back_normal),
+                ]
+                .map(|(binding, view)| wgpu::BindGroupEntry {
+                    binding,
+                    resource: wgpu::BindingResource::TextureView(view),
+                }),
             });
             self.bind = Some((target.depth_view.clone(), bind));
         }

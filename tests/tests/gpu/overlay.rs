@@ -28,6 +28,22 @@ fn distance_to_segment(x: f64, y: f64, a: (f64, f64), b: (f64, f64)) -> f64 {
     ((x - a.0 - t * dx).powi(2) + (y - a.1 - t * dy).powi(2)).sqrt()
 }
 
+/// The segments `lines` projected to pixels: a pixel centre's distance to the nearest of them.
+fn nearest_line_px(camera: &Camera, lines: &[[DVec3; 2]]) -> impl Fn(u32, u32) -> f64 {
+    let projected: Vec<_> = lines.iter().map(|s| (project(camera, s[0], W, H), project(camera, s[1], W, H))).collect();
+    move |x, y| {
+        let (px, py) = (x as f64 + 0.5, y as f64 + 0.5);
+        projected.iter().map(|&(a, b)| distance_to_segment(px, py, a, b)).fold(f64::MAX, f64::min)
+    }
+}
+
+/// The pixels `(x, y, index)` where `drawn` differs from `plain`.
+fn changed_pixels<'a>(plain: &'a LinearImage, drawn: &'a LinearImage) -> impl Iterator<Item = (u32, u32, usize)> + 'a {
+    (0..H)
+        .flat_map(|y| (0..W).map(move |x| (x, y, (y * W + x) as usize)))
+        .filter(|&(_, _, i)| plain.pixels[i] != drawn.pixels[i])
+}
+
 fn overlay_pixels(image: &LinearImage) -> usize {
     image.pixels.iter().filter(|p| is_overlay(**p)).count()
 }
@@ -41,21 +57,13 @@ fn the_overlay_changes_only_pixels_near_the_projected_boundary() {
         assert!(!edges.is_empty(), "{}", scene.name);
         let plain = render_image(gpu(), &scene, W, H, &settings).unwrap();
         let drawn = render_image_with_lines(gpu(), &scene, (W, H), &settings, &edges, TERMINATOR_COLOR).unwrap();
-        let projected: Vec<_> =
-            edges.iter().map(|s| (project(&scene.camera, s[0], W, H), project(&scene.camera, s[1], W, H))).collect();
+        let nearest = nearest_line_px(&scene.camera, &edges);
         let mut changed = 0;
-        for y in 0..H {
-            for x in 0..W {
-                let i = (y * W + x) as usize;
-                if plain.pixels[i] == drawn.pixels[i] {
-                    continue;
-                }
-                changed += 1;
-                assert!(is_overlay(drawn.pixels[i]), "{}: ({x}, {y}) changed to another colour", scene.name);
-                let (px, py) = (x as f64 + 0.5, y as f64 + 0.5);
-                let near = projected.iter().map(|&(a, b)| distance_to_segment(px, py, a, b)).fold(f64::MAX, f64::min);
-                assert!(near <= NEAR_EDGE_PX, "{}: ({x}, {y}) is {near:.1} px from every edge", scene.name);
-            }
+        for (x, y, i) in changed_pixels(&plain, &drawn) {
+            changed += 1;
+            assert!(is_overlay(drawn.pixels[i]), "{}: ({x}, {y}) changed to another colour", scene.name);
+            let near = nearest(x, y);
+            assert!(near <= NEAR_EDGE_PX, "{}: ({x}, {y}) is {near:.1} px from every edge", scene.name);
         }
         assert!(changed > 0 && overlay_pixels(&drawn) >= changed, "{}: {changed} pixels changed", scene.name);
         assert_eq!(overlay_pixels(&plain), 0, "{}: the shading itself made the overlay colour", scene.name);
@@ -99,20 +107,15 @@ fn normals_and_creases_are_drawn_each_near_its_lines() {
     let sets = [(normals.as_slice(), NORMALS_COLOR), (creases.as_slice(), CREASES_COLOR)];
     let drawn = render_image_with_line_sets(gpu(), &scene, (W, H), &settings, &sets).unwrap();
     for (lines, color) in sets {
-        let projected: Vec<_> =
-            lines.iter().map(|s| (project(&scene.camera, s[0], W, H), project(&scene.camera, s[1], W, H))).collect();
+        let nearest = nearest_line_px(&scene.camera, lines);
         let mut count = 0;
-        for y in 0..H {
-            for x in 0..W {
-                let i = (y * W + x) as usize;
-                if plain.pixels[i] == drawn.pixels[i] || (0..3).any(|c| drawn.pixels[i][c] != color[c]) {
-                    continue;
-                }
-                count += 1;
-                let (px, py) = (x as f64 + 0.5, y as f64 + 0.5);
-                let near = projected.iter().map(|&(a, b)| distance_to_segment(px, py, a, b)).fold(f64::MAX, f64::min);
-                assert!(near <= NEAR_EDGE_PX, "{color:?}: ({x}, {y}) is {near:.1} px from its lines");
+        for (x, y, i) in changed_pixels(&plain, &drawn) {
+            if (0..3).any(|c| drawn.pixels[i][c] != color[c]) {
+                continue;
             }
+            count += 1;
+            let near = nearest(x, y);
+            assert!(near <= NEAR_EDGE_PX, "{color:?}: ({x}, {y}) is {near:.1} px from its lines");
         }
         assert!(count > 200, "{color:?}: only {count} pixels drawn");
     }

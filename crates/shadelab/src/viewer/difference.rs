@@ -120,6 +120,17 @@ pub fn difference_size(w: u32, h: u32) -> (u32, u32) {
     (DIFFERENCE_MAX_WIDTH, ((h as f64 * s).round() as u32).max(1))
 }
 
+/// What a view shown in place of the frame (the difference map, the shadow factor) is drawn from:
+/// the frame's renderer, scene and settings, and the view's size in pixels.
+pub struct SideView<'a> {
+    pub ctx: &'a egui::Context,
+    pub renderer: &'a mut Renderer,
+    pub gpu_scene: &'a mut SceneGpu,
+    pub scene: &'a Scene,
+    pub settings: &'a RenderSettings,
+    pub view_size: (u32, u32),
+}
+
 impl DifferenceView {
     /// The numbers of the map on show, if it matches the current state.
     pub fn stats(&self) -> Option<ErrorStats> {
@@ -158,15 +169,8 @@ impl DifferenceView {
 
     /// Bring the map up to date with the scene and settings; returns the texture to show, if
     /// the map matches them.
-    pub fn update(
-        &mut self,
-        ctx: &egui::Context,
-        renderer: &mut Renderer,
-        gpu_scene: &mut SceneGpu,
-        scene: &Scene,
-        settings: &RenderSettings,
-        view_size: (u32, u32),
-    ) -> Option<egui::TextureId> {
+    pub fn update(&mut self, from: SideView) -> Option<egui::TextureId> {
+        let SideView { ctx, renderer, gpu_scene, scene, settings, view_size } = from;
         let size = difference_size(view_size.0, view_size.1);
         let paths = (self.kind == DifferenceKind::Ambient).then_some(VIEWER_PATHS);
         let key = ReferenceKey { scene: scene.clone(), specular: settings.specular, size, paths };

@@ -3,9 +3,10 @@
 //! (`shadelab_render::shadow_factor_with`), shown in place of the frame. It is redrawn only when
 //! the scene, the mode or the size changes.
 
+use super::difference::SideView;
 use eframe::egui;
 use shadelab_model::Scene;
-use shadelab_render::{RenderSettings, Renderer, SceneGpu, Target, target};
+use shadelab_render::{RenderSettings, Target, target};
 
 /// The factor image on show and what it was made from.
 #[derive(Default)]
@@ -16,15 +17,8 @@ pub struct ShadowFactorView {
 impl ShadowFactorView {
     /// The texture of the factor of `scene` (its shadowed terms) at (at most) the difference
     /// view's size for `view_size`.
-    pub fn update(
-        &mut self,
-        ctx: &egui::Context,
-        renderer: &mut Renderer,
-        gpu_scene: &mut SceneGpu,
-        scene: &Scene,
-        settings: &RenderSettings,
-        view_size: (u32, u32),
-    ) -> egui::TextureId {
+    pub fn update(&mut self, from: SideView) -> egui::TextureId {
+        let SideView { ctx, renderer, gpu_scene, scene, settings, view_size } = from;
         let size = super::difference::difference_size(view_size.0, view_size.1);
         if let Some((s, st, sz, t)) = &self.shown
             && s == scene

@@ -3,6 +3,7 @@
 //! error map shown by egui in its place, with the overlays on top (the self-shadow boundary drawn
 //! into the target after the frame).
 
+use super::difference::SideView;
 use super::{Viewer, overlays};
 use eframe::egui::{self, Color32, Rect, pos2};
 use shadelab_model::params;
@@ -110,26 +111,19 @@ impl Viewer {
         // The scenes the f64 reference renders: analytic shapes and file meshes within its limit.
         let covered = shadelab_model::scene_variants::reference_covers(&self.scene);
         let factor = self.term == shadelab_model::terms::Term::Shadow;
+        let ctx = ui.ctx().clone();
+        let from = SideView {
+            ctx: &ctx,
+            renderer: &mut self.renderer,
+            gpu_scene: &mut self.gpu_scene,
+            scene: &drawn.scene,
+            settings: &self.settings,
+            view_size: (w, h),
+        };
         if factor {
-            let ctx = ui.ctx().clone();
-            shown = Some(self.shadow_factor.update(
-                &ctx,
-                &mut self.renderer,
-                &mut self.gpu_scene,
-                &drawn.scene,
-                &self.settings,
-                (w, h),
-            ));
+            shown = Some(self.shadow_factor.update(from));
         } else if self.difference.enabled && covered {
-            let ctx = ui.ctx().clone();
-            shown = self.difference.update(
-                &ctx,
-                &mut self.renderer,
-                &mut self.gpu_scene,
-                &drawn.scene,
-                &self.settings,
-                (w, h),
-            );
+            shown = self.difference.update(from);
         }
         (shown, self.difference.enabled && covered && !factor)
     }

@@ -136,19 +136,11 @@ impl ReferenceImage {
     pub fn uniform(width: u32, height: u32, color: [f64; 3]) -> ReferenceImage {
         let n = (width * height) as usize;
         ReferenceImage {
-            width,
-            height,
             pixels: vec![color; n],
             object: vec![None; n],
             hidden: vec![0; n],
             unshadowed: vec![color; n],
-            background: Some(color),
-            area_error: 0.0,
-            paths: None,
-            indirect: Vec::new(),
-            per_ambient: Vec::new(),
-            std_error: Vec::new(),
-            fireflies: 0,
+            ..ReferenceImage::empty(width, height, Some(color))
         }
     }
 }
@@ -391,7 +383,7 @@ fn trace_row(ctx: &Context, y: u32, width: u32, height: u32) -> RowPixels {
             let (a, b, c, d) = (uv_at(x0, y)?, uv_at(x0 + 1, y)?, uv_at(x, y0)?, uv_at(x, y0 + 1)?);
             Some(UvFootprint { dx: [b[0] - a[0], b[1] - a[1]], dy: [d[0] - c[0], d[1] - c[1]] })
         });
-        let shaded = ctx.shade_hit(&hit, eye, &mut tinted, footprint.as_ref(), None);
+        let shaded = ctx.shade_hit(&hit, eye, &mut tinted, footprint.as_ref(), None, None);
         img.pixels.push(shaded.lit);
         img.unshadowed.push(shaded.unshadowed);
         img.object.push(Some(hit.object));
@@ -467,22 +459,10 @@ impl Context<'_> {
 
     /// The model at `hit` seen from `eye` (homogeneous), with exact cast shadows: the point's
     /// parameters in a copy of its material (`tinted`, made once per image, not per pixel), or
-    /// `material` when given (the glass surface's own); its emission added.
-    pub fn shade_hit(
-        &self,
-        hit: &intersect::SurfaceHit,
-        eye: glam::DVec4,
-        tinted: &mut [Material],
-        footprint: Option<&UvFootprint>,
-        material: Option<&Material>,
-    ) -> Shaded {
-        self.shade_point(hit, eye, tinted, footprint, material, None)
-    }
-
-    /// [`Self::shade_hit`]; with `sampler`, each area light's term is one random point's
-    /// estimate of its integral (`area_term_sampled`, the path tracer's bounces) instead of the
-    /// refined integral.
-    fn shade_point(
+    /// `material` when given (the glass surface's own); its emission added. With `sampler`, each
+    /// area light's term is one random point's estimate of its integral (`area_term_sampled`, the
+    /// path tracer's bounces) instead of the refined integral.
+    pub(crate) fn shade_hit(
         &self,
         hit: &intersect::SurfaceHit,
         eye: glam::DVec4,

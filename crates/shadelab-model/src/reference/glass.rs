@@ -46,13 +46,13 @@ impl SceneLeaves {
 
 impl Leaves for SceneLeaves {
     fn opaque(&self, ctx: &Context, hit: &SurfaceHit, from: DVec3) -> [f64; 3] {
-        ctx.shade_hit(hit, from.extend(1.0), &mut self.tinted.borrow_mut(), None, None).lit
+        ctx.shade_hit(hit, from.extend(1.0), &mut self.tinted.borrow_mut(), None, None, None).lit
     }
     fn background(&self, ctx: &Context, dir: DVec3) -> [f64; 3] {
         glass_miss(ctx, dir)
     }
     fn glass_surface(&self, ctx: &Context, hit: &SurfaceHit, eye: DVec4, material: &Material) -> Shaded {
-        ctx.shade_hit(hit, eye, &mut self.tinted.borrow_mut(), None, Some(material))
+        ctx.shade_hit(hit, eye, &mut self.tinted.borrow_mut(), None, Some(material), None)
     }
 }
 

@@ -137,7 +137,7 @@ impl Leaves for PathLeaves<'_> {
     fn opaque(&self, ctx: &Context, hit: &SurfaceHit, from: DVec3) -> [f64; 3] {
         let depth = self.depth;
         let mut light = if self.whole {
-            ctx.shade_point(hit, from.extend(1.0), &mut self.tinted.borrow_mut(), None, None, Some(self.rng)).lit
+            ctx.shade_hit(hit, from.extend(1.0), &mut self.tinted.borrow_mut(), None, None, Some(self.rng)).lit
         } else {
             [0.0; 3]
         };
@@ -158,7 +158,7 @@ impl Leaves for PathLeaves<'_> {
     }
     fn glass_surface(&self, ctx: &Context, hit: &SurfaceHit, eye: DVec4, material: &Material) -> Shaded {
         if self.whole {
-            ctx.shade_point(hit, eye, &mut self.tinted.borrow_mut(), None, Some(material), Some(self.rng))
+            ctx.shade_hit(hit, eye, &mut self.tinted.borrow_mut(), None, Some(material), Some(self.rng))
         } else {
             Shaded::default()
         }

@@ -90,3 +90,27 @@ pub fn scroll_click(h: &mut ViewerHarness, label: &str) {
 pub fn keep_for_a_look(image: &image::RgbaImage, name: &str) {
     image.save(std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join(name)).expect("save the frame");
 }
+
+/// Press or release the primary button at `at`.
+fn button(h: &mut ViewerHarness, at: egui::Pos2, pressed: bool) {
+    let button = egui::PointerButton::Primary;
+    h.input_mut().events.push(egui::Event::PointerButton { pos: at, button, pressed, modifiers: Default::default() });
+    h.run_steps(1);
+}
+
+/// Drag across the view for `frames` frames, 4 points a frame: the orbit turns the camera. The
+/// pointer then leaves the window, so no cursor is drawn over the view.
+pub fn orbit(h: &mut ViewerHarness, frames: u32) {
+    let mut at = egui::pos2(200.0, 300.0);
+    h.input_mut().events.push(egui::Event::PointerMoved(at));
+    h.run_steps(1);
+    button(h, at, true);
+    for _ in 0..frames {
+        at.x += 4.0;
+        h.input_mut().events.push(egui::Event::PointerMoved(at));
+        h.run_steps(1);
+    }
+    button(h, at, false);
+    h.input_mut().events.push(egui::Event::PointerGone);
+    h.run_steps(1);
+}

@@ -1,7 +1,7 @@
 //! Orbiting the view, driven by egui_kittest on lavapipe: the camera alone changes, so nothing is
 //! derived, no pipeline is built and no shadow map is drawn again; a light moved redraws its maps.
 
-use crate::harness::{ViewerHarness, changed_view_pixels, harness, run_until};
+use crate::harness::{ViewerHarness, changed_view_pixels, harness, orbit, run_until};
 
 /// Frames of the orbit.
 const ORBIT_FRAMES: u32 = 30;
@@ -16,27 +16,6 @@ fn settled() -> ViewerHarness {
     h.run_steps(3);
     assert!(h.state_mut().scene_mut().lights.iter().all(|l| l.shadow.casts), "both lights cast shadows");
     h
-}
-
-/// Press or release the primary button at `at`.
-fn button(h: &mut ViewerHarness, at: egui::Pos2, pressed: bool) {
-    let button = egui::PointerButton::Primary;
-    h.input_mut().events.push(egui::Event::PointerButton { pos: at, button, pressed, modifiers: Default::default() });
-    h.run_steps(1);
-}
-
-/// Drag across the view for `frames` frames, 4 points a frame: the orbit turns the camera.
-fn orbit(h: &mut ViewerHarness, frames: u32) {
-    let mut at = egui::pos2(200.0, 300.0);
-    h.input_mut().events.push(egui::Event::PointerMoved(at));
-    h.run_steps(1);
-    button(h, at, true);
-    for _ in 0..frames {
-        at.x += 4.0;
-        h.input_mut().events.push(egui::Event::PointerMoved(at));
-        h.run_steps(1);
-    }
-    button(h, at, false);
 }
 
 /// What the viewer has done so far: derivations, pipeline builds, shadow-map layers drawn.

@@ -1,11 +1,15 @@
 //! A link that opens a view: the page's query (`?scene=glass&shading=gouraud`) holds the viewer's
 //! command-line options, each checked by the same parsers as the flag, so a bad one is named in
 //! the panel with the flag's own one line and the others still apply. The panel's switches that
-//! have no flag (the term, the error map, the overlays) have keys of their own.
+//! have no flag (the term, the error map, the overlays, the glass views) have keys of their own,
+//! the camera's orbit its own, and the scene's edits theirs (`link_scene`).
 
 use super::Viewer;
 use super::difference::DifferenceKind;
+use super::link_scene;
 use crate::cli;
+use glam::DVec3;
+use shadelab_model::lighting::transmission::{GlassExit, GlassView};
 use shadelab_model::params::NamedValue;
 use shadelab_model::terms::Term;
 use shadelab_model::{ModelChoice, SpecularModel};
@@ -31,12 +35,18 @@ pub struct Link {
     pub error_map: Option<DifferenceKind>,
     /// The switches given, by key, on or off.
     pub switches: Vec<(&'static str, bool)>,
+    pub glass_view: Option<GlassView>,
+    pub glass_exit: Option<GlassExit>,
+    /// The camera's orbit: its target, then yaw, pitch (radians) and distance.
+    pub orbit: Option<(DVec3, [f64; 3])>,
+    /// The scene's edits, key and value as given, read once the scene is open.
+    pub scene: Vec<(String, String)>,
     /// One line per bad parameter.
     pub errors: Vec<String>,
 }
 
 /// `on`/`off` and their usual spellings.
-fn on_off(value: &str) -> Option<bool> {
+pub(super) fn on_off(value: &str) -> Option<bool> {
     match value.to_ascii_lowercase().as_str() {
         "on" | "true" | "1" | "yes" | "" => Some(true),
         "off" | "false" | "0" | "no" => Some(false),
@@ -51,7 +61,7 @@ fn decode(text: &str) -> String {
 }
 
 /// `A` stays, a space → `%20`, and so on: the characters a query value may hold as they are.
-fn encode(text: &str) -> String {
+pub(super) fn encode(text: &str) -> String {
     let mut out = String::with_capacity(text.len());
     for b in text.bytes() {
         if b.is_ascii_alphanumeric() || matches!(b, b'-' | b'_' | b'.' | b'~' | b',') {
@@ -76,6 +86,10 @@ fn take(link: &mut Link, key: &str, value: &str) -> Result<(), String> {
                 _ => return Err(format!("error-map: '{value}' is not one of flip, shadow, ambient")),
             })
         }
+        "glass-view" => link.glass_view = Some(GlassView::parse_named(value).map_err(named)?),
+        "glass-exit" => link.glass_exit = Some(GlassExit::parse_named(value).map_err(named)?),
+        "orbit" => link.orbit = Some(super::orbit::parse_link(value)?),
+        k if link_scene::is_scene_key(k) => link.scene.push((k.to_string(), value.to_string())),
         "difference" => match on_off(value) {
             Some(true) => link.args.push("--difference".into()),
             Some(false) => {}
@@ -119,6 +133,25 @@ pub fn parse_query(query: &str) -> Link {
     link
 }
 
+impl Link {
+    /// The scene's edits in the order they are read: those that change what the others apply to
+    /// (the ambient term, the light count, the environment's source) first, each group as given.
+    pub fn scene_keys_in_order(&self) -> impl Iterator<Item = (&str, &str)> {
+        let first = self.scene.iter().filter(|(k, _)| link_scene::is_structural(k));
+        let rest = self.scene.iter().filter(|(k, _)| !link_scene::is_structural(k));
+        first.chain(rest).map(|(k, v)| (k.as_str(), v.as_str()))
+    }
+}
+
+/// A link's scene edits applied to `scene`, each bad one a line in `errors`.
+fn apply_edits(link: &Link, scene: &mut shadelab_model::Scene, errors: &mut Vec<String>) {
+    for (k, v) in link.scene_keys_in_order() {
+        if let Err(e) = link_scene::apply_scene_key(scene, k, v) {
+            errors.push(printable(&format!("link parameter {k}={v}: {e}")));
+        }
+    }
+}
+
 impl Viewer {
     /// Open the view a link describes: its scene and modes as the command line would, then the
     /// switches. Every bad parameter is named in the panel; the rest apply.
@@ -145,6 +178,12 @@ impl Viewer {
         }
         if let Some(kind) = link.error_map {
             self.difference.kind = kind;
+        }
+        self.settings.glass_view = link.glass_view.unwrap_or(self.settings.glass_view);
+        self.settings.glass_exit = link.glass_exit.unwrap_or(self.settings.glass_exit);
+        apply_edits(link, &mut self.scene, &mut errors);
+        if let Some((target, angles)) = link.orbit {
+            self.orbit = super::orbit::Orbit::from_link(target, angles);
         }
         for &(key, on) in &link.switches {
             match key {
@@ -204,6 +243,23 @@ impl Viewer {
                 DifferenceKind::Ambient => q.push(("error-map".into(), "ambient".into())),
             }
         }
+        let defaults = shadelab_render::RenderSettings::default();
+        if self.settings.glass_view != defaults.glass_view {
+            q.push(("glass-view".into(), self.settings.glass_view.name().into()));
+        }
+        if self.settings.glass_exit != defaults.glass_exit {
+            q.push(("glass-exit".into(), self.settings.glass_exit.name().into()));
+        }
+        let mut note = None;
+        if builtin && let Some(base) = self.link_base(model) {
+            let orbit = self.orbit.link_text();
+            if orbit != super::orbit::Orbit::from_camera(&base.camera).link_text() {
+                q.push(("orbit".into(), orbit));
+            }
+            let (keys, why) = link_scene::scene_keys(&self.scene, &base);
+            q.extend(keys);
+            note = why;
+        }
         let on = [
             ("nonfinite", self.settings.debug_nonfinite),
             ("boundary", self.boundary.enabled),
@@ -213,10 +269,22 @@ impl Viewer {
         ];
         q.extend(on.iter().filter(|(_, v)| *v).map(|(k, _)| (k.to_string(), "on".to_string())));
         let query: Vec<String> = q.iter().map(|(k, v)| format!("{k}={}", encode(v))).collect();
-        let note = (!builtin).then(|| {
-            format!("{} is a file, which a link cannot carry: save the scene and share the file", self.scene_name)
-        });
+        if !builtin {
+            note = Some(format!(
+                "{} is a file, which a link cannot carry: save the scene and share the file",
+                self.scene_name
+            ));
+        }
         (format!("{base}?{}", query.join("&")), note)
+    }
+
+    /// The scene a link's scene and model keys open, which its edits are written against.
+    fn link_base(&self, model: ModelChoice) -> Option<shadelab_model::Scene> {
+        let args = ["shadelab", "--scene", self.scene_name.as_str(), "--model", model.name()];
+        let c = cli::parse_args(args).ok()?;
+        let mut loaded = cli::load(&c.scene).ok()?;
+        c.mode.settle(&mut loaded, &c.scene).ok()?;
+        Some(loaded.scene)
     }
 }
 

@@ -11,6 +11,7 @@ mod derive;
 pub mod difference;
 mod files;
 mod link;
+mod link_scene;
 mod loading;
 mod lobe;
 mod orbit;

@@ -36,6 +36,18 @@ impl Orbit {
         Orbit { target: c.target, yaw: d.x.atan2(d.z), pitch: (d.y / distance).asin(), distance }
     }
 
+    /// The orbit as a link writes it: target x,y,z, then yaw, pitch and distance, each float in
+    /// the shortest form that reads back to the same bits.
+    pub fn link_text(&self) -> String {
+        let t = self.target;
+        [t.x, t.y, t.z, self.yaw, self.pitch, self.distance].map(|x| format!("{x}")).join(",")
+    }
+
+    /// The orbit a link gives (see [`parse_link`]).
+    pub fn from_link(target: DVec3, [yaw, pitch, distance]: [f64; 3]) -> Orbit {
+        Orbit { target, yaw, pitch, distance }
+    }
+
     /// The camera looking from the orbit at its target, with `base`'s lens.
     pub fn camera(&self, base: &Camera) -> Camera {
         let dir = DVec3::new(self.pitch.cos() * self.yaw.sin(), self.pitch.sin(), self.pitch.cos() * self.yaw.cos());
@@ -72,4 +84,28 @@ impl Orbit {
             *self = Orbit::from_camera(base);
         }
     }
+}
+
+shadelab_model::param_ranges! {
+    /// A link's orbit yaw: any number of turns a drag can add, far past what one makes.
+    const LINK_YAW = "orbit", "yaw", "orbit yaw in radians", [-1e6, 1e6];
+    /// A link's orbit pitch: up to straight up or down (a scene's own camera may look so).
+    const LINK_PITCH = "orbit", "pitch", "orbit pitch in radians", [-std::f64::consts::FRAC_PI_2, std::f64::consts::FRAC_PI_2];
+    /// A link's orbit distance, or a target coordinate: positive, within a million metres.
+    const LINK_DISTANCE = "orbit", "d", "orbit distance in metres", [1e-9, 1e6];
+    const LINK_COORDINATE = "orbit", "x", "orbit target coordinate in metres", [-1e6, 1e6];
+}
+
+/// Read a link's `orbit=x,y,z,yaw,pitch,distance`; an error names the part and its range.
+pub fn parse_link(text: &str) -> Result<(DVec3, [f64; 3]), String> {
+    let parts: Vec<&str> = text.split(',').collect();
+    if parts.len() != 6 {
+        return Err(format!("'{text}' is not six numbers x,y,z,yaw,pitch,distance"));
+    }
+    let ranges = [LINK_COORDINATE, LINK_COORDINATE, LINK_COORDINATE, LINK_YAW, LINK_PITCH, LINK_DISTANCE];
+    let mut v = [0.0; 6];
+    for ((o, p), r) in v.iter_mut().zip(parts).zip(ranges) {
+        *o = r.parse(p).map_err(|e| e.to_string())?;
+    }
+    Ok((DVec3::new(v[0], v[1], v[2]), [v[3], v[4], v[5]]))
 }

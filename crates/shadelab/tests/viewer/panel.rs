@@ -2,7 +2,7 @@
 
 use crate::common;
 use crate::harness::{
-    ViewerHarness, changed_view_pixels, click, harness, keep_for_a_look, run_until, scroll_click, wait_loaded,
+    ViewerHarness, changed_view_pixels, click, harness, keep_for_a_look, orbit, run_until, scroll_click, wait_loaded,
 };
 use egui_kittest::kittest::Queryable;
 use shadelab_model::{ShadingMode, SpecularModel};
@@ -504,6 +504,41 @@ fn a_link_written_by_the_viewer_opens_the_same_view() {
     let (msg, is_error) = bad.state().message().cloned().expect("a message");
     assert!(is_error && msg.contains("shading=toon") && msg.contains("flat, gouraud, phong"), "{msg}");
     assert_eq!(bad.state().link("").0, "?scene=glass&shading=phong&model=cook-torrance&term=shadow");
+}
+
+/// A link copied from a view with edited materials, lights, camera and environment opens the same
+/// picture in a fresh viewer, to the pixel, and writes the same link again.
+#[test]
+fn a_link_carries_edited_materials_lights_camera_and_environment() {
+    use shadelab_model::lighting::env_map::{EnvSource, Environment};
+    let mut h = harness();
+    orbit(&mut h, 10);
+    let s = h.state_mut().scene_mut();
+    s.materials[0].m = 0.123_456_789;
+    s.materials[1].mu = [0.9, 0.5, 0.25];
+    s.lights[0].intensity = 0.7;
+    s.lights[1].shadow.filter = shadelab_model::shadow_settings::ShadowFilter::Pcss;
+    s.lights.push(shadelab_model::Light::point(glam::DVec3::new(-2.0, 3.0, 1.0), [0.2, 0.4, 1.0], 0.8, 0.1));
+    s.environment = Some(Environment::new(EnvSource::Sky { turbidity: 4.0, sun: None }));
+    s.ambient = [0.0; 3];
+    h.run_steps(3);
+    let (link, note) = h.state().link("");
+    assert!(note.is_none(), "{note:?}");
+    eprintln!("the edited view's link: {link} ({} characters)", link.len());
+    for key in ["orbit=", "mat0.m=0.123456789", "mat1.mu=0.9,0.5,0.25", "lights=3", "light2.pos=-2,3,1", "env=sky"] {
+        assert!(link.contains(key), "{key} in {link}");
+    }
+    let parsed = shadelab::viewer::parse_query(&link);
+    assert!(parsed.errors.is_empty(), "{:?}", parsed.errors);
+    let mut fresh = harness();
+    fresh.state_mut().open_link(&parsed);
+    fresh.run_steps(3);
+    assert!(fresh.state().message().is_none(), "{:?}", fresh.state().message());
+    assert_eq!(fresh.state().link("").0, link, "the same view, so the same link");
+    let (a, b) = (h.render().expect("render"), fresh.render().expect("render"));
+    keep_for_a_look(&a, "viewer-link-copied.png");
+    keep_for_a_look(&b, "viewer-link-opened.png");
+    assert_eq!(changed_view_pixels(&a, &b), 0, "the link opens the same picture");
 }
 
 #[test]

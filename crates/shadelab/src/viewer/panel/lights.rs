@@ -21,7 +21,7 @@ impl Viewer {
         ui.horizontal(|ui| {
             ui.strong(format!("lights ({}/{MAX_LIGHTS})", self.scene.lights.len()));
             if ui.add_enabled(self.scene.lights.len() < MAX_LIGHTS, egui::Button::new("add")).clicked() {
-                self.scene.lights.push(Light::point(DVec3::new(2.0, 2.5, 2.0), [1.0; 3], 1.0, 0.05));
+                self.scene.lights.push(super::super::link_scene::added_light());
             }
         });
         let mut remove = None;

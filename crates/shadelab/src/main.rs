@@ -67,6 +67,7 @@ fn main() -> ExitCode {
             scene: cli.scene,
             mode: cli.mode,
             difference: cli.difference,
+            link: cli.link,
         }),
     };
     match result {

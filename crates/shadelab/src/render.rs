@@ -36,32 +36,26 @@ pub fn save_scene(scene: &shadelab_model::Scene, settings: SceneSettings, path: 
 }
 
 pub fn run(args: &cli::RenderArgs) -> Result<(), Failure> {
-    let mut loaded = cli::load(&args.scene)?;
-    let mode = args.mode.settle(&mut loaded, &args.scene)?;
+    let (loaded, mode, term) = view_of(args)?;
     let LoadedScene { scene, .. } = loaded;
-    if !args.term.in_model(scene.illumination) {
+    if !term.in_model(scene.illumination) {
         return Err(Failure::Usage(format!(
             "--term {}: the {} model has no such term (the four-term sum, --model sum, has I_t; the Lambert rule has no specular term)",
-            shadelab_model::params::NamedValue::name(args.term),
+            shadelab_model::params::NamedValue::name(term),
             scene.illumination
         )));
     }
-    if !args.term.in_scene(&scene) {
+    if !term.in_scene(&scene) {
         return Err(Failure::Usage(format!(
             "--term {}: the scene has no environment light; add --environment uniform, sky or a map file",
-            shadelab_model::params::NamedValue::name(args.term)
+            shadelab_model::params::NamedValue::name(term)
         )));
     }
     // One term alone is the scene with the other terms' coefficients at 0 (--save-scene keeps
     // the whole scene).
     let whole = scene;
-    let mut scene = args.term.scene(&whole);
-    let settings = RenderSettings {
-        debug_nonfinite: args.debug_nonfinite,
-        glass_exit: args.glass_exit,
-        glass_view: args.glass_view,
-        ..mode
-    };
+    let mut scene = term.scene(&whole);
+    let settings = RenderSettings { debug_nonfinite: args.debug_nonfinite, ..mode };
     let (width, height) = args.size.pixels();
     // An area light too small on screen for its area to show is drawn as a point light, saying why.
     if args.small_area_lights == SmallAreaLights::Point {
@@ -70,7 +64,7 @@ pub fn run(args: &cli::RenderArgs) -> Result<(), Failure> {
         }
     }
     let kind = image_kind(&args.output)?;
-    let factor = args.term == shadelab_model::terms::Term::Shadow;
+    let factor = term == shadelab_model::terms::Term::Shadow;
     if factor && !args.overlay.is_empty() {
         return Err(Failure::Usage("--overlay: not drawn over --term shadow (a grey factor image)".into()));
     }
@@ -108,6 +102,19 @@ pub fn run(args: &cli::RenderArgs) -> Result<(), Failure> {
         log::warn!("{bad} pixels are not finite");
     }
     Ok(())
+}
+
+/// The scene, settings and term `render` draws: the flags', or with `--link` the link's (its
+/// scene, modes, edits, orbit, glass views and term replace the flags' own).
+fn view_of(args: &cli::RenderArgs) -> Result<(LoadedScene, RenderSettings, shadelab_model::terms::Term), Failure> {
+    if let Some(query) = &args.link {
+        let (loaded, settings, term) = crate::viewer::open_headless(&crate::viewer::parse_query(query))
+            .map_err(|e| Failure::Usage(format!("--{e}")))?;
+        return Ok((loaded, settings, term.unwrap_or(args.term)));
+    }
+    let mut loaded = cli::load(&args.scene)?;
+    let mode = args.mode.settle(&mut loaded, &args.scene)?;
+    Ok((loaded, RenderSettings { glass_exit: args.glass_exit, glass_view: args.glass_view, ..mode }, args.term))
 }
 
 /// Errors for `--reference`, `--difference` and `--interpolation-difference` where they cannot apply.

@@ -61,6 +61,10 @@ pub struct Cli {
     /// Viewer: render this many frames, then exit 0.
     #[arg(long, value_name = "N", value_parser = values::count(FRAMES))]
     pub exit_after_frames: Option<u32>,
+    /// Viewer: open the view a link's query describes, as the page's "copy link" writes it
+    /// (`'?scene=glass&mat0.m=0.3&orbit=…'`); a bad key is named in the panel and the others apply.
+    #[arg(long, value_name = "QUERY")]
+    pub link: Option<String>,
     /// Viewer: the scene to start on and its overrides, as `render` takes them.
     #[command(flatten)]
     pub scene: SceneArgs,
@@ -372,6 +376,11 @@ pub struct RenderArgs {
     pub mode: ModeArgs,
     #[command(flatten)]
     pub scene: SceneArgs,
+    /// Draw the view a link's query describes (`'?scene=glass&mat0.m=0.3&orbit=…'`, as the
+    /// viewer's "copy link" writes it): its scene, modes, edits, camera, glass views and term
+    /// replace the scene and mode flags; a bad key is an error naming it.
+    #[arg(long, value_name = "QUERY")]
+    pub link: Option<String>,
     /// Also write the scene, after the overrides, as glTF 2.0 (.gltf with an embedded buffer, or
     /// .glb), with the shading mode and specular model in its extras.
     #[arg(long, value_name = "PATH")]

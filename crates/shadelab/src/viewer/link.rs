@@ -2,7 +2,8 @@
 //! command-line options, each checked by the same parsers as the flag, so a bad one is named in
 //! the panel with the flag's own one line and the others still apply. The panel's switches that
 //! have no flag (the term, the error map, the overlays, the glass views) have keys of their own,
-//! the camera's orbit its own, and the scene's edits theirs (`link_scene`).
+//! the camera's orbit its own, and the scene's edits theirs (`link_scene`). The desktop viewer
+//! reads the same query with `shadelab --link`.
 
 use super::Viewer;
 use super::difference::DifferenceKind;
@@ -15,7 +16,7 @@ use shadelab_model::terms::Term;
 use shadelab_model::{ModelChoice, SpecularModel};
 
 /// Options a link may not carry: they name files or end the program, which a page cannot.
-const REFUSED: &[&str] = &["screenshot", "exit-after-frames", "shaders"];
+const REFUSED: &[&str] = &["screenshot", "exit-after-frames", "shaders", "link"];
 
 /// The panel's switches that have no flag: key, and what it turns on.
 const SWITCHES: &[(&str, &str)] = &[
@@ -150,6 +151,30 @@ fn apply_edits(link: &Link, scene: &mut shadelab_model::Scene, errors: &mut Vec<
             errors.push(printable(&format!("link parameter {k}={v}: {e}")));
         }
     }
+}
+
+/// What a link opens, without a window (`render --link`): the scene as its flags load it with
+/// its edits, the orbit's camera and the settings with its glass views; and its term. Every bad
+/// parameter is a line of the error.
+pub fn open_headless(
+    link: &Link,
+) -> Result<(shadelab_model::gltf_io::LoadedScene, shadelab_render::RenderSettings, Option<Term>), String> {
+    let args = std::iter::once("shadelab".to_string()).chain(link.args.iter().cloned());
+    let c = cli::parse_args(args).map_err(|e| format!("link: {}", cli::one_line(&e)))?;
+    let usage = |f: crate::Failure| match f {
+        crate::Failure::Usage(m) => format!("link: {m}"),
+        crate::Failure::Run(e) => format!("link: {e:#}"),
+    };
+    let mut loaded = cli::load(&c.scene).map_err(usage)?;
+    let mut settings = c.mode.settle(&mut loaded, &c.scene).map_err(usage)?;
+    settings.glass_view = link.glass_view.unwrap_or(settings.glass_view);
+    settings.glass_exit = link.glass_exit.unwrap_or(settings.glass_exit);
+    let mut errors = link.errors.clone();
+    apply_edits(link, &mut loaded.scene, &mut errors);
+    if let Some((target, angles)) = link.orbit {
+        loaded.scene.camera = super::orbit::Orbit::from_link(target, angles).camera(&loaded.scene.camera);
+    }
+    if errors.is_empty() { Ok((loaded, settings, link.term)) } else { Err(errors.join("; ")) }
 }
 
 impl Viewer {

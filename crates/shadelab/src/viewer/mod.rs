@@ -25,7 +25,7 @@ mod view;
 pub mod web;
 
 pub use files::{FilePicker, FileRequest, native_file_picker};
-pub use link::{Link, parse_query};
+pub use link::{Link, open_headless, parse_query};
 
 use crate::cli;
 #[cfg(not(target_arch = "wasm32"))]
@@ -52,11 +52,13 @@ pub struct Options {
     pub scene: cli::SceneArgs,
     pub mode: cli::ModeArgs,
     pub difference: bool,
+    /// A link's query to open after the scene (`--link`).
+    pub link: Option<String>,
 }
 
 #[cfg(not(target_arch = "wasm32"))]
 pub fn run(options: Options) -> Result<(), Failure> {
-    let Options { screenshot, exit_after_frames, shaders, scene, mode, difference } = options;
+    let Options { screenshot, exit_after_frames, shaders, scene, mode, difference, link } = options;
     // A bad scene file, camera or flag is one line and exit 2, before any window opens.
     let mut loaded = cli::load(&scene)?;
     let settings = mode.settle(&mut loaded, &scene)?;
@@ -91,6 +93,9 @@ pub fn run(options: Options) -> Result<(), Failure> {
             viewer.allow_outside_paths = scene.allow_outside_paths;
             viewer.settings = settings;
             viewer.set_difference_view(difference);
+            if let Some(query) = &link {
+                viewer.open_link(&link::parse_query(query));
+            }
             Ok(Box::new(viewer) as Box<dyn eframe::App>)
         }),
     )

@@ -1,5 +1,5 @@
 //! The views of the model from the outside: `render --overlay` (boundary, normals, creases),
-//! `render --term` (one term alone, the shadow factor) and `shadelab figures`.
+//! `render --term` (one term alone, the shadow factor), `render --link` and `shadelab figures`.
 
 use crate::common;
 use crate::common::{error_lines, out_dir, render, shadelab};
@@ -310,3 +310,27 @@ fn render_exr(path: &std::path::Path, size: (u32, u32), extra: &[&str]) -> image
 
 /// A glTF file of one triangle, its positions in a data URI.
 const TRIANGLE_GLTF: &str = r#"{"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],"nodes":[{"mesh":0}],"meshes":[{"primitives":[{"attributes":{"POSITION":0}}]}],"accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3","min":[0,0,0],"max":[1,1,0]}],"bufferViews":[{"buffer":0,"byteLength":36}],"buffers":[{"byteLength":36,"uri":"data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA"}]}"#;
+
+/// `render --link` draws the view a link describes: a material edited by its key draws as the
+/// flag that edits every material does; an orbit moves the camera; a bad key is one line naming it.
+#[test]
+fn render_link_draws_the_links_view_and_names_a_bad_key() {
+    let dir = out_dir();
+    let (a, b, c) = (dir.join("link-keys.png"), dir.join("link-flag.png"), dir.join("link-orbit.png"));
+    let by_keys = render(&["--link", "?scene=sphere&mat0.m=0.6&mat1.m=0.6&light0.I=0.7"], (160, 90), &a).to_rgb8();
+    let by_flags = render(&["--scene", "sphere", "--m", "0.6", "--link", "?scene=sphere&light0.I=0.7"], (160, 90), &b);
+    let plain = render(&["--scene", "sphere"], (160, 90), &b).to_rgb8();
+    assert_ne!(by_keys, plain, "the keys change the picture");
+    // --m is a flag of the link's own scene: the link replaces the render's scene flags.
+    assert_ne!(by_flags.to_rgb8(), by_keys, "the render's --m gives way to the link");
+    let flagged = render(&["--link", "?scene=sphere&m=0.6&light0.I=0.7"], (160, 90), &b).to_rgb8();
+    assert_eq!(flagged, by_keys, "mat<i>.m on every material draws as the flag m");
+    let orbited = render(&["--link", "?scene=sphere&orbit=0,1,0,0.5,0.3,6"], (160, 90), &c).to_rgb8();
+    assert_ne!(orbited, plain, "the orbit moves the camera");
+    for (query, says) in [("?scene=sphere&mat0.m=2", "mat0.m=2"), ("?scene=sphere&orbit=1,2", "six numbers")] {
+        let o = shadelab(&["render", "--link", query, "--output", a.to_str().unwrap()]);
+        assert_eq!(o.status.code(), Some(2), "{query}: {}", String::from_utf8_lossy(&o.stderr));
+        let lines = error_lines(&o);
+        assert!(lines.len() == 1 && lines[0].contains(says), "{query}: {lines:?}");
+    }
+}

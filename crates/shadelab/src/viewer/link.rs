@@ -7,7 +7,7 @@
 
 use super::Viewer;
 use super::difference::DifferenceKind;
-use super::link_scene;
+use super::link_scene::{self, on_off};
 use crate::cli;
 use glam::DVec3;
 use shadelab_model::lighting::transmission::{GlassExit, GlassView};
@@ -44,15 +44,6 @@ pub struct Link {
     pub scene: Vec<(String, String)>,
     /// One line per bad parameter.
     pub errors: Vec<String>,
-}
-
-/// `on`/`off` and their usual spellings.
-pub(super) fn on_off(value: &str) -> Option<bool> {
-    match value.to_ascii_lowercase().as_str() {
-        "on" | "true" | "1" | "yes" | "" => Some(true),
-        "off" | "false" | "0" | "no" => Some(false),
-        _ => None,
-    }
 }
 
 /// `%41` → `A`, `+` → space (the form a browser writes a query in); a bad escape stays as it is.

@@ -41,7 +41,7 @@ fn list(xs: &[f64]) -> String {
     xs.iter().map(|x| num(*x)).collect::<Vec<_>>().join(",")
 }
 
-fn on_off(on: bool) -> String {
+fn on_or_off(on: bool) -> String {
     if on { "on" } else { "off" }.to_string()
 }
 
@@ -78,8 +78,17 @@ fn direction(text: &str) -> Result<DVec3, String> {
     Ok(d)
 }
 
+/// `on`/`off` and their usual spellings.
+pub(super) fn on_off(value: &str) -> Option<bool> {
+    match value.to_ascii_lowercase().as_str() {
+        "on" | "true" | "1" | "yes" | "" => Some(true),
+        "off" | "false" | "0" | "no" => Some(false),
+        _ => None,
+    }
+}
+
 fn switch(text: &str) -> Result<bool, String> {
-    super::link::on_off(text).ok_or_else(|| format!("'{text}' is not on or off"))
+    on_off(text).ok_or_else(|| format!("'{text}' is not on or off"))
 }
 
 fn named<T: NamedValue>(text: &str) -> Result<T, String> {
@@ -122,7 +131,7 @@ macro_rules! rgb {
 
 macro_rules! switch {
     ($key:literal, $($f:ident).+) => {
-        field!($key, $($f).+, on_off, switch)
+        field!($key, $($f).+, on_or_off, switch)
     };
 }
 

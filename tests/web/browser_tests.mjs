@@ -250,6 +250,25 @@ const tests = {
     noConsoleErrors(page);
     await page.close();
   },
+
+  // A view with edited materials, lights, camera and environment: the page opens it, writes the
+  // same link back (every float to the bit) and draws what `render --link` draws natively.
+  async a_link_carries_materials_lights_camera_and_environment() {
+    const query = "?scene=default&shading=phong&model=cook-torrance"
+      + "&orbit=0,0.35,-0.4,-0.36,0.3028848683749714,5.867069114984074&Ia=0,0,0"
+      + "&mat0.m=0.123456789&mat1.mu=0.9,0.5,0.25&lights=3&light0.I=0.7&light1.filter=pcss"
+      + "&light2.pos=-2,3,1&light2.C=0.2,0.4,1&light2.I=0.8&light2.alpha=0.1&env=sky&env.T=4";
+    const page = await open(query);
+    let s = await state(page);
+    check(!s.message_is_error, `message: ${s.message}`);
+    await click(page, "copy link");
+    s = await waitFor(page, "the copied link", (s) => s.link !== null, 30);
+    check(s.link.endsWith(query), `the copied link ${s.link} is not the one opened, ${query}`);
+    await settle(page);
+    await matchesNative(page, "link-edited", ["--link", query]);
+    noConsoleErrors(page);
+    await page.close();
+  },
 };
 
 let passed = 0, failed = 0;

@@ -17,6 +17,13 @@ pub fn scene(args: &SceneArgs) -> Result<Scene, Failure> {
 /// with the overrides applied. A bad file is the user's mistake (exit 2); its warnings are
 /// logged. A built-in scene lists its one camera.
 pub fn load(args: &SceneArgs) -> Result<LoadedScene, Failure> {
+    let mut loaded = load_unchanged(args)?;
+    apply_flags(args, &mut loaded.scene)?;
+    Ok(loaded)
+}
+
+/// The scene `--scene` names, through the camera `--camera` picks, before the overrides.
+pub fn load_unchanged(args: &SceneArgs) -> Result<LoadedScene, Failure> {
     let name = &args.scene;
     let is_file = {
         let lower = name.to_ascii_lowercase();
@@ -61,9 +68,13 @@ pub fn load(args: &SceneArgs) -> Result<LoadedScene, Failure> {
         };
         loaded.scene.camera = loaded.cameras[range.parse_u32(text)? as usize].1;
     }
-    loaded.scene.apply(&overrides(args));
-    environment(args, &mut loaded.scene)?;
     Ok(loaded)
+}
+
+/// The flags' overrides and environment applied to `scene`.
+pub fn apply_flags(args: &SceneArgs, scene: &mut Scene) -> Result<(), Failure> {
+    scene.apply(&overrides(args));
+    environment(args, scene)
 }
 
 /// The environment the flags ask for, in place of the scene's: `--environment` picks its source,

@@ -142,8 +142,68 @@ fn answer(mut stream: std::net::TcpStream, dir: &Path) -> std::io::Result<()> {
 }
 
 /// `cargo xtask web [--out DIR] [--port N]`, or `--bench` (`web_test::bench`).
+/// The URIs a `.gltf`'s text names (`"uri": "…"`), as written; the loader checks the rest.
+fn gltf_uris(text: &str) -> Vec<String> {
+    let mut uris = Vec::new();
+    let mut rest = text;
+    while let Some(i) = rest.find("\"uri\"") {
+        rest = rest[i + 5..].trim_start();
+        let Some(after) = rest.strip_prefix(':').map(str::trim_start).and_then(|r| r.strip_prefix('"')) else {
+            continue;
+        };
+        let end = after.find('"').unwrap_or(after.len());
+        uris.push(after[..end].to_string());
+        rest = &after[end..];
+    }
+    uris
+}
+
+/// Whether a path may stand as it is under the site: relative, with no `..`, scheme or `\`.
+fn stays_under(path: &str) -> bool {
+    !path.is_empty()
+        && !path.starts_with('/')
+        && !path.contains([':', '\\', '?', '#'])
+        && !path.split('/').any(|s| s == "..")
+}
+
+/// Copy each model into `site` for links to name (`?file=PATH`): under the path it was given
+/// where that is relative and stays below (else under its file name), a `.gltf` with the files
+/// it names beside it. Returns the site path of each.
+pub fn copy_models(site: &Path, models: &[PathBuf]) -> Result<Vec<String>, String> {
+    let mut written = Vec::new();
+    for model in models {
+        let given = model.to_string_lossy().replace('\\', "/");
+        let lower = given.to_ascii_lowercase();
+        if !(lower.ends_with(".glb") || lower.ends_with(".gltf")) {
+            return Err(format!("--with {given}: not a .glb or .gltf file"));
+        }
+        let bytes = std::fs::read(model).map_err(|e| format!("--with {given}: {e}"))?;
+        let name = model.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
+        let at = if stays_under(&given) { given.trim_start_matches("./").to_string() } else { name };
+        let dest = site.join(&at);
+        let mut copy = |from: &Path, to: &Path, what: &str| -> Result<(), String> {
+            std::fs::create_dir_all(to.parent().unwrap_or(site)).map_err(|e| format!("{}: {e}", to.display()))?;
+            std::fs::copy(from, to).map(|_| ()).map_err(|e| format!("--with {given}: {what}: {e}"))
+        };
+        copy(model, &dest, "copying")?;
+        if lower.ends_with(".gltf") {
+            let text = String::from_utf8_lossy(&bytes);
+            let beside = model.parent().unwrap_or(Path::new("."));
+            for uri in gltf_uris(&text).into_iter().filter(|u| !u.starts_with("data:")) {
+                if !stays_under(&uri) {
+                    return Err(format!("--with {given}: '{uri}' is not a file beside it, which a site can serve"));
+                }
+                copy(&beside.join(&uri), &dest.parent().unwrap_or(site).join(&uri), &uri)?;
+            }
+        }
+        written.push(at);
+    }
+    Ok(written)
+}
+
 pub fn main(args: &[String]) -> Result<(), String> {
     let mut out = None;
+    let mut with = Vec::new();
     let mut port = 8000u16;
     if args.first().map(String::as_str) == Some("--bench") {
         return crate::web_test::bench();
@@ -152,17 +212,27 @@ pub fn main(args: &[String]) -> Result<(), String> {
     while let Some(a) = it.next() {
         match a.as_str() {
             "--out" => out = Some(PathBuf::from(it.next().ok_or("--out needs a folder")?)),
+            "--with" => with.push(PathBuf::from(it.next().ok_or("--with needs a .glb or .gltf file")?)),
             "--port" => {
                 let v = it.next().ok_or("--port needs a number")?;
                 port = v.parse().map_err(|_| format!("--port: '{v}' is not a port number in [0, 65535]"))?;
             }
             other => {
-                return Err(format!("unknown option '{other}' (cargo xtask web [--out DIR] [--port N] | --bench)"));
+                return Err(format!(
+                    "unknown option '{other}' (cargo xtask web [--out DIR] [--with FILE]… [--port N] | --bench)"
+                ));
             }
         }
     }
+    let models = |dir: &Path| -> Result<(), String> {
+        for at in copy_models(dir, &with)? {
+            eprintln!("xtask: {at} is on the site: a link opens it with ?file={at}");
+        }
+        Ok(())
+    };
     if let Some(dir) = out {
         build_site(&dir)?;
+        models(&dir)?;
         eprintln!(
             "xtask: wrote the site to {} ({}); host the folder on any static server",
             dir.display(),
@@ -172,9 +242,38 @@ pub fn main(args: &[String]) -> Result<(), String> {
     }
     let dir = root().join("target/web-site");
     build_site(&dir)?;
+    models(&dir)?;
     let address = serve(&dir, port)?;
     println!("xtask: shadelab is served on {address} (Ctrl-C stops it); it needs a browser with WebGPU");
     loop {
         std::thread::park();
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// `--with`: a `.gltf` goes under its relative path with the buffer it names beside it; a
+    /// path that climbs out goes under its file name; a missing file or a URI out of the folder
+    /// is one line.
+    #[test]
+    fn models_are_copied_with_the_files_they_name() {
+        let tmp = std::env::temp_dir().join(format!("xtask-with-{}", std::process::id()));
+        let (src, site) = (tmp.join("src/models"), tmp.join("site"));
+        std::fs::create_dir_all(&src).unwrap();
+        std::fs::write(src.join("m.gltf"), r#"{"buffers": [{"uri" : "m.bin"}, {"uri": "data:,x"}]}"#).unwrap();
+        std::fs::write(src.join("m.bin"), b"1234").unwrap();
+        std::fs::write(src.join("out.gltf"), r#"{"images": [{"uri": "../secret.png"}]}"#).unwrap();
+        let at = copy_models(&site, &[src.join("m.gltf")]).unwrap();
+        let name = "m.gltf".to_string();
+        assert_eq!(at, [name], "an absolute path goes under its file name");
+        assert_eq!(std::fs::read(site.join("m.bin")).unwrap(), b"1234");
+        assert!(copy_models(&site, &[src.join("out.gltf")]).unwrap_err().contains("not a file beside it"));
+        assert!(copy_models(&site, &[src.join("none.glb")]).unwrap_err().starts_with("--with "));
+        assert!(copy_models(&site, &[src.join("m.bin")]).unwrap_err().contains("not a .glb or .gltf"));
+        assert_eq!(gltf_uris(r#"{"uri":"a b.bin","x":{"uri" :  "c.png"}}"#), ["a b.bin", "c.png"]);
+        assert!(stays_under("models/duck.glb") && !stays_under("../x.glb") && !stays_under("/x.glb"));
+        std::fs::remove_dir_all(&tmp).unwrap();
     }
 }

@@ -108,6 +108,11 @@ impl Viewer {
         if let Some(files) = super::web::take_chosen_files() {
             self.open_files(files);
         }
+        #[cfg(target_arch = "wasm32")]
+        if let Some(e) = super::web::take_fetch_error() {
+            self.pending_link = None;
+            self.message = Some((e, true));
+        }
         let Some((request, rx)) = &self.picking else { return };
         let answer = match rx.try_recv() {
             Ok(answer) => answer,

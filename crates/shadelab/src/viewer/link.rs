@@ -7,13 +7,14 @@
 
 use super::Viewer;
 use super::difference::DifferenceKind;
+use super::link_file;
 use super::link_scene::{self, on_off};
 use crate::cli;
 use glam::DVec3;
 use shadelab_model::lighting::transmission::{GlassExit, GlassView};
 use shadelab_model::params::NamedValue;
 use shadelab_model::terms::Term;
-use shadelab_model::{ModelChoice, SpecularModel};
+use shadelab_model::{ModelChoice, Scene, SpecularModel};
 
 /// Options a link may not carry: they name files or end the program, which a page cannot.
 const REFUSED: &[&str] = &["screenshot", "exit-after-frames", "shaders", "link"];
@@ -42,6 +43,8 @@ pub struct Link {
     pub orbit: Option<(DVec3, [f64; 3])>,
     /// The scene's edits, key and value as given, read once the scene is open.
     pub scene: Vec<(String, String)>,
+    /// A model on the page's own site (`file=models/duck.glb`), checked by [`link_file::site_path`].
+    pub file: Option<String>,
     /// One line per bad parameter.
     pub errors: Vec<String>,
 }
@@ -52,11 +55,12 @@ fn decode(text: &str) -> String {
     shadelab_model::gltf_io::percent_decode(&text.replace('+', " "))
 }
 
-/// `A` stays, a space → `%20`, and so on: the characters a query value may hold as they are.
+/// `A` stays, a space → `%20`, and so on: the characters a query value may hold as they are
+/// (`/` among them, so a file's path reads as written).
 pub(super) fn encode(text: &str) -> String {
     let mut out = String::with_capacity(text.len());
     for b in text.bytes() {
-        if b.is_ascii_alphanumeric() || matches!(b, b'-' | b'_' | b'.' | b'~' | b',') {
+        if b.is_ascii_alphanumeric() || matches!(b, b'-' | b'_' | b'.' | b'~' | b',' | b'/') {
             out.push(b as char);
         } else {
             out.push_str(&format!("%{b:02X}"));
@@ -81,6 +85,7 @@ fn take(link: &mut Link, key: &str, value: &str) -> Result<(), String> {
         "glass-view" => link.glass_view = Some(GlassView::parse_named(value).map_err(named)?),
         "glass-exit" => link.glass_exit = Some(GlassExit::parse_named(value).map_err(named)?),
         "orbit" => link.orbit = Some(super::orbit::parse_link(value)?),
+        "file" => link.file = Some(link_file::site_path(value)?),
         k if link_scene::is_scene_key(k) => link.scene.push((k.to_string(), value.to_string())),
         "difference" => match on_off(value) {
             Some(true) => link.args.push("--difference".into()),
@@ -126,6 +131,17 @@ pub fn parse_query(query: &str) -> Link {
 }
 
 impl Link {
+    /// The command line the link's flags make; a file is its `--scene` on the desktop (the page
+    /// fetches it from its site instead).
+    pub(super) fn flag_args(&self) -> Vec<String> {
+        let mut args = vec!["shadelab".to_string()];
+        args.extend(self.args.iter().cloned());
+        if let Some(file) = self.file.as_ref().filter(|_| !cfg!(target_arch = "wasm32")) {
+            args.extend(["--scene".to_string(), file.clone()]);
+        }
+        args
+    }
+
     /// The scene's edits in the order they are read: those that change what the others apply to
     /// (the ambient term, the light count, the environment's source) first, each group as given.
     pub fn scene_keys_in_order(&self) -> impl Iterator<Item = (&str, &str)> {
@@ -150,8 +166,7 @@ fn apply_edits(link: &Link, scene: &mut shadelab_model::Scene, errors: &mut Vec<
 pub fn open_headless(
     link: &Link,
 ) -> Result<(shadelab_model::gltf_io::LoadedScene, shadelab_render::RenderSettings, Option<Term>), String> {
-    let args = std::iter::once("shadelab".to_string()).chain(link.args.iter().cloned());
-    let c = cli::parse_args(args).map_err(|e| format!("link: {}", cli::one_line(&e)))?;
+    let c = cli::parse_args(link.flag_args()).map_err(|e| format!("link: {}", cli::one_line(&e)))?;
     let usage = |f: crate::Failure| match f {
         crate::Failure::Usage(m) => format!("link: {m}"),
         crate::Failure::Run(e) => format!("link: {e:#}"),
@@ -173,16 +188,30 @@ impl Viewer {
     /// switches. Every bad parameter is named in the panel; the rest apply.
     pub fn open_link(&mut self, link: &Link) {
         let mut errors = link.errors.clone();
-        let args = std::iter::once("shadelab".to_string()).chain(link.args.iter().cloned());
-        match cli::parse_args(args) {
+        match cli::parse_args(link.flag_args()) {
             Ok(c) => {
-                if let Err(e) = self.open_scene_args(&c.scene, &c.mode) {
-                    errors.push(format!("link: {e}"));
+                if let Some(file) = link.file.as_ref().filter(|_| cfg!(target_arch = "wasm32")) {
+                    // The page fetches the file; the rest of the view waits for it.
+                    self.fetch_link_file(file, link.clone());
+                    if !errors.is_empty() {
+                        self.message = Some((errors.join("\n"), true));
+                    }
+                    return;
+                }
+                match self.open_scene_args(&c.scene, &c.mode) {
+                    Ok(raw) => self.link_file = link.file.clone().map(|f| (f, raw)),
+                    Err(e) => errors.push(format!("link: {e}")),
                 }
                 self.set_difference_view(c.difference);
             }
             Err(e) => errors.push(format!("link: {}", cli::one_line(&e))),
         }
+        self.apply_view(link, errors);
+    }
+
+    /// The part of a link that applies to the scene on show: the term, the error map, the glass
+    /// views, the scene's edits, the orbit and the switches; then every error in the panel.
+    pub(super) fn apply_view(&mut self, link: &Link, mut errors: Vec<String>) {
         if let Some(term) = link.term {
             if term.in_scene(&self.scene) {
                 self.term = term;
@@ -218,26 +247,33 @@ impl Viewer {
 
     /// Load a scene and settle its modes as the command line does; on failure the scene on show
     /// stays.
-    fn open_scene_args(&mut self, scene: &cli::SceneArgs, mode: &cli::ModeArgs) -> Result<(), String> {
+    /// Returns the scene as loaded, before the mode's model: the base of a file's link.
+    fn open_scene_args(&mut self, scene: &cli::SceneArgs, mode: &cli::ModeArgs) -> Result<Scene, String> {
         let usage = |f: crate::Failure| match f {
             crate::Failure::Usage(m) => m,
             crate::Failure::Run(e) => format!("{e:#}"),
         };
-        let mut loaded = cli::load(scene).map_err(usage)?;
+        let mut loaded = cli::load_unchanged(scene).map_err(usage)?;
+        let raw = loaded.scene.clone();
+        cli::apply_flags(scene, &mut loaded.scene).map_err(usage)?;
         let settings = mode.settle(&mut loaded, scene).map_err(usage)?;
         self.show_loaded(loaded, &scene.scene)?;
         self.settings = settings;
-        Ok(())
+        Ok(raw)
     }
 
     /// The link to the view on show: `base` (the page's address) with the scene, the modes, the
-    /// term and the switches. A scene opened from a file cannot travel in a link: it is left out
-    /// (the link opens the default scene) and `note` says so.
+    /// term, the switches, the orbit and the scene's edits. A scene opened from a file other than
+    /// a link's own `file=` cannot travel in a link: it is left out (the link opens the default
+    /// scene) and `note` says so.
     pub fn link(&self, base: &str) -> (String, Option<String>) {
         let mut q: Vec<(String, String)> = Vec::new();
         let builtin = shadelab_model::scene::BUILTIN_SCENES.contains(&self.scene_name.as_str());
+        let file = self.link_file.as_ref().filter(|_| !builtin);
         if builtin {
             q.push(("scene".into(), self.scene_name.clone()));
+        } else if let Some((path, _)) = file {
+            q.push(("file".into(), path.clone()));
         }
         q.push(("shading".into(), self.settings.shading.name().into()));
         let model = ModelChoice::of(self.scene.illumination, self.settings.specular);
@@ -267,12 +303,13 @@ impl Viewer {
             q.push(("glass-exit".into(), self.settings.glass_exit.name().into()));
         }
         let mut note = None;
-        if builtin && let Some(base) = self.link_base(model) {
+        let from = if builtin { self.link_base(model) } else { file.map(|(_, raw)| link_file::base(raw, model)) };
+        if let Some(from) = from {
             let orbit = self.orbit.link_text();
-            if orbit != super::orbit::Orbit::from_camera(&base.camera).link_text() {
+            if orbit != super::orbit::Orbit::from_camera(&from.camera).link_text() {
                 q.push(("orbit".into(), orbit));
             }
-            let (keys, why) = link_scene::scene_keys(&self.scene, &base);
+            let (keys, why) = link_scene::scene_keys(&self.scene, &from);
             q.extend(keys);
             note = why;
         }
@@ -285,7 +322,7 @@ impl Viewer {
         ];
         q.extend(on.iter().filter(|(_, v)| *v).map(|(k, _)| (k.to_string(), "on".to_string())));
         let query: Vec<String> = q.iter().map(|(k, v)| format!("{k}={}", encode(v))).collect();
-        if !builtin {
+        if !builtin && file.is_none() {
             note = Some(format!(
                 "{} is a file, which a link cannot carry: save the scene and share the file",
                 self.scene_name
@@ -343,7 +380,7 @@ mod tests {
     #[test]
     fn values_are_percent_decoded_and_encoded() {
         assert_eq!(decode("a%20b+c%2C%zz%4"), "a b c,%zz%4");
-        assert_eq!(encode("a b/c,d"), "a%20b%2Fc,d");
+        assert_eq!(encode("a b/c,d&e=f"), "a%20b/c,d%26e%3Df");
         let l = parse_query("mu=0.9%2C0.6%2C0.2");
         assert_eq!(l.args, ["--mu", "0.9,0.6,0.2"]);
         assert!(l.errors.is_empty(), "{:?}", l.errors);

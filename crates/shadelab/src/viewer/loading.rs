@@ -204,6 +204,9 @@ impl Viewer {
         let name = l.name.clone();
         self.loading = None;
         match result {
+            Ok((loaded, gpu_scene)) if self.is_pending_link_file(&name) => {
+                self.finish_link_file(loaded, gpu_scene, &name)
+            }
             Ok((loaded, gpu_scene)) => {
                 let mut text = format!("opened {name}");
                 for w in &loaded.warnings {
@@ -219,7 +222,10 @@ impl Viewer {
                 }
                 self.message = Some((text, false));
             }
-            Err(e) => self.message = Some((e, true)),
+            Err(e) => {
+                self.pending_link = None;
+                self.message = Some((e, true));
+            }
         }
     }
 

@@ -11,6 +11,7 @@ mod derive;
 pub mod difference;
 mod files;
 mod link;
+mod link_file;
 mod link_scene;
 mod loading;
 mod lobe;
@@ -177,6 +178,11 @@ pub struct Viewer {
     copied_link: Option<(String, Option<String>)>,
     /// The I_amb an environment chosen in the panel took the place of, given back with "none".
     ambient_replaced: Option<[f64; 3]>,
+    /// A link waiting for the file it names (`file=`) to be fetched and opened.
+    pending_link: Option<link::Link>,
+    /// The site path of the scene on show when a link's `file=` opened it, with the scene as the
+    /// file holds it: the next link names the file and writes its edits against that scene.
+    link_file: Option<(String, Scene)>,
     /// In the browser: the screenshot being read back, downloaded once it is.
     #[cfg(target_arch = "wasm32")]
     screenshot_reading: Option<shadelab_render::target::PendingReadBack>,
@@ -255,6 +261,8 @@ impl Viewer {
             uniforms_written: None,
             copied_link: None,
             ambient_replaced: None,
+            pending_link: None,
+            link_file: None,
             #[cfg(target_arch = "wasm32")]
             screenshot_reading: None,
         })
@@ -444,6 +452,7 @@ impl Viewer {
         self.selected_material = s.objects.get(1).map_or(0, |o| o.material);
         self.shadow_maps.scene_replaced(s.lights.len());
         self.ambient_replaced = None;
+        self.link_file = None;
         self.scene = s;
         self.scene_name = name.into();
     }

@@ -22,6 +22,8 @@ thread_local! {
     static CHOSEN: RefCell<Option<Files>> = const { RefCell::new(None) };
     /// The page's egui context, to draw a frame once files have been read.
     static CONTEXT: RefCell<Option<egui::Context>> = const { RefCell::new(None) };
+    /// Why a link's file could not be fetched, waiting for the viewer's next frame.
+    static FETCH_ERROR: RefCell<Option<String>> = const { RefCell::new(None) };
 }
 
 fn js_error(e: JsValue) -> String {
@@ -73,6 +75,70 @@ pub fn take_chosen_files() -> Option<Files> {
 fn deliver(files: Files) {
     CHOSEN.with(|c| *c.borrow_mut() = Some(files));
     CONTEXT.with(|c| c.borrow().as_ref().map(|ctx| ctx.request_repaint()));
+}
+
+/// Why the last link's file could not be fetched, if it could not.
+pub fn take_fetch_error() -> Option<String> {
+    FETCH_ERROR.with(|c| c.borrow_mut().take())
+}
+
+/// `url` (relative to the page) as bytes; an error names it and the HTTP status.
+async fn fetch_bytes(url: &str) -> Result<Vec<u8>, String> {
+    let promise = window().map_err(js_error)?.fetch_with_str(url);
+    let response: web_sys::Response = JsFuture::from(promise).await.map_err(js_error)?.dyn_into().map_err(js_error)?;
+    if !response.ok() {
+        return Err(format!("{url}: HTTP {}", response.status()));
+    }
+    let buffer = JsFuture::from(response.array_buffer().map_err(js_error)?).await.map_err(js_error)?;
+    Ok(js_sys::Uint8Array::new(&buffer).to_vec())
+}
+
+/// The files a `.gltf` names besides itself (its buffers' and images' URIs; data URIs are inside).
+fn external_uris(json: &[u8]) -> Result<Vec<String>, String> {
+    let v: serde_json::Value = serde_json::from_slice(json).map_err(|e| format!("not a glTF JSON file: {e}"))?;
+    let mut uris = Vec::new();
+    for key in ["buffers", "images"] {
+        for item in v.get(key).and_then(|a| a.as_array()).into_iter().flatten() {
+            if let Some(uri) = item.get("uri").and_then(|u| u.as_str())
+                && !uri.starts_with("data:")
+            {
+                uris.push(uri.to_string());
+            }
+        }
+    }
+    Ok(uris)
+}
+
+/// A link's model from the page's site and, for a `.gltf`, the files it names beside it (each
+/// held to the same rule as the link's path), named as the loader looks them up.
+async fn fetch_model(file: &str) -> Result<Files, String> {
+    let main = fetch_bytes(file).await?;
+    let mut files = Vec::new();
+    if file.to_ascii_lowercase().ends_with(".gltf") {
+        let folder = file.rfind('/').map_or("", |i| &file[..=i]);
+        for uri in external_uris(&main)? {
+            let decoded = shadelab_model::gltf_io::percent_decode(&uri);
+            super::link_file::relative_on_site(&decoded)?;
+            let bytes = fetch_bytes(&format!("{folder}{uri}")).await?;
+            files.push((decoded.rsplit('/').next().unwrap_or(&decoded).to_string(), bytes));
+        }
+    }
+    files.insert(0, (file.rsplit('/').next().unwrap_or(file).to_string(), main));
+    Ok(files)
+}
+
+/// Fetch a link's model from the page's site; it opens as picked files do, and a failure is one
+/// line in the panel.
+pub fn fetch_site_files(file: String) {
+    wasm_bindgen_futures::spawn_local(async move {
+        match fetch_model(&file).await {
+            Ok(files) => deliver(files),
+            Err(e) => {
+                FETCH_ERROR.with(|c| *c.borrow_mut() = Some(format!("link parameter file={file}: {e}")));
+                CONTEXT.with(|c| c.borrow().as_ref().map(|ctx| ctx.request_repaint()));
+            }
+        }
+    });
 }
 
 /// Ask for files: the page's file input opens the browser's picker.

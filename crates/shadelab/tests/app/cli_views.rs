@@ -334,3 +334,34 @@ fn render_link_draws_the_links_view_and_names_a_bad_key() {
         assert!(lines.len() == 1 && lines[0].contains(says), "{query}: {lines:?}");
     }
 }
+
+/// `render --link '?file=…'`: a model relative to the working folder opens as `--scene` does,
+/// with the link's edits over it; a path out of the folder or to another origin is one line.
+#[test]
+fn render_link_opens_a_relative_file_and_refuses_others() {
+    let dir = out_dir();
+    let run = |args: &[&str]| {
+        Command::new(env!("CARGO_BIN_EXE_shadelab"))
+            .args(args)
+            .current_dir(common::root())
+            .env("SHADELAB_ADAPTER", "lavapipe")
+            .output()
+            .expect("run shadelab")
+    };
+    let draw = |link: &str, name: &str| {
+        let out = dir.join(name);
+        let o = run(&["render", "--link", link, "--width", "160", "--height", "90", "--output", out.to_str().unwrap()]);
+        assert!(o.status.success(), "{link}: {}", String::from_utf8_lossy(&o.stderr));
+        image::open(&out).unwrap().to_rgb8()
+    };
+    let file = common::root().join("assets/textured-floor.gltf");
+    let by_scene = render(&["--scene", file.to_str().unwrap()], (160, 90), &dir.join("file-scene.png")).to_rgb8();
+    assert_eq!(draw("?file=assets/textured-floor.gltf", "file-link.png"), by_scene, "file= opens as --scene");
+    assert_ne!(draw("?file=assets/textured-floor.gltf&mat0.m=0.9&light0.I=0.2", "file-edited.png"), by_scene);
+    for bad in ["?file=../x.glb", "?file=https://example.org/x.glb", "?file=/etc/x.gltf", "?file=x.png"] {
+        let o = run(&["render", "--link", bad, "--output", dir.join("x.png").to_str().unwrap()]);
+        assert_eq!(o.status.code(), Some(2), "{bad}");
+        let lines = error_lines(&o);
+        assert!(lines.len() == 1 && lines[0].contains("file="), "{bad}: {lines:?}");
+    }
+}

@@ -2,7 +2,8 @@
 // the native renderer on lavapipe. `cargo xtask test` runs it after building and serving the site:
 //   node tests/web/browser_tests.mjs
 // with SHADELAB_URL (the served site), SHADELAB_BIN (the native binary), PLAYWRIGHT (the folder
-// holding node_modules/playwright-core), SHADELAB_ROOT and SHADELAB_OUT (where images go).
+// holding node_modules/playwright-core), SHADELAB_ROOT, SHADELAB_SITE (the served folder, where a
+// test puts a model for a link to name) and SHADELAB_OUT (where images go).
 // It prints cargo's "test … ok" lines and one "test result:" line, which xtask counts.
 
 import { env, launch } from "./browser.mjs";
@@ -14,6 +15,7 @@ const URL_BASE = env("SHADELAB_URL");
 const BIN = env("SHADELAB_BIN");
 const ROOT = env("SHADELAB_ROOT");
 const OUT = env("SHADELAB_OUT");
+const SITE = env("SHADELAB_SITE");
 const SAMPLES = path.join(ROOT, "../shared/gltf-samples");
 
 // The web page against the native render of the same view: FLIP mean at most this. Measured at
@@ -267,6 +269,40 @@ const tests = {
     await settle(page);
     await matchesNative(page, "link-edited", ["--link", query]);
     noConsoleErrors(page);
+    await page.close();
+  },
+
+  // A model on the site opens from a link (`?file=`), the buffer its .gltf names fetched beside
+  // it, with the link's edits over it; copy link names it again; another origin is refused.
+  async a_link_opens_a_model_on_the_site() {
+    // On the site as `cargo xtask web --with` puts it: BoxTextured with its buffer in a file.
+    const gltf = JSON.parse(fs.readFileSync(path.join(SAMPLES, "BoxTextured.gltf"), "utf8"));
+    fs.mkdirSync(path.join(SITE, "models"), { recursive: true });
+    fs.writeFileSync(path.join(SITE, "models/box.bin"), Buffer.from(gltf.buffers[0].uri.split(",")[1], "base64"));
+    gltf.buffers[0].uri = "box.bin";
+    fs.writeFileSync(path.join(SITE, "models/box.gltf"), JSON.stringify(gltf));
+    const query = "?file=models/box.gltf&shading=phong&model=cook-torrance&mat0.r_s=0.7&mat0.m=0.3";
+    let page = await open(query);
+    let s = await waitFor(page, "the linked model", (s) => s.scene === "box.gltf" && !s.loading, 60);
+    check(s.textures === 1 && !s.message_is_error, `textures ${s.textures}, message ${s.message}`);
+    await click(page, "copy link");
+    s = await waitFor(page, "the copied link", (s) => s.link !== null, 30);
+    check(s.link.endsWith(query), `the copied link ${s.link} is not the one opened, ${query}`);
+    await settle(page);
+    const shot = await shootView(page, "link-file");
+    const native = path.join(OUT, "link-file-native.png");
+    execFileSync(BIN, ["render", "--width", String(shot.w), "--height", String(shot.h), "--output", native,
+      "--link", query], { cwd: SITE });
+    const c = compare(native, shot.file, "link-file");
+    console.log(`    link-file: against render --link in the site's folder: ${c.line}`);
+    check(c.flip <= MAX_FLIP_AGAINST_NATIVE, `link-file: FLIP ${c.flip} against native is above ${MAX_FLIP_AGAINST_NATIVE}`);
+    noConsoleErrors(page);
+    await page.close();
+    page = await open("?file=https://example.org/duck.glb&shading=gouraud");
+    s = await state(page);
+    check(s.scene === "default" && s.shading === "gouraud", `the rest of the link applies: ${s.scene}, ${s.shading}`);
+    check(s.message_is_error && s.message.includes("file=https://example.org/duck.glb") && s.message.includes("refused"),
+      `message: ${s.message}`);
     await page.close();
   },
 };

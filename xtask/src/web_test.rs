@@ -66,7 +66,7 @@ pub fn browser_tests(icd: &Path, site: &Path, built: Result<(), String>, count: 
     };
     eprintln!("xtask: the web build is served on {address}");
     let mut cmd = node_script("browser_tests.mjs", &address, "target/web-test", icd);
-    cmd.env("SHADELAB_ROOT", &root);
+    cmd.env("SHADELAB_ROOT", &root).env("SHADELAB_SITE", site);
     let (ok, c) = timings.step("browser tests", |t| run_counting(&mut cmd, t, ""));
     count.passed += c.passed;
     count.failed += c.failed;

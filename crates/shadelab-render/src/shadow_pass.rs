@@ -21,7 +21,7 @@ use crate::renderer::Renderer;
 use crate::shadow_maps::{CASTERS_BYTES, LayerState, ShadowMaps};
 pub use crate::shadow_maps::{LightMap, ShadowPlan};
 use crate::target::DEPTH_FORMAT;
-use crate::target::{LinearImage, padded_bytes_per_row};
+use crate::target::{LinearImage, PendingReadBack, padded_bytes_per_row};
 use crate::uniforms::{ShadowLightUniform, ShadowsUniform};
 use crate::upload::SceneGpu;
 use crate::vertex::SmoothVertex;
@@ -359,10 +359,10 @@ impl Renderer {
         gpu_scene.shadows.as_ref().map(|m| m.plan.clone())
     }
 
-    /// Read back one layer of light `light`'s shadow map (`face` 0…5 of a point light, else 0)
-    /// after a frame drew it: its `resolution²` texels, the stored depth in [0, 1] (1: nothing)
-    /// in r, g and b, rows top to bottom as the map is addressed. `None` if the light has no map.
-    pub fn read_shadow_map(&self, gpu_scene: &SceneGpu, light: usize, face: u32) -> Option<LinearImage> {
+    /// Start reading one layer of light `light`'s shadow map (`face`: a cube face or a cascade)
+    /// back as depths; `None` when the light has no map or no such layer. The map completes
+    /// between frames ([`PendingReadBack::try_take`]): the page cannot wait for the GPU.
+    pub fn start_shadow_map_read(&self, gpu_scene: &SceneGpu, light: usize, face: u32) -> Option<PendingReadBack> {
         let maps = gpu_scene.shadows.as_ref()?;
         let map = (*maps.plan.lights.get(light)?)?;
         if face >= map.layers {
@@ -391,19 +391,16 @@ impl Renderer {
             wgpu::Extent3d { width: n, height: n, depth_or_array_layers: 1 },
         );
         self.queue.submit([encoder.finish()]);
-        let slice = buffer.slice(..);
-        slice.map_async(wgpu::MapMode::Read, |_| {});
+        Some(PendingReadBack::requested(buffer, (n, n), row, true))
+    }
+
+    /// [`Self::start_shadow_map_read`], waited for (the desktop's tests and tools): the layer's
+    /// `resolution²` texels, the stored depth in [0, 1] (1: nothing) in r, g and b, rows top to
+    /// bottom as the map is addressed.
+    pub fn read_shadow_map(&self, gpu_scene: &SceneGpu, light: usize, face: u32) -> Option<LinearImage> {
+        let pending = self.start_shadow_map_read(gpu_scene, light, face)?;
         self.device.poll(wgpu::PollType::wait_indefinitely()).ok()?;
-        let data = slice.get_mapped_range().ok()?;
-        let mut pixels = Vec::with_capacity((n * n) as usize);
-        for y in 0..n as usize {
-            let r = &data[y * row as usize..][..n as usize * 4];
-            pixels.extend(r.chunks_exact(4).map(|b| {
-                let d = f32::from_le_bytes([b[0], b[1], b[2], b[3]]);
-                [d, d, d, 1.0]
-            }));
-        }
-        Some(LinearImage { width: n, height: n, pixels })
+        pending.try_take(&self.device)?.ok()
     }
 }
 

@@ -193,6 +193,8 @@ pub struct PendingReadBack {
     width: u32,
     height: u32,
     bytes_per_row: u32,
+    /// A depth map's one f32 a texel (read as grey `[d, d, d, 1]`), else `Rgba32Float`.
+    depth: bool,
     mapped: Arc<OnceLock<Result<(), wgpu::BufferAsyncError>>>,
 }
 
@@ -222,15 +224,25 @@ pub fn start_read_back(device: &wgpu::Device, queue: &wgpu::Queue, target: &Targ
         wgpu::Extent3d { width, height, depth_or_array_layers: 1 },
     );
     queue.submit([enc.finish()]);
-    let mapped = Arc::new(OnceLock::new());
-    let done = mapped.clone();
-    staging.slice(..).map_async(wgpu::MapMode::Read, move |r| {
-        let _ = done.set(r);
-    });
-    PendingReadBack { staging, width, height, bytes_per_row, mapped }
+    PendingReadBack::requested(staging, (width, height), bytes_per_row, false)
 }
 
 impl PendingReadBack {
+    /// Ask for `staging` (a copy of `width × height` texels submitted into it) to be mapped.
+    pub(crate) fn requested(
+        staging: wgpu::Buffer,
+        (width, height): (u32, u32),
+        bytes_per_row: u32,
+        depth: bool,
+    ) -> Self {
+        let mapped = Arc::new(OnceLock::new());
+        let done = mapped.clone();
+        staging.slice(..).map_async(wgpu::MapMode::Read, move |r| {
+            let _ = done.set(r);
+        });
+        PendingReadBack { staging, width, height, bytes_per_row, depth, mapped }
+    }
+
     /// The image once mapped (`None`: not yet), or why the map failed (a lost device).
     pub fn try_take(&self, device: &wgpu::Device) -> Option<Result<LinearImage, String>> {
         let _ = device.poll(wgpu::PollType::Poll);
@@ -245,9 +257,17 @@ impl PendingReadBack {
         let mut pixels = Vec::with_capacity(w * h);
         {
             let data = self.staging.slice(..).get_mapped_range().map_err(|e| format!("mapped range: {e}"))?;
+            let texel = if self.depth { 4 } else { 16 };
             for row in 0..h {
-                let bytes = &data[row * self.bytes_per_row as usize..][..w * 16];
-                pixels.extend(bytes.chunks_exact(16).map(|t| bytemuck::pod_read_unaligned::<[f32; 4]>(t)));
+                let bytes = &data[row * self.bytes_per_row as usize..][..w * texel];
+                if self.depth {
+                    pixels.extend(bytes.chunks_exact(4).map(|b| {
+                        let d = f32::from_le_bytes([b[0], b[1], b[2], b[3]]);
+                        [d, d, d, 1.0]
+                    }));
+                } else {
+                    pixels.extend(bytes.chunks_exact(16).map(|t| bytemuck::pod_read_unaligned::<[f32; 4]>(t)));
+                }
             }
         }
         self.staging.unmap();

@@ -2,11 +2,12 @@
 //! map" box is ticked gets its map (one face of a point light's six, or one of a directional
 //! light's cascades) read back from the GPU and shown as grey in its panel section. The map is
 //! read back only when what it depends on (the scene's objects, lights and meshes, the layer, and
-//! for cascades the camera) changed since the last read, not every frame.
+//! for cascades the camera) changed since the last read, not every frame, and without a wait: the
+//! copy is taken in a later frame, as the page must.
 
 use eframe::egui;
 use shadelab_model::Scene;
-use shadelab_render::target::LinearImage;
+use shadelab_render::target::{LinearImage, PendingReadBack};
 use shadelab_render::{Renderer, SceneGpu};
 use std::collections::BTreeMap;
 
@@ -53,11 +54,12 @@ impl MapKey {
     }
 }
 
-/// One light's map view: the face asked for and the map last read back.
+/// One light's map view: the face asked for, the map last read back and the one being read.
 #[derive(Default)]
 pub struct LightMapView {
     pub face: u32,
     shown: Option<(MapKey, Option<egui::TextureHandle>)>,
+    reading: Option<(MapKey, Option<PendingReadBack>)>,
 }
 
 /// The lights whose map is on show (by light index).
@@ -95,25 +97,39 @@ impl ShadowMapViews {
     pub fn scene_replaced(&mut self, n: usize) {
         self.views.retain(|&i, _| i < n);
         for v in self.views.values_mut() {
-            v.shown = None;
+            (v.shown, v.reading) = (None, None);
         }
     }
 
-    /// Read back the maps on show whose scene or face changed; call after a frame drew the maps.
+    /// Read back the maps on show whose scene or face changed, and show those read back since;
+    /// call after a frame drew the maps. Never waits: a map arrives a frame or more later.
     pub fn update(&mut self, ctx: &egui::Context, renderer: &Renderer, gpu_scene: &SceneGpu, scene: &Scene) {
         if self.views.is_empty() {
             return;
         }
         self.views.retain(|&i, _| i < scene.lights.len());
         for (&i, v) in &mut self.views {
-            if v.shown.as_ref().is_some_and(|(k, _)| k.matches(scene, i, v.face)) {
-                continue;
+            let current = |k: &MapKey| k.matches(scene, i, v.face);
+            if !v.shown.as_ref().is_some_and(|(k, _)| current(k))
+                && !v.reading.as_ref().is_some_and(|(k, _)| current(k))
+            {
+                let pending = renderer.start_shadow_map_read(gpu_scene, i, v.face);
+                v.reading = Some((MapKey::new(scene, i, v.face), pending));
             }
-            let key = MapKey::new(scene, i, v.face);
-            let texture = renderer.read_shadow_map(gpu_scene, i, v.face).map(|map| {
-                let name = format!("shadow map L{} face {}", i + 1, v.face);
-                ctx.load_texture(name, depth_as_grey(&map), egui::TextureOptions::LINEAR)
-            });
+            let Some((_, pending)) = &v.reading else { continue };
+            let texture = match pending.as_ref().map(|p| p.try_take(&renderer.device)) {
+                Some(None) => {
+                    ctx.request_repaint();
+                    continue;
+                }
+                Some(Some(Ok(map))) => {
+                    let name = format!("shadow map L{} face {}", i + 1, v.face);
+                    Some(ctx.load_texture(name, depth_as_grey(&map), egui::TextureOptions::LINEAR))
+                }
+                // No map for the light, or the read failed (a lost device): nothing to show.
+                Some(Some(Err(_))) | None => None,
+            };
+            let (key, _) = v.reading.take().expect("matched above");
             v.shown = Some((key, texture));
         }
     }

@@ -89,7 +89,7 @@ impl Viewer {
         #[cfg(target_arch = "wasm32")]
         ui.small(
             "in the browser: the reference is traced a few rows a frame on the page's one thread; a file \
-             opens a stage a frame; the shadow-map views are not read back",
+             opens a stage a frame",
         );
         ui.small("drag: orbit · right/middle drag: pan · wheel: zoom · 1/2/3: shading · S: specular · F12: screenshot");
     }

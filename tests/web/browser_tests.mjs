@@ -305,6 +305,23 @@ const tests = {
       `message: ${s.message}`);
     await page.close();
   },
+
+  // The lights' shadow-map views read back on the page without a wait: a link ticks L1's and
+  // L2's boxes, both maps arrive (the sun's cascade, the point light's cube face), and copy link
+  // keeps them.
+  async the_shadow_map_views_read_back_on_the_page() {
+    const page = await open("?scene=default&shadow-maps=0,1");
+    let s = await waitFor(page, "both maps", (s) => s.shadow_maps[0] !== null && s.shadow_maps[1] !== null, 60);
+    for (const [w, h] of s.shadow_maps) {
+      check(w === h && w >= 256 && (w & (w - 1)) === 0, `a map of ${w}×${h}`);
+    }
+    check(!s.message_is_error, `message: ${s.message}`);
+    await click(page, "copy link");
+    s = await waitFor(page, "the copied link", (s) => s.link !== null, 30);
+    check(s.link.includes("shadow-maps=0,1"), `link: ${s.link}`);
+    noConsoleErrors(page);
+    await page.close();
+  },
 };
 
 let passed = 0, failed = 0;

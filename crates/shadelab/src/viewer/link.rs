@@ -45,6 +45,8 @@ pub struct Link {
     pub scene: Vec<(String, String)>,
     /// A model on the page's own site (`file=models/duck.glb`), checked by [`link_file::site_path`].
     pub file: Option<String>,
+    /// The lights whose "show shadow map" box is ticked (`shadow-maps=0,2`).
+    pub shadow_maps: Option<Vec<usize>>,
     /// One line per bad parameter.
     pub errors: Vec<String>,
 }
@@ -86,6 +88,7 @@ fn take(link: &mut Link, key: &str, value: &str) -> Result<(), String> {
         "glass-exit" => link.glass_exit = Some(GlassExit::parse_named(value).map_err(named)?),
         "orbit" => link.orbit = Some(super::orbit::parse_link(value)?),
         "file" => link.file = Some(link_file::site_path(value)?),
+        "shadow-maps" => link.shadow_maps = Some(light_list(value)?),
         k if link_scene::is_scene_key(k) => link.scene.push((k.to_string(), value.to_string())),
         "difference" => match on_off(value) {
             Some(true) => link.args.push("--difference".into()),
@@ -107,6 +110,17 @@ fn take(link: &mut Link, key: &str, value: &str) -> Result<(), String> {
         }
     }
     Ok(())
+}
+
+/// `0,2`: light indices, each below `MAX_LIGHTS` (the scene's own count is checked on opening).
+fn light_list(value: &str) -> Result<Vec<usize>, String> {
+    let max = shadelab_model::lighting::lights::MAX_LIGHTS;
+    value
+        .split(',')
+        .filter(|v| !v.is_empty())
+        .map(|v| v.parse::<usize>().ok().filter(|&i| i < max))
+        .collect::<Option<Vec<_>>>()
+        .ok_or_else(|| format!("'{value}' is not a list of light indices 0 to {} (i,j,…)", max - 1))
 }
 
 /// A line with its control characters escaped (`%0A` decodes to a newline): an error names what
@@ -230,6 +244,13 @@ impl Viewer {
         if let Some((target, angles)) = link.orbit {
             self.orbit = super::orbit::Orbit::from_link(target, angles);
         }
+        for &i in link.shadow_maps.iter().flatten() {
+            if i < self.scene.lights.len() {
+                self.shadow_maps.set(i, true);
+            } else {
+                errors.push(format!("link parameter shadow-maps: the scene has no light {i}"));
+            }
+        }
         for &(key, on) in &link.switches {
             match key {
                 "nonfinite" => self.settings.debug_nonfinite = on,
@@ -313,6 +334,11 @@ impl Viewer {
             q.extend(keys);
             note = why;
         }
+        let maps: Vec<String> =
+            (0..self.scene.lights.len()).filter(|&i| self.shadow_maps.is_on(i)).map(|i| i.to_string()).collect();
+        if !maps.is_empty() {
+            q.push(("shadow-maps".into(), maps.join(",")));
+        }
         let on = [
             ("nonfinite", self.settings.debug_nonfinite),
             ("boundary", self.boundary.enabled),
@@ -355,6 +381,11 @@ mod tests {
         assert_eq!(l.switches, [("boundary", true)]);
         assert_eq!(parse_query("difference=on&error-map=ambient").error_map, Some(DifferenceKind::Ambient));
         assert_eq!(parse_query("error-map=sky").errors.len(), 1);
+        assert_eq!(parse_query("shadow-maps=0,2").shadow_maps, Some(vec![0, 2]));
+        for bad in ["shadow-maps=8", "shadow-maps=a", "shadow-maps=-1"] {
+            let e = parse_query(bad).errors;
+            assert!(e.len() == 1 && e[0].contains("0 to 7"), "{bad}: {e:?}");
+        }
     }
 
     #[test]

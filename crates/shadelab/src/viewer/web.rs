@@ -256,6 +256,7 @@ pub fn publish_state(v: &Viewer) {
         "reference_size": v.difference.reference_size().map(|(w, h)| [w, h]),
         "scene_pass_ms": v.frame_ms,
         "link": v.copied_link.as_ref().map(|(l, _)| l.clone()),
+        "shadow_maps": (0..v.scene.lights.len()).map(|i| v.shadow_map_shown(i)).collect::<Vec<_>>(),
         "view": v.view_rect.as_ref().map(rect),
         "marks": marks,
     });

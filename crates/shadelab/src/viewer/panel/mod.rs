@@ -57,7 +57,7 @@ impl Viewer {
     pub(super) fn copy_link_ui(&mut self, ui: &mut egui::Ui) {
         let r = ui
             .button("copy link")
-            .on_hover_text("copy a link that opens this scene, mode, model, term and switches in shadelab's web page");
+            .on_hover_text("copy a link that opens this view in shadelab's web page: the scene, its edits, the camera, the modes and the switches");
         self.mark("copy link", &r);
         if r.clicked() {
             let (link, note) = self.link(&super::web::page_address());

@@ -322,6 +322,21 @@ const tests = {
     noConsoleErrors(page);
     await page.close();
   },
+
+  // The ambient error map on the page comes coarse first (a quarter of the side, a sixteenth of
+  // the full map's paths), within seconds, while the full map is traced behind it.
+  async the_ambient_error_map_shows_a_coarse_map_first() {
+    const page = await open("?scene=default&difference=on&error-map=ambient");
+    const t0 = Date.now();
+    const s = await waitFor(page, "the coarse ambient map", (s) => s.coarse_map, 90);
+    console.log(`    the coarse map after ${((Date.now() - t0) / 1000).toFixed(1)} s, reference ${s.reference_size}`);
+    const [w, h] = s.reference_size;
+    check(w <= 120 && h >= 1, `state: ${JSON.stringify(s).slice(0, 300)}`);
+    await waitFor(page, "the full map traced behind the coarse one", (s) => s.coarse_map && s.computing_reference, 30);
+    await shootView(page, "ambient-coarse");
+    noConsoleErrors(page);
+    await page.close();
+  },
 };
 
 let passed = 0, failed = 0;

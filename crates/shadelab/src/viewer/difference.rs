@@ -27,6 +27,11 @@ pub const DIFFERENCE_MAX_WIDTH: u32 = 480;
 /// ambient error (docs/reference.md) in about 2 s on two cores at the map's 480 px.
 pub const VIEWER_PATHS: PathSettings = PathSettings { bounces: 4, spp: 32, seed: 1 };
 
+/// On the page the ambient map's truth is first traced at this fraction of the map's side, a
+/// sixteenth of the work, and shown while the full one is traced: the page's one thread takes
+/// minutes for the full map and seconds for the coarse one.
+const COARSE_DIVISOR: u32 = 4;
+
 /// What a reference image depends on: with `paths`, it is path traced.
 #[derive(Clone, PartialEq)]
 struct ReferenceKey {
@@ -69,6 +74,8 @@ struct Shown {
     stats: ErrorStats,
     shadow: Option<ShadowStats>,
     ambient: Option<AmbientFit>,
+    /// Traced at a [`COARSE_DIVISOR`]th of the map's side, ahead of the full map.
+    coarse: bool,
 }
 
 /// A reference being traced: on a worker thread, or in the browser (no threads) a few rows a
@@ -142,6 +149,11 @@ impl DifferenceView {
         self.shown.as_ref().filter(|_| self.current).and_then(|s| s.shadow)
     }
 
+    /// Whether the map on show is the coarse one, shown while the full one is traced.
+    pub fn coarse_on_show(&self) -> bool {
+        !self.current && self.shown.as_ref().is_some_and(|s| s.coarse)
+    }
+
     /// The ambient error map's numbers, if it is the current map.
     pub fn ambient_fit(&self) -> Option<AmbientFit> {
         self.shown.as_ref().filter(|_| self.current).and_then(|s| s.ambient)
@@ -175,34 +187,44 @@ impl DifferenceView {
         let paths = (self.kind == DifferenceKind::Ambient).then_some(VIEWER_PATHS);
         let key = ReferenceKey { scene: scene.clone(), specular: settings.specular, size, paths };
         self.current = false;
-        if let Some(s) = &self.shown
-            && s.key == key
-            && s.shading == settings.shading
-            && s.kind == self.kind
-        {
+        let shown_for = |k: &ReferenceKey| {
+            self.shown.as_ref().filter(|s| s.key == *k && s.shading == settings.shading && s.kind == self.kind)
+        };
+        if let Some(s) = shown_for(&key) {
             self.current = true;
             return Some(s.texture.id());
         }
+        // On the page an ambient map comes coarse first; the coarse map stands in meanwhile.
+        let coarse = (cfg!(target_arch = "wasm32") && self.kind == DifferenceKind::Ambient).then(|| ReferenceKey {
+            size: ((size.0 / COARSE_DIVISOR).max(1), (size.1 / COARSE_DIVISOR).max(1)),
+            ..key.clone()
+        });
+        let fallback = coarse.as_ref().and_then(|c| shown_for(c)).map(|s| s.texture.id());
+        let full_on_hand = self.reference.as_ref().is_some_and(|(k, _)| *k == key);
+        let key = match coarse {
+            Some(c) if fallback.is_none() && !full_on_hand => c,
+            _ => key,
+        };
         self.trace(ctx, scene, settings.specular, &key);
         let reference = match &self.reference {
             Some((k, r)) if *k == key => r.clone(),
-            _ => return None,
+            _ => return fallback,
         };
         let fresh = |r: &Reading| r.key == key && r.shading == settings.shading && r.kind == self.kind;
         if !self.reading.as_ref().is_some_and(fresh) {
             self.reading = Some(self.start_reading(renderer, gpu_scene, scene, settings, key));
         }
-        let reading = self.reading.as_ref()?;
+        let Some(reading) = self.reading.as_ref() else { return fallback };
         let device = &renderer.device;
         let (Some(lit), unshadowed) =
             (reading.lit.try_take(device), reading.unshadowed.as_ref().map(|u| u.try_take(device)))
         else {
             ctx.request_repaint();
-            return None;
+            return fallback;
         };
         if matches!(unshadowed, Some(None)) {
             ctx.request_repaint();
-            return None;
+            return fallback;
         }
         let reading = self.reading.take()?;
         let image = lit.ok()?;
@@ -227,8 +249,9 @@ impl DifferenceView {
         let texture = ctx.load_texture("difference from reference", color, egui::TextureOptions::LINEAR);
         let id = texture.id();
         let Reading { key, shading, kind, .. } = reading;
-        self.shown = Some(Shown { key, shading, kind, texture, stats, shadow, ambient });
-        self.current = true;
+        let coarse = key.size != difference_size(view_size.0, view_size.1);
+        self.shown = Some(Shown { key, shading, kind, texture, stats, shadow, ambient, coarse });
+        self.current = !coarse;
         Some(id)
     }
 

@@ -131,6 +131,9 @@ pub(super) fn difference_legend(
             )
         }
         (None, true) => match difference.progress() {
+            Some(p) if difference.coarse_on_show() => {
+                format!("a coarse map (a quarter of the side) while the {label} is traced in full… {:.0} %", p * 100.0)
+            }
             // In the browser it is traced a few rows a frame, on the page's one thread.
             Some(p) if cfg!(target_arch = "wasm32") => {
                 format!("computing the {label}… {:.0} % (in this page's thread, a few rows a frame)", p * 100.0)

@@ -254,6 +254,7 @@ pub fn publish_state(v: &Viewer) {
         "computing_reference": v.difference.computing(),
         "reference_ms": v.difference.traced_ms,
         "reference_size": v.difference.reference_size().map(|(w, h)| [w, h]),
+        "coarse_map": v.difference.coarse_on_show(),
         "scene_pass_ms": v.frame_ms,
         "link": v.copied_link.as_ref().map(|(l, _)| l.clone()),
         "shadow_maps": (0..v.scene.lights.len()).map(|i| v.shadow_map_shown(i)).collect::<Vec<_>>(),

@@ -181,7 +181,7 @@ pub fn copy_models(site: &Path, models: &[PathBuf]) -> Result<Vec<String>, Strin
         let name = model.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
         let at = if stays_under(&given) { given.trim_start_matches("./").to_string() } else { name };
         let dest = site.join(&at);
-        let mut copy = |from: &Path, to: &Path, what: &str| -> Result<(), String> {
+        let copy = |from: &Path, to: &Path, what: &str| -> Result<(), String> {
             std::fs::create_dir_all(to.parent().unwrap_or(site)).map_err(|e| format!("{}: {e}", to.display()))?;
             std::fs::copy(from, to).map(|_| ()).map_err(|e| format!("--with {given}: {what}: {e}"))
         };

@@ -7,8 +7,8 @@
 
 use super::Viewer;
 use super::difference::DifferenceKind;
-use super::link_file;
 use super::link_scene::{self, on_off};
+use super::site_path::site_path;
 use crate::cli;
 use glam::DVec3;
 use shadelab_model::lighting::transmission::{GlassExit, GlassView};
@@ -43,7 +43,7 @@ pub struct Link {
     pub orbit: Option<(DVec3, [f64; 3])>,
     /// The scene's edits, key and value as given, read once the scene is open.
     pub scene: Vec<(String, String)>,
-    /// A model on the page's own site (`file=models/duck.glb`), checked by [`link_file::site_path`].
+    /// A model on the page's own site (`file=models/duck.glb`), checked by [`site_path`].
     pub file: Option<String>,
     /// The lights whose "show shadow map" box is ticked (`shadow-maps=0,2`).
     pub shadow_maps: Option<Vec<usize>>,
@@ -87,7 +87,7 @@ fn take(link: &mut Link, key: &str, value: &str) -> Result<(), String> {
         "glass-view" => link.glass_view = Some(GlassView::parse_named(value).map_err(named)?),
         "glass-exit" => link.glass_exit = Some(GlassExit::parse_named(value).map_err(named)?),
         "orbit" => link.orbit = Some(super::orbit::parse_link(value)?),
-        "file" => link.file = Some(link_file::site_path(value)?),
+        "file" => link.file = Some(site_path(value)?),
         "shadow-maps" => link.shadow_maps = Some(light_list(value)?),
         k if link_scene::is_scene_key(k) => link.scene.push((k.to_string(), value.to_string())),
         "difference" => match on_off(value) {
@@ -324,7 +324,7 @@ impl Viewer {
             q.push(("glass-exit".into(), self.settings.glass_exit.name().into()));
         }
         let mut note = None;
-        let from = if builtin { self.link_base(model) } else { file.map(|(_, raw)| link_file::base(raw, model)) };
+        let from = if builtin { self.link_base(model) } else { file.map(|(_, raw)| link_scene::base(raw, model)) };
         if let Some(from) = from {
             let orbit = self.orbit.link_text();
             if orbit != super::orbit::Orbit::from_camera(&from.camera).link_text() {

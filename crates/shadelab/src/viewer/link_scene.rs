@@ -5,13 +5,13 @@
 //! or the names its flag has, and a bad one is named by its key while the others apply.
 
 use glam::DVec3;
-use shadelab_model::Scene;
 use shadelab_model::lighting::env_map::{ENV_INTENSITY, ENV_RADIANCE, ENV_ROTATION, EnvKind, EnvSource, Environment};
 use shadelab_model::lighting::lights::{self, Light, MAX_LIGHTS};
 use shadelab_model::lighting::sky::TURBIDITY;
 use shadelab_model::params::{self, NamedValue, ParamRange, PhongExponent};
-use shadelab_model::scene::Material;
+use shadelab_model::scene::{Material, Overrides};
 use shadelab_model::shadow_settings::{PCSS_TAPS, SHADOW_RESOLUTION};
+use shadelab_model::{ModelChoice, Scene};
 
 shadelab_model::param_ranges! {
     /// A light's position or an area light's tangent, per coordinate: a million metres, far past
@@ -294,6 +294,14 @@ pub fn scene_keys(scene: &Scene, base: &Scene) -> (Vec<(String, String)>, Option
         }
     }
     (out, note)
+}
+
+/// The scene a file's link writes its edits against: the file's scene as loaded, under the
+/// link's model (as `ModeArgs::settle` gives it).
+pub fn base(raw: &Scene, model: ModelChoice) -> Scene {
+    let mut s = raw.clone();
+    s.apply(&Overrides::for_model(model));
+    s
 }
 
 /// Whether `key` is one of a scene's edits (read by [`apply_scene_key`] once the scene is open).

@@ -21,6 +21,7 @@ mod panel;
 mod scripting;
 mod shadow_factor;
 mod shadow_maps;
+mod site_path;
 mod view;
 #[cfg(target_arch = "wasm32")]
 pub mod web;

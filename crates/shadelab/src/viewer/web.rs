@@ -118,7 +118,7 @@ async fn fetch_model(file: &str) -> Result<Files, String> {
         let folder = file.rfind('/').map_or("", |i| &file[..=i]);
         for uri in external_uris(&main)? {
             let decoded = shadelab_model::gltf_io::percent_decode(&uri);
-            super::link_file::relative_on_site(&decoded)?;
+            super::site_path::relative_on_site(&decoded)?;
             let bytes = fetch_bytes(&format!("{folder}{uri}")).await?;
             files.push((decoded.rsplit('/').next().unwrap_or(&decoded).to_string(), bytes));
         }

@@ -429,14 +429,19 @@ mod tests {
     /// The link parser's stand-in for a fuzz target (instrumenting the viewer crate for libFuzzer
     /// would cost more CI time than the rest of the fuzzing): 20000 mutations of real links, each
     /// with bytes replaced, inserted or removed from an alphabet of the query's own syntax, parse
-    /// without a panic and with every error on one line. A fixed seed keeps the run repeatable.
+    /// without a panic and with every error on one line; the scene's edits among them are also
+    /// applied to a built-in scene, which must not panic either. A fixed seed keeps the run
+    /// repeatable.
     #[test]
     fn mutated_links_parse_without_a_panic() {
         let seeds = [
             "?scene=glass&shading=gouraud&term=diffuse&boundary=on&difference=1&error-map=shadow",
             "?mu=0.9%2C0.6%2C0.2&m=0.3&h=mirror&light=rect&light-size=0.5&shadow-filter=pcss",
             "?model=sum&transmission=0.5&falloff-form=linear&d0=0.2&camera=0&normals=1",
+            "?orbit=0,0.35,-0.4,-0.36,0.3,5.8&Ia=0,0,0&mat0.m=0.1&mat1.mu=0.9,0.5,0.25&lights=3&light2.pos=-2,3,1",
+            "?file=models/box.gltf&light1.filter=pcss&light0.range=none&env=sky&env.T=4&env.sun=0,1,0&shadow-maps=0,1",
         ];
+        let base = shadelab_model::Scene::builtin("default").unwrap();
         let alphabet: Vec<char> = "?&=%,.-+0123456789aAfFzZ \u{0}\u{7f}é∞".chars().collect();
         let mut state: u64 = 0x9E37_79B9_7F4A_7C15;
         let mut next = move |n: usize| {
@@ -461,6 +466,12 @@ mod tests {
             let query: String = q.into_iter().collect();
             let link = parse_query(&query);
             assert!(link.errors.iter().all(|e| !e.contains('\n')), "{query}: {:?}", link.errors);
+            let mut scene = base.clone();
+            for (k, v) in link.scene_keys_in_order() {
+                if let Err(e) = link_scene::apply_scene_key(&mut scene, k, v) {
+                    assert!(!e.contains('\n'), "{query}: {k}={v}: {e}");
+                }
+            }
         }
     }
 }

@@ -102,6 +102,26 @@ impl EnvSource {
             EnvSource::Image(_) => "image",
         }
     }
+
+    /// The source's kind, as files and links name it.
+    pub fn kind(&self) -> EnvKind {
+        match self {
+            EnvSource::Uniform(_) => EnvKind::Uniform,
+            EnvSource::Sky { .. } => EnvKind::Sky,
+            EnvSource::Image(_) => EnvKind::Image,
+        }
+    }
+
+    /// A source of `kind` as the viewer's panel and links start one: a uniform one of `ambient`'s
+    /// radiance (the `I_a` it stands for), the sky at [`super::sky::TURBIDITY_DEFAULT`] following
+    /// the first directional light; `None` for an image, which only a file gives.
+    pub fn starting(kind: EnvKind, ambient: [f64; 3]) -> Option<EnvSource> {
+        match kind {
+            EnvKind::Uniform => Some(EnvSource::Uniform(ambient)),
+            EnvKind::Sky => Some(EnvSource::Sky { turbidity: super::sky::TURBIDITY_DEFAULT, sun: None }),
+            EnvKind::Image => None,
+        }
+    }
 }
 
 /// The scene's environment light: one at most per scene.

@@ -11,6 +11,10 @@ crate::param_ranges! {
     pub const TURBIDITY = "--turbidity", "T", "the sky's turbidity (2 clear to 10 hazy)", [2.0, 10.0];
 }
 
+/// The turbidity a sky starts with unless given one: a clear day, near the clear end of
+/// [`TURBIDITY`], where the sky's blue and its bright band round the sun both show.
+pub const TURBIDITY_DEFAULT: f64 = 3.0;
+
 /// The cosine of a view's angle from the zenith is taken as at least this in Perez's `1/cos θ`:
 /// at the horizon the term `e^{B/cos θ}` (with `B < 0`) is e^{-30} at most there, so the sky stays
 /// finite and continuous down to the horizon. Below it the sky is black: the ground is the scene's.

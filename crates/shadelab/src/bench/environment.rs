@@ -33,7 +33,10 @@ fn rmse(a: &[[f64; 3]], b: &[[f64; 3]]) -> f64 {
 fn lit(args: &cli::BenchAmbientArgs) -> Result<Scene, Failure> {
     let mut scene = cli::scene(&args.scene)?;
     if scene.environment.is_none() {
-        scene.environment = Some(Environment::new(EnvSource::Sky { turbidity: 3.0, sun: None }));
+        scene.environment = Some(Environment::new(EnvSource::Sky {
+            turbidity: shadelab_model::lighting::sky::TURBIDITY_DEFAULT,
+            sun: None,
+        }));
         scene.ambient = [0.0; 3];
     }
     Ok(scene)

@@ -82,7 +82,10 @@ pub fn apply_flags(args: &SceneArgs, scene: &mut Scene) -> Result<(), Failure> {
 /// adjust is the user's mistake.
 fn environment(args: &SceneArgs, scene: &mut Scene) -> Result<(), Failure> {
     use shadelab_model::lighting::env_map::{EnvSource, Environment};
-    let sky = EnvSource::Sky { turbidity: args.turbidity.unwrap_or(3.0), sun: None };
+    let sky = EnvSource::Sky {
+        turbidity: args.turbidity.unwrap_or(shadelab_model::lighting::sky::TURBIDITY_DEFAULT),
+        sun: None,
+    };
     match args.environment.as_deref() {
         None => {}
         Some("none") => scene.environment = None,

@@ -208,24 +208,6 @@ pub fn added_light() -> Light {
     Light::point(DVec3::new(2.0, 2.5, 2.0), [1.0; 3], 1.0, 0.05)
 }
 
-/// The environment a link's `env=<source>` starts from: the panel's choice of that source.
-fn new_environment(kind: EnvKind, ambient: [f64; 3]) -> Option<Environment> {
-    let source = match kind {
-        EnvKind::Uniform => EnvSource::Uniform(ambient),
-        EnvKind::Sky => EnvSource::Sky { turbidity: 3.0, sun: None },
-        EnvKind::Image => return None,
-    };
-    Some(Environment::new(source))
-}
-
-fn env_kind(env: &Environment) -> EnvKind {
-    match env.source {
-        EnvSource::Uniform(_) => EnvKind::Uniform,
-        EnvSource::Sky { .. } => EnvKind::Sky,
-        EnvSource::Image(_) => EnvKind::Image,
-    }
-}
-
 /// The source's own fields: a uniform one's radiance, the sky's turbidity and sun.
 fn source_keys(source: &EnvSource, base: Option<&EnvSource>, out: &mut Vec<(String, String)>) {
     match (source, base) {
@@ -277,16 +259,16 @@ pub fn scene_keys(scene: &Scene, base: &Scene) -> (Vec<(String, String)>, Option
     match (&scene.environment, &base.environment) {
         (None, None) => {}
         (None, Some(_)) => out.push(("env".into(), "none".into())),
-        (Some(e), _) if env_kind(e) == EnvKind::Image => {
+        (Some(e), _) if e.source.kind() == EnvKind::Image => {
             note = Some("an image environment is a file, which a link cannot carry: it is left out".to_string());
         }
         (Some(e), b) => {
-            let kind = env_kind(e);
+            let kind = e.source.kind();
             let from = match b {
-                Some(b) if env_kind(b) == kind => b.clone(),
+                Some(b) if b.source.kind() == kind => b.clone(),
                 _ => {
                     out.push(("env".into(), kind.name().into()));
-                    new_environment(kind, scene.ambient).expect("not an image")
+                    Environment::new(EnvSource::starting(kind, scene.ambient).expect("not an image"))
                 }
             };
             source_keys(&e.source, Some(&from.source), &mut out);
@@ -349,7 +331,7 @@ pub fn apply_scene_key(scene: &mut Scene, key: &str, value: &str) -> Result<(), 
                 "none" => None,
                 v => match named::<EnvKind>(v)? {
                     EnvKind::Image => return Err("an image environment is a file, which a link cannot carry".into()),
-                    kind => new_environment(kind, scene.ambient),
+                    kind => EnvSource::starting(kind, scene.ambient).map(Environment::new),
                 },
             }
         }

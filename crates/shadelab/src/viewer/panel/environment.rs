@@ -7,7 +7,7 @@
 use super::slider;
 use crate::viewer::Viewer;
 use eframe::egui;
-use shadelab_model::lighting::env_map::{ENV_INTENSITY, ENV_ROTATION, EnvImage, EnvSource, Environment};
+use shadelab_model::lighting::env_map::{ENV_INTENSITY, ENV_ROTATION, EnvImage, EnvKind, EnvSource, Environment};
 use shadelab_model::lighting::sky::TURBIDITY;
 
 /// The sources the menu offers.
@@ -121,8 +121,8 @@ impl Viewer {
             return;
         }
         let ambient = *self.ambient_replaced.get_or_insert(self.scene.ambient);
-        let source = if uniform { EnvSource::Uniform(ambient) } else { EnvSource::Sky { turbidity: 3.0, sun: None } };
-        self.scene.environment = Some(Environment::new(source));
+        let kind = if uniform { EnvKind::Uniform } else { EnvKind::Sky };
+        self.scene.environment = EnvSource::starting(kind, ambient).map(Environment::new);
         self.scene.ambient = [0.0; 3];
     }
 }

@@ -31,6 +31,16 @@ pub enum Failure {
     Run(anyhow::Error),
 }
 
+impl Failure {
+    /// The failure as the one line a panel or a link's error shows.
+    pub fn message(&self) -> String {
+        match self {
+            Failure::Usage(m) => m.clone(),
+            Failure::Run(e) => format!("{e:#}"),
+        }
+    }
+}
+
 impl From<shadelab_model::params::ParamError> for Failure {
     fn from(e: shadelab_model::params::ParamError) -> Self {
         Failure::Usage(e.to_string())

@@ -181,10 +181,7 @@ pub fn open_headless(
     link: &Link,
 ) -> Result<(shadelab_model::gltf_io::LoadedScene, shadelab_render::RenderSettings, Option<Term>), String> {
     let c = cli::parse_args(link.flag_args()).map_err(|e| format!("link: {}", cli::one_line(&e)))?;
-    let usage = |f: crate::Failure| match f {
-        crate::Failure::Usage(m) => format!("link: {m}"),
-        crate::Failure::Run(e) => format!("link: {e:#}"),
-    };
+    let usage = |f: crate::Failure| format!("link: {}", f.message());
     let mut loaded = cli::load(&c.scene).map_err(usage)?;
     let mut settings = c.mode.settle(&mut loaded, &c.scene).map_err(usage)?;
     settings.glass_view = link.glass_view.unwrap_or(settings.glass_view);
@@ -270,10 +267,7 @@ impl Viewer {
     /// stays.
     /// Returns the scene as loaded, before the mode's model: the base of a file's link.
     fn open_scene_args(&mut self, scene: &cli::SceneArgs, mode: &cli::ModeArgs) -> Result<Scene, String> {
-        let usage = |f: crate::Failure| match f {
-            crate::Failure::Usage(m) => m,
-            crate::Failure::Run(e) => format!("{e:#}"),
-        };
+        let usage = |f: crate::Failure| f.message();
         let mut loaded = cli::load_unchanged(scene).map_err(usage)?;
         let raw = loaded.scene.clone();
         cli::apply_flags(scene, &mut loaded.scene).map_err(usage)?;

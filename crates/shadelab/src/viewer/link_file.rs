@@ -42,8 +42,7 @@ impl Viewer {
         self.show_loaded_on_gpu(loaded, gpu_scene, name);
         match settled {
             Ok(settings) => self.settings = settings,
-            Err(crate::Failure::Usage(m)) => errors.push(format!("link: {m}")),
-            Err(crate::Failure::Run(e)) => errors.push(format!("link: {e:#}")),
+            Err(f) => errors.push(format!("link: {}", f.message())),
         }
         self.set_difference_view(c.difference);
         self.link_file = link.file.clone().map(|f| (f, raw));

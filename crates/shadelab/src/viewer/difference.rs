@@ -183,9 +183,9 @@ impl DifferenceView {
     /// the map matches them.
     pub fn update(&mut self, from: SideView) -> Option<egui::TextureId> {
         let SideView { ctx, renderer, gpu_scene, scene, settings, view_size } = from;
-        let size = difference_size(view_size.0, view_size.1);
+        let full = difference_size(view_size.0, view_size.1);
         let paths = (self.kind == DifferenceKind::Ambient).then_some(VIEWER_PATHS);
-        let key = ReferenceKey { scene: scene.clone(), specular: settings.specular, size, paths };
+        let key = ReferenceKey { scene: scene.clone(), specular: settings.specular, size: full, paths };
         self.current = false;
         let shown_for = |k: &ReferenceKey| {
             self.shown.as_ref().filter(|s| s.key == *k && s.shading == settings.shading && s.kind == self.kind)
@@ -196,7 +196,7 @@ impl DifferenceView {
         }
         // On the page an ambient map comes coarse first; the coarse map stands in meanwhile.
         let coarse = (cfg!(target_arch = "wasm32") && self.kind == DifferenceKind::Ambient).then(|| ReferenceKey {
-            size: ((size.0 / COARSE_DIVISOR).max(1), (size.1 / COARSE_DIVISOR).max(1)),
+            size: ((full.0 / COARSE_DIVISOR).max(1), (full.1 / COARSE_DIVISOR).max(1)),
             ..key.clone()
         });
         let fallback = coarse.as_ref().and_then(|c| shown_for(c)).map(|s| s.texture.id());
@@ -249,7 +249,7 @@ impl DifferenceView {
         let texture = ctx.load_texture("difference from reference", color, egui::TextureOptions::LINEAR);
         let id = texture.id();
         let Reading { key, shading, kind, .. } = reading;
-        let coarse = key.size != difference_size(view_size.0, view_size.1);
+        let coarse = key.size != full;
         self.shown = Some(Shown { key, shading, kind, texture, stats, shadow, ambient, coarse });
         self.current = !coarse;
         Some(id)

@@ -21,7 +21,7 @@ use crate::renderer::Renderer;
 use crate::shadow_maps::{CASTERS_BYTES, LayerState, ShadowMaps};
 pub use crate::shadow_maps::{LightMap, ShadowPlan};
 use crate::target::DEPTH_FORMAT;
-use crate::target::{LinearImage, PendingReadBack, padded_bytes_per_row};
+use crate::target::{PendingReadBack, padded_bytes_per_row};
 use crate::uniforms::{ShadowLightUniform, ShadowsUniform};
 use crate::upload::SceneGpu;
 use crate::vertex::SmoothVertex;
@@ -360,8 +360,9 @@ impl Renderer {
     }
 
     /// Start reading one layer of light `light`'s shadow map (`face`: a cube face or a cascade)
-    /// back as depths; `None` when the light has no map or no such layer. The map completes
-    /// between frames ([`PendingReadBack::try_take`]): the page cannot wait for the GPU.
+    /// back: `resolution²` texels, the stored depth in [0, 1] (1: nothing) in r, g and b, rows top
+    /// to bottom as the map is addressed; `None` when the light has no map or no such layer. The
+    /// map completes between frames ([`PendingReadBack::try_take`]): the page cannot wait.
     pub fn start_shadow_map_read(&self, gpu_scene: &SceneGpu, light: usize, face: u32) -> Option<PendingReadBack> {
         let maps = gpu_scene.shadows.as_ref()?;
         let map = (*maps.plan.lights.get(light)?)?;
@@ -392,15 +393,6 @@ impl Renderer {
         );
         self.queue.submit([encoder.finish()]);
         Some(PendingReadBack::requested(buffer, (n, n), row, true))
-    }
-
-    /// [`Self::start_shadow_map_read`], waited for (the desktop's tests and tools): the layer's
-    /// `resolution²` texels, the stored depth in [0, 1] (1: nothing) in r, g and b, rows top to
-    /// bottom as the map is addressed.
-    pub fn read_shadow_map(&self, gpu_scene: &SceneGpu, light: usize, face: u32) -> Option<LinearImage> {
-        let pending = self.start_shadow_map_read(gpu_scene, light, face)?;
-        self.device.poll(wgpu::PollType::wait_indefinitely()).ok()?;
-        pending.try_take(&self.device)?.ok()
     }
 }
 

@@ -69,7 +69,7 @@ super::extras_struct! {
 impl Reader<'_> {
     /// Every material of the file, in order, with its base colour texture; the textures and
     /// properties not drawn yet are warned about.
-    pub(super) fn materials(&mut self, scene: &mut Scene) -> Result<(), GltfError> {
+    pub(super) async fn materials(&mut self, scene: &mut Scene) -> Result<(), GltfError> {
         let root = self.root;
         let mut unused: Vec<&str> = Vec::new();
         for (i, m) in root.materials.iter().enumerate() {
@@ -77,11 +77,12 @@ impl Reader<'_> {
             let pbr = &m.pbr_metallic_roughness;
             let slot = |name: &str| format!("material {i}: {name}");
             if let Some(info) = &pbr.base_color_texture {
-                mat.base_color_texture = self.texture_ref(scene, info, &slot("baseColorTexture"))?;
+                mat.base_color_texture = self.texture_ref(scene, info, &slot("baseColorTexture")).await?;
             }
             if let Some(info) = &pbr.metallic_roughness_texture {
                 mat.maps.metal_roughness = self
-                    .texture_ref(scene, info, &slot("metallicRoughnessTexture"))?
+                    .texture_ref(scene, info, &slot("metallicRoughnessTexture"))
+                    .await?
                     .map(|texture| MetalRoughnessMap { texture, metallic_f0: mf0 });
             }
             if let Some(o) = &m.occlusion_texture {
@@ -96,7 +97,8 @@ impl Reader<'_> {
                     return Err(self.cx.invalid(slot("occlusionTexture: strength is not finite")));
                 }
                 mat.maps.occlusion = self
-                    .texture_ref(scene, &info, &slot("occlusionTexture"))?
+                    .texture_ref(scene, &info, &slot("occlusionTexture"))
+                    .await?
                     .map(|texture| OcclusionMap { texture, strength });
             }
             if let Some(nt) = &m.normal_texture {
@@ -110,11 +112,12 @@ impl Reader<'_> {
                     return Err(self.cx.invalid(slot("normalTexture: scale is not finite")));
                 }
                 mat.maps.normal = self
-                    .texture_ref(scene, &info, &slot("normalTexture"))?
+                    .texture_ref(scene, &info, &slot("normalTexture"))
+                    .await?
                     .map(|texture| NormalMap { texture, scale: nt.scale as f64 });
             }
             if let Some(info) = &m.emissive_texture {
-                mat.maps.emissive = self.texture_ref(scene, info, &slot("emissiveTexture"))?;
+                mat.maps.emissive = self.texture_ref(scene, info, &slot("emissiveTexture")).await?;
             }
             for (has, what) in [
                 (
@@ -128,6 +131,7 @@ impl Reader<'_> {
                 }
             }
             scene.materials.push(mat);
+            super::slices::slice_end().await;
         }
         if !unused.is_empty() {
             self.cx.warn(format!("material properties not drawn yet: {}", unused.join(", ")));

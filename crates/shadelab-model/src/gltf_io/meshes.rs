@@ -7,6 +7,7 @@
 use super::container::Writer;
 use super::extras::{self, Lenient};
 use super::scene_file::Reader;
+use super::slices::slice_end;
 use super::{GltfError, MAX_TRIANGLES};
 use crate::mesh::{MeshData, TriangleMesh};
 use crate::params;
@@ -52,15 +53,15 @@ impl Reader<'_> {
     }
 
     /// Read primitive `pi` of mesh `mi` (once).
-    pub(super) fn prim(&mut self, mi: usize, pi: usize) -> Result<Option<&Prim>, GltfError> {
+    pub(super) async fn prim(&mut self, mi: usize, pi: usize) -> Result<Option<&Prim>, GltfError> {
         if !self.prims.contains_key(&(mi, pi)) {
-            let p = self.read_prim(mi, pi)?;
+            let p = self.read_prim(mi, pi).await?;
             self.prims.insert((mi, pi), p);
         }
         Ok(self.prims[&(mi, pi)].as_ref())
     }
 
-    fn read_prim(&mut self, mi: usize, pi: usize) -> Result<Option<Prim>, GltfError> {
+    async fn read_prim(&mut self, mi: usize, pi: usize) -> Result<Option<Prim>, GltfError> {
         use json::accessor::Type;
         use json::mesh::{Mode, Semantic};
         let root = self.root;
@@ -80,6 +81,7 @@ impl Reader<'_> {
             .get(&Checked::Valid(Semantic::Positions))
             .ok_or_else(|| self.cx.invalid(format!("{what}: no POSITION attribute")))?;
         let mut positions = self.vec3s(pos.value(), &format!("{what}: POSITION"))?;
+        slice_end().await;
         let mut normals = match prim.attributes.get(&Checked::Valid(Semantic::Normals)) {
             Some(n) => {
                 let n = self.vec3s(n.value(), &format!("{what}: NORMAL"))?;
@@ -94,20 +96,28 @@ impl Reader<'_> {
             }
             None => None,
         };
+        slice_end().await;
         self.morph(mesh, prim, &what, &mut positions, normals.as_mut())?;
         if let Some(k) = positions.iter().position(|p| !p.is_finite()) {
             return Err(self.cx.invalid(format!("{what}: POSITION {k} is not finite ({})", positions[k])));
         }
         let n = positions.len();
+        slice_end().await;
         let uvs = match prim.attributes.get(&Checked::Valid(Semantic::TexCoords(0))) {
             Some(a) => Some(self.per_vertex::<2>(a.value(), &format!("{what}: TEXCOORD_0"), &[Type::Vec2], n)?),
             None => None,
         };
+        slice_end().await;
         let colors = self.colors(prim, &what, n)?;
         self.warn_unused_attributes(prim, &what);
+        slice_end().await;
         let tangents = self.tangents(prim, &what, n)?;
+        slice_end().await;
         let corners = self.corners(prim, positions.len(), &what)?;
+        slice_end().await;
         let tris = self.triangles(prim, mode, &corners, &what)?;
+        drop(corners);
+        slice_end().await;
         if tris.len() > MAX_TRIANGLES {
             return Err(self.too_many(tris.len()));
         }
@@ -123,6 +133,7 @@ impl Reader<'_> {
         let name = if mesh.primitives.len() > 1 { format!("{name} #{pi}") } else { name };
         let mut tm =
             TriangleMesh { name, positions, normals, indices: tris, uvs, colors, tangents }.with_attributes_kept();
+        slice_end().await;
         let normal_mapped = material.and_then(|m| root.materials.get(m)).is_some_and(|m| m.normal_texture.is_some());
         if normal_mapped && tm.tangents.is_none() {
             // glTF: without TANGENT, MikkTSpace's frame (and none without normals or coordinates).
@@ -133,6 +144,7 @@ impl Reader<'_> {
                 )),
             }
         }
+        slice_end().await;
         let analytic = self.analytic_shape(&mesh.extras, &tm, &what)?;
         self.file_meshes.push((tm, None));
         Ok(Some(Prim { mesh: self.file_meshes.len() - 1, material, analytic }))

@@ -60,7 +60,8 @@
 //! (BIN chunk, `data:` URIs, external files) and buffer views; `accessors.rs` typed element
 //! arrays; `meshes.rs` primitives (lists, strips, fans) and analytic shapes; `nodes.rs` the node
 //! hierarchy, world transforms and the objects placed on it; `materials.rs`, `lights.rs` and
-//! `cameras.rs` those objects of the file; `extras.rs` the field types of `extras.shadelab` and
+//! `cameras.rs` those objects of the file; `slices.rs` the parse in slices a page runs between
+//! its frames; `extras.rs` the field types of `extras.shadelab` and
 //! their checked decoding (each concept declares its own `extras.shadelab` object as a serde
 //! type, one field per key of the table above); `synthetic.rs` the generated benchmark meshes.
 
@@ -89,6 +90,7 @@ mod materials;
 mod meshes;
 mod nodes;
 mod scene_file;
+mod slices;
 pub mod synthetic;
 mod textures;
 
@@ -98,6 +100,7 @@ pub use scene_file::{
     load_scene, load_scene_from_bytes, load_scene_from_files, load_scene_from_slice, load_scene_with, save_scene,
     scene_to_glb, scene_to_gltf_json,
 };
+pub use slices::{ParseSource, SceneParse};
 pub use textures::{MAX_IMAGE_FILE_BYTES, MAX_TEXTURE_BYTES, MAX_TEXTURE_SIDE};
 
 use crate::params::{ShadingMode, SpecularModel};

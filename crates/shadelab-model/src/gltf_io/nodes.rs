@@ -87,7 +87,7 @@ impl Reader<'_> {
     /// Add the object for primitive `pi` of mesh `mi` at node `ni`: an analytic shape or a mesh
     /// under a transform of the model's form (scale, rotation about y, translation), or else the
     /// mesh with the node's whole transform baked into its positions.
-    pub(super) fn object(
+    pub(super) async fn object(
         &mut self,
         ni: usize,
         mi: usize,
@@ -96,7 +96,7 @@ impl Reader<'_> {
         scene: &mut Scene,
         default_material: &mut Option<usize>,
     ) -> Result<(), GltfError> {
-        let Some(prim) = self.prim(mi, pi)? else { return Ok(()) };
+        let Some(prim) = self.prim(mi, pi).await? else { return Ok(()) };
         let (mesh_i, material, analytic) = (prim.mesh, prim.material, prim.analytic);
         let count = self.file_meshes[mesh_i].0.triangle_count();
         if self.cx.triangles.saturating_add(count) > MAX_TRIANGLES {

@@ -6,6 +6,7 @@ use super::cameras::FALLBACK_FOV_Y_DEG;
 use super::container::{Externals, Writer, embedded_buffer, glb_container, load_buffers, split_container};
 use super::extras::{self, Named, Rgb, Unit};
 use super::meshes::Prim;
+use super::slices::slice_end;
 use super::{DEFAULT_AMBIENT, GltfError, LoadedScene, MAX_FILE_BYTES, SceneSettings};
 use crate::mesh::TriangleMesh;
 use crate::params::{IlluminationModel, ShadingMode, SpecularModel};
@@ -54,6 +55,13 @@ pub fn load_scene(path: &Path) -> Result<LoadedScene, GltfError> {
 /// [`load_scene`], with `outside` letting its URIs name files outside its folder
 /// (`--allow-outside-paths`).
 pub fn load_scene_with(path: &Path, outside: bool) -> Result<LoadedScene, GltfError> {
+    let (bytes, file) = read_file(path)?;
+    let dir = path.parent().unwrap_or(Path::new("."));
+    load_scene_from_bytes(&bytes, &file, if outside { Externals::Anywhere(dir) } else { Externals::Dir(dir) })
+}
+
+/// The whole file at `path` (at most `MAX_FILE_BYTES`) and the name its errors start with.
+pub(super) fn read_file(path: &Path) -> Result<(Vec<u8>, String), GltfError> {
     let file = path.display().to_string();
     let read = |error| GltfError::Read { file: file.clone(), error };
     let f = std::fs::File::open(path).map_err(read)?;
@@ -66,8 +74,7 @@ pub fn load_scene_with(path: &Path, outside: bool) -> Result<LoadedScene, GltfEr
     }
     let mut bytes = Vec::with_capacity(len as usize);
     f.take(MAX_FILE_BYTES).read_to_end(&mut bytes).map_err(read)?;
-    let dir = path.parent().unwrap_or(Path::new("."));
-    load_scene_from_bytes(&bytes, &file, if outside { Externals::Anywhere(dir) } else { Externals::Dir(dir) })
+    Ok((bytes, file))
 }
 
 /// Read a scene from memory: the fuzzing entry. External buffers are refused (no folder).
@@ -78,6 +85,11 @@ pub fn load_scene_from_slice(bytes: &[u8]) -> Result<LoadedScene, GltfError> {
 /// Read the scene file `main` from files handed in together (the browser's file picker or a
 /// drop): its external buffers and images are the others, found by name.
 pub fn load_scene_from_files(main: &str, files: &[(String, Vec<u8>)]) -> Result<LoadedScene, GltfError> {
+    load_scene_from_bytes(main_file(main, files)?, main, Externals::Files(files))
+}
+
+/// The bytes of `main` among files handed in together (none: empty, which the parse refuses).
+pub(super) fn main_file<'f>(main: &str, files: &'f [(String, Vec<u8>)]) -> Result<&'f [u8], GltfError> {
     let bytes = files.iter().find(|(n, _)| n == main).map(|(_, b)| b.as_slice()).unwrap_or_default();
     if bytes.len() as u64 > MAX_FILE_BYTES {
         return Err(GltfError::TooLarge {
@@ -85,12 +97,18 @@ pub fn load_scene_from_files(main: &str, files: &[(String, Vec<u8>)]) -> Result<
             detail: format!("{} bytes are more than the limit of {MAX_FILE_BYTES} (MAX_FILE_BYTES)", bytes.len()),
         });
     }
-    load_scene_from_bytes(bytes, main, Externals::Files(files))
+    Ok(bytes)
 }
 
 /// Read a scene from memory; `name` starts every error line; external buffers and images come
 /// from `externals`.
 pub fn load_scene_from_bytes(bytes: &[u8], name: &str, externals: Externals) -> Result<LoadedScene, GltfError> {
+    super::slices::run_to_end(parse(bytes, name, externals))
+}
+
+/// [`load_scene_from_bytes`] in slices (`slices.rs`): the container and the JSON first, then
+/// the buffers, then the scene.
+pub(super) async fn parse(bytes: &[u8], name: &str, externals: Externals<'_>) -> Result<LoadedScene, GltfError> {
     let mut cx = Cx { file: name.to_string(), warnings: Vec::new(), triangles: 0, morph_offsets: 0 };
     let (json_bytes, bin) = split_container(&cx, bytes)?;
     let root: json::Root =
@@ -113,6 +131,7 @@ pub fn load_scene_from_bytes(bytes: &[u8], name: &str, externals: Externals) -> 
             cx.warn(format!("{n} {what}(s) ignored"));
         }
     }
+    slice_end().await;
     let buffers = load_buffers(&mut cx, &root, bin, externals)?;
     // Images are read when a material's texture needs them; one no texture names never is.
     for i in 0..root.images.len() {
@@ -120,6 +139,7 @@ pub fn load_scene_from_bytes(bytes: &[u8], name: &str, externals: Externals) -> 
             cx.warn(format!("image {i}: no texture uses it: skipped, not read"));
         }
     }
+    slice_end().await;
     Reader {
         cx,
         root: &root,
@@ -131,6 +151,7 @@ pub fn load_scene_from_bytes(bytes: &[u8], name: &str, externals: Externals) -> 
         texture_bytes: 0,
     }
     .scene()
+    .await
 }
 
 /// Where errors and warnings go: the file's name and what was noticed on the way.
@@ -187,7 +208,7 @@ impl Reader<'_> {
 
     /// The whole scene: the node graph first (it says which meshes, lights and cameras are
     /// shown), then the materials, the objects, the lights and the cameras.
-    fn scene(mut self) -> Result<LoadedScene, GltfError> {
+    async fn scene(mut self) -> Result<LoadedScene, GltfError> {
         let root = self.root;
         let scene_index = root.scene.map(|s| s.value()).or((!root.scenes.is_empty()).then_some(0));
         let (roots, scene_json) = match scene_index {
@@ -201,7 +222,7 @@ impl Reader<'_> {
         let instances = self.walk(&roots)?;
 
         let mut scene = empty_scene(scene_json.and_then(|s| s.name.clone()).unwrap_or_else(|| "glTF scene".into()));
-        self.materials(&mut scene)?;
+        self.materials(&mut scene).await?;
         let mut default_material = None;
         let mut settings = SceneSettings::default();
         if let Some(sc) = scene_json {
@@ -229,7 +250,8 @@ impl Reader<'_> {
             if let Some(mi) = node.mesh.map(|m| m.value()) {
                 let mesh = self.get(&root.meshes, mi, "mesh", &format!("node {ni}: "))?;
                 for pi in 0..mesh.primitives.len() {
-                    self.object(ni, mi, pi, &world, &mut scene, &mut default_material)?;
+                    self.object(ni, mi, pi, &world, &mut scene, &mut default_material).await?;
+                    slice_end().await;
                 }
             }
             if let Some(ci) = node.camera.map(|c| c.value()) {

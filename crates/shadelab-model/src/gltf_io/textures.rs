@@ -26,8 +26,9 @@ pub const MAX_IMAGE_FILE_BYTES: u64 = 256 << 20;
 impl Reader<'_> {
     /// The material's use of texture `info` (`what` names the slot): the scene's index of the
     /// decoded texture and its coordinate transform; `None`, with a warning, for a texture that
-    /// cannot be used (another texture coordinate set, an image that does not decode).
-    pub(super) fn texture_ref(
+    /// cannot be used (another texture coordinate set, an image that does not decode). A slice
+    /// ends after each image decoded (`slices.rs`).
+    pub(super) async fn texture_ref(
         &mut self,
         scene: &mut Scene,
         info: &json::texture::Info,
@@ -62,6 +63,8 @@ impl Reader<'_> {
                     scene.textures.len() - 1
                 });
                 self.textures.insert(ti, t);
+                // A decode is one pass over the whole image: its own slice.
+                super::slices::slice_end().await;
                 t
             }
         };

@@ -11,6 +11,7 @@ mod materials;
 mod meshes;
 mod nodes;
 mod scene_file;
+mod slices;
 mod textures;
 
 use super::*;

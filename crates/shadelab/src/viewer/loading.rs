@@ -1,67 +1,50 @@
 //! Opening a scene file without a freeze: a worker thread reads, parses and uploads it while the
 //! viewer keeps drawing the old scene, with a progress bar and a cancel button in the panel. The
-//! browser has no threads: there each stage runs in a frame of its own, so the bar is drawn
-//! between them (a stage itself still holds the page while it runs).
+//! browser has no threads: there the parse runs in slices (`gltf_io::SceneParse`), as many a
+//! frame as fit in `PARSE_BUDGET`, and the upload in a frame of its own.
 
 use super::Viewer;
 use eframe::egui;
-use shadelab_model::gltf_io::{GltfError, LoadedScene};
+use shadelab_model::gltf_io::{LoadedScene, SceneParse};
 use shadelab_render::{SceneGpu, Uploader};
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::sync::Arc;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::mpsc::{Receiver, Sender, TryRecvError};
-use web_time::Instant;
+use web_time::{Duration, Instant};
+
+/// Where a scene comes from: a file on disk, or files handed in together by name (the browser's
+/// picker or a drop: a `.gltf` with its `.bin` and images, or a `.glb`).
+pub use shadelab_model::gltf_io::ParseSource as Source;
+
+/// Parse time a frame spends on the page: as long as the rest of the frame before took, within
+/// these bounds. So frames keep coming at half their rate or better, and the parse takes at most
+/// about twice its own time. The least is half of a 60 Hz frame; the most, a quarter second, is
+/// the longest a click waits on the parse where drawing is slow (a CPU adapter).
+const PARSE_BUDGET: (Duration, Duration) = (Duration::from_millis(8), Duration::from_millis(250));
 
 /// What the worker reports.
 enum Report {
-    /// A stage has begun: its name and the share of the work done before it.
-    Stage(&'static str, f32),
+    /// A stage has begun: its name, the share of the work done before it, and the parse's
+    /// slices so far.
+    Stage(&'static str, f32, usize),
     /// The scene read and on the GPU, or the one-line error.
     Done(Box<Result<(LoadedScene, SceneGpu), String>>),
 }
 
-/// Where a scene comes from: a file on disk, or files handed in together by name (the browser's
-/// picker or a drop: a `.gltf` with its `.bin` and images, or a `.glb`).
-pub enum Source {
-    /// A file and whether its URIs may lead outside its folder.
-    Path(PathBuf, bool),
-    Files {
-        main: String,
-        files: Vec<(String, Vec<u8>)>,
-    },
-}
-
-impl Source {
-    /// The name errors and the panel give it.
-    pub fn name(&self) -> String {
-        match self {
-            Source::Path(p, _) => p.display().to_string(),
-            Source::Files { main, .. } => main.clone(),
-        }
-    }
-
-    fn load(&self) -> Result<LoadedScene, GltfError> {
-        match self {
-            Source::Path(p, outside) => shadelab_model::gltf_io::load_scene_with(p, *outside),
-            Source::Files { main, files } => shadelab_model::gltf_io::load_scene_from_files(main, files),
-        }
-    }
-
-    /// Files handed in together: the scene file is the first `.glb` or `.gltf` among them.
-    pub fn from_files(files: Vec<(String, Vec<u8>)>) -> Result<Source, String> {
-        let is_scene = |n: &str| {
-            let n = n.to_ascii_lowercase();
-            n.ends_with(".gltf") || n.ends_with(".glb")
-        };
-        match files.iter().find(|(n, _)| is_scene(n)) {
-            Some((main, _)) => Ok(Source::Files { main: main.clone(), files }),
-            None => {
-                let names: Vec<&str> = files.iter().map(|(n, _)| n.as_str()).collect();
-                Err(format!("no .gltf or .glb file among the files given: {}", names.join(", ")))
-            }
-        }
-    }
+/// How the last file opened went: what the page publishes and the browser test reads.
+#[derive(Clone, Copy, Debug, Default)]
+pub(super) struct LoadStats {
+    /// Wall time of the parse, from the open to the upload's start.
+    pub(super) parse_ms: f64,
+    /// Slices the parse ran in.
+    pub(super) slices: usize,
+    /// Viewer frames drawn while the parse ran.
+    pub(super) frames_during_parse: u32,
+    /// Wall time of the upload after it.
+    pub(super) upload_ms: f64,
+    /// Longest a frame spent on the parse's slices (the browser; 0 where a worker parses).
+    pub(super) longest_hold_ms: f64,
 }
 
 /// A file being opened.
@@ -72,54 +55,65 @@ pub(super) struct Loading {
     fraction: f32,
     cancel: Arc<AtomicBool>,
     rx: Receiver<Report>,
-    /// In the browser: the stages still to run, one a frame.
+    /// In the browser: the parse's slices and the upload still to run.
     #[cfg_attr(not(target_arch = "wasm32"), allow(dead_code))]
     steps: Option<Steps>,
+    stats: LoadStats,
+    /// When the last slices of the parse ended (the browser).
+    slices_ended: Option<Instant>,
 }
 
 /// How much of the work each stage starts at: reading and parsing is most of it for a large file
 /// (every accessor checked and converted), the upload the rest.
 const UPLOAD_STARTS_AT: f32 = 0.7;
 
-/// The stages of opening a file, run one at a time; each sends its reports.
+/// The stages of opening a file: the parse a slice at a time, then the upload; each sends its
+/// reports.
 struct Steps {
-    source: Source,
+    name: String,
+    parse: SceneParse,
     uploader: Uploader,
     parsed: Option<LoadedScene>,
     tx: Sender<Report>,
 }
 
 impl Steps {
-    /// Run the next stage; false once the last has run (or the first failed).
+    /// Run the parse's next slice, or the upload once the parse is done; false once the last has
+    /// run (or the parse failed).
     fn step(&mut self) -> bool {
         let Some(loaded) = self.parsed.take() else {
             // A send fails only when the viewer has stopped listening (cancelled): stop then.
-            let _ = self.tx.send(Report::Stage("reading and parsing", 0.0));
-            match self.source.load() {
-                Ok(l) => {
+            return match self.parse.step() {
+                None => true,
+                Some(Ok(l)) => {
                     self.parsed = Some(l);
-                    return self.tx.send(Report::Stage("uploading", UPLOAD_STARTS_AT)).is_ok();
+                    self.tx.send(Report::Stage("uploading", UPLOAD_STARTS_AT, self.parse.slices())).is_ok()
                 }
-                Err(e) => {
+                Some(Err(e)) => {
                     let _ = self.tx.send(Report::Done(Box::new(Err(e.to_string()))));
-                    return false;
+                    false
                 }
-            }
+            };
         };
-        let name = self.source.name();
+        let name = &self.name;
         let done = self.uploader.upload(&loaded.scene).map(|gpu| (loaded, gpu)).map_err(|e| format!("{name}: {e}"));
         let _ = self.tx.send(Report::Done(Box::new(done)));
         false
     }
+
+    fn parsing(&self) -> bool {
+        self.parsed.is_none()
+    }
 }
 
-/// Read, parse and upload `source`: on a worker thread, or in the browser a stage a frame
-/// (`Viewer::poll_loading` runs them); `cancel` set stops it between stages.
+/// Read, parse and upload `source`: on a worker thread, or in the browser in slices
+/// (`Viewer::poll_loading` runs them); `cancel` set stops it between slices.
 fn start(source: Source, uploader: Uploader) -> Loading {
     let (tx, rx) = std::sync::mpsc::channel();
     let cancel = Arc::new(AtomicBool::new(false));
     let name = source.name();
-    let mut steps = Steps { source, uploader, parsed: None, tx };
+    let _ = tx.send(Report::Stage("reading and parsing", 0.0, 0));
+    let mut steps = Steps { name: name.clone(), parse: SceneParse::new(source), uploader, parsed: None, tx };
     let steps = if cfg!(target_arch = "wasm32") {
         Some(steps)
     } else {
@@ -127,7 +121,47 @@ fn start(source: Source, uploader: Uploader) -> Loading {
         std::thread::spawn(move || while !stop.load(Ordering::Relaxed) && steps.step() {});
         None
     };
-    Loading { name, started: Instant::now(), stage: "starting", fraction: 0.0, cancel, rx, steps }
+    Loading {
+        name,
+        started: Instant::now(),
+        stage: "starting",
+        fraction: 0.0,
+        cancel,
+        rx,
+        steps,
+        stats: LoadStats::default(),
+        slices_ended: None,
+    }
+}
+
+impl Loading {
+    /// In the browser: the parse's slices until this frame's share (`PARSE_BUDGET`) is spent,
+    /// or the upload.
+    fn run_steps(&mut self) {
+        let Some(steps) = &mut self.steps else { return };
+        let now = Instant::now();
+        let rest_of_frame = self.slices_ended.map_or(PARSE_BUDGET.0, |t| now - t);
+        let until = now + rest_of_frame.clamp(PARSE_BUDGET.0, PARSE_BUDGET.1);
+        let more = loop {
+            let more = steps.step();
+            if !more || !steps.parsing() || Instant::now() >= until {
+                break more;
+            }
+        };
+        if !more {
+            self.steps = None;
+        }
+        let ended = Instant::now();
+        self.stats.longest_hold_ms = self.stats.longest_hold_ms.max((ended - now).as_secs_f64() * 1e3);
+        self.slices_ended = Some(ended);
+    }
+
+    /// Count this frame if the parse is running.
+    fn count_frame(&mut self) {
+        if self.stage == "reading and parsing" {
+            self.stats.frames_during_parse += 1;
+        }
+    }
 }
 
 impl Viewer {
@@ -181,14 +215,16 @@ impl Viewer {
     /// Take the worker's reports; show the scene once it is ready.
     pub(super) fn poll_loading(&mut self, ctx: &egui::Context) {
         let Some(l) = &mut self.loading else { return };
-        if let Some(steps) = &mut l.steps
-            && !steps.step()
-        {
-            l.steps = None;
-        }
+        l.run_steps();
         let done = loop {
             match l.rx.try_recv() {
-                Ok(Report::Stage(stage, fraction)) => (l.stage, l.fraction) = (stage, fraction),
+                Ok(Report::Stage(stage, fraction, slices)) => {
+                    if stage != "reading and parsing" {
+                        l.stats.parse_ms = l.started.elapsed().as_secs_f64() * 1e3;
+                        l.stats.slices = slices;
+                    }
+                    (l.stage, l.fraction) = (stage, fraction);
+                }
                 Ok(Report::Done(result)) => break Some(*result),
                 Err(TryRecvError::Empty) => break None,
                 Err(TryRecvError::Disconnected) => {
@@ -196,11 +232,19 @@ impl Viewer {
                 }
             }
         };
+        l.count_frame();
         let Some(result) = done else {
-            // Draw the bar again soon: the reports come from outside egui's events.
-            ctx.request_repaint_after(std::time::Duration::from_millis(50));
+            if l.steps.is_some() {
+                // The next slices run in the next frame.
+                ctx.request_repaint();
+            } else {
+                // Draw the bar again soon: the reports come from outside egui's events.
+                ctx.request_repaint_after(std::time::Duration::from_millis(50));
+            }
             return;
         };
+        l.stats.upload_ms = l.started.elapsed().as_secs_f64() * 1e3 - l.stats.parse_ms;
+        self.last_load = Some(l.stats);
         let name = l.name.clone();
         self.loading = None;
         match result {

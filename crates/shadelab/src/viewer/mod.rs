@@ -161,6 +161,8 @@ pub struct Viewer {
     picking: Option<(FileRequest, std::sync::mpsc::Receiver<Option<PathBuf>>)>,
     /// A file being opened on a worker thread (`loading.rs`).
     loading: Option<loading::Loading>,
+    /// How the last file opened went (`loading::LoadStats`).
+    last_load: Option<loading::LoadStats>,
     /// The adapter drawn with: its backend and name (the panel and the page's state show it).
     adapter: String,
     /// Where this frame put the panel's main switches, by name (`shading:flat`, `term:diffuse`):
@@ -254,6 +256,7 @@ impl Viewer {
             camera_choice: 0,
             picking: None,
             loading: None,
+            last_load: None,
             adapter,
             marks: Default::default(),
             view_rect: None,

@@ -249,6 +249,13 @@ pub fn publish_state(v: &Viewer) {
         "message": v.message.as_ref().map(|(m, _)| m.clone()),
         "message_is_error": v.message.as_ref().is_some_and(|(_, e)| *e),
         "loading": v.loading.is_some(),
+        "last_load": v.last_load.map(|l| json!({
+            "parse_ms": l.parse_ms,
+            "slices": l.slices,
+            "frames_during_parse": l.frames_during_parse,
+            "longest_hold_ms": l.longest_hold_ms,
+            "upload_ms": l.upload_ms,
+        })),
         "difference_on": v.difference.enabled,
         "difference": difference,
         "computing_reference": v.difference.computing(),

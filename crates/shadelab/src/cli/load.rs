@@ -56,6 +56,12 @@ pub fn load_unchanged(args: &SceneArgs) -> Result<LoadedScene, Failure> {
             .into());
         }
     };
+    pick_camera(args, &mut loaded)?;
+    Ok(loaded)
+}
+
+/// Look through the camera `--camera` picks among the loaded scene's (none given: its first).
+pub fn pick_camera(args: &SceneArgs, loaded: &mut LoadedScene) -> Result<(), Failure> {
     // The camera's range is the file's camera count, known only now (so not a clap parser).
     if let Some(text) = &args.camera {
         let n = loaded.cameras.len();
@@ -68,7 +74,7 @@ pub fn load_unchanged(args: &SceneArgs) -> Result<LoadedScene, Failure> {
         };
         loaded.scene.camera = loaded.cameras[range.parse_u32(text)? as usize].1;
     }
-    Ok(loaded)
+    Ok(())
 }
 
 /// The flags' overrides and environment applied to `scene`.

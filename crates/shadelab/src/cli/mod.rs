@@ -8,7 +8,7 @@ mod load;
 pub mod values;
 
 pub use bench_args::*;
-pub use load::{apply_flags, load, load_unchanged, overrides, scene};
+pub use load::{apply_flags, load, load_unchanged, overrides, pick_camera, scene};
 pub use values::{FRAMES, MESH_TRIANGLES, WARMUP, one_line, within};
 
 use crate::Failure;

@@ -278,7 +278,7 @@ impl Viewer {
     }
 
     /// The link to the view on show: `base` (the page's address) with the scene, the modes, the
-    /// term, the switches, the orbit and the scene's edits. A scene opened from a file other than
+    /// term, the switches, the file's camera, the orbit and the scene's edits. A scene opened from a file other than
     /// a link's own `file=` cannot travel in a link: it is left out (the link opens the default
     /// scene) and `note` says so.
     pub fn link(&self, base: &str) -> (String, Option<String>) {
@@ -319,9 +319,13 @@ impl Viewer {
         }
         let mut note = None;
         let from = if builtin { self.link_base(model) } else { file.map(|(_, raw)| link_scene::base(raw, model)) };
+        if self.camera_choice != 0 {
+            q.push(("camera".into(), self.camera_choice.to_string()));
+        }
         if let Some(from) = from {
+            // The orbit moves the chosen camera, whose lens the link's `camera` picks.
             let orbit = self.orbit.link_text();
-            if orbit != super::orbit::Orbit::from_camera(&from.camera).link_text() {
+            if orbit != super::orbit::Orbit::from_camera(&self.base_camera).link_text() {
                 q.push(("orbit".into(), orbit));
             }
             let (keys, why) = link_scene::scene_keys(&self.scene, &from);

@@ -24,8 +24,8 @@ impl Viewer {
         file.is_some_and(|f| f.rsplit('/').next() == Some(name))
     }
 
-    /// The file a link fetched has opened: its flags and modes as the command line would apply
-    /// them, then the rest of the link; the file's own scene is the base of the next link.
+    /// The file a link fetched has opened: its camera, flags and modes as the command line would
+    /// apply them, then the rest of the link; the file's own scene is the base of the next link.
     pub(super) fn finish_link_file(&mut self, mut loaded: LoadedScene, gpu_scene: SceneGpu, name: &str) {
         let Some(link) = self.pending_link.take() else { return };
         let mut errors = link.errors.clone();
@@ -38,7 +38,9 @@ impl Viewer {
                 return self.apply_view(&link, errors);
             }
         };
-        let settled = cli::apply_flags(&c.scene, &mut loaded.scene).and_then(|()| c.mode.settle(&mut loaded, &c.scene));
+        let settled = cli::pick_camera(&c.scene, &mut loaded)
+            .and_then(|()| cli::apply_flags(&c.scene, &mut loaded.scene))
+            .and_then(|()| c.mode.settle(&mut loaded, &c.scene));
         self.show_loaded_on_gpu(loaded, gpu_scene, name);
         match settled {
             Ok(settings) => self.settings = settings,

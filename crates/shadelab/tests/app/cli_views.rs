@@ -365,3 +365,43 @@ fn render_link_opens_a_relative_file_and_refuses_others() {
         assert!(lines.len() == 1 && lines[0].contains("file="), "{bad}: {lines:?}");
     }
 }
+
+/// `camera=1` in a link looks through a file's second camera (another field of view), as
+/// `--camera 1` does; a camera the file does not have is one line with the range.
+#[test]
+fn render_link_looks_through_a_files_chosen_camera() {
+    let dir = out_dir().join("two-cameras");
+    std::fs::create_dir_all(&dir).unwrap();
+    let scene = shadelab_model::Scene::builtin("default").unwrap();
+    let text = shadelab_model::gltf_io::scene_to_gltf_json(&scene, &Default::default());
+    let mut gltf: serde_json::Value = serde_json::from_str(&text).unwrap();
+    gltf["cameras"].as_array_mut().unwrap().push(serde_json::json!({
+        "type": "perspective", "perspective": { "yfov": 0.35, "znear": 0.1, "zfar": 100.0 }
+    }));
+    let node = gltf["nodes"].as_array().unwrap().len();
+    gltf["nodes"].as_array_mut().unwrap().push(serde_json::json!({ "camera": 1, "translation": [0.5, 1.5, 7.0] }));
+    gltf["scenes"][0]["nodes"].as_array_mut().unwrap().push(node.into());
+    std::fs::write(dir.join("two.gltf"), gltf.to_string()).unwrap();
+    let run = |args: &[&str]| {
+        let mut all = vec!["render", "--width", "160", "--height", "90"];
+        all.extend(args);
+        Command::new(env!("CARGO_BIN_EXE_shadelab"))
+            .args(all)
+            .current_dir(&dir)
+            .env("SHADELAB_ADAPTER", "lavapipe")
+            .output()
+            .expect("run shadelab")
+    };
+    let draw = |args: &[&str], name: &str| {
+        let o = run(&[args, &["--output", name]].concat());
+        assert!(o.status.success(), "{args:?}: {}", String::from_utf8_lossy(&o.stderr));
+        image::open(dir.join(name)).unwrap().to_rgb8()
+    };
+    let second = draw(&["--scene", "two.gltf", "--camera", "1"], "second.png");
+    assert_eq!(draw(&["--link", "?file=two.gltf&camera=1"], "second-link.png"), second);
+    assert_ne!(draw(&["--link", "?file=two.gltf"], "first-link.png"), second, "the second camera is another view");
+    let o = run(&["--link", "?file=two.gltf&camera=2", "--output", "x.png"]);
+    assert_eq!(o.status.code(), Some(2));
+    let lines = error_lines(&o);
+    assert!(lines.len() == 1 && lines[0].contains("--camera") && lines[0].contains("[0, 1]"), "{lines:?}");
+}

@@ -329,7 +329,8 @@ const tests = {
   },
 
   // A model on the site opens from a link (`?file=`), the buffer its .gltf names fetched beside
-  // it, with the link's edits over it; copy link names it again; another origin is refused.
+  // it, with the link's edits over it, through the camera the link picks; copy link names it
+  // again; another origin is refused.
   async a_link_opens_a_model_on_the_site() {
     // On the site as `cargo xtask web --with` puts it: BoxTextured with its buffer in a file.
     const gltf = JSON.parse(fs.readFileSync(path.join(SAMPLES, "BoxTextured.gltf"), "utf8"));
@@ -353,6 +354,26 @@ const tests = {
     console.log(`    link-file: against render --link in the site's folder: ${c.line}`);
     check(c.flip <= MAX_FLIP_AGAINST_NATIVE, `link-file: FLIP ${c.flip} against native is above ${MAX_FLIP_AGAINST_NATIVE}`);
     noConsoleErrors(page);
+    await page.close();
+    // A file's second camera travels as camera=1: the page looks through it as render does.
+    gltf.cameras = [0.8, 0.4].map((yfov) => ({ type: "perspective", perspective: { yfov, znear: 0.1, zfar: 100 } }));
+    gltf.nodes.push({ camera: 0, translation: [0, 0, 4] }, { camera: 1, translation: [0.4, 0.3, 4] });
+    gltf.scenes[0].nodes.push(gltf.nodes.length - 2, gltf.nodes.length - 1);
+    fs.writeFileSync(path.join(SITE, "models/two-cameras.gltf"), JSON.stringify(gltf));
+    const cameraQuery = "?file=models/two-cameras.gltf&shading=phong&model=cook-torrance&camera=1";
+    page = await open(cameraQuery);
+    s = await waitFor(page, "the second camera's model", (s) => s.scene === "two-cameras.gltf" && !s.loading, 60);
+    check(!s.message_is_error, `message: ${s.message}`);
+    await click(page, "copy link");
+    s = await waitFor(page, "the copied link", (s) => s.link !== null, 30);
+    check(s.link.endsWith(cameraQuery), `the copied link ${s.link} is not the one opened, ${cameraQuery}`);
+    const second = await shootView(page, "link-camera");
+    const secondNative = path.join(OUT, "link-camera-native.png");
+    execFileSync(BIN, ["render", "--width", String(second.w), "--height", String(second.h), "--output", secondNative,
+      "--link", cameraQuery], { cwd: SITE });
+    const cc = compare(secondNative, second.file, "link-camera");
+    console.log(`    link-camera: against render --link in the site's folder: ${cc.line}`);
+    check(cc.flip <= MAX_FLIP_AGAINST_NATIVE, `link-camera: FLIP ${cc.flip} against native is above ${MAX_FLIP_AGAINST_NATIVE}`);
     await page.close();
     page = await open("?file=https://example.org/duck.glb&shading=gouraud");
     s = await state(page);

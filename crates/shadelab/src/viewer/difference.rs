@@ -5,7 +5,9 @@
 //! specular model or the size changes (a change of shading mode reuses it). Its legend is drawn
 //! with the other overlays. In place of the FLIP map it can show the shadow error map: where the
 //! GPU's lit/shadowed state (its render with shadows against the same with them off) disagrees
-//! with the reference's cast shadows, with the shares of false and missed shadow.
+//! with the reference's cast shadows, with the shares of false and missed shadow. The FLIP map
+//! compares with the f64 twin or with the path-traced truth (bounces and paths set in the panel),
+//! which the page traces coarse first.
 
 use eframe::egui;
 use shadelab_model::reference::{PathSettings, ReferenceImage, ReferenceJob};
@@ -22,12 +24,12 @@ use target::PendingReadBack;
 /// scaled up.
 pub const DIFFERENCE_MAX_WIDTH: u32 = 480;
 
-/// The ambient error map's truth: 4 surface vertices a path carry all but (1 − ρ)·ρ³ of the
-/// light between surfaces, and 32 paths a pixel bring its noise under the default scene's
+/// The truth's paths until the panel changes them: 4 surface vertices a path carry all but
+/// (1 − ρ)·ρ³ of the light between surfaces, and 32 paths a pixel bring its noise under the default scene's
 /// ambient error (docs/reference.md) in about 2 s on two cores at the map's 480 px.
 pub const VIEWER_PATHS: PathSettings = PathSettings { bounces: 4, spp: 32, seed: 1 };
 
-/// On the page the ambient map's truth is first traced at this fraction of the map's side, a
+/// On the page a path-traced truth is first traced at this fraction of the map's side, a
 /// sixteenth of the work, and shown while the full one is traced: the page's one thread takes
 /// minutes for the full map and seconds for the coarse one.
 const COARSE_DIVISOR: u32 = 4;
@@ -52,6 +54,29 @@ pub enum DifferenceKind {
     /// The chapter's constant ambient against the path-traced light between surfaces
     /// ([`VIEWER_PATHS`]), both in f64: the signed error, blue too dark, red too bright.
     Ambient,
+}
+
+/// What the FLIP error map is measured against.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Against {
+    /// The f64 reference of the exact surface: the GPU's own model with exact area lights and
+    /// cast shadows; under an environment light its twin (the nine SH terms, the split sum).
+    #[default]
+    Twin,
+    /// The path-traced truth ([`DifferenceView::paths`]): the light between surfaces and the
+    /// environment over the BRDF with visibility, as `--reference --bounces` traces it.
+    Truth,
+}
+
+/// The path tracer's settings for the truth (the ambient error map's and, against the truth,
+/// the FLIP map's): [`VIEWER_PATHS`] until the panel changes them.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct TruthPaths(pub PathSettings);
+
+impl Default for TruthPaths {
+    fn default() -> Self {
+        TruthPaths(VIEWER_PATHS)
+    }
 }
 
 /// The ambient error map's numbers: the error at its full colour, the truth's noise, and the
@@ -106,6 +131,9 @@ struct Reading {
 pub struct DifferenceView {
     pub enabled: bool,
     pub kind: DifferenceKind,
+    /// What the FLIP map compares with (the shadow map always takes the exact cast shadows).
+    pub against: Against,
+    pub paths: TruthPaths,
     reference: Option<(ReferenceKey, Arc<ReferenceImage>)>,
     /// How long the last reference took to trace, ms (on the page's one thread, or a worker on every core).
     pub traced_ms: Option<f64>,
@@ -139,6 +167,14 @@ pub struct SideView<'a> {
 }
 
 impl DifferenceView {
+    /// The path tracer's settings when the map on show is measured against the truth.
+    pub fn truth(&self) -> Option<PathSettings> {
+        match (self.kind, self.against) {
+            (DifferenceKind::Ambient, _) | (DifferenceKind::Flip, Against::Truth) => Some(self.paths.0),
+            _ => None,
+        }
+    }
+
     /// The numbers of the map on show, if it matches the current state.
     pub fn stats(&self) -> Option<ErrorStats> {
         self.shown.as_ref().filter(|_| self.current).map(|s| s.stats)
@@ -184,8 +220,7 @@ impl DifferenceView {
     pub fn update(&mut self, from: SideView) -> Option<egui::TextureId> {
         let SideView { ctx, renderer, gpu_scene, scene, settings, view_size } = from;
         let full = difference_size(view_size.0, view_size.1);
-        let paths = (self.kind == DifferenceKind::Ambient).then_some(VIEWER_PATHS);
-        let key = ReferenceKey { scene: scene.clone(), specular: settings.specular, size: full, paths };
+        let key = ReferenceKey { scene: scene.clone(), specular: settings.specular, size: full, paths: self.truth() };
         self.current = false;
         let shown_for = |k: &ReferenceKey| {
             self.shown.as_ref().filter(|s| s.key == *k && s.shading == settings.shading && s.kind == self.kind)
@@ -194,8 +229,8 @@ impl DifferenceView {
             self.current = true;
             return Some(s.texture.id());
         }
-        // On the page an ambient map comes coarse first; the coarse map stands in meanwhile.
-        let coarse = (cfg!(target_arch = "wasm32") && self.kind == DifferenceKind::Ambient).then(|| ReferenceKey {
+        // On the page a path-traced map comes coarse first; the coarse map stands in meanwhile.
+        let coarse = (cfg!(target_arch = "wasm32") && key.paths.is_some()).then(|| ReferenceKey {
             size: ((full.0 / COARSE_DIVISOR).max(1), (full.1 / COARSE_DIVISOR).max(1)),
             ..key.clone()
         });

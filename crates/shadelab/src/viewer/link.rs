@@ -6,7 +6,7 @@
 //! reads the same query with `shadelab --link`.
 
 use super::Viewer;
-use super::difference::DifferenceKind;
+use super::difference::{Against, DifferenceKind};
 use super::link_scene::{self, on_off};
 use super::site_path::site_path;
 use crate::cli;
@@ -35,6 +35,11 @@ pub struct Link {
     pub args: Vec<String>,
     pub term: Option<Term>,
     pub error_map: Option<DifferenceKind>,
+    /// What the FLIP map compares with (`reference=twin|truth`).
+    pub against: Option<Against>,
+    /// The truth's path tracer: surface vertices (`bounces=N`) and paths a pixel (`spp=N`).
+    pub bounces: Option<u32>,
+    pub spp: Option<u32>,
     /// The switches given, by key, on or off.
     pub switches: Vec<(&'static str, bool)>,
     pub glass_view: Option<GlassView>,
@@ -84,6 +89,15 @@ fn take(link: &mut Link, key: &str, value: &str) -> Result<(), String> {
                 _ => return Err(format!("error-map: '{value}' is not one of flip, shadow, ambient")),
             })
         }
+        "reference" => {
+            link.against = Some(match value {
+                "twin" => Against::Twin,
+                "truth" => Against::Truth,
+                _ => return Err(format!("reference: '{value}' is not one of twin, truth")),
+            })
+        }
+        "bounces" => link.bounces = Some(shadelab_model::params::BOUNCES.parse_u32(value).map_err(named)?),
+        "spp" => link.spp = Some(shadelab_model::params::SPP.parse_u32(value).map_err(named)?),
         "glass-view" => link.glass_view = Some(GlassView::parse_named(value).map_err(named)?),
         "glass-exit" => link.glass_exit = Some(GlassExit::parse_named(value).map_err(named)?),
         "orbit" => link.orbit = Some(super::orbit::parse_link(value)?),
@@ -235,6 +249,9 @@ impl Viewer {
         if let Some(kind) = link.error_map {
             self.difference.kind = kind;
         }
+        self.difference.against = link.against.unwrap_or(self.difference.against);
+        let paths = &mut self.difference.paths.0;
+        (paths.bounces, paths.spp) = (link.bounces.unwrap_or(paths.bounces), link.spp.unwrap_or(paths.spp));
         self.settings.glass_view = link.glass_view.unwrap_or(self.settings.glass_view);
         self.settings.glass_exit = link.glass_exit.unwrap_or(self.settings.glass_exit);
         apply_edits(link, &mut self.scene, &mut errors);
@@ -308,6 +325,16 @@ impl Viewer {
                 DifferenceKind::Flip => {}
                 DifferenceKind::Shadow => q.push(("error-map".into(), "shadow".into())),
                 DifferenceKind::Ambient => q.push(("error-map".into(), "ambient".into())),
+            }
+            if self.difference.kind == DifferenceKind::Flip && self.difference.against == Against::Truth {
+                q.push(("reference".into(), "truth".into()));
+            }
+            let (now, default) = (self.difference.paths.0, super::difference::VIEWER_PATHS);
+            if self.difference.truth().is_some() && now.bounces != default.bounces {
+                q.push(("bounces".into(), now.bounces.to_string()));
+            }
+            if self.difference.truth().is_some() && now.spp != default.spp {
+                q.push(("spp".into(), now.spp.to_string()));
             }
         }
         let defaults = shadelab_render::RenderSettings::default();
@@ -433,7 +460,7 @@ mod tests {
     #[test]
     fn mutated_links_parse_without_a_panic() {
         let seeds = [
-            "?scene=glass&shading=gouraud&term=diffuse&boundary=on&difference=1&error-map=shadow",
+            "?scene=glass&shading=gouraud&term=diffuse&boundary=on&difference=1&error-map=shadow&reference=truth&spp=8",
             "?mu=0.9%2C0.6%2C0.2&m=0.3&h=mirror&light=rect&light-size=0.5&shadow-filter=pcss",
             "?model=sum&transmission=0.5&falloff-form=linear&d0=0.2&camera=0&normals=1",
             "?orbit=0,0.35,-0.4,-0.36,0.3,5.8&Ia=0,0,0&mat0.m=0.1&mat1.mu=0.9,0.5,0.25&lights=3&light2.pos=-2,3,1",

@@ -312,6 +312,11 @@ impl Viewer {
         self.difference.kind = kind;
     }
 
+    /// The difference view's settings (what it shows, against what).
+    pub fn difference_view(&self) -> &difference::DifferenceView {
+        &self.difference
+    }
+
     /// The ambient error map's numbers, once that map is current.
     pub fn ambient_fit(&self) -> Option<difference::AmbientFit> {
         self.difference.ambient_fit()

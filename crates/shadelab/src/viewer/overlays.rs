@@ -72,7 +72,8 @@ pub(super) fn light_markers(
 
 /// The difference view's legend over the view: the magma scale or the shadow error map's
 /// colours, and the numbers of the map on show for `mode` beside its GPU time (`live`: the time
-/// is shown), with the shadow shares under the shadow error map.
+/// is shown), with the shadow shares under the shadow error map; `environment`: the scene has an
+/// environment light, under which the f64 reference is the GPU's twin.
 pub(super) fn difference_legend(
     painter: &egui::Painter,
     rect: Rect,
@@ -80,6 +81,7 @@ pub(super) fn difference_legend(
     mode: &str,
     gpu_ms: Option<f64>,
     live: bool,
+    environment: bool,
 ) {
     let font = egui::FontId::proportional(12.0);
     match difference.kind {
@@ -87,18 +89,18 @@ pub(super) fn difference_legend(
         DifferenceKind::Shadow => shadow_legend(painter, rect, &font),
         DifferenceKind::Ambient => ambient_legend(painter, rect, &font, difference.ambient_fit().map(|f| f.scale)),
     }
-    let against = if difference.kind == DifferenceKind::Ambient {
-        let p = crate::viewer::difference::VIEWER_PATHS;
-        format!(
-            "the chapter's constant I_a·r_a·C (f64) against the path-traced light between surfaces ({} bounces, {} paths a pixel)",
+    let against = match (difference.kind, difference.truth()) {
+        (DifferenceKind::Ambient, Some(p)) => format!(
+            "the chapter's constant I_a·r_a·C (f64) against the path-traced light between surfaces ({} vertices, {} paths a pixel)",
             p.bounces, p.spp
-        )
-    } else {
-        "against the f64 reference of the exact surface".to_string()
+        ),
+        (_, Some(p)) => format!("against the path-traced truth ({} vertices, {} paths a pixel)", p.bounces, p.spp),
+        _ if environment => "against the f64 twin (under the environment: the GPU's SH terms and split sum)".into(),
+        _ => "against the f64 reference of the exact surface".to_string(),
     };
-    let label = if difference.kind == DifferenceKind::Ambient { "path-traced truth" } else { "f64 reference" };
-    // The ambient map's longer heading takes its own line.
-    let sep = if difference.kind == DifferenceKind::Ambient { "\n" } else { " " };
+    let label = if difference.truth().is_some() { "path-traced truth" } else { "f64 reference" };
+    // The path-traced maps' longer heading takes its own line.
+    let sep = if difference.truth().is_some() { "\n" } else { " " };
     let text = match (difference.stats(), difference.computing()) {
         (Some(s), _) => {
             let time = match gpu_ms {

@@ -151,7 +151,9 @@ impl Viewer {
         }
         if error_map {
             let mode = format!("{} shading, {} specular", self.settings.shading, self.settings.specular);
-            overlays::difference_legend(&painter, rect, &self.difference, &mode, self.frame_ms, self.show_live_numbers);
+            let env = self.scene.environment.is_some();
+            let (ms, live) = (self.frame_ms, self.show_live_numbers);
+            overlays::difference_legend(&painter, rect, &self.difference, &mode, ms, live, env);
             return; // the light markers would hide the error map
         }
         overlays::light_markers(&painter, rect, &self.scene, self.orbit.target, (w, h));

@@ -262,6 +262,7 @@ pub fn publish_state(v: &Viewer) {
         "reference_ms": v.difference.traced_ms,
         "reference_size": v.difference.reference_size().map(|(w, h)| [w, h]),
         "coarse_map": v.difference.coarse_on_show(),
+        "truth": v.difference.truth().map(|p| [p.bounces, p.spp]),
         "scene_pass_ms": v.frame_ms,
         "link": v.copied_link.as_ref().map(|(l, _)| l.clone()),
         "shadow_maps": (0..v.scene.lights.len()).map(|i| v.shadow_map_shown(i)).collect::<Vec<_>>(),

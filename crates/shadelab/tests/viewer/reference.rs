@@ -59,3 +59,28 @@ fn a_textured_file_has_its_difference_view() {
     let stats = run_until(&mut h, "map", 120, |v| v.difference());
     assert!(stats.rmse < 2e-3 && stats.share_off < 0.01, "{stats:?}");
 }
+
+/// The FLIP map compares with the f64 twin or, chosen in the panel, with the path-traced truth
+/// at the panel's vertices and paths: on the default scene the truth has the light between the
+/// surfaces that the chapter's constant I_a stands for, so the GPU's image is further from it
+/// than from its twin. The choice and the paths travel in the link.
+#[test]
+fn the_difference_view_compares_with_the_twin_or_the_truth() {
+    use shadelab::viewer::difference::Against;
+    let mut h = harness();
+    h.state_mut().set_difference_view(true);
+    h.run_steps(2);
+    let twin = run_until(&mut h, "the map against the twin", 120, |v| v.difference());
+    crate::harness::scroll_click(&mut h, "path-traced truth");
+    assert_eq!(h.state().difference_view().against, Against::Truth);
+    let query = "?scene=default&shading=phong&model=cook-torrance&difference=on&reference=truth&bounces=2&spp=8";
+    let mut t = harness();
+    t.state_mut().open_link(&shadelab::viewer::parse_query(query));
+    let truth = run_until(&mut t, "the map against the truth", 120, |v| v.difference());
+    eprintln!(
+        "default scene, Phong shading: RMSE {:.3e} against the twin, {:.3e} against the truth",
+        twin.rmse, truth.rmse
+    );
+    assert!(truth.rmse > 2.0 * twin.rmse, "twin {twin:?}, truth {truth:?}");
+    assert_eq!(t.state().link("").0, query, "the link names the truth and its paths");
+}

@@ -4,9 +4,9 @@
 
 use super::shading_meaning;
 use crate::viewer::Viewer;
-use crate::viewer::difference::DifferenceKind;
+use crate::viewer::difference::{Against, DifferenceKind};
 use eframe::egui;
-use shadelab_model::params::NamedValue;
+use shadelab_model::params::{self, NamedValue};
 use shadelab_model::scene::BUILTIN_SCENES;
 use shadelab_model::terms::Term;
 use shadelab_model::{IlluminationModel, Interpolation, ModelChoice, Overrides, ShadingMode, SpecularModel};
@@ -180,6 +180,41 @@ impl Viewer {
                 )
                 .on_disabled_hover_text("only for the Phong illumination model, whose I_a stands for that light");
             });
+            self.truth_ui(ui);
         }
+    }
+
+    /// What the FLIP map compares with, and the path tracer's bounces and paths for the truth.
+    fn truth_ui(&mut self, ui: &mut egui::Ui) {
+        if self.difference.kind == DifferenceKind::Flip {
+            ui.horizontal(|ui| {
+                ui.label("reference");
+                let r = ui.selectable_value(&mut self.difference.against, Against::Twin, "f64 twin");
+                self.mark("f64 twin", &r);
+                r.on_hover_text(
+                    "the same model as the GPU in f64, with area lights integrated and cast shadows \
+                     traced exactly; under an environment light it has the GPU's nine SH terms and split sum",
+                );
+                let r = ui.selectable_value(&mut self.difference.against, Against::Truth, "path-traced truth");
+                self.mark("path-traced truth", &r);
+                r.on_hover_text(
+                    "the light path traced: what passes between the surfaces (where the chapter has I_a) \
+                     and the environment over the BRDF with visibility",
+                );
+            });
+        }
+        if self.difference.truth().is_none() {
+            return;
+        }
+        let p = &mut self.difference.paths.0;
+        ui.horizontal(|ui| {
+            let (b, s) = (params::BOUNCES, params::SPP);
+            ui.label("vertices");
+            ui.add(egui::DragValue::new(&mut p.bounces).range(b.min as u32..=b.max as u32))
+                .on_hover_text("surface vertices a path has: 1 is the direct light alone");
+            ui.label("paths");
+            ui.add(egui::DragValue::new(&mut p.spp).range(s.min as u32..=s.max as u32).speed(1.0))
+                .on_hover_text("paths per pixel: the truth's noise falls as one over their square root");
+        });
     }
 }

@@ -424,6 +424,26 @@ const tests = {
     await page.close();
   },
 
+  // The FLIP map against the path-traced truth at the link's vertices and paths: a coarse map
+  // first, then the full one with its numbers; copy link writes the same query.
+  async the_difference_view_compares_with_the_path_traced_truth() {
+    const query = "?scene=default&shading=phong&model=cook-torrance&difference=on&reference=truth&bounces=2&spp=4";
+    const page = await open(query);
+    const t0 = Date.now();
+    let s = await waitFor(page, "the coarse map", (s) => s.coarse_map, 90);
+    check(s.truth[0] === 2 && s.truth[1] === 4, `truth: ${s.truth}`);
+    s = await waitFor(page, "the full map", (s) => s.difference !== null, REFERENCE_S);
+    console.log(`    against the truth (2 vertices, 4 paths): the full map after ${((Date.now() - t0) / 1000).toFixed(1)} s, `
+      + `RMSE ${s.difference.rmse.toExponential(3)}, reference ${s.reference_size}`);
+    check(s.difference.rmse > 0 && s.reference_size[0] > 120, `state: ${JSON.stringify(s).slice(0, 300)}`);
+    await page.screenshot({ path: path.join(OUT, "difference-truth-page.png") });
+    await click(page, "copy link");
+    s = await waitFor(page, "the copied link", (s) => s.link !== null, 30);
+    check(s.link.endsWith(query), `the copied link ${s.link} is not the one opened, ${query}`);
+    noConsoleErrors(page);
+    await page.close();
+  },
+
   // The ambient error map on the page comes coarse first (a quarter of the side, a sixteenth of
   // the full map's paths), within seconds, while the full map is traced behind it.
   async the_ambient_error_map_shows_a_coarse_map_first() {

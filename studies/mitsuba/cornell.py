@@ -11,17 +11,22 @@ prints how far they agree, for the direct light alone and with light between sur
     cargo build --release
     /tmp/mi/bin/python studies/mitsuba/cornell.py --shadelab target/release/shadelab
 
+Both renderers' time at the same paths and at equal noise, in one run:
+
+    /tmp/mi/bin/python studies/mitsuba/cornell.py --shadelab target/release/shadelab --timing --size 128 --spp 256 --bounces 4
+
 The images the test `reference::cornell_tests` holds shadelab to were written by
 
     /tmp/mi/bin/python studies/mitsuba/cornell.py --write assets/mitsuba --size 96 --spp 4096 --bounces 1 4
 
 Units: the chapter's light has no 1/pi and its point lights fall off as 1/(1 + alpha d^2), so the
 scene's light is given intensity alpha*A*L/pi with alpha = 1e4; shadelab's pixels are then the
-physical radiance Mitsuba computes (see the scene file). shadelab's lights are not surfaces: a
-camera ray sees the ceiling through the light, and a bounce passes through it; in Mitsuba the
-light is given the `null` BSDF, which lets light through the same way. The light's own pixels,
-and pixels whose corners see different faces (edges, where Mitsuba averages over the pixel and
-shadelab takes its centre), are left out.
+physical radiance Mitsuba computes (see the scene file). In shadelab's path tracer a bounce that
+meets the light ends there (its front emits, its back is black); in Mitsuba the light is given a
+black diffuse BSDF, which does the same (`--light-bsdf null` lets light through it instead, as
+shadelab's path tracer did before its lights were surfaces). shadelab's camera rays still see the
+ceiling through the light: the light's own pixels, and pixels whose corners see different faces
+(edges, where Mitsuba averages over the pixel and shadelab takes its centre), are left out.
 """
 
 import argparse
@@ -29,6 +34,7 @@ import math
 import subprocess
 import sys
 import tempfile
+import time
 from pathlib import Path
 
 import mitsuba as mi
@@ -57,7 +63,11 @@ def box(lo, hi, turn_deg, albedo):
     }
 
 
-def scene(size, spp, bounces, seed):
+LIGHT_BSDF = {"black": {"type": "diffuse", "reflectance": {"type": "rgb", "value": [0.0, 0.0, 0.0]}},
+              "null": {"type": "null"}}
+
+
+def scene(size, spp, bounces, seed, light_bsdf="black"):
     w, h, d = ROOM
     t = WALL
     shapes = {
@@ -72,8 +82,8 @@ def scene(size, spp, bounces, seed):
             "type": "rectangle",
             # The unit square's normal +z turned to -y; its x along x, its y along z.
             "to_world": T().translate(LIGHT_CENTER).rotate([1, 0, 0], 90).scale([LIGHT_SIZE[0] / 2, LIGHT_SIZE[1] / 2, 1]),
-            # Light passes through it, as through shadelab's lights, which are not surfaces.
-            "bsdf": {"type": "null"},
+            # A surface that emits from its front and absorbs (black), as shadelab's path tracer's.
+            "bsdf": LIGHT_BSDF[light_bsdf],
             "emitter": {"type": "area", "radiance": {"type": "rgb", "value": list(RADIANCE)}},
         },
     }
@@ -93,8 +103,8 @@ def scene(size, spp, bounces, seed):
     })
 
 
-def mitsuba(size, spp, bounces, seed):
-    return np.array(mi.render(scene(size, spp, bounces, seed)))[:, :, :3]
+def mitsuba(size, spp, bounces, seed, light_bsdf="black"):
+    return np.array(mi.render(scene(size, spp, bounces, seed, light_bsdf)))[:, :, :3]
 
 
 def shadelab(binary, size, spp, bounces, out):
@@ -132,29 +142,77 @@ def blocks(img, k=8):
     return img[: h // k * k, : w // k * k].reshape(h // k, k, w // k, k, c).mean(axis=(1, 3))
 
 
+def timing(binary, size, spp, bounces):
+    """Each renderer's time and noise on the box at the same paths, in one run: Mitsuba's scalar_rgb
+    and llvm_ad_rgb (after a warm-up render that compiles its kernels), shadelab's path tracer.
+    The noise is two seeds' RMS difference over sqrt(2), on the compared pixels; the time to
+    shadelab's noise scales each time by (its noise / shadelab's)^2, as noise falls as 1/sqrt(paths)."""
+    keep = interior(size)
+    rows = []
+    for variant in ["scalar_rgb", "llvm_ad_rgb"]:
+        try:
+            mi.set_variant(variant)
+        except Exception as e:  # a variant this build of Mitsuba lacks
+            print(f"({variant}: {e})")
+            continue
+        if variant != "scalar_rgb":
+            mi.render(scene(size, 1, bounces, 3))
+        t = time.perf_counter()
+        a = np.array(mi.render(scene(size, spp, bounces, 1)))[:, :, :3]
+        seconds = time.perf_counter() - t
+        b = np.array(mi.render(scene(size, spp, bounces, 2)))[:, :, :3]
+        rows.append((f"Mitsuba {variant}", seconds, math.sqrt(((a - b)[keep] ** 2).mean() / 2)))
+    mi.set_variant("scalar_rgb")
+    with tempfile.TemporaryDirectory() as tmp:
+        imgs, seconds = [], None
+        for seed in [1, 2]:
+            out = Path(tmp) / f"s{seed}.exr"
+            cmd = [binary, "render", "--scene", "cornell", "--reference", "--bounces", str(bounces), "--spp", str(spp),
+                   "--seed", str(seed), "--width", str(size), "--height", str(size), "--output", str(out)]
+            t = time.perf_counter()
+            subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+            seconds = seconds or time.perf_counter() - t
+            imgs.append(np.array(mi.Bitmap(str(out)))[:, :, :3])
+        rows.append(("shadelab (the whole process)", seconds, math.sqrt(((imgs[0] - imgs[1])[keep] ** 2).mean() / 2)))
+    ours = rows[-1][2]
+    print(f"# Cornell box, {size}x{size}, {bounces} surface vertices, {spp} paths a pixel in each")
+    print("| renderer | time, s | noise (one image, RMS) | time to shadelab's noise, s |")
+    print("|---|---:|---:|---:|")
+    for name, seconds, noise in rows:
+        print(f"| {name} | {seconds:.2f} | {noise:.3e} | {seconds * (noise / ours) ** 2:.2f} |")
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--shadelab", help="the shadelab binary")
     ap.add_argument("--size", type=int, default=256)
     ap.add_argument("--spp", type=int, default=256, help="paths a pixel in each renderer")
     ap.add_argument("--bounces", type=int, nargs="+", default=[1, 6])
+    ap.add_argument("--light-bsdf", choices=sorted(LIGHT_BSDF), default="black",
+                    help="the light's surface in Mitsuba: black (absorbs, as shadelab's) or null (passes light)")
+    ap.add_argument("--timing", action="store_true",
+                    help="time both renderers at the same paths (--size, --spp, the first --bounces) and at equal noise")
     ap.add_argument("--write", metavar="DIR", help="only write Mitsuba's images, mitsuba-cornell-N.exr, N per --bounces")
     args = ap.parse_args()
+    if args.timing:
+        timing(args.shadelab, args.size, args.spp, args.bounces[0])
+        return 0
     if args.write:
         for bounces in args.bounces:
             out = Path(args.write) / f"mitsuba-cornell-{bounces}.exr"
-            mi.Bitmap(mitsuba(args.size, args.spp, bounces, 1).astype(np.float32)).write(str(out))
+            mi.Bitmap(mitsuba(args.size, args.spp, bounces, 1, args.light_bsdf).astype(np.float32)).write(str(out))
             print(f"wrote {out}: {args.size}x{args.size}, {args.spp} paths a pixel, {bounces} surface vertices")
         return 0
-    print(f"# Cornell box, {args.size}x{args.size}, {args.spp} paths a pixel; Mitsuba {mi.__version__} scalar_rgb")
+    print(f"# Cornell box, {args.size}x{args.size}, {args.spp} paths a pixel; Mitsuba {mi.__version__} scalar_rgb, "
+          f"light BSDF {args.light_bsdf}")
     print("| surface vertices | mean, shadelab / Mitsuba (R, G, B) | pixel RMSE | the mean's noise (both) | 8x8 blocks: 95th percentile of |diff|/mean |")
     print("|---:|---|---:|---:|---:|")
     inside = interior(args.size)
     print(f"({inside.mean() * 100:.1f} % of the pixels are compared: those whose corners see one face of one shape)")
     with tempfile.TemporaryDirectory() as tmp:
         for bounces in args.bounces:
-            a = mitsuba(args.size, args.spp, bounces, 1)
-            b = mitsuba(args.size, args.spp, bounces, 2)
+            a = mitsuba(args.size, args.spp, bounces, 1, args.light_bsdf)
+            b = mitsuba(args.size, args.spp, bounces, 2, args.light_bsdf)
             s = shadelab(args.shadelab, args.size, args.spp, bounces, Path(tmp) / f"shadelab-{bounces}.exr")
             # The light's own pixels, and their neighbours, are left out.
             light = (a.max(axis=2) > 3.0) | (b.max(axis=2) > 3.0)

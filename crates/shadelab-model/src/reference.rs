@@ -10,6 +10,7 @@ mod cornell_tests;
 mod env_tests;
 mod glass;
 mod intersect;
+mod light_surfaces;
 mod occlusion_bake;
 mod path;
 #[cfg(test)]
@@ -461,7 +462,7 @@ impl Context<'_> {
     /// parameters in a copy of its material (`tinted`, made once per image, not per pixel), or
     /// `material` when given (the glass surface's own); its emission added. With `sampler`, each
     /// area light's term is one random point's estimate of its integral (`area_term_sampled`, the
-    /// path tracer's bounces) instead of the refined integral.
+    /// path tracer's bounces), under the sampler's weight, instead of the refined integral.
     pub(crate) fn shade_hit(
         &self,
         hit: &intersect::SurfaceHit,
@@ -469,7 +470,7 @@ impl Context<'_> {
         tinted: &mut [Material],
         footprint: Option<&UvFootprint>,
         material: Option<&Material>,
-        sampler: Option<&std::cell::RefCell<path::Rng>>,
+        sampler: Option<path::Sampler>,
     ) -> Shaded {
         let scene = self.scene;
         let mi = scene.objects[hit.object].material;
@@ -508,12 +509,12 @@ impl Context<'_> {
             }
             let shadow = a.light.shadow.casts.then_some(&visible as &dyn Fn(DVec3, DVec3) -> bool);
             let term = match sampler {
-                Some(rng) => {
-                    let (u, w) = {
-                        let mut rng = rng.borrow_mut();
+                Some(sampler) => {
+                    let uw = {
+                        let mut rng = sampler.rng.borrow_mut();
                         (rng.uniform(), rng.uniform())
                     };
-                    area_term_sampled(a, shadow, u, w)?
+                    area_term_sampled(a, shadow, uw, sampler.weight)?
                 }
                 None => area_term_exact(a, shadow)?,
             };

@@ -108,12 +108,14 @@ pub fn area_term_exact(a: &AreaAt, visible: Option<&dyn Fn(DVec3, DVec3) -> bool
 /// part of the light the point can see ([`random_cell`]), its integrand times that area, and
 /// binary visibility by `visible`. Its mean over `(s, t)` is the light's whole shadowed
 /// integral; the path tracer's bounces take it in place of the refined integral, which would
-/// cost some 10⁵ evaluations at every vertex. `None` as [`area_term_exact`].
+/// cost some 10⁵ evaluations at every vertex. `weight(l, p)` scales the estimate, given the
+/// direction to the point and the density per solid angle it was drawn with (`r²/(cos θ_l·A)`):
+/// the path tracer's multiple importance weight. `None` as [`area_term_exact`].
 pub fn area_term_sampled(
     a: &AreaAt,
     visible: Option<&dyn Fn(DVec3, DVec3) -> bool>,
-    s: f64,
-    t: f64,
+    (s, t): (f64, f64),
+    weight: &dyn Fn(DVec3, f64) -> f64,
 ) -> Option<AreaTerm> {
     let area = a.light.area_light()?;
     let d2 = (area.center - a.p).length_squared();
@@ -127,7 +129,7 @@ pub fn area_term_sampled(
     };
     let dd = diffuse_weight(l, a.n, a.v, a.mat, a.specular) * a.n.dot(l).max(0.0) * w;
     let spec = light_specular(l, a.n, a.v, a.mat, a.v_index, a.specular, a.ms_e).map(|x| x * w);
-    let (scale, mat, radiance) = (d2 / emitting, a.mat, a.sample.radiance);
+    let (scale, mat, radiance) = (d2 / emitting * weight(l, 1.0 / w), a.mat, a.sample.radiance);
     let clear: [f64; 3] =
         std::array::from_fn(|c| radiance[c] * scale * (mat.r_d * mat.color[c] * dd + mat.r_s * spec[c]));
     let seen = visible.is_none_or(|v| clear == [0.0; 3] || v(a.p, x));
@@ -205,7 +207,7 @@ mod tests {
                 for i in 0..n {
                     for j in 0..n {
                         let (u, w) = ((i as f64 + 0.5) / n as f64, (j as f64 + 0.5) / n as f64);
-                        let t = area_term_sampled(&a, shadow, u, w).unwrap();
+                        let t = area_term_sampled(&a, shadow, (u, w), &|_, _| 1.0).unwrap();
                         for ch in 0..3 {
                             mean[ch] += t.lit[ch] / (n * n) as f64;
                         }

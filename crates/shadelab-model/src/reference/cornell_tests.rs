@@ -1,7 +1,8 @@
 //! The path-traced reference against an independent renderer (docs/reference.md, "Checks
 //! against another renderer"): the Cornell box as Mitsuba 3 renders it
 //! (`studies/mitsuba/cornell.py` wrote `assets/mitsuba/mitsuba-cornell-N.exr`, 96×96, 4096 paths a
-//! pixel), where the same light is in the same units.
+//! pixel, the light a black surface that emits from its front), where the same light is in the
+//! same units.
 
 use super::*;
 
@@ -96,15 +97,20 @@ fn the_cornell_box_direct_light_is_mitsubas() {
     assert!(worst < 0.01, "a block differs by {worst}");
 }
 
-/// With light between surfaces (4 surface vertices): shadelab's path tracer is Mitsuba's image
-/// within 1 % in the mean (measured: 0.4–0.6 % brighter, docs/reference.md), and each block
-/// within 2 % beyond its noise.
+/// With light between surfaces, at 2, 3, 4 and 6 surface vertices: the light is a surface in both
+/// renderers (a bounce that meets it ends there; `light_surfaces.rs`), and shadelab's path tracer
+/// is Mitsuba's image within 0.5 % in the mean (measured at 128×128, 256 paths: 0.13–0.26 %
+/// darker, inside the falloff's 0.25 %; before the light was a surface, 0.3 % brighter at 3
+/// vertices and 0.65 % at 6), and each block within 2 % beyond its noise.
 #[test]
 fn the_cornell_box_with_bounces_is_mitsubas() {
     let direct = traced(PathSettings { bounces: 1, spp: 1, seed: 1 });
-    let (ratio, worst, blocks) =
-        agreement(&direct, &traced(PathSettings { bounces: 4, spp: 64, seed: 1 }), &mitsuba(4));
-    assert!(blocks >= 15, "only {blocks} blocks compared");
-    assert!(ratio.iter().all(|r| (0.99..1.01).contains(r)), "{ratio:?}");
-    assert!(worst < 0.02, "a block differs by {worst}");
+    for bounces in [2, 3, 4, 6] {
+        let (ratio, worst, blocks) =
+            agreement(&direct, &traced(PathSettings { bounces, spp: 64, seed: 1 }), &mitsuba(bounces));
+        eprintln!("{bounces} vertices: mean ratio {ratio:?}, worst block {worst:.4} beyond its noise");
+        assert!(blocks >= 15, "{bounces} vertices: only {blocks} blocks compared");
+        assert!(ratio.iter().all(|r| (0.995..1.005).contains(r)), "{bounces} vertices: {ratio:?}");
+        assert!(worst < 0.02, "{bounces} vertices: a block differs by {worst}");
+    }
 }

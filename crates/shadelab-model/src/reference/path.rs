@@ -11,6 +11,7 @@
 
 use super::glass::{Leaves, Tracer};
 use super::intersect::{SurfaceHit, trace};
+use super::light_surfaces::{LightHit, light_hit};
 use super::{Context, Shaded};
 use crate::Light;
 use crate::lighting::common::safe_normalize;
@@ -111,6 +112,15 @@ fn lobe_density(w: DVec3, r: DVec3, e: f64) -> f64 {
     (e + 1.0) / std::f64::consts::TAU * w.dot(r).max(0.0).powf(e)
 }
 
+/// How a path vertex samples its area lights' direct light: its random numbers, and the
+/// multiple importance weight of a light's point given the direction to it and its density
+/// per solid angle (the power heuristic against the vertex's bounce, [`mis_weight`]).
+#[derive(Clone, Copy)]
+pub(crate) struct Sampler<'a> {
+    pub rng: &'a RefCell<Rng>,
+    pub weight: &'a dyn Fn(DVec3, f64) -> f64,
+}
+
 /// One row's indirect light: its mean per pixel, the standard error of that mean, and the pixels
 /// with a firefly.
 #[derive(Default)]
@@ -137,7 +147,11 @@ impl Leaves for PathLeaves<'_> {
     fn opaque(&self, ctx: &Context, hit: &SurfaceHit, from: DVec3) -> [f64; 3] {
         let depth = self.depth;
         let mut light = if self.whole {
-            ctx.shade_hit(hit, from.extend(1.0), &mut self.tinted.borrow_mut(), None, None, Some(self.rng)).lit
+            // The area lights' points weighed against this vertex's bounce, which meets them too.
+            let bounce = vertex_bounce(ctx, hit, from, &mut self.tinted.borrow_mut()).0;
+            let weight = |l: DVec3, p_light: f64| power_heuristic(p_light, bounce.density(l));
+            let sampler = Sampler { rng: self.rng, weight: &weight };
+            ctx.shade_hit(hit, from.extend(1.0), &mut self.tinted.borrow_mut(), None, None, Some(sampler)).lit
         } else {
             [0.0; 3]
         };
@@ -158,24 +172,50 @@ impl Leaves for PathLeaves<'_> {
     }
     fn glass_surface(&self, ctx: &Context, hit: &SurfaceHit, eye: DVec4, material: &Material) -> Shaded {
         if self.whole {
-            ctx.shade_hit(hit, eye, &mut self.tinted.borrow_mut(), None, Some(material), Some(self.rng))
+            // Glass samples no bounce that could meet a light: its light's points weigh 1.
+            let sampler = Sampler { rng: self.rng, weight: &|_, _| 1.0 };
+            ctx.shade_hit(hit, eye, &mut self.tinted.borrow_mut(), None, Some(material), Some(sampler))
         } else {
             Shaded::default()
         }
     }
 }
 
+/// The bounce sampling at `hit` seen from `from`, with the shading normal the model takes and
+/// the index of the point's material (its textured parameters written into `tinted`).
+fn vertex_bounce(ctx: &Context, hit: &SurfaceHit, from: DVec3, tinted: &mut [Material]) -> (Bounce, DVec3, usize) {
+    let mi = ctx.scene.objects[hit.object].material;
+    let (n_in, mat, _) = ctx.surface(hit, &ctx.scene.materials[mi], &mut tinted[mi], false, None);
+    let n = safe_normalize(n_in, hit.geometric_normal);
+    // The mirror of the view about the normal, the axis of the specular lobe.
+    let v = safe_normalize(from - hit.point, n);
+    let r = safe_normalize(n * (2.0 * n.dot(v)) - v, n);
+    (Bounce { n, r, lobe: lobe_exponent(mat, ctx.specular) }, n_in, mi)
+}
+
+/// Whether the vertex's direct light draws `light` by its points (`area_term_sampled`), so that
+/// a bounce meeting it is the other of two strategies: the exact Phong model's integrated area
+/// lights. Others are whole in the direct light, and a bounce meeting them brings nothing.
+fn sampled_by_area(ctx: &Context, light: &Light) -> bool {
+    ctx.exact
+        && ctx.scene.illumination == crate::IlluminationModel::Phong
+        && light.kind.is_area()
+        && !light.drawn_as_points()
+}
+
 /// The indirect light at vertex `depth` of a path, seen from `from`: the environment's light at
 /// the vertex (when the scene has one), and one bounce drawn from the mixture of `cos/π` about
 /// the shading normal and the specular lobe ([`LOBE_SHARE`]), with the whole light that comes
-/// back along it.
+/// back along it. A bounce that meets an area light ends there (`light_surfaces.rs`); at the
+/// last vertex it is drawn for that meeting alone.
 fn indirect_at(ctx: &Context, leaves: &PathLeaves, hit: &SurfaceHit, from: DVec3, depth: u32) -> [f64; 3] {
     let env = ctx.env.filter(|_| ctx.env_use == super::EnvUse::Traced);
-    if depth >= leaves.paths.bounces && env.is_none() {
+    let scene = ctx.scene;
+    let last = depth >= leaves.paths.bounces;
+    let meets_lights = leaves.whole && scene.lights.iter().any(|l| sampled_by_area(ctx, l));
+    if last && env.is_none() && !meets_lights {
         return [0.0; 3];
     }
-    let scene = ctx.scene;
-    let mi = scene.objects[hit.object].material;
     // Two more numbers only with an environment, so a scene without one keeps its images.
     let [u0, u1, u2, u3, u4] = {
         let mut rng = leaves.rng.borrow_mut();
@@ -188,12 +228,8 @@ fn indirect_at(ctx: &Context, leaves: &PathLeaves, hit: &SurfaceHit, from: DVec3
     };
     let p = hit.point;
     let mut tinted = leaves.tinted.borrow_mut();
-    let (n_in, mat, _) = ctx.surface(hit, &scene.materials[mi], &mut tinted[mi], false, None);
-    let n = safe_normalize(n_in, hit.geometric_normal);
-    // The mirror of the view about the normal, the axis of the specular lobe.
-    let v = safe_normalize(from - p, n);
-    let r = safe_normalize(n * (2.0 * n.dot(v)) - v, n);
-    let bounce = Bounce { n, r, lobe: lobe_exponent(mat, ctx.specular) };
+    let (bounce, n_in, mi) = vertex_bounce(ctx, hit, from, &mut tinted);
+    let (n, mat) = (bounce.n, &tinted[mi]);
     let ng = hit.geometric_normal;
     let origin = |w: DVec3| {
         let side = if ng.dot(w) >= 0.0 { 1.0 } else { -1.0 };
@@ -205,7 +241,9 @@ fn indirect_at(ctx: &Context, leaves: &PathLeaves, hit: &SurfaceHit, from: DVec3
         let (w, p_env) = env.sample(u3, u4);
         if w.dot(n) >= PATH_COS_MIN && p_env > 0.0 {
             let term = model_term_towards(ctx, p, n_in, from, mat, w);
-            if term != [0.0; 3] && trace(scene, ctx.geo, origin(w), w).is_none() {
+            let clear =
+                |w: DVec3| trace(scene, ctx.geo, origin(w), w).is_none() && light_hit(scene, origin(w), w).is_none();
+            if term != [0.0; 3] && clear(w) {
                 let weight = power_heuristic(p_env, bounce.density(w));
                 let l = env.radiance(w);
                 for i in 0..3 {
@@ -225,14 +263,19 @@ fn indirect_at(ctx: &Context, leaves: &PathLeaves, hit: &SurfaceHit, from: DVec3
     if term == [0.0; 3] {
         return out;
     }
-    let incoming = match trace(scene, ctx.geo, origin(w), w) {
+    let o = origin(w);
+    let next = trace(scene, ctx.geo, o, w);
+    let met = light_hit(scene, o, w).filter(|h| next.as_ref().is_none_or(|s| h.t < (s.point - o).length()));
+    let incoming = match (met, next) {
+        (Some(h), _) if leaves.whole => return add(out, light_met(ctx, &h, p, n, w, term, density)),
+        (Some(_), _) => return out,
         // A bounce that leaves meets the environment, weighed against its own sampling.
-        None => env.map_or([0.0; 3], |e| {
+        (None, None) => env.map_or([0.0; 3], |e| {
             let weight = power_heuristic(density, e.pdf(w));
             e.radiance(w).map(|l| l * weight)
         }),
-        Some(_) if depth >= leaves.paths.bounces => [0.0; 3],
-        Some(next) => {
+        (None, Some(_)) if last => [0.0; 3],
+        (None, Some(next)) => {
             let whole = PathLeaves { depth: depth + 1, whole: true, ..*leaves };
             if scene.drawn_as_glass(next.object) {
                 Tracer::new(ctx, &whole).glass_color(&next, w, p.extend(1.0), 0, [1.0; 3], None).lit
@@ -246,6 +289,31 @@ fn indirect_at(ctx: &Context, leaves: &PathLeaves, hit: &SurfaceHit, from: DVec3
         out[i] += term[i] * incoming[i] / (std::f64::consts::PI * density);
     }
     out
+}
+
+fn add(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
+    std::array::from_fn(|i| a[i] + b[i])
+}
+
+/// A bounce from `p` (shading normal `n`) along `w`, drawn with `density`, that met a light's
+/// surface: the light's front gives the bounce's estimate of that light's direct light, weighed
+/// against the vertex's own sampling of its points ([`sampled_by_area`]); a back, or a light the
+/// direct light holds whole, gives nothing. The light's radiance towards `p` is the chapter's
+/// area light, its centre's point light spread over its area: `π·I·f(d)·d²/A` in path units.
+fn light_met(ctx: &Context, h: &LightHit, p: DVec3, n: DVec3, w: DVec3, term: [f64; 3], density: f64) -> [f64; 3] {
+    let light = &ctx.scene.lights[h.light];
+    if !h.front || !sampled_by_area(ctx, light) {
+        return [0.0; 3];
+    }
+    let Some(area) = light.area_light() else { return [0.0; 3] };
+    let (d2, emitting) = ((area.center - p).length_squared(), area.emitting_area());
+    if d2 <= crate::guards::LIGHT_DIST_MIN.powi(2) || emitting <= 0.0 || !emitting.is_finite() {
+        return [0.0; 3];
+    }
+    let radiance = crate::lighting::lights::light_sample(light, p, n, w, 0.0).radiance;
+    let weight = power_heuristic(density, h.density);
+    // term·L·dω/π over the density, with L = π·radiance·d²/A.
+    std::array::from_fn(|i| term[i] * radiance[i] * d2 / emitting * weight / density)
 }
 
 /// Veach's power heuristic: the weight of a sample drawn with density `a` where the other

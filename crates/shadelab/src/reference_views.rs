@@ -147,11 +147,13 @@ fn noise_line(traced: &ReferenceImage, p: PathSettings) -> String {
     let n = traced.std_error.len().max(1) as f64 * 3.0;
     let rms = (traced.std_error.iter().flatten().map(|e| e * e).sum::<f64>() / n).sqrt();
     format!(
-        "; {} bounces, {} paths a pixel, seed {}: noise (RMS standard error) {rms:.3e}, {} pixels with a firefly (one path over {:.0} % of the pixel's indirect light)",
+        "; {} bounces, {} paths a pixel, seed {}: noise (RMS standard error) {rms:.3e}, {} pixels with a firefly (one path over {:.0} % of the pixel's indirect light), {} above {}× their 3×3 median",
         p.bounces,
         p.spp,
         p.seed,
         traced.fireflies,
-        shadelab_model::reference::FIREFLY_SHARE * 100.0
+        shadelab_model::reference::FIREFLY_SHARE * 100.0,
+        shadelab_model::reference::outlier_pixels(&traced.pixels, traced.width as usize),
+        shadelab_model::reference::OUTLIER_FACTOR
     )
 }

@@ -42,6 +42,32 @@ pub const FIREFLY_SHARE: f64 = 0.25;
 /// Paths a pixel needs before one path's share says anything: with 8, an even share is 1/8.
 pub const FIREFLY_MIN_SPP: u32 = 8;
 
+/// A pixel is an outlier when its luminance is above this many times the median of its 3×3
+/// neighbourhood (itself included; at the border, the neighbours inside): the image-space count
+/// of fireflies, which needs no per-path record and reads any renderer's image alike.
+pub const OUTLIER_FACTOR: f64 = 10.0;
+
+/// The pixels of `pixels` (`width` a row) above [`OUTLIER_FACTOR`] times their 3×3 median.
+pub fn outlier_pixels(pixels: &[[f64; 3]], width: usize) -> usize {
+    let height = pixels.len() / width.max(1);
+    let lum: Vec<f64> = pixels.iter().map(|&c| luminance(c)).collect();
+    let mut count = 0;
+    for y in 0..height {
+        for x in 0..width {
+            let mut around: Vec<f64> = (y.saturating_sub(1)..(y + 2).min(height))
+                .flat_map(|j| (x.saturating_sub(1)..(x + 2).min(width)).map(move |i| (i, j)))
+                .map(|(i, j)| lum[j * width + i])
+                .collect();
+            around.sort_by(f64::total_cmp);
+            let median = around[around.len() / 2];
+            if lum[y * width + x] > OUTLIER_FACTOR * median {
+                count += 1;
+            }
+        }
+    }
+    count
+}
+
 /// How the path tracer samples: surface vertices per path and paths per pixel (within
 /// `params::BOUNCES` and `params::SPP`), and the seed every
 /// pixel's random numbers derive from (the same seed gives the same image on any number of

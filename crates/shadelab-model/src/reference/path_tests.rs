@@ -282,3 +282,20 @@ fn ambient_occlusion_darkens_contact_only() {
     }
     assert!(open > 100 && contact > 3, "{open} open and {contact} contact pixels");
 }
+
+/// One bright pixel in a smooth image is the one outlier; a smooth ramp and a sharp edge have none.
+#[test]
+fn an_outlier_is_a_pixel_far_above_its_neighbourhoods_median() {
+    let (w, h) = (8, 6);
+    let mut img: Vec<[f64; 3]> = (0..w * h).map(|i| [0.1 + 0.01 * (i % w) as f64; 3]).collect();
+    for y in 0..h {
+        for x in 4..w {
+            img[y * w + x] = [0.9; 3];
+        }
+    }
+    assert_eq!(outlier_pixels(&img, w), 0, "a ramp and an edge");
+    img[2 * w + 1] = [1.5; 3];
+    assert_eq!(outlier_pixels(&img, w), 1);
+    img[2 * w + 1] = [0.95; 3];
+    assert_eq!(outlier_pixels(&img, w), 0, "under 10× the median");
+}

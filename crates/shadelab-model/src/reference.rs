@@ -193,9 +193,9 @@ pub struct ReferenceJob {
     geo: Geometry,
     specular: SpecularModel,
     paths: Option<PathSettings>,
-    /// With `paths`: the scene with `I_a = 1`, whose exact image gives each pixel's constant
-    /// ambient term per unit of `I_a`.
-    unit: Option<Scene>,
+    /// With `paths`: the scene without its lights at `I_a = 1` and at `I_a = 0`, whose exact
+    /// images differ by each pixel's constant ambient term per unit of `I_a`.
+    unit: Option<[Scene; 2]>,
     /// The scene's environment light, baked once.
     env: Option<EnvLight>,
     img: ReferenceImage,
@@ -234,7 +234,10 @@ impl ReferenceJob {
         let traced = Scene { ambient: [0.0; 3], environment, ..scene.clone() };
         let mut job = ReferenceJob::new(&traced, specular, width, height);
         job.paths = Some(paths);
-        job.unit = Some(Scene { ambient: [1.0; 3], ..job.scene.clone() });
+        // The ambient term is linear in I_a and owes nothing to the lights: two images without
+        // them give it, at a fraction of the cost of the lit image's exact area lights.
+        let lightless = Scene { lights: Vec::new(), ..job.scene.clone() };
+        job.unit = Some([Scene { ambient: [1.0; 3], ..lightless.clone() }, lightless]);
         job.img.paths = Some(paths);
         Ok(job)
     }
@@ -297,15 +300,16 @@ fn trace_rows(
     img: &mut ReferenceImage,
     rows: std::ops::Range<u32>,
     exact: bool,
-    paths: Option<(&PathSettings, &Scene)>,
+    paths: Option<(&PathSettings, &[Scene; 2])>,
     env: Option<&EnvLight>,
 ) {
     let rays = ShadowRays::new(scene, geo);
     let env_use = if paths.is_some() { EnvUse::Traced } else { EnvUse::Sh };
     let ctx = Context { scene, geo, rays: &rays, specular, exact, env, env_use, area_error: Default::default() };
-    let unit_rays = paths.map(|(_, unit)| ShadowRays::new(unit, geo));
-    let unit_ctx = paths.zip(unit_rays.as_ref()).map(|((p, unit), rays)| {
-        (p, Context { scene: unit, geo, rays, specular, exact, env, env_use, area_error: Default::default() })
+    let unit_rays = paths.map(|(_, [unit, _])| ShadowRays::new(unit, geo));
+    let unit_ctx = paths.zip(unit_rays.as_ref()).map(|((p, [one, zero]), rays)| {
+        let ctx = |scene| Context { scene, geo, rays, specular, exact, env, env_use, area_error: Default::default() };
+        (p, [ctx(one), ctx(zero)])
     });
     // Rows on every core, each into its own buffer, appended in order: the same image as one
     // thread would trace.

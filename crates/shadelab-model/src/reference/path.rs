@@ -441,19 +441,19 @@ fn indirect_row(ctx: &Context, paths: &PathSettings, y: u32, width: u32, height:
 
 /// Row `y` of a path-traced image: `row`, the exact direct light without ambient, gains the
 /// indirect light with its noise, and the constant ambient per unit of `I_a` (the row traced in
-/// `unit`, the same scene with `I_a = 1`, less `row`).
+/// `unit`'s scenes without lights, at `I_a = 1` less at `I_a = 0`).
 pub(super) fn add_paths(
     ctx: &Context,
-    unit: &Context,
+    [one, zero]: &[Context; 2],
     paths: &PathSettings,
     y: u32,
     width: u32,
     height: u32,
     row: &mut super::RowPixels,
 ) {
-    let with_unit = super::trace_row(unit, y, width, height);
+    let (with_one, with_zero) = (super::trace_row(one, y, width, height), super::trace_row(zero, y, width, height));
     row.per_ambient =
-        with_unit.pixels.iter().zip(&row.pixels).map(|(u, d)| std::array::from_fn(|i| u[i] - d[i])).collect();
+        with_one.pixels.iter().zip(&with_zero.pixels).map(|(u, d)| std::array::from_fn(|i| u[i] - d[i])).collect();
     let more = indirect_row(ctx, paths, y, width, height);
     // The indirect light is the same with and without the direct light's cast shadows.
     for (k, m) in more.light.iter().enumerate() {

@@ -299,3 +299,32 @@ fn an_outlier_is_a_pixel_far_above_its_neighbourhoods_median() {
     img[2 * w + 1] = [0.95; 3];
     assert_eq!(outlier_pixels(&img, w), 0, "under 10× the median");
 }
+
+/// The constant ambient per unit of `I_a` that a path-traced image carries (traced without the
+/// lights) is the difference of the exact lit images at `I_a = 1` and `I_a = 0`, through glass
+/// and under an area light too.
+#[test]
+fn the_ambient_per_unit_is_the_lit_images_difference() {
+    for name in ["default", "glass"] {
+        let mut scene = Scene::builtin(name).unwrap();
+        let at = DVec3::new(1.0, 3.0, 2.0);
+        scene.lights[0] = Light::area(crate::params::LightKind::Rect, at, -at, [0.6, 0.4], [1.0; 3], 1.2, 0.05);
+        let paths = PathSettings { bounces: 2, spp: 1, seed: 1 };
+        let mut job = ReferenceJob::with_paths(&scene, SpecularModel::CookTorrance, 24, 16, paths).unwrap();
+        job.step(16);
+        let traced = job.finish();
+        let lit = |a: f64| {
+            let s = Scene { ambient: [a; 3], ..scene.clone() };
+            let mut job = ReferenceJob::new(&s, SpecularModel::CookTorrance, 24, 16);
+            job.step(16);
+            job.finish().pixels
+        };
+        let (one, zero) = (lit(1.0), lit(0.0));
+        for (k, a) in traced.per_ambient.iter().enumerate() {
+            for c in 0..3 {
+                let want = one[k][c] - zero[k][c];
+                assert!((a[c] - want).abs() <= 1e-12 * (1.0 + want.abs()), "{name} pixel {k}: {} vs {want}", a[c]);
+            }
+        }
+    }
+}

@@ -403,3 +403,31 @@ mod tests {
         }
     }
 }
+
+/// One mesh's hierarchy on its own, for measuring it against another (`studies/bvh`): the same
+/// build and the same nearest-hit walk the reference's rays take.
+pub struct MeshHierarchy<'m> {
+    mesh: &'m TriangleMesh,
+    bvh: Bvh,
+}
+
+impl<'m> MeshHierarchy<'m> {
+    pub fn build(mesh: &'m TriangleMesh) -> MeshHierarchy<'m> {
+        MeshHierarchy { mesh, bvh: Bvh::build(mesh) }
+    }
+
+    /// Bytes the hierarchy holds (the mesh's own triangles not counted).
+    pub fn bytes(&self) -> usize {
+        self.bvh.bytes()
+    }
+
+    /// Where a ray from `o` along `dir` meets triangle `k` alone: its ray parameter.
+    pub fn triangle_hit(&self, k: usize, o: DVec3, dir: DVec3) -> Option<f64> {
+        intersect_triangle(&self.mesh.triangle(k), o, dir).map(|(t, _, _)| t)
+    }
+
+    /// The nearest triangle a ray from `o` along `dir` meets: its ray parameter and index.
+    pub fn nearest(&self, o: DVec3, dir: DVec3) -> Option<(f64, usize)> {
+        intersect_mesh(self.mesh, &self.bvh, o, dir).map(|(t, _, _, k, _, _)| (t, k))
+    }
+}

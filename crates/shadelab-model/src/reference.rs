@@ -21,8 +21,8 @@ mod tests;
 
 pub use ambient::{AO_RADIUS_REL, AmbientLadder, ambient_occlusion};
 pub use glass::{GLASS_MAX_DEPTH, GLASS_MIN_WEIGHT, SECONDARY_RAY_OFFSET};
-pub use occlusion_bake::bake_occlusion;
 pub use intersect::MeshHierarchy;
+pub use occlusion_bake::bake_occlusion;
 pub use path::{FIREFLY_MIN_SPP, FIREFLY_SHARE, OUTLIER_FACTOR, PATH_COS_MIN, PathSettings, outlier_pixels};
 pub use shadow_rays::SHADOW_RAY_OFFSET_REL;
 

@@ -24,9 +24,9 @@ scene's light is given intensity alpha*A*L/pi with alpha = 1e4; shadelab's pixel
 physical radiance Mitsuba computes (see the scene file). In shadelab's path tracer a bounce that
 meets the light ends there (its front emits, its back is black); in Mitsuba the light is given a
 black diffuse BSDF, which does the same (`--light-bsdf null` lets light through it instead, as
-shadelab's path tracer did before its lights were surfaces). shadelab's camera rays still see the
-ceiling through the light: the light's own pixels, and pixels whose corners see different faces
-(edges, where Mitsuba averages over the pixel and shadelab takes its centre), are left out.
+shadelab's path tracer did before its lights were surfaces). The light's own pixels (which the
+test `the_light_the_camera_sees_is_mitsubas` compares), and pixels whose corners see different
+faces (edges, where Mitsuba averages over the pixel and shadelab takes its centre), are left out.
 """
 
 import argparse

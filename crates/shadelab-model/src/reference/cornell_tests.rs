@@ -23,8 +23,8 @@ const SMOOTH: f64 = 0.1;
 
 /// Per channel, shadelab's mean over Mitsuba's on the pixels both see the same way, and the
 /// largest relative difference of 12×12 blocks' means beyond four times its noise: the pixels whose 3×3 neighbourhood sees
-/// one object and is smooth ([`SMOOTH`]), away from the light (which Mitsuba draws and shadelab
-/// does not).
+/// one object and is smooth ([`SMOOTH`]), away from the light (whose own pixels
+/// [`the_light_the_camera_sees_is_mitsubas`] compares).
 /// `direct` (shadelab's noiseless direct light) decides where the image is smooth; also returns
 /// how many blocks were compared.
 fn agreement(direct: &ReferenceImage, ours: &ReferenceImage, theirs: &[[f64; 3]]) -> ([f64; 3], f64, usize) {
@@ -113,4 +113,28 @@ fn the_cornell_box_with_bounces_is_mitsubas() {
         assert!(ratio.iter().all(|r| (0.995..1.005).contains(r)), "{bounces} vertices: {ratio:?}");
         assert!(worst < 0.02, "{bounces} vertices: a block differs by {worst}");
     }
+}
+
+/// The camera sees the light as Mitsuba draws it: where a pixel and its neighbours are all on the
+/// light, shadelab's truth is its radiance, Mitsuba's `(17, 12, 4)`, within 1e-3 (the chapter's
+/// falloff `1/(1 + αd²)` stands for `1/d²` within `1/(αd²)`, about 1e-4 at the camera).
+#[test]
+fn the_light_the_camera_sees_is_mitsubas() {
+    let ours = traced(PathSettings { bounces: 1, spp: 1, seed: 1 });
+    let theirs = mitsuba(1);
+    let n = SIZE as usize;
+    let mut seen = 0;
+    for y in 1..n - 1 {
+        for x in 1..n - 1 {
+            if !(0..9).all(|k| theirs[(y + k / 3 - 1) * n + x + k % 3 - 1][0] > 3.0) {
+                continue;
+            }
+            let (a, b) = (ours.pixels[y * n + x], theirs[y * n + x]);
+            for c in 0..3 {
+                assert!((a[c] / b[c] - 1.0).abs() < 1e-3, "pixel ({x}, {y}): {a:?} against {b:?}");
+            }
+            seen += 1;
+        }
+    }
+    assert!(seen >= 4, "only {seen} pixels wholly on the light");
 }

@@ -4,6 +4,7 @@
 //! sampled that light's direct light by area, the two estimates are weighed by the power
 //! heuristic (`path.rs`); otherwise the direct light already holds all of it.
 
+use crate::Light;
 use crate::lighting::area::{AreaLight, AreaShape};
 use crate::scene::Scene;
 use glam::DVec3;
@@ -83,4 +84,19 @@ fn plane(area: &AreaLight, o: DVec3, dir: DVec3) -> Option<f64> {
     }
     let t = area.normal.dot(area.center - o) / denom;
     (t > 0.0 && t.is_finite()).then_some(t)
+}
+
+/// The radiance of `light`'s front towards a point `p`, in the image's units: the chapter's area
+/// light is its centre's point light spread over its area, `π·I·f(d)·d²/A` for `p` at `d` from
+/// its centre (`π·I_L` being the irradiance a light of intensity `I_L` stands for). `None` for a
+/// light without area, or `p` at its centre.
+pub(super) fn light_radiance(light: &Light, p: DVec3) -> Option<[f64; 3]> {
+    let area = light.area_light()?;
+    let (d2, emitting) = ((area.center - p).length_squared(), area.emitting_area());
+    if d2 <= crate::guards::LIGHT_DIST_MIN.powi(2) || emitting <= 0.0 || !emitting.is_finite() {
+        return None;
+    }
+    // The radiance at the centre's distance, with its falloff, range and cone (no area term).
+    let at = crate::lighting::lights::light_sample(light, p, DVec3::Z, DVec3::Z, 0.0).radiance;
+    Some(at.map(|r| std::f64::consts::PI * r * d2 / emitting))
 }

@@ -11,7 +11,7 @@
 
 use super::glass::{Leaves, Tracer};
 use super::intersect::{SurfaceHit, trace};
-use super::light_surfaces::{LightHit, light_hit};
+use super::light_surfaces::{LightHit, light_hit, light_radiance};
 use super::{Context, Shaded};
 use crate::Light;
 use crate::lighting::common::safe_normalize;
@@ -293,7 +293,7 @@ fn indirect_at(ctx: &Context, leaves: &PathLeaves, hit: &SurfaceHit, from: DVec3
     let next = trace(scene, ctx.geo, o, w);
     let met = light_hit(scene, o, w).filter(|h| next.as_ref().is_none_or(|s| h.t < (s.point - o).length()));
     let incoming = match (met, next) {
-        (Some(h), _) if leaves.whole => return add(out, light_met(ctx, &h, p, n, w, term, density)),
+        (Some(h), _) if leaves.whole => return add(out, light_met(ctx, &h, p, term, density)),
         (Some(_), _) => return out,
         // A bounce that leaves meets the environment, weighed against its own sampling.
         (None, None) => env.map_or([0.0; 3], |e| {
@@ -321,25 +321,19 @@ fn add(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
     std::array::from_fn(|i| a[i] + b[i])
 }
 
-/// A bounce from `p` (shading normal `n`) along `w`, drawn with `density`, that met a light's
-/// surface: the light's front gives the bounce's estimate of that light's direct light, weighed
-/// against the vertex's own sampling of its points ([`sampled_by_area`]); a back, or a light the
-/// direct light holds whole, gives nothing. The light's radiance towards `p` is the chapter's
-/// area light, its centre's point light spread over its area: `π·I·f(d)·d²/A` in path units.
-fn light_met(ctx: &Context, h: &LightHit, p: DVec3, n: DVec3, w: DVec3, term: [f64; 3], density: f64) -> [f64; 3] {
+/// A bounce from `p`, drawn with `density`, that met a light's surface: the light's front gives
+/// the bounce's estimate of that light's direct light (`light_radiance`), weighed against the
+/// vertex's own sampling of its points ([`sampled_by_area`]); a back, or a light the direct
+/// light holds whole, gives nothing.
+fn light_met(ctx: &Context, h: &LightHit, p: DVec3, term: [f64; 3], density: f64) -> [f64; 3] {
     let light = &ctx.scene.lights[h.light];
     if !h.front || !sampled_by_area(ctx, light) {
         return [0.0; 3];
     }
-    let Some(area) = light.area_light() else { return [0.0; 3] };
-    let (d2, emitting) = ((area.center - p).length_squared(), area.emitting_area());
-    if d2 <= crate::guards::LIGHT_DIST_MIN.powi(2) || emitting <= 0.0 || !emitting.is_finite() {
-        return [0.0; 3];
-    }
-    let radiance = crate::lighting::lights::light_sample(light, p, n, w, 0.0).radiance;
+    let Some(radiance) = light_radiance(light, p) else { return [0.0; 3] };
     let weight = power_heuristic(density, h.density);
-    // term·L·dω/π over the density, with L = π·radiance·d²/A.
-    std::array::from_fn(|i| term[i] * radiance[i] * d2 / emitting * weight / density)
+    // term·L·dω/π over the density.
+    std::array::from_fn(|i| term[i] * radiance[i] * weight / (std::f64::consts::PI * density))
 }
 
 /// Veach's power heuristic: the weight of a sample drawn with density `a` where the other
@@ -465,6 +459,24 @@ pub(super) fn add_paths(
     row.indirect = more.light;
     row.std_error = more.std_error;
     row.fireflies = more.fireflies;
+    lights_seen(ctx, y, width, height, row);
+}
+
+/// The camera's rays that meet an area light before any surface see the light: its front's
+/// radiance ([`light_radiance`]), its back black. The truth's picture shows its lights as a
+/// physical renderer's does; the exact image's (the GPU's twin's) sees through them.
+fn lights_seen(ctx: &Context, y: u32, width: u32, height: u32, row: &mut super::RowPixels) {
+    for x in 0..width {
+        let (o, dir) = ctx.scene.camera.ray(x, y, width, height);
+        let Some(h) = light_hit(ctx.scene, o, dir) else { continue };
+        if trace(ctx.scene, ctx.geo, o, dir).is_some_and(|s| (s.point - o).length() < h.t) {
+            continue;
+        }
+        let seen = if h.front { light_radiance(&ctx.scene.lights[h.light], o).unwrap_or([0.0; 3]) } else { [0.0; 3] };
+        let k = x as usize;
+        (row.pixels[k], row.unshadowed[k]) = (seen, seen);
+        (row.indirect[k], row.std_error[k], row.per_ambient[k]) = ([0.0; 3], [0.0; 3], [0.0; 3]);
+    }
 }
 
 /// Rec. 709 luminance of linear RGB.

@@ -176,6 +176,28 @@ function gridGlb(n) {
   return Buffer.concat([header, chunk(json.length, "JSON"), json, chunk(bin.length, "BIN\0"), bin]);
 }
 
+// A link to a model on the site opens it (named `scene`), copy link writes the same query, and
+// the page's picture is `render --link`'s in the site's folder within the native bound. Returns
+// the page's state.
+async function linkedModelMatchesRender(query, scene, name) {
+  const page = await open(query);
+  let s = await waitFor(page, `the linked ${scene}`, (s) => s.scene === scene && !s.loading, 60);
+  check(!s.message_is_error, `message: ${s.message}`);
+  await click(page, "copy link");
+  s = await waitFor(page, "the copied link", (s) => s.link !== null, 30);
+  check(s.link.endsWith(query), `the copied link ${s.link} is not the one opened, ${query}`);
+  const shot = await shootView(page, name);
+  const native = path.join(OUT, `${name}-native.png`);
+  execFileSync(BIN, ["render", "--width", String(shot.w), "--height", String(shot.h), "--output", native,
+    "--link", query], { cwd: SITE });
+  const c = compare(native, shot.file, name);
+  console.log(`    ${name}: against render --link in the site's folder: ${c.line}`);
+  check(c.flip <= MAX_FLIP_AGAINST_NATIVE, `${name}: FLIP ${c.flip} against native is above ${MAX_FLIP_AGAINST_NATIVE}`);
+  noConsoleErrors(page);
+  await page.close();
+  return s;
+}
+
 const tests = {
   async the_adapter_is_webgpu() {
     const page = await open();
@@ -339,43 +361,16 @@ const tests = {
     gltf.buffers[0].uri = "box.bin";
     fs.writeFileSync(path.join(SITE, "models/box.gltf"), JSON.stringify(gltf));
     const query = "?file=models/box.gltf&shading=phong&model=cook-torrance&mat0.r_s=0.7&mat0.m=0.3";
-    let page = await open(query);
-    let s = await waitFor(page, "the linked model", (s) => s.scene === "box.gltf" && !s.loading, 60);
-    check(s.textures === 1 && !s.message_is_error, `textures ${s.textures}, message ${s.message}`);
-    await click(page, "copy link");
-    s = await waitFor(page, "the copied link", (s) => s.link !== null, 30);
-    check(s.link.endsWith(query), `the copied link ${s.link} is not the one opened, ${query}`);
-    await settle(page);
-    const shot = await shootView(page, "link-file");
-    const native = path.join(OUT, "link-file-native.png");
-    execFileSync(BIN, ["render", "--width", String(shot.w), "--height", String(shot.h), "--output", native,
-      "--link", query], { cwd: SITE });
-    const c = compare(native, shot.file, "link-file");
-    console.log(`    link-file: against render --link in the site's folder: ${c.line}`);
-    check(c.flip <= MAX_FLIP_AGAINST_NATIVE, `link-file: FLIP ${c.flip} against native is above ${MAX_FLIP_AGAINST_NATIVE}`);
-    noConsoleErrors(page);
-    await page.close();
+    let s = await linkedModelMatchesRender(query, "box.gltf", "link-file");
+    check(s.textures === 1, `textures ${s.textures}`);
     // A file's second camera travels as camera=1: the page looks through it as render does.
     gltf.cameras = [0.8, 0.4].map((yfov) => ({ type: "perspective", perspective: { yfov, znear: 0.1, zfar: 100 } }));
     gltf.nodes.push({ camera: 0, translation: [0, 0, 4] }, { camera: 1, translation: [0.4, 0.3, 4] });
     gltf.scenes[0].nodes.push(gltf.nodes.length - 2, gltf.nodes.length - 1);
     fs.writeFileSync(path.join(SITE, "models/two-cameras.gltf"), JSON.stringify(gltf));
     const cameraQuery = "?file=models/two-cameras.gltf&shading=phong&model=cook-torrance&camera=1";
-    page = await open(cameraQuery);
-    s = await waitFor(page, "the second camera's model", (s) => s.scene === "two-cameras.gltf" && !s.loading, 60);
-    check(!s.message_is_error, `message: ${s.message}`);
-    await click(page, "copy link");
-    s = await waitFor(page, "the copied link", (s) => s.link !== null, 30);
-    check(s.link.endsWith(cameraQuery), `the copied link ${s.link} is not the one opened, ${cameraQuery}`);
-    const second = await shootView(page, "link-camera");
-    const secondNative = path.join(OUT, "link-camera-native.png");
-    execFileSync(BIN, ["render", "--width", String(second.w), "--height", String(second.h), "--output", secondNative,
-      "--link", cameraQuery], { cwd: SITE });
-    const cc = compare(secondNative, second.file, "link-camera");
-    console.log(`    link-camera: against render --link in the site's folder: ${cc.line}`);
-    check(cc.flip <= MAX_FLIP_AGAINST_NATIVE, `link-camera: FLIP ${cc.flip} against native is above ${MAX_FLIP_AGAINST_NATIVE}`);
-    await page.close();
-    page = await open("?file=https://example.org/duck.glb&shading=gouraud");
+    await linkedModelMatchesRender(cameraQuery, "two-cameras.gltf", "link-camera");
+    const page = await open("?file=https://example.org/duck.glb&shading=gouraud");
     s = await state(page);
     check(s.scene === "default" && s.shading === "gouraud", `the rest of the link applies: ${s.scene}, ${s.shading}`);
     check(s.message_is_error && s.message.includes("file=https://example.org/duck.glb") && s.message.includes("refused"),

@@ -1,9 +1,8 @@
 //! What `cargo xtask test` builds beside the tests: the web site (the wasm build and
-//! wasm-bindgen) and the fuzz targets. They share nothing with the native build, so they run on
-//! threads of their own (the site from the start, the fuzz targets once the test binaries have
-//! run), every command at the lowest CPU priority (`nice -n 19`): they take only the cores the
-//! native build and the tests leave idle, and the tests run as fast as they would alone. Their
-//! output goes to a log each, printed when a step fails.
+//! wasm-bindgen) and the fuzz targets. They share nothing with the native build, so they run on a
+//! thread of their own from the start, every command at the lowest CPU priority (`nice -n 19`):
+//! they take only the cores the native build and the tests leave idle, and the tests run as fast
+//! as they would alone. Their output goes to a log, printed when a step fails.
 
 use crate::suite::Timings;
 use std::cell::RefCell;
@@ -47,66 +46,39 @@ pub fn niced(cmd: &Command, note: &str) -> Option<Command> {
     })
 }
 
-/// The web build in the background: the site's outcome as soon as it is built (the browser
-/// tests need nothing more), then the thread's step times.
+/// The background's work: the site's outcome as soon as it is built (the browser tests need
+/// nothing more), then the whole thread's with the fuzz targets'.
 pub struct Background {
     pub site: Receiver<Result<(), String>>,
-    pub rest: JoinHandle<Timings>,
+    pub rest: JoinHandle<Prepared>,
     pub log: PathBuf,
 }
 
-/// The fuzz targets' build in the background: its outcome, its step's time and its log.
-pub struct FuzzBuild {
-    pub done: JoinHandle<Prepared>,
-    pub log: PathBuf,
-}
-
-/// What the fuzz targets' thread built: their outcome, and its step's time.
+/// What the background built besides the site: the fuzz targets' outcome, and its steps' times.
 pub struct Prepared {
     pub fuzz_targets: Result<(), String>,
     pub timings: Timings,
 }
 
-/// On a new thread whose commands go to `log` at the lowest priority, `work` with the thread's
-/// step times.
-fn in_background<T: Send + 'static>(
-    log: PathBuf,
-    since: Instant,
-    work: impl FnOnce(&mut Timings) -> T + Send + 'static,
-) -> JoinHandle<T> {
-    std::thread::spawn(move || {
+/// Start building the site into `site` (with its node tools in `node_dir`), then the fuzz targets.
+pub fn start(site: PathBuf, node_dir: PathBuf, since: Instant) -> Background {
+    let log = crate::web::root().join("target/xtask-background.log");
+    let (send, receive) = std::sync::mpsc::channel();
+    let log_path = log.clone();
+    let rest = std::thread::spawn(move || {
         let _ = std::fs::create_dir_all(log.parent().unwrap());
         if let Ok(file) = File::create(&log) {
             LOG.with(|l| *l.borrow_mut() = Some(file));
         }
         let mut timings = Timings::starting_at(since);
-        work(&mut timings)
-    })
-}
-
-/// Start building the site into `site` (with its node tools in `node_dir`).
-pub fn start(site: PathBuf, node_dir: PathBuf, since: Instant) -> Background {
-    let log = crate::web::root().join("target/xtask-background.log");
-    let (send, receive) = std::sync::mpsc::channel();
-    let rest = in_background(log.clone(), since, move |timings| {
         let built = timings.step("(background) browser tools and web build", |_| {
             crate::web_test::ensure_browser_tools(&node_dir).and_then(|()| crate::web::build_site(&site))
         });
         let _ = send.send(built);
-        std::mem::replace(timings, Timings::starting_at(since))
-    });
-    Background { site: receive, rest, log }
-}
-
-/// Start building the fuzz targets: once the test binaries have run, beside the web build's
-/// tail, whose last crates leave a core idle (the summary shows the two steps overlapping).
-pub fn start_fuzz_build(since: Instant) -> FuzzBuild {
-    let log = crate::web::root().join("target/xtask-fuzz-build.log");
-    let done = in_background(log.clone(), since, move |timings| {
         let fuzz_targets = timings.step("(background) fuzz targets: build", |_| crate::fuzz::build());
-        Prepared { fuzz_targets, timings: std::mem::replace(timings, Timings::starting_at(since)) }
+        Prepared { fuzz_targets, timings }
     });
-    FuzzBuild { done, log }
+    Background { site: receive, rest, log: log_path }
 }
 
 /// The log's last `lines` lines, to show with a failure.

@@ -171,24 +171,17 @@ fn test(extra: &[String]) -> ExitCode {
     let with_log = |r: Result<(), String>| {
         r.map_err(|e| format!("{e}; the end of {}:\n{}", log.display(), background::tail(&log, 30)))
     };
-    // The fuzz targets build from now on, beside the web build's tail and the browser tests.
-    let fuzz_build = background::start_fuzz_build(timings.since);
-    // The browser tests start once the site is built.
+    // The browser tests start once the site is built; the fuzz targets go on building meanwhile.
     let site_built = timings.step("wait for the web build", |_| background.site.recv());
     let site_built = with_log(site_built.unwrap_or_else(|_| Err("the background's thread stopped".into())));
     web_test::browser_tests(&icd, &site, site_built, &mut count, &mut timings);
-    if let Ok(t) = background.rest.join() {
-        timings.merge(t);
-    }
-    let prepared = timings.step("wait for the fuzz targets' build", |_| fuzz_build.done.join());
-    let fuzz_log = fuzz_build.log;
+    let prepared = timings.step("wait for the fuzz targets' build", |_| background.rest.join());
     let fuzz_built = match prepared {
         Ok(p) => {
             timings.merge(p.timings);
-            p.fuzz_targets
-                .map_err(|e| format!("{e}; the end of {}:\n{}", fuzz_log.display(), background::tail(&fuzz_log, 30)))
+            with_log(p.fuzz_targets)
         }
-        Err(_) => Err("the fuzz targets' thread panicked".into()),
+        Err(_) => Err("the background's thread panicked".into()),
     };
     let fuzzing = format!("every fuzz target for {} s on its seeds", fuzz::CI_SECONDS);
     let fuzzed = fuzz_built.and_then(|()| timings.step("fuzz targets: run", |_| fuzz::run_targets(fuzz::CI_SECONDS)));

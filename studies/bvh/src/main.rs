@@ -148,17 +148,29 @@ fn measure(name: &str, mesh: &TriangleMesh, n_rays: usize, runs: usize) {
     );
 }
 
+/// A bad argument: one line, and exit status 2.
+fn usage(line: String) -> ! {
+    eprintln!("error: {line} (studies/bvh [--triangles N]... [--file F]... [--rays N] [--runs N])");
+    std::process::exit(2)
+}
+
+fn number(flag: &str, text: Option<String>) -> usize {
+    match text.as_deref().map(str::parse::<usize>) {
+        Some(Ok(n)) if n > 0 => n,
+        _ => usage(format!("{flag} needs a whole number above 0, got {text:?}")),
+    }
+}
+
 fn main() {
     let mut args = std::env::args().skip(1);
     let (mut counts, mut files, mut n_rays, mut runs) = (Vec::new(), Vec::new(), 1_000_000usize, 3usize);
     while let Some(a) = args.next() {
-        let mut value = || args.next().unwrap_or_else(|| panic!("{a} needs a value"));
         match a.as_str() {
-            "--triangles" => counts.push(value().parse::<usize>().expect("--triangles N")),
-            "--file" => files.push(value()),
-            "--rays" => n_rays = value().parse().expect("--rays N"),
-            "--runs" => runs = value().parse().expect("--runs N"),
-            other => panic!("unknown option {other}"),
+            "--triangles" => counts.push(number("--triangles", args.next())),
+            "--file" => files.push(args.next().unwrap_or_else(|| usage("--file needs a .gltf or .glb file".into()))),
+            "--rays" => n_rays = number("--rays", args.next()),
+            "--runs" => runs = number("--runs", args.next()),
+            other => usage(format!("unknown option '{other}'")),
         }
     }
     if counts.is_empty() && files.is_empty() {
@@ -169,11 +181,11 @@ fn main() {
     println!("|---|---:|---|---:|---:|---:|---:|");
     for n in counts {
         let (glb, actual) = synthetic::sphere_glb(n, true);
-        let scene = load_scene_from_slice(&glb).expect("the generated sphere loads").scene;
+        let scene = load_scene_from_slice(&glb).unwrap_or_else(|e| usage(e.to_string())).scene;
         measure(&format!("generated sphere ({actual})"), &scene.meshes[0], n_rays, runs);
     }
     for f in files {
-        let scene = load_scene(std::path::Path::new(&f)).unwrap_or_else(|e| panic!("{e}")).scene;
+        let scene = load_scene(std::path::Path::new(&f)).unwrap_or_else(|e| usage(e.to_string())).scene;
         let mut all = TriangleMesh::default();
         for m in scene.meshes.iter() {
             let base = all.positions.len() as u32;

@@ -172,16 +172,17 @@ struct PathLeaves<'a> {
 impl Leaves for PathLeaves<'_> {
     fn opaque(&self, ctx: &Context, hit: &SurfaceHit, from: DVec3) -> [f64; 3] {
         let depth = self.depth;
+        let vertex = vertex_bounce(ctx, hit, from, &mut self.tinted.borrow_mut());
         let mut light = if self.whole {
             // The area lights' points weighed against this vertex's bounce, which meets them too.
-            let bounce = vertex_bounce(ctx, hit, from, &mut self.tinted.borrow_mut()).0;
+            let bounce = &vertex.0;
             let weight = |l: DVec3, p_light: f64| power_heuristic(p_light, bounce.density(l));
             let sampler = Sampler { rng: self.rng, weight: &weight };
             ctx.shade_hit(hit, from.extend(1.0), &mut self.tinted.borrow_mut(), None, None, Some(sampler)).lit
         } else {
             [0.0; 3]
         };
-        let more = indirect_at(ctx, self, hit, from, depth);
+        let more = indirect_at(ctx, self, hit, from, depth, vertex);
         for (l, m) in light.iter_mut().zip(more) {
             *l += m;
         }
@@ -229,12 +230,20 @@ fn sampled_by_area(ctx: &Context, light: &Light) -> bool {
         && !light.drawn_as_points()
 }
 
-/// The indirect light at vertex `depth` of a path, seen from `from`: the environment's light at
+/// The indirect light at vertex `depth` of a path, seen from `from`, with the vertex's bounce
+/// sampling as [`vertex_bounce`] gave it (its material then in `tinted`): the environment's light at
 /// the vertex (when the scene has one), and one bounce drawn from the mixture of `cos/π` about
 /// the shading normal and the specular lobe ([`LOBE_SHARE`]), with the whole light that comes
 /// back along it. A bounce that meets an area light ends there (`light_surfaces.rs`); at the
 /// last vertex it is drawn for that meeting alone.
-fn indirect_at(ctx: &Context, leaves: &PathLeaves, hit: &SurfaceHit, from: DVec3, depth: u32) -> [f64; 3] {
+fn indirect_at(
+    ctx: &Context,
+    leaves: &PathLeaves,
+    hit: &SurfaceHit,
+    from: DVec3,
+    depth: u32,
+    (bounce, n_in, mi): (Bounce, DVec3, usize),
+) -> [f64; 3] {
     let env = ctx.env.filter(|_| ctx.env_use == super::EnvUse::Traced);
     let scene = ctx.scene;
     let last = depth >= leaves.paths.bounces;
@@ -253,8 +262,7 @@ fn indirect_at(ctx: &Context, leaves: &PathLeaves, hit: &SurfaceHit, from: DVec3
         u
     };
     let p = hit.point;
-    let mut tinted = leaves.tinted.borrow_mut();
-    let (bounce, n_in, mi) = vertex_bounce(ctx, hit, from, &mut tinted);
+    let tinted = leaves.tinted.borrow_mut();
     let (n, mat) = (bounce.n, &tinted[mi]);
     let ng = hit.geometric_normal;
     let origin = |w: DVec3| {
@@ -406,7 +414,10 @@ fn indirect_row(ctx: &Context, paths: &PathSettings, y: u32, width: u32, height:
             let s = if glass {
                 Tracer::new(ctx, &leaves).glass_color(&hit, dir, eye, 0, [1.0; 3], None).lit
             } else {
-                indirect_at(ctx, &leaves, &hit, eye.truncate(), 1)
+                // The point's parameters are written anew each path: deeper vertices of the same
+                // material overwrite them.
+                let vertex = vertex_bounce(ctx, &hit, eye.truncate(), &mut tinted.borrow_mut());
+                indirect_at(ctx, &leaves, &hit, eye.truncate(), 1, vertex)
             };
             for i in 0..3 {
                 sum[i] += s[i];

@@ -93,11 +93,18 @@ fn polygon_step(w_in: EdgeWalk, v: vec3<f32>, n: vec3<f32>) -> EdgeWalk {
 // Lambert's edge formula: E/L of a flat light at `p` with unit normal `n`, its polygon clipped at
 // the plane through p normal to n, walked corner by corner; 0 seen from behind.
 fn polygon_irradiance(p: vec3<f32>, n: vec3<f32>, light: Light) -> f32 {
+    return polygon_walk(light, p, n, mat3x3(vec3(1.0, 0.0, 0.0), vec3(0.0, 1.0, 0.0), vec3(0.0, 0.0, 1.0)));
+}
+
+// Lambert's edge formula over the light's corners carried by `xf` from `p` (the identity for
+// the light itself, ltc.wgsl's M⁻¹ for its LTC), clipped at the plane normal to `n` through the
+// origin, 0 seen from behind. The identity changes no bit: each product adds exact zeros.
+fn polygon_walk(light: Light, p: vec3<f32>, n: vec3<f32>, xf: mat3x3<f32>) -> f32 {
     let count = area_corner_count(light);
     var w = EdgeWalk(vec3(0.0), vec3(0.0), 0u, 0u, 0.0);
     for (var i = 0u; i < count; i++) {
-        let a = area_corner(light, i) - p;
-        let b = area_corner(light, (i + 1u) % count) - p;
+        let a = xf * (area_corner(light, i) - p);
+        let b = xf * (area_corner(light, (i + 1u) % count) - p);
         let sa = dot(a, n);
         let sb = dot(b, n);
         if (sa > 0.0) {

@@ -86,6 +86,6 @@ fn area_point_sample(base: LightSample, light: Light, e: AreaEmitter, p: vec3<f3
     let l = select(n, to / r, r > LIGHT_DIST_MIN);
     let cos_e = select(max(-dot(e.normal, l), 0.0), 1.0, all(e.normal == vec3(0.0)));
     let scale = e.gain * cos_e * d2 / max(r * r, LIGHT_DIST_MIN * LIGHT_DIST_MIN);
-    return LightSample(l, base.radiance, scale * dot(n, l), scale);
+    return LightSample(l, base.radiance, scale * dot(n, l), scale, -1.0);
 }
 #endif

@@ -81,6 +81,16 @@ fn light_contribution(
     }
 #endif
     var lit = select(vec3(0.0), spec * s.spec_scale, n_dot_l > 0.0);
+#if EFFECT_AREA_LIGHTS
+#if EFFECT_AREA_LTC
+#if EFFECT_SPECULAR_COOK_TORRANCE
+    // An area light's LTC replaces the lobe at its representative point under Cook–Torrance.
+    if (s.ltc >= 0.0 && specular_model == SPECULAR_COOK_TORRANCE) {
+        lit = r_s * specular_ltc(n, v, l, v_index, terms, ms_e, s.ltc);
+    }
+#endif
+#endif
+#endif
 #if EFFECT_DIFFUSE
     var kd = 1.0;
 #if EFFECT_SPECULAR_COOK_TORRANCE

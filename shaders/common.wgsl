@@ -23,6 +23,7 @@ const D0_MIN: f32 = 1e-3;
 const SPOT_COS_SPAN_MIN: f32 = 1e-3;
 const EDGE_CROSS_MIN_LEN2: f32 = 1e-24;
 const AREA_POINT_LIMIT_ANGLE: f32 = 0.02;
+const SPHERE_DISK_MARGIN: f32 = 1e-3;
 const BLOCKER_DIST_MIN: f32 = 1e-4;
 const QUADRIC_A_MIN: f32 = 1e-30;
 

@@ -44,7 +44,9 @@ struct Light {
     half_y: f32,
     // An area light: 0 for its exact area form, k for k point sources on it (area_points.wgsl).
     area_points: u32,
-    _pad2: f32,
+    // An area light in its exact form: its specular at the representative point or by LTC
+    // (AREA_SPECULAR_* in ltc.wgsl).
+    area_specular: u32,
 }
 
 // Whether an area light is drawn as k point sources (only permutations with EFFECT_AREA_POINTS
@@ -93,6 +95,9 @@ struct LightSample {
     form: f32,
     // What the specular term at l is scaled by: 1, or an area light's representative-point scale.
     spec_scale: f32,
+    // An area light's specular by LTC relative to its centre's point light (ltc.wgsl), which
+    // replaces the lobe at l under Cook–Torrance; negative: none.
+    ltc: f32,
 }
 
 // Direction, intensity and the diffuse and specular factors of one light at surface point `p`
@@ -105,6 +110,7 @@ struct LightSample {
 fn light_sample(light: Light, p: vec3<f32>, n: vec3<f32>, v: vec3<f32>, m: f32) -> LightSample {
     var s: LightSample;
     s.spec_scale = 1.0;
+    s.ltc = -1.0;
 #if EFFECT_POINT_LIGHTS
     // Point, spot and area lights (a spot is a point light with a cone).
     if (light.kind != LIGHT_DIRECTIONAL) {

@@ -63,7 +63,14 @@ fn shade(p: vec3<f32>, n_in: vec3<f32>, surface: Surface, pixel: vec2<f32>) -> v
     for (var i = 0u; i < light_count; i++) {
         var light = globals.lights[i];
         light.kind = select(light.kind, (LOOP_KINDS >> (LOOP_KIND_BITS * i)) & LOOP_KIND_MASK, fixed_loop);
-        let base = light_sample(light, p, n, v, surface.m);
+        var base = light_sample(light, p, n, v, surface.m);
+#if EFFECT_POINT_LIGHTS
+#if EFFECT_AREA_LIGHTS
+#if EFFECT_AREA_LTC
+        base = area_ltc_sample(base, light, p, n, v, surface.m, terms);
+#endif
+#endif
+#endif
         // An area light drawn as k point sources is k samples, each with its own shadow.
         var samples = 1u;
 #if EFFECT_AREA_POINTS
@@ -320,3 +327,20 @@ fn normal_to_world(n: vec3<f32>) -> vec3<f32> {
 fn vertex_seed(p: vec3<f32>) -> vec2<f32> {
     return (p.xz + p.yy) * 1024.0;
 }
+
+#if EFFECT_AREA_LIGHTS
+#if EFFECT_AREA_LTC
+// Light sample `s` of `light` with its specular by LTC (ltc.wgsl), where the light asks for it
+// and is drawn in its exact area form; M⁻¹ and the lobe's albedo E are the material's D's and
+// D × G pair's at N·V and m.
+fn area_ltc_sample(s_in: LightSample, light: Light, p: vec3<f32>, n: vec3<f32>, v: vec3<f32>, m: f32, terms: u32) -> LightSample {
+    var s = s_in;
+    if (light.kind >= LIGHT_RECT && light.area_specular == AREA_SPECULAR_LTC && !drawn_as_points(light)) {
+        let n_dot_v = dot(n, v);
+        let minv = ltc_matrix(terms & MICROFACET_FIELD_MASK, n_dot_v, m);
+        s.ltc = area_specular_ltc(light, p, n, v, minv, ms_albedo(terms, max(n_dot_v, N_DOT_V_MIN), m));
+    }
+    return s;
+}
+#endif
+#endif

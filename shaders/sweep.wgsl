@@ -253,10 +253,10 @@ fn area_columns(base: u32, inp: SweepCombination) {
     // The same light as k = 1 + ⌊7m⌋ point sources: their forms, each clipped at 0 as the diffuse
     // term takes it, summed.
     area.area_points = 1u + u32(m * 7.0);
-    let centre_sample = LightSample(l, vec3(1.0), 0.0, 1.0);
+    let centre_sample = LightSample(l, vec3(1.0), 0.0, 1.0, -1.0);
     for (var k = 0u; k < 3u; k++) {
         area.kind = LIGHT_RECT + k;
-        area.half_y = select(area.half_x, area.half_x * SWEEP_DISK_POLYGON_SCALE, area.kind == LIGHT_DISK);
+        area.half_y = select(area.half_x, area.half_x * DISK_POLYGON_SCALE, area.kind == LIGHT_DISK);
         outputs[base + COL_AREA_FORM + k] = area_form(area, vec3(0.0), n);
         outputs[base + COL_AREA_SPEC_SCALE + k] = area_specular_point(area, vec3(0.0), n, v, m).scale;
         var form_sum = 0.0;

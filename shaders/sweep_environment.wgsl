@@ -63,6 +63,27 @@ fn sweep_environment(@builtin(global_invocation_id) gid: vec3<u32>) {
     env_put_rgb(base + ENV_COL_SPECULAR, env_specular(n, v, m, MICROFACET_CHAPTER, v_index));
     env_put_rgb(base + ENV_COL_SPECULAR + 3u, env_specular(n, v, m, MICROFACET_GLTF, v_index));
     env_outputs[base + ENV_COL_OCCLUSION] = env_occlusion(env_counts.centre.xyz + l * d, n);
+    env_area_ltc(base, n, v, l * d, m);
+}
+
+// The area lights' LTC (ltc.wgsl) for each shape at `to` from the point, facing it, half as
+// wide as far, and every D: its share of π·E·d²/A_emit (E = 1), in [0, 1]; 0 at the point limit.
+fn env_area_ltc(base: u32, n: vec3<f32>, v: vec3<f32>, to: vec3<f32>, m: f32) {
+    let d = length(to);
+    var area: Light;
+    area.position = vec4(to, 1.0);
+    area.normal = vec4(-safe_normalize(to, n), 0.0);
+    area.tangent = vec4(any_tangent(area.normal.xyz), 0.0);
+    area.half_x = 0.5 * d;
+    for (var k = 0u; k < 3u; k++) {
+        area.kind = LIGHT_RECT + k;
+        area.half_y = select(area.half_x, area.half_x * DISK_POLYGON_SCALE, area.kind == LIGHT_DISK);
+        for (var dk = 0u; dk < DISTRIBUTION_COUNT; dk++) {
+            let s = area_specular_ltc(area, vec3(0.0), n, v, ltc_matrix(dk, dot(n, v), m), 1.0);
+            let share = select(0.0, s * emitting_area(area) / (AREA_PI * d * d), s > 0.0);
+            env_outputs[base + ENV_COL_AREA_LTC + k * DISTRIBUTION_COUNT + dk] = share;
+        }
+    }
 }
 
 // A colour's three channels into consecutive outputs from `at`.

@@ -34,6 +34,8 @@ struct Tables {
     ms_albedo: array<vec4<f32>, MS_TABLE_VEC4S>,
     // The split sum's B table (environment.rs's env_split_b_table), four floats a slot.
     env_split_b: array<vec4<f32>, ENV_SPLIT_B_VEC4S>,
+    // The LTC table (ltc_table.rs), one node's M⁻¹ a slot.
+    ltc: array<vec4<f32>, LTC_TABLE_VEC4S>,
 }
 
 struct Object {

@@ -101,6 +101,12 @@ pub const EDGE_CROSS_MIN_LEN2: f64 = 1e-24;
 /// error grows as σ² (4e-4 at 0.02): at 0.02 both stay under the zero-size test's 1e-3.
 pub const AREA_POINT_LIMIT_ANGLE: f64 = 0.02;
 
+/// How close to a sphere light's surface, relative to its radius, the LTC specular takes the
+/// light as filling the point's hemisphere: the disk that covers the sphere's cone, of radius
+/// `r·d/√(d² − r²)`, is 22 r wide at 1e-3 above the surface, and its f32 corners would lose the
+/// cone's edge beyond that.
+pub const SPHERE_DISK_MARGIN: f64 = 1e-3;
+
 /// Smallest blocker distance (m) in the penumbra width w_light·(d_r − d_b)/d_b: a blocker at the
 /// light would make it infinite; a tenth of a millimetre caps it.
 pub const BLOCKER_DIST_MIN: f64 = 1e-4;
@@ -132,6 +138,7 @@ pub const ALL: &[(&str, f64)] = &[
     ("NONFINITE_UV", NONFINITE_UV),
     ("EDGE_CROSS_MIN_LEN2", EDGE_CROSS_MIN_LEN2),
     ("AREA_POINT_LIMIT_ANGLE", AREA_POINT_LIMIT_ANGLE),
+    ("SPHERE_DISK_MARGIN", SPHERE_DISK_MARGIN),
     ("BLOCKER_DIST_MIN", BLOCKER_DIST_MIN),
     ("QUADRIC_A_MIN", QUADRIC_A_MIN),
 ];

@@ -11,6 +11,7 @@ pub mod guards;
 mod identities;
 pub mod lighting;
 pub mod lobe;
+pub mod ltc_fit;
 pub mod mesh;
 pub mod mesh_lines;
 pub mod params;
@@ -24,6 +25,7 @@ pub mod terminator;
 pub mod terms;
 
 pub use params::{
-    FalloffForm, IlluminationModel, Interpolation, LightKind, ModelChoice, PhongExponent, ShadingMode, SpecularModel,
+    AreaSpecular, FalloffForm, IlluminationModel, Interpolation, LightKind, ModelChoice, PhongExponent, ShadingMode,
+    SpecularModel,
 };
 pub use scene::{Camera, Filter, Light, Material, Object, Overrides, Scene, Shape, Texture, Transform, Wrap};

@@ -11,7 +11,8 @@ use std::str::FromStr;
 
 pub use crate::lighting::brdf::SpecularModel;
 pub use crate::lighting::lights::{
-    AREA_POINTS, CONE_ANGLE, CONE_ANGLE_F32, D0, FALLOFF, FalloffForm, INTENSITY, LIGHT_SIZE, LightKind, RANGE,
+    AREA_POINTS, AreaSpecular, CONE_ANGLE, CONE_ANGLE_F32, D0, FALLOFF, FalloffForm, INTENSITY, LIGHT_SIZE, LightKind,
+    RANGE,
 };
 pub use crate::lighting::models::{IlluminationModel, ModelChoice};
 
@@ -280,7 +281,16 @@ macro_rules! from_str_named {
         }
     )*};
 }
-from_str_named!(ShadingMode, SpecularModel, IlluminationModel, ModelChoice, Interpolation, LightKind, FalloffForm);
+from_str_named!(
+    ShadingMode,
+    SpecularModel,
+    IlluminationModel,
+    ModelChoice,
+    Interpolation,
+    LightKind,
+    FalloffForm,
+    AreaSpecular
+);
 
 impl ShadingMode {
     pub const ALL_MODES: [ShadingMode; 3] = [ShadingMode::Flat, ShadingMode::Gouraud, ShadingMode::Phong];

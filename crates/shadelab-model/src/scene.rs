@@ -170,6 +170,8 @@ pub struct Overrides {
     /// Every area light drawn as this many point sources (0: its exact area form), within
     /// `lights::AREA_POINTS`.
     pub area_points: Option<u32>,
+    /// How every area light's specular is drawn (`--area-specular`).
+    pub area_specular: Option<crate::params::AreaSpecular>,
     /// Every light casts shadows (`Some(true)`) or none does (`Some(false)`).
     pub shadows: Option<bool>,
     /// Every light's shadow map side, within `shadows::SHADOW_RESOLUTION` (clamped into it).
@@ -277,6 +279,9 @@ impl Scene {
             }
             if let Some(k) = o.area_points {
                 light.area_points = k;
+            }
+            if let Some(s) = o.area_specular {
+                light.area_specular = s;
             }
             if let Some(a) = o.falloff_alpha {
                 light.falloff_alpha = a;

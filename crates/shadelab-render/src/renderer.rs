@@ -138,13 +138,19 @@ impl Renderer {
     }
 }
 
+/// The effects whose code reads the constant tables: `ms_table.wgsl`'s `#if` names exactly these
+/// (the test `the_table_effects_are_ms_tables_condition` holds it).
+pub(crate) const TABLE_EFFECTS: [shadelab_model::effects::Effect; 3] = {
+    use shadelab_model::effects::Effect;
+    [Effect::MultipleScattering, Effect::EnvironmentSpecular, Effect::AreaLtc]
+};
+
 impl Renderer {
     /// Write the constant tables, once per renderer, if `program` reads them (the compensation's
-    /// E or the split sum's E and B); a program that does not leaves them uncomputed.
+    /// E, the split sum's E and B, the LTC's M⁻¹); a program that does not leaves them uncomputed.
     pub(crate) fn write_tables(&self, program: crate::program::Program) {
-        use shadelab_model::effects::Effect;
         let effects = program.effects();
-        if effects.has(Effect::MultipleScattering) || effects.has(Effect::EnvironmentSpecular) {
+        if TABLE_EFFECTS.iter().any(|&e| effects.has(e)) {
             self.tables_written
                 .get_or_init(|| self.queue.write_buffer(&self.tables, 0, bytemuck::bytes_of(&TablesUniform::new())));
         }

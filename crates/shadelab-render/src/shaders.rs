@@ -8,7 +8,7 @@
 use shadelab_model::effects::EffectKey;
 
 /// `(file name, source)` in the order they are concatenated.
-pub const FILES: [(&str, &str); 22] = [
+pub const FILES: [(&str, &str); 23] = [
     ("common.wgsl", include_str!("../../../shaders/common.wgsl")),
     ("brdf.wgsl", include_str!("../../../shaders/brdf.wgsl")),
     // Cook–Torrance's D, G and F, each selected by the material's code.
@@ -21,6 +21,9 @@ pub const FILES: [(&str, &str); 22] = [
     ("area_lights.wgsl", include_str!("../../../shaders/area_lights.wgsl")),
     // Only in permutations with area lights drawn as k point sources (`#if EFFECT_AREA_POINTS`).
     ("area_points.wgsl", include_str!("../../../shaders/area_points.wgsl")),
+    // Only in permutations with the area lights' LTC specular (`#if EFFECT_AREA_LTC`); its table
+    // lookup is ms_table.wgsl's.
+    ("ltc.wgsl", include_str!("../../../shaders/ltc.wgsl")),
     // The shadow projection math, without bindings (the sweep runs it): with cast shadows only.
     ("shadow_math.wgsl", include_str!("../../../shaders/shadow_math.wgsl")),
     // C and μ at a point: the material tinted by vertex colours and textures.
@@ -61,7 +64,7 @@ fn uber_defines() -> Vec<&'static str> {
 /// Constants, guards and the lighting terms with every effect, without entry points (for compute
 /// passes that evaluate the terms directly; the one texture binding of `surface` goes unused):
 /// `common`, `brdf`, `microfacet`, `multiscatter`, `models`, `lights`, `area_lights`, `area_points`,
-/// `shadow_math`, `surface` and `transmission`: the files before `types.wgsl`.
+/// `ltc`, `shadow_math`, `surface` and `transmission`: the files before `types.wgsl`.
 pub fn terms_source() -> String {
     uber_files_before("types.wgsl")
 }
@@ -93,7 +96,7 @@ pub fn raw_lighting_source() -> String {
 /// copy behind.
 pub fn generated_constants() -> Vec<(&'static str, usize)> {
     use shadelab_model::lighting::microfacet::{Distribution, Fresnel, Masking};
-    use shadelab_model::lighting::{environment::ENV_SPLIT_B_VEC4S, ms_table};
+    use shadelab_model::lighting::{environment::ENV_SPLIT_B_VEC4S, ltc, ms_table};
     use shadelab_model::params::NamedValue;
     vec![
         ("DISTRIBUTION_COUNT", Distribution::ALL.len()),
@@ -103,6 +106,8 @@ pub fn generated_constants() -> Vec<(&'static str, usize)> {
         ("MS_TABLE_SIDE", ms_table::MS_TABLE_SIDE),
         ("MS_TABLE_VEC4S", ms_table::MS_TABLE_VEC4S),
         ("ENV_SPLIT_B_VEC4S", ENV_SPLIT_B_VEC4S),
+        ("LTC_TABLE_SIDE", ltc::LTC_TABLE_SIDE),
+        ("LTC_TABLE_VEC4S", ltc::LTC_TABLE_VEC4S),
     ]
 }
 
@@ -121,6 +126,9 @@ fn assemble<'a>(files: impl Iterator<Item = &'a str>) -> String {
         out += &format!("const {name}: u32 = {value}u;\n");
     }
     out += &blinn_phong_lambda_nodes();
+    // The circumradius of the disk's equal-area polygon per unit radius (area.rs).
+    let scale = shadelab_model::lighting::area::disk_polygon_scale() as f32;
+    out += &format!("const DISK_POLYGON_SCALE: f32 = {scale:?};\n");
     out + &files.collect::<Vec<_>>().join("\n")
 }
 

@@ -10,7 +10,7 @@ use shadelab_model::params::NamedValue;
 use shadelab_model::{FalloffForm, IlluminationModel, LightKind, SpecularModel};
 
 /// Each WGSL file and the source of its f64 twin.
-const TWINS: [(&str, &str); 22] = [
+const TWINS: [(&str, &str); 23] = [
     ("common.wgsl", include_str!("../../shadelab-model/src/lighting/common.rs")),
     ("brdf.wgsl", include_str!("../../shadelab-model/src/lighting/brdf.rs")),
     ("microfacet.wgsl", include_str!("../../shadelab-model/src/lighting/microfacet.rs")),
@@ -19,6 +19,7 @@ const TWINS: [(&str, &str); 22] = [
     ("lights.wgsl", include_str!("../../shadelab-model/src/lighting/lights.rs")),
     ("area_lights.wgsl", include_str!("../../shadelab-model/src/lighting/area.rs")),
     ("area_points.wgsl", include_str!("../../shadelab-model/src/lighting/area_points.rs")),
+    ("ltc.wgsl", include_str!("../../shadelab-model/src/lighting/ltc.rs")),
     // The projection and cascade math, and the map lookup around it; the map sampling has
     // none (the reference traces shadow rays).
     (
@@ -40,7 +41,13 @@ const TWINS: [(&str, &str); 22] = [
     ("types.wgsl", ""),
     ("bindings.wgsl", ""),
     // The table lookup of the compensation.
-    ("ms_table.wgsl", include_str!("../../shadelab-model/src/lighting/ms_table.rs")),
+    (
+        "ms_table.wgsl",
+        concat!(
+            include_str!("../../shadelab-model/src/lighting/ms_table.rs"),
+            include_str!("../../shadelab-model/src/lighting/ltc.rs")
+        ),
+    ),
     ("environment.wgsl", include_str!("../../shadelab-model/src/lighting/environment.rs")),
     ("occlusion.wgsl", include_str!("../../shadelab-model/src/lighting/occlusion.rs")),
     (
@@ -394,4 +401,14 @@ fn the_transmission_constants_equal_the_models() {
         background[0], background[1], background[2]
     );
     assert!(glass.contains(&line), "glass.wgsl's background is scene::BACKGROUND: {line}");
+}
+
+/// The renderer writes the constant tables for exactly the effects whose code reads them: the
+/// condition that wraps `ms_table.wgsl` (the tables' lookups) names `TABLE_EFFECTS`' defines.
+#[test]
+fn the_table_effects_are_ms_tables_condition() {
+    let condition =
+        wgsl_file("ms_table.wgsl").lines().find(|l| l.starts_with("#if ")).expect("ms_table.wgsl is one #if");
+    let defines: Vec<&str> = crate::renderer::TABLE_EFFECTS.iter().map(|e| e.define().expect("simulated")).collect();
+    assert_eq!(condition.trim_start_matches("#if ").split("||").collect::<Vec<_>>(), defines);
 }

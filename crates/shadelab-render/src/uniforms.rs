@@ -37,7 +37,8 @@ pub struct LightUniform {
     pub half_y: f32,
     /// 0: an area light's exact form; k: k point sources (`Light::area_points`).
     pub area_points: u32,
-    pub _pad2: f32,
+    /// `AreaSpecular::code`: an area light's specular at its representative point or by LTC.
+    pub area_specular: u32,
 }
 
 #[repr(C)]
@@ -72,14 +73,17 @@ pub struct TablesUniform {
     pub ms_albedo: [[f32; 4]; MS_TABLE_VEC4S],
     /// The split sum's B table (`environment::env_split_b_vec4s`).
     pub env_split_b: [[f32; 4]; shadelab_model::lighting::environment::ENV_SPLIT_B_VEC4S],
+    /// The LTC table (`ltc_table::LTC_TABLE`), one node a slot.
+    pub ltc: [[f32; 4]; shadelab_model::lighting::ltc::LTC_TABLE_VEC4S],
 }
 
 impl TablesUniform {
-    /// Both tables, as the shaders read them.
+    /// The tables, as the shaders read them.
     pub fn new() -> Self {
         TablesUniform {
             ms_albedo: shadelab_model::lighting::ms_table::ms_table_vec4s(),
             env_split_b: shadelab_model::lighting::environment::env_split_b_vec4s(),
+            ltc: shadelab_model::lighting::ltc_table::LTC_TABLE,
         }
     }
 }
@@ -220,7 +224,7 @@ impl LightUniform {
             half_x: half_x as f32,
             half_y: half_y as f32,
             area_points: if l.drawn_as_points() { l.area_points } else { 0 },
-            _pad2: 0.0,
+            area_specular: l.area_specular.code(),
         }
     }
 }

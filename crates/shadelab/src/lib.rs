@@ -10,6 +10,8 @@ pub mod cli;
 pub mod compare;
 #[cfg(not(target_arch = "wasm32"))]
 pub mod figures;
+#[cfg(not(target_arch = "wasm32"))]
+pub mod fit_ltc;
 pub mod image_file;
 #[cfg(not(target_arch = "wasm32"))]
 pub mod lobe;

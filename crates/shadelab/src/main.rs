@@ -1,7 +1,8 @@
-//! `shadelab`: the viewer (no subcommand), `render`, `bench`, `sweep`, `figures` and `lobe`.
+//! `shadelab`: the viewer (no subcommand), `render`, `bench`, `sweep`, `figures`, `lobe`,
+//! `compare` and `fit-ltc`.
 
 use clap::Parser;
-use shadelab::{EXIT_USAGE, Failure, bench, cli, compare, figures, lobe, render, sweep, viewer};
+use shadelab::{EXIT_USAGE, Failure, bench, cli, compare, figures, fit_ltc, lobe, render, sweep, viewer};
 use std::process::ExitCode;
 
 /// Give Mesa a private `XDG_RUNTIME_DIR` when the environment has none: without one its window-system
@@ -60,6 +61,7 @@ fn main() -> ExitCode {
         Some(cli::Command::Figures(args)) => figures::run(&args),
         Some(cli::Command::Lobe(args)) => lobe::run(&args),
         Some(cli::Command::Compare(args)) => compare::run(&args),
+        Some(cli::Command::FitLtc(args)) => fit_ltc::run(&args),
         None => viewer::run(viewer::Options {
             screenshot: cli.screenshot,
             exit_after_frames: cli.exit_after_frames,

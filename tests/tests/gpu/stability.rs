@@ -34,7 +34,8 @@ fn sweep_of_the_shipped_wgsl_is_finite_bounded_and_close_to_f64() {
 }
 
 /// The environment's functions (SH diffuse, the background's and the split sum's lookups, B, the
-/// whole split sum, the occlusion grid's lookup) over hard environments and grids: finite, ≥ 0,
+/// whole split sum, the occlusion grid's lookup) and the area lights' LTC, which reads the same
+/// tables, over hard environments and grids: finite, ≥ 0,
 /// within their bounds in each environment's scale and within the tolerance of their f64 twins.
 #[test]
 fn environment_sweep_is_finite_bounded_and_close_to_f64() {
@@ -48,9 +49,13 @@ fn environment_sweep_is_finite_bounded_and_close_to_f64() {
         assert_eq!(t.negative, 0, "{}: negative outputs", t.name);
         assert_eq!(t.over_bound, 0, "{}: above its bound {} ({})", t.name, t.bound, t.why_bound);
         assert!(t.max_rel_err <= ERROR_TOLERANCE, "{}: relative error {}", t.name, t.max_rel_err);
-        // Only the lookups at the poles, where the map's φ is undefined, may go uncompared.
+        // Only the lookups at the poles, where the map's φ is undefined, may go uncompared; and
+        // the LTC's shares where its edge terms cancel (a light the horizon cuts to a sliver, a
+        // fitted lobe narrower than f32 resolves: 17.8 % of them, docs/stability.md), which its
+        // rounding model marks.
         let outputs = per_case * cases * t.columns.len();
-        assert!(t.ill_conditioned * 100 < outputs, "{}: {} of {outputs} not compared", t.name, t.ill_conditioned);
+        let allowed = if t.name.starts_with("area_specular_ltc") { outputs / 5 } else { outputs / 100 };
+        assert!(t.ill_conditioned < allowed, "{}: {} of {outputs} not compared", t.name, t.ill_conditioned);
     }
 }
 

@@ -6,7 +6,7 @@
 use super::EffectKey;
 use super::declared::Effect;
 use crate::params::NamedValue;
-use crate::params::{FalloffForm, IlluminationModel, SpecularModel};
+use crate::params::{AreaSpecular, FalloffForm, IlluminationModel, SpecularModel};
 use crate::scene::Scene;
 use crate::shadows::ShadowFilter;
 
@@ -57,6 +57,7 @@ pub fn analyze(scene: &Scene, specular: SpecularModel) -> Analysis {
     decide_area_lights(&mut a, scene, lights);
     decide_falloff(&mut a, &points);
     decide_diffuse_specular(&mut a, scene, &used, lit, specular);
+    decide_area_ltc(&mut a, lights);
     decide_ambient_and_sum(&mut a, scene, &used, lit);
     decide_shadows(&mut a, scene, lights);
     super::surface_terms::decide_textures(&mut a, scene);
@@ -121,6 +122,26 @@ fn decide_area_lights(a: &mut Analysis, scene: &Scene, lights: &[crate::scene::L
         !as_points.is_empty(),
         if as_points.is_empty() { "no area light drawn as point sources".into() } else { as_points.join(", ") },
     );
+}
+
+/// The area lights whose specular is drawn by LTC: drawn in their exact form, asking for it,
+/// under Cook–Torrance (Phong's lobe keeps the representative point).
+fn decide_area_ltc(a: &mut Analysis, lights: &[crate::scene::Light]) {
+    let asking: Vec<String> = lights
+        .iter()
+        .enumerate()
+        .filter(|(_, l)| l.kind.is_area() && !l.drawn_as_points() && l.area_specular == AreaSpecular::Ltc)
+        .map(|(i, l)| format!("{} light L{}", l.kind.name(), i + 1))
+        .collect();
+    let ct = a.key.has(Effect::SpecularCookTorrance);
+    let (on, why) = match (asking.is_empty(), ct) {
+        (true, _) => (false, "no area light asks for LTC".to_string()),
+        (false, false) => {
+            (false, format!("{} ask(s) for LTC, which draws Cook–Torrance's lobe only", asking.join(", ")))
+        }
+        (false, true) => (true, asking.join(", ")),
+    };
+    a.decide(Effect::AreaLtc, on, why);
 }
 
 /// The point and spot lights' range and falloff forms.

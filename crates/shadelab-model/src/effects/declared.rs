@@ -382,6 +382,26 @@ declare_effects! {
         ],
         members: &[("Light", "area_points"), ("ShadowLight", "cubes")],
     },
+    /// An area light's Cook–Torrance specular by linearly transformed cosines (docs/area-lights.md):
+    /// the lobe's fitted LTC integrated over the light, in place of its representative point.
+    AreaLtc {
+        explain: "area lights' specular by LTC",
+        name: "LTC specular",
+        label: "ltc",
+        define: Some("EFFECT_AREA_LTC"),
+        functions: &[
+            "any_tangent",
+            "sphere_as_disk",
+            "ltc_polygon",
+            "area_specular_ltc",
+            "specular_ltc",
+            "ltc_cell",
+            "ltc_node",
+            "ltc_matrix",
+            "area_ltc_sample",
+        ],
+        members: &[("Light", "area_specular"), ("Tables", "ltc")],
+    },
     /// glTF's range window on point and spot lights that have a range (docs/model.md §9).
     LightRange {
         explain: "light range",

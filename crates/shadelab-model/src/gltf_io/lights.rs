@@ -11,7 +11,7 @@ use super::extras::{
 use super::scene_file::{Reader, num, quat, rgb, vec3};
 use super::{GltfError, POINT_FALLOFF_ALPHA};
 use crate::brdf::safe_normalize;
-use crate::params::{self, FalloffForm, LightKind, NamedValue};
+use crate::params::{self, AreaSpecular, FalloffForm, LightKind, NamedValue};
 use crate::scene::{Light, MAX_LIGHTS, Scene};
 use crate::shadows::{ShadowFilter, ShadowSettings};
 use glam::{DMat4, DQuat, DVec3};
@@ -51,6 +51,8 @@ super::extras_struct! {
         tangent: Option<Vec3>,
         /// How many point sources the area light is drawn as (0: its exact area form).
         points: Option<Count<AreaPoints>>,
+        /// How the area light's specular is drawn: `representative` or `ltc`.
+        specular: Option<Named<AreaSpecular>>,
     }
 }
 
@@ -148,10 +150,12 @@ impl Reader<'_> {
             size: [crate::lighting::lights::LIGHT_SIZE_DEFAULT; 2],
             tangent: DVec3::X,
             area_points: 0,
+            area_specular: AreaSpecular::Representative,
         })
     }
 
-    /// The extras' area light, size, tangent and point count (`kind`: the file's light kind).
+    /// The extras' area light, size, tangent, point count and specular (`kind`: the file's light
+    /// kind).
     fn area_params(
         &mut self,
         what: &str,
@@ -178,8 +182,9 @@ impl Reader<'_> {
                 area.name()
             )),
             None => {
-                if ex.width.is_some() || ex.height.is_some() || ex.points.is_some() {
-                    self.cx.warn(format!("{what}: extras width, height and points ignored: not an area light"));
+                if ex.width.is_some() || ex.height.is_some() || ex.points.is_some() || ex.specular.is_some() {
+                    self.cx
+                        .warn(format!("{what}: extras width, height, points and specular ignored: not an area light"));
                 }
             }
         }
@@ -192,6 +197,9 @@ impl Reader<'_> {
         }
         if let Some(k) = ex.points.as_ref().filter(|_| light.kind.is_area()) {
             light.area_points = k.0;
+        }
+        if let Some(s) = ex.specular.as_ref().filter(|_| light.kind.is_area()) {
+            light.area_specular = s.0;
         }
     }
 
@@ -299,6 +307,7 @@ pub(super) fn write_light(i: usize, l: &Light) -> (Value, Value) {
         height: area.then(|| l.size[1].into()),
         tangent: area.then(|| Vec3(l.area_tangent())),
         points: area.then(|| l.area_points.into()),
+        specular: area.then_some(Named(l.area_specular)),
     };
     let mut light = json!({
         "type": kind,

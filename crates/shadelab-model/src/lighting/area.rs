@@ -94,6 +94,14 @@ pub fn polygon_irradiance(p: DVec3, n: DVec3, corners: &[DVec3]) -> f64 {
     (-0.5 * polygon_edge_sum(p, n, corners).0).max(0.0)
 }
 
+/// Lambert's edge formula over a flat light's corners carried by `xf` from `p` (the identity for
+/// the light itself, [`super::ltc`]'s `M⁻¹` for its LTC), clipped at the plane normal to `n`
+/// through the origin; 0 seen from behind (WGSL `polygon_walk`).
+pub fn polygon_walk(light: &AreaLight, p: DVec3, n: DVec3, xf: glam::DMat3) -> f64 {
+    let corners: Vec<DVec3> = area_corners(light).into_iter().map(|c| xf * (c - p)).collect();
+    polygon_irradiance(DVec3::ZERO, n, &corners)
+}
+
 /// The sum of [`edge_term`]s over the polygon clipped at `p`'s horizon, and the sum of their
 /// magnitudes: where the horizon leaves a sliver the terms cancel, and an f32 sum keeps only
 /// its precision times the second over the first.

@@ -106,7 +106,7 @@ pub fn area_point_sample(base: &LightSample, light: &Light, e: &AreaEmitter, p: 
     let l = if r > LIGHT_DIST_MIN { to / r } else { n };
     let cos_e = if e.normal == DVec3::ZERO { 1.0 } else { (-e.normal.dot(l)).max(0.0) };
     let scale = e.gain * cos_e * d2 / (r * r).max(LIGHT_DIST_MIN * LIGHT_DIST_MIN);
-    LightSample { l, radiance: base.radiance, form: scale * n.dot(l), spec_scale: scale }
+    LightSample { l, radiance: base.radiance, form: scale * n.dot(l), spec_scale: scale, ltc: None }
 }
 
 #[cfg(test)]

@@ -109,6 +109,10 @@ pub struct LightSample {
     /// What the specular term at `l` is scaled by: 1, or an area light's [`super::area::area_specular_point`]
     /// scale.
     pub spec_scale: f64,
+    /// An area light's specular by LTC relative to its centre's point light
+    /// ([`super::ltc::area_specular_ltc`]), which replaces the lobe at `l` under Cook–Torrance;
+    /// `None`: the lobe at `l` times `spec_scale` (WGSL: negative).
+    pub ltc: Option<f64>,
 }
 
 /// The share of the diffuse the dielectric layer passes (`microfacet::fresnel_mix_weight`): only
@@ -168,9 +172,13 @@ pub fn light_contribution(
     if n.dot(s.l) <= 0.0 && s.form <= 0.0 {
         return [0.0; 3];
     }
-    let spec = light_specular(s.l, n, v, mat, v_index, specular, ms_e);
+    // An area light's LTC replaces the lobe at its representative point under Cook–Torrance.
+    let (spec, scale) = match s.ltc.filter(|_| specular == SpecularModel::CookTorrance) {
+        Some(ltc) => (super::ltc::specular_ltc(n, v, s.l, v_index, mat.microfacet, ms_e, ltc), 1.0),
+        None => (light_specular(s.l, n, v, mat, v_index, specular, ms_e), s.spec_scale),
+    };
     let kd = diffuse_weight(s.l, n, v, mat, specular);
     std::array::from_fn(|i| {
-        s.radiance[i] * (mat.r_d * mat.color[i] * kd * diffuse_lambert(s.form) + mat.r_s * spec[i] * s.spec_scale)
+        s.radiance[i] * (mat.r_d * mat.color[i] * kd * diffuse_lambert(s.form) + mat.r_s * spec[i] * scale)
     })
 }

@@ -151,6 +151,27 @@ impl FalloffForm {
 
 crate::named_values!(FalloffForm, "--falloff-form", "quadratic" => Quadratic, "linear" => Linear);
 
+/// How an area light's specular is drawn (docs/area-lights.md): at its representative point,
+/// or by linearly transformed cosines (`ltc.rs`), under Cook–Torrance; Phong's lobe keeps the
+/// representative point.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum AreaSpecular {
+    /// The point light at the light's point nearest the mirror direction, its peak widened.
+    #[default]
+    Representative,
+    /// The lobe's integral over the light by its fitted LTC.
+    Ltc,
+}
+
+impl AreaSpecular {
+    /// The value of `Light.area_specular` in WGSL: `AREA_SPECULAR_<NAME>` of `shaders/ltc.wgsl`.
+    pub fn code(self) -> u32 {
+        self as u32
+    }
+}
+
+crate::named_values!(AreaSpecular, "--area-specular", "representative" => Representative, "ltc" => Ltc);
+
 /// Most lights a scene may hold (the GPU uniform has this many slots; `MAX_LIGHTS` in WGSL).
 pub const MAX_LIGHTS: usize = 8;
 
@@ -233,6 +254,8 @@ pub struct Light {
     /// point sources on it, each with its own hard shadow (`area_points.rs`), within
     /// [`AREA_POINTS`].
     pub area_points: u32,
+    /// Area lights drawn in their exact form: how the specular is drawn.
+    pub area_specular: AreaSpecular,
 }
 
 impl Light {
@@ -260,6 +283,7 @@ impl Light {
             size: [LIGHT_SIZE_DEFAULT; 2],
             tangent: DVec3::X,
             area_points: 0,
+            area_specular: AreaSpecular::Representative,
         }
     }
     /// A spot light at `position` shining along `direction`, with cones `inner < outer` (radians).
@@ -425,7 +449,7 @@ pub fn light_sample(light: &Light, p: DVec3, n: DVec3, v: DVec3, m: f64) -> Ligh
     let radiance = light.radiance();
     if light.kind.is_directional() {
         let l = safe_normalize(-light.direction, n);
-        return LightSample { l, radiance, form: n.dot(l), spec_scale: 1.0 };
+        return LightSample { l, radiance, form: n.dot(l), spec_scale: 1.0, ltc: None };
     }
     let to_light = light.position - p;
     let d = to_light.length();
@@ -445,8 +469,8 @@ pub fn light_sample(light: &Light, p: DVec3, n: DVec3, v: DVec3, m: f64) -> Ligh
     match light.area_light().filter(|_| light.area_points == 0) {
         Some(area) => {
             let (l, spec_scale) = area_specular_point(&area, p, n, v, m);
-            LightSample { l, radiance, form: area_form(&area, p, n), spec_scale }
+            LightSample { l, radiance, form: area_form(&area, p, n), spec_scale, ltc: None }
         }
-        None => LightSample { l, radiance, form: n.dot(l), spec_scale: 1.0 },
+        None => LightSample { l, radiance, form: n.dot(l), spec_scale: 1.0, ltc: None },
     }
 }

@@ -8,7 +8,8 @@
 //! - [`lights`] ↔ `lights.wgsl`: the light sources, their parameters and falloffs.
 //! - [`models`] ↔ `models.wgsl`: the Lambert rule and the four-term sum, and the model choice.
 //! - [`area`] ↔ `area_lights.wgsl`, [`area_points`] ↔ `area_points.wgsl`: area lights, exact and
-//!   as k point sources.
+//!   as k point sources; [`ltc`] ↔ `ltc.wgsl`: their specular by linearly transformed cosines,
+//!   from [`ltc_table`] (written by the fit, `ltc_fit.rs`).
 //! - [`shading`] ↔ `shading.wgsl`: the sum over the lights at one point (and the stages of
 //!   `entry_points.wgsl` and `screen_space.wgsl`, whose counterpart is the reference's image).
 //! - [`transmission`] ↔ `transmission.wgsl`: light through a surface (Snell, absorption, the
@@ -32,6 +33,8 @@ pub mod env_file;
 pub mod env_map;
 pub mod environment;
 pub mod lights;
+pub mod ltc;
+pub mod ltc_table;
 pub mod microfacet;
 pub mod models;
 pub mod ms_table;

@@ -7,7 +7,8 @@ use super::area_points::{area_emitter, area_point_count, area_point_sample};
 use super::brdf::{SpecularModel, fresnel_v_from_mu, light_contribution};
 use super::common::safe_normalize;
 use super::environment::{ShCoefficients, env_sh_radiance, env_specular};
-use super::lights::{Light, LightSample, MAX_LIGHTS, light_sample};
+use super::lights::{AreaSpecular, Light, LightSample, MAX_LIGHTS, light_sample};
+use super::microfacet::Microfacet;
 use super::models::{IlluminationModel, lambert_rule_fill, lambert_rule_lit, sum_contribution, transmitted_term};
 use crate::scene::Material;
 use glam::{DVec3, DVec4};
@@ -128,7 +129,7 @@ pub fn shade_exact(
     // The Lambert rule's I: the brightest light at the point, per channel, in [0, 1].
     let mut i_max = [0.0f64; 3];
     for (k, light) in lights.iter().take(MAX_LIGHTS).enumerate() {
-        let base = light_sample(light, p, n, v, mat.m);
+        let base = area_ltc_sample(light_sample(light, p, n, v, mat.m), light, p, n, v, mat.m, mat.microfacet);
         // An area light drawn as k point sources is k samples, each with its own visibility.
         for j in 0..area_point_count(light) {
             let s = if light.drawn_as_points() {
@@ -166,6 +167,28 @@ pub fn shade_exact(
         }
     }
     total
+}
+
+/// Light sample `s` of `light` with its specular by LTC ([`super::ltc`]), where the light asks
+/// for it and is drawn in its exact area form; `M⁻¹` and the lobe's albedo E are the material's
+/// D's and D × G pair's at `N·V` and m.
+pub fn area_ltc_sample(
+    s: LightSample,
+    light: &Light,
+    p: DVec3,
+    n: DVec3,
+    v: DVec3,
+    m: f64,
+    terms: Microfacet,
+) -> LightSample {
+    if light.area_specular != AreaSpecular::Ltc || light.drawn_as_points() {
+        return s;
+    }
+    let Some(area) = light.area_light() else { return s };
+    let n_dot_v = n.dot(v);
+    let minv = super::ltc::ltc_matrix(terms.d.code(), n_dot_v, m);
+    let e = super::ms_table::ms_albedo(terms, n_dot_v.max(crate::guards::N_DOT_V_MIN), m);
+    LightSample { ltc: super::ltc::area_specular_ltc(&area, p, n, v, minv, e), ..s }
 }
 
 /// The chosen model's term of light sample `s` (point source `j` of its light), before its shadow:

@@ -39,9 +39,10 @@ fn wgsl_blocks_are_the_declared_defines() {
 const INSIDE_SHADOWS: [Effect; 4] =
     [Effect::ShadowFilterHard, Effect::ShadowFilterPcf, Effect::ShadowFilterPoisson, Effect::ShadowCascades];
 
-/// The area lights' two ways (area_lights.wgsl, area_points.wgsl): reached only on the point
-/// lights' path, so their subsets are validated on a few bases rather than multiplying the rest.
-const AREA: [Effect; 2] = [Effect::AreaLights, Effect::AreaPoints];
+/// The area lights' ways (area_lights.wgsl, area_points.wgsl, ltc.wgsl): reached only on the
+/// point lights' path, so their subsets are validated on a few bases rather than multiplying the
+/// rest.
+const AREA: [Effect; 3] = [Effect::AreaLights, Effect::AreaPoints, Effect::AreaLtc];
 
 /// The effects of a surface's texture and vertex colours (surface.wgsl), independent of the rest.
 const SURFACE: [Effect; 7] = [

@@ -78,13 +78,13 @@ fn uniform_layouts_match_wgsl() {
     let module = parse(&lighting_source());
     assert_eq!(
         wgsl_layout(&module, "Light"),
-        rust_layout!(LightUniform: position, direction, radiance, kind, falloff_form, falloff_alpha, d0, spot_axis, cos_inner, cos_outer, range, _pad, normal, tangent, half_x, half_y, area_points, _pad2)
+        rust_layout!(LightUniform: position, direction, radiance, kind, falloff_form, falloff_alpha, d0, spot_axis, cos_inner, cos_outer, range, _pad, normal, tangent, half_x, half_y, area_points, area_specular)
     );
     assert_eq!(
         wgsl_layout(&module, "Globals"),
         rust_layout!(GlobalsUniform: view_proj, camera_pos, ambient, light_count, flags, specular_model, illumination, lights, env_sh, env_occlusion, inv_view_proj)
     );
-    assert_eq!(wgsl_layout(&module, "Tables"), rust_layout!(TablesUniform: ms_albedo, env_split_b));
+    assert_eq!(wgsl_layout(&module, "Tables"), rust_layout!(TablesUniform: ms_albedo, env_split_b, ltc));
     assert_eq!(
         wgsl_layout(&module, "Object"),
         rust_layout!(ObjectUniform: model, normal_matrix, color, mu, r_s, r_d, r_a, m, h, mirror, transmission, uv_rotation, mu_tinted, uv_offset_scale, metallic_f0, emission, metal_roughness_uv, occlusion_uv, emissive_uv, uv_rotations, maps, occlusion_strength, normal_scale, phong_normalized, normal_uv, inverse_model, ior, absorption, exit_shape, absorption_form, longest_chord, microfacet, fresnel_mix)

@@ -242,7 +242,6 @@ pub fn wgsl_columns() -> String {
     s += &format!("const SWEEP_CONE_PER_M: f32 = {:?};\n", SWEEP_CONE_PER_M as f32);
     s += &format!("const SWEEP_SHADOW_RESOLUTION: f32 = {:?};\n", SWEEP_SHADOW_RESOLUTION as f32);
     s += &format!("const SWEEP_OUTPUTS: u32 = {OUTPUTS}u;\n");
-    s += &format!("const SWEEP_DISK_POLYGON_SCALE: f32 = {:?};\n", area::disk_polygon_scale() as f32);
     for (c, r) in ranges() {
         s += &format!("const COL_{}: u32 = {}u;\n", c.wgsl, r.start);
     }
@@ -258,7 +257,7 @@ const SWEEP_CONE_PER_M: f64 = std::f32::consts::FRAC_PI_2 as f64;
 /// How many input perturbations an area form's summed terms are each rounded by on the GPU: each
 /// is an atan2 (WGSL bounds its error at 4096 ulps, against one for a product) of directions
 /// already a few ulps off; ten perturbations, 160 ulps, stays far inside that bound.
-const AREA_TERM_ROUNDING: f64 = 10.0;
+pub(super) const AREA_TERM_ROUNDING: f64 = 10.0;
 
 /// Map side the sweep's `shadow_ortho_texel_world` divides by (`SWEEP_SHADOW_RESOLUTION`).
 const SWEEP_SHADOW_RESOLUTION: f64 = 2048.0;
@@ -532,7 +531,7 @@ fn area_columns(out: &mut [f64; OUTPUTS], inp: &Combination) {
         let kind = [LightKind::Rect, LightKind::Disk, LightKind::Sphere][k];
         let mut light = Light::area(kind, a.center, normal, [alpha; 2], [1.0; 3], 1.0, 0.0);
         (light.tangent, light.area_points) = (tangent, 1 + (m * 7.0) as u32);
-        let base = lights::LightSample { l, radiance: [1.0; 3], form: 0.0, spec_scale: 1.0 };
+        let base = lights::LightSample { l, radiance: [1.0; 3], form: 0.0, spec_scale: 1.0, ltc: None };
         out[AREA_POINTS_FORM + k] = (0..light.area_points)
             .map(|j| {
                 brdf::diffuse_lambert(area_point_sample(&base, &light, &area_emitter(&light, j), DVec3::ZERO, n).form)

@@ -6,15 +6,16 @@
 //! black map and a texel of 10⁶ alike.
 
 use super::SWITCH_MARGIN;
-use super::columns::{Column, offset_in, outputs_of, ranges_of};
+use super::columns::{AREA_TERM_ROUNDING, Column, offset_in, outputs_of, ranges_of};
 use super::env_inputs::{EnvCase, EnvSweepInputs, grid_centre};
 use super::report::TermReport;
 use crate::gpu::Gpu;
 use glam::DVec3;
+use shadelab_model::lighting::area::{AreaLight, AreaShape};
 use shadelab_model::lighting::environment::{self as env, SH_RINGING_BOUND, ShCoefficients};
 use shadelab_model::lighting::microfacet::{Distribution, Masking, Microfacet, fresnel_v_from_mu};
 use shadelab_model::lighting::ms_table::MS_PAIRS;
-use shadelab_model::lighting::{common::safe_normalize, occlusion};
+use shadelab_model::lighting::{common::safe_normalize, ltc, occlusion};
 use shadelab_model::params::NamedValue;
 use wgpu::util::DeviceExt;
 
@@ -34,7 +35,7 @@ const fn col(name: &'static str, wgsl: &'static str, channels: usize, bound: f64
 }
 
 /// The kernel's output columns, their bounds in the scale of [`ENV_SCALES`].
-const ENV_COLUMNS: [Column; 6] = [
+const ENV_COLUMNS: [Column; 7] = [
     col(
         "env_sh_radiance",
         "SH_RADIANCE",
@@ -65,10 +66,18 @@ const ENV_COLUMNS: [Column; 6] = [
         "the largest texel times F0·(E − B) + B ≤ max(E, B) ≤ 1",
     ),
     col("env_occlusion (at the grid's centre + l·d)", "OCCLUSION", 1, 1.0, "an open share"),
+    col(
+        "area_specular_ltc (rect, disk, sphere at l·d × every D, over π·E·d²/A)",
+        "AREA_LTC",
+        3 * Distribution::ALL.len(),
+        1.0,
+        "the LTC's mass over the light, at most all of it",
+    ),
 ];
 
 /// Each column's scale, in the order of [`ENV_COLUMNS`].
-const ENV_SCALES: [Scale; 6] = [Scale::ShRadiance, Scale::Levels, Scale::Levels, Scale::One, Scale::Levels, Scale::One];
+const ENV_SCALES: [Scale; 7] =
+    [Scale::ShRadiance, Scale::Levels, Scale::Levels, Scale::One, Scale::Levels, Scale::One, Scale::One];
 
 /// Floats the kernel writes per combination.
 pub const ENV_OUTPUTS: usize = outputs_of(&ENV_COLUMNS);
@@ -79,6 +88,7 @@ const PREFILTERED: usize = offset_in(&ENV_COLUMNS, "PREFILTERED");
 const SPLIT_B: usize = offset_in(&ENV_COLUMNS, "SPLIT_B");
 const SPECULAR: usize = offset_in(&ENV_COLUMNS, "SPECULAR");
 const OCCLUSION: usize = offset_in(&ENV_COLUMNS, "OCCLUSION");
+const AREA_LTC: usize = offset_in(&ENV_COLUMNS, "AREA_LTC");
 
 /// The environment sweep's kernel (`shaders/sweep_environment.wgsl`).
 pub const ENV_SWEEP_KERNEL: &str = include_str!("../../../../shaders/sweep_environment.wgsl");
@@ -134,8 +144,9 @@ impl<'a> Prepared<'a> {
         DVec3::from_array(self.centre.map(f64::from)) + l * d
     }
 
-    /// The f64 twins at one combination, in the kernel's column order; `p` the occlusion's point.
-    fn reference(&self, n_raw: DVec3, v: DVec3, m: f64, mu: [f64; 3], p: DVec3) -> [f64; ENV_OUTPUTS] {
+    /// The f64 twins at one combination, in the kernel's column order; `p` the occlusion's point,
+    /// `k` the inputs' perturbation (0 unperturbed), which the LTC's summed terms are rounded by.
+    fn reference(&self, n_raw: DVec3, v: DVec3, m: f64, mu: [f64; 3], p: DVec3, k: f64) -> [f64; ENV_OUTPUTS] {
         let n = safe_normalize(n_raw, v);
         let v_index = mu.map(fresnel_v_from_mu);
         let mut out = [0.0; ENV_OUTPUTS];
@@ -149,8 +160,38 @@ impl<'a> Prepared<'a> {
         put(SPECULAR, &env::env_specular(&self.pre, n, v, m, Microfacet::CHAPTER, v_index));
         put(SPECULAR + 3, &env::env_specular(&self.pre, n, v, m, Microfacet::GLTF, v_index));
         put(OCCLUSION, &[occlusion::env_occlusion(&self.case.grid, p, n)]);
+        let to = p - DVec3::from_array(self.centre.map(f64::from));
+        put(AREA_LTC, &area_ltc(n, v, to, m, k));
         out
     }
+}
+
+/// The kernel's `env_area_ltc`: for each shape at `to` from the point, facing it, half as wide as
+/// far, and every D, its LTC's share of `π·E·d²/A_emit` (E = 1); 0 at the point limit. Under a
+/// perturbation `k` each share moves by its summed terms' size times `k` times
+/// `AREA_TERM_ROUNDING`, as the main sweep's area form does, so that a share f32 cancels to
+/// nothing counts as ill-conditioned.
+fn area_ltc(n: DVec3, v: DVec3, to: DVec3, m: f64, k: f64) -> Vec<f64> {
+    let d = to.length();
+    let normal = -safe_normalize(to, n);
+    let half = 0.5 * d;
+    let shapes = [
+        AreaShape::Rect { half_x: half, half_y: half },
+        AreaShape::Disk { radius: half },
+        AreaShape::Sphere { radius: half },
+    ];
+    let mut out = Vec::new();
+    for shape in shapes {
+        let light = AreaLight { shape, center: to, normal, tangent: ltc::any_tangent(normal) };
+        for dk in 0..Distribution::ALL.len() {
+            let minv = ltc::ltc_matrix(dk as u32, n.dot(v), m);
+            let s = ltc::area_specular_ltc(&light, DVec3::ZERO, n, v, minv, 1.0).unwrap_or(0.0);
+            let share = if s > 0.0 { s * light.emitting_area() / (std::f64::consts::PI * d * d) } else { 0.0 };
+            let rounding = ltc::ltc_rounding(&light, DVec3::ZERO, n, v, minv) * k.abs() * AREA_TERM_ROUNDING;
+            out.push(share + rounding);
+        }
+    }
+    out
 }
 
 /// Every D × G pair in the tables' order (d·3 + g), as the kernel loops over them.
@@ -223,7 +264,7 @@ fn check_case(
         let (n, v, l) = (f64v(g.n), f64v(g.v), f64v(g.l));
         let (m, mu, d) = (inputs.m[mi] as f64, inputs.mu[ui].map(f64::from), inputs.d[di] as f64);
         let p = prep.point(l, d);
-        let expected = prep.reference(n, v, m, mu, p);
+        let expected = prep.reference(n, v, m, mu, p, 0.0);
         let gpu_out = &out[idx * ENV_OUTPUTS..(idx + 1) * ENV_OUTPUTS];
         let near_switch = safe_normalize(n, v).dot(v).abs() < SWITCH_MARGIN;
         let mut perturbed: Option<[[f64; ENV_OUTPUTS]; 8]> = None;
@@ -258,7 +299,7 @@ fn perturbed_references(
     std::array::from_fn(|j| {
         let (k, [dn, dv, dp]) = super::perturbation(j, [n, v, p]);
         let mu = mu.map(|x| x * (1.0 + k));
-        prep.reference(n + dn, (v + dv).normalize(), m * (1.0 + k), mu, p + dp)
+        prep.reference(n + dn, (v + dv).normalize(), m * (1.0 + k), mu, p + dp, k)
     })
 }
 
@@ -381,9 +422,10 @@ mod tests {
             ("SPLIT_B", 9),
             ("SPECULAR", 9 + MS_PAIRS),
             ("OCCLUSION", 15 + MS_PAIRS),
+            ("AREA_LTC", 16 + MS_PAIRS),
         ];
         assert_eq!(at, written);
-        assert_eq!(ENV_OUTPUTS, 16 + MS_PAIRS);
+        assert_eq!(ENV_OUTPUTS, 16 + MS_PAIRS + 3 * Distribution::ALL.len());
         // One B column per pair of the term tables.
         assert_eq!(pairs().count(), Distribution::ALL.len() * Masking::ALL.len());
         assert_eq!(pairs().count(), MS_PAIRS);

@@ -165,6 +165,7 @@ pub fn overrides(a: &SceneArgs) -> Overrides {
         light: a.light,
         light_size: a.light_size,
         area_points: a.area_points,
+        area_specular: a.area_specular,
         shadows: a.shadows,
         shadow_resolution: a.shadow_resolution,
         shadow_filter: a.shadow_filter,

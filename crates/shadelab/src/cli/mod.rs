@@ -15,7 +15,7 @@ use crate::Failure;
 use clap::{Args, Parser, Subcommand};
 use shadelab_model::gltf_io::{LoadedScene, SceneSettings};
 use shadelab_model::lighting::microfacet::{Distribution, Fresnel, Masking, Microfacet};
-use shadelab_model::params::{self, PhongExponent};
+use shadelab_model::params::{self, AreaSpecular, PhongExponent};
 use shadelab_model::scene::BUILTIN_SCENES;
 use shadelab_model::shadows::{PCSS_TAPS, SHADOW_RESOLUTION, ShadowFilter};
 use shadelab_model::{
@@ -101,6 +101,20 @@ pub enum Command {
     /// Compare two PNG images of the same size (a screenshot against a render, two renders):
     /// print the FLIP mean, RMSE, max error and the share of pixels off by more than 1/255.
     Compare(CompareArgs),
+    /// Fit the LTC tables of the area lights' specular (docs/area-lights.md) for every D, print
+    /// each one's distance to its lobes, and with --write replace the table the renderer reads.
+    FitLtc(FitLtcArgs),
+}
+
+#[derive(Args, Debug)]
+pub struct FitLtcArgs {
+    /// Write the tables as Rust source here (the renderer's is
+    /// crates/shadelab-model/src/lighting/ltc_table.rs).
+    #[arg(long, value_name = "PATH")]
+    pub write: Option<PathBuf>,
+    /// Print every node's distance, a row of N·V from normal view to grazing per m.
+    #[arg(long)]
+    pub rows: bool,
 }
 
 #[derive(Args, Debug)]
@@ -292,6 +306,11 @@ pub struct SceneArgs {
     #[arg(long, value_name = "K", value_parser = values::count(params::AREA_POINTS),
           help = within("Draw every area light as the chapter's K point sources, each with its own hard shadow (0: the exact area form)", params::AREA_POINTS))]
     pub area_points: Option<u32>,
+    /// How every area light's specular is drawn under Cook–Torrance: at its representative point,
+    /// or by linearly transformed cosines fitted to the lobe (docs/area-lights.md) [default: each
+    /// light's own setting, representative unless a scene file says otherwise].
+    #[arg(long, value_name = "representative|ltc", value_parser = values::named::<AreaSpecular>())]
+    pub area_specular: Option<AreaSpecular>,
     /// Cast shadows from every light (on) or from none (off) [default: each light's own setting,
     /// on unless a scene file says otherwise].
     #[arg(long, value_name = "ON|OFF", value_parser = values::on_off())]

@@ -187,6 +187,7 @@ const LIGHT: &[Field<Light>] = &[
     field!("size", size, |s: [f64; 2]| list(&s), |v| numbers::<2>(lights::LIGHT_SIZE, v)),
     field!("tangent", tangent, |v: DVec3| list(&v.to_array()), direction),
     field!("points", area_points, |n: u32| n.to_string(), |v| count(lights::AREA_POINTS, v)),
+    named!("spec", area_specular),
     switch!("shadows", shadow.casts),
     field!("res", shadow.resolution, |n: u32| n.to_string(), |v| count(SHADOW_RESOLUTION, v)),
     named!("filter", shadow.filter),

@@ -3,7 +3,7 @@ use shadelab_model::lighting::microfacet::{Distribution, Fresnel, Masking};
 use shadelab_model::lighting::sky::TURBIDITY;
 use shadelab_model::scene::BUILTIN_SCENES;
 use shadelab_model::shadow_settings::ShadowFilter;
-use shadelab_model::{FalloffForm, LightKind};
+use shadelab_model::{AreaSpecular, FalloffForm, LightKind};
 
 /// A repeatable xorshift stream: the test's random states are the same on every run. With
 /// `short`, a value is rounded to three significant digits, as the panel's sliders pick them (egui
@@ -108,6 +108,7 @@ fn edit_light(l: &mut Light, r: &mut Rng, p: f64) {
     if r.chance(p) {
         l.size = [r.within(lights::LIGHT_SIZE), r.within(lights::LIGHT_SIZE)];
         (l.tangent, l.area_points) = (r.vector(), r.count(lights::AREA_POINTS));
+        l.area_specular = r.of::<AreaSpecular>();
     }
     if r.chance(p) {
         l.shadow.casts = r.chance(0.5);

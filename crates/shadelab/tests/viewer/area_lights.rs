@@ -1,9 +1,10 @@
 //! The viewer's area lights, driven by egui_kittest on lavapipe: a light too small on screen is
-//! drawn as a point light and the panel says why; a light as k point sources draws with its slider.
+//! drawn as a point light and the panel says why; a light as k point sources draws with its slider;
+//! the light's specular choice switches to the LTC.
 
-use crate::harness::{click, harness_of_height, keep_for_a_look};
+use crate::harness::{click, harness_of_height, keep_for_a_look, scroll_click};
 use egui_kittest::kittest::Queryable;
-use shadelab_model::{LightKind, Overrides};
+use shadelab_model::{AreaSpecular, LightKind, Overrides};
 
 #[test]
 fn a_small_area_light_is_a_point_light_and_the_panel_says_why() {
@@ -36,4 +37,27 @@ fn a_light_as_point_sources_has_its_slider_and_draws() {
     assert!(h.state().message().is_none_or(|(_, error)| !error), "{:?}", h.state().message());
     let shot = h.render().expect("render");
     keep_for_a_look(&shot, "viewer-area-points.png");
+}
+
+#[test]
+fn the_light_panels_ltc_choice_redraws_the_highlight() {
+    let mut h = harness_of_height(900.0);
+    let rect = Overrides { light: Some(LightKind::Rect), light_size: Some(1.0), ..Default::default() };
+    h.state_mut().scene_mut().apply(&rect);
+    h.run_steps(2);
+    click(&mut h, "L1 — rect");
+    let before = h.render().expect("render");
+    click(&mut h, "LTC");
+    h.run_steps(2);
+    assert_eq!(h.state_mut().scene_mut().lights[0].area_specular, AreaSpecular::Ltc);
+    assert!(h.state().message().is_none_or(|(_, error)| !error), "{:?}", h.state().message());
+    // Under Cook–Torrance (the viewer's default) the effect is on, and the list of effects says so.
+    scroll_click(&mut h, "effects called for");
+    assert!(
+        h.query_by_label_contains("specular by LTC: on — rect light L1").is_some(),
+        "the effects list names the LTC and the light that asks for it"
+    );
+    let after = h.render().expect("render");
+    assert!(before.as_raw() != after.as_raw(), "the highlight is drawn another way");
+    keep_for_a_look(&after, "viewer-area-ltc.png");
 }

@@ -10,7 +10,7 @@ use glam::DVec3;
 use shadelab_model::params::{self, NamedValue};
 use shadelab_model::scene::MAX_LIGHTS;
 use shadelab_model::shadows::{SHADOW_RESOLUTION, ShadowFilter, ShadowSettings, drawn_layers};
-use shadelab_model::{FalloffForm, Light, LightKind};
+use shadelab_model::{AreaSpecular, FalloffForm, Light, LightKind};
 
 /// Where a light's range starts when it is switched on, scene units: beyond the built-in scenes,
 /// so the light changes little until the slider moves.
@@ -95,7 +95,7 @@ fn light_kind_row(ui: &mut egui::Ui, l: &mut Light) -> bool {
     removed
 }
 
-/// An area light's size and how many point sources draw it.
+/// An area light's size, how many point sources draw it, and how its specular is drawn.
 fn area_light_ui(ui: &mut egui::Ui, l: &mut Light) {
     // A rectangle has a width and a height; a disk or sphere one diameter.
     let (w, h) = l.kind.size_names().unwrap_or(("diameter", None));
@@ -119,6 +119,17 @@ fn area_light_ui(ui: &mut egui::Ui, l: &mut Light) {
     // calls unnatural (k = 1) and how k hard shadows converge to the penumbra.
     ui.add(egui::Slider::new(&mut l.area_points, 0..=params::AREA_POINTS.max as u32).text("points k (0 = exact)"))
         .on_hover_text(tooltip(&params::AREA_POINTS));
+    // The specular of the exact form: at one point, or the lobe integrated over the light.
+    ui.add_enabled_ui(l.area_points == 0, |ui| {
+        ui.horizontal(|ui| {
+            ui.label("specular");
+            ui.selectable_value(&mut l.area_specular, AreaSpecular::Representative, "representative point")
+                .on_hover_text("the point light at the light's point nearest the mirror direction, its peak widened");
+            ui.selectable_value(&mut l.area_specular, AreaSpecular::Ltc, "LTC").on_hover_text(
+                "Cook–Torrance's lobe integrated over the light by its fitted linearly transformed cosine (Phong's lobe keeps the representative point)",
+            );
+        });
+    });
 }
 
 /// A point or spot light's falloff form with its parameter, and its range.

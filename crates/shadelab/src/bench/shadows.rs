@@ -11,9 +11,9 @@ pub use plot::plot;
 
 use crate::{Failure, cli};
 use anyhow::Context;
-use shadelab_model::Scene;
 use shadelab_model::reference::{ReferenceImage, render_reference};
 use shadelab_model::shadows::ShadowFilter;
+use shadelab_model::{AreaSpecular, Scene};
 use shadelab_render::image_error;
 use shadelab_render::timing::{FrameTimer, TimeSource, TimedDraw, median, quantile_sorted};
 use shadelab_render::{Gpu, LinearImage, Program, RenderSettings, Renderer, SceneGpu, Target, target};
@@ -49,6 +49,9 @@ pub enum Config {
     /// Every area light as `k` point sources, each with a PCF hard shadow from its own cube (a
     /// scene with area lights).
     Points { resolution: u32, k: u32 },
+    /// PCSS with every area light's specular by LTC in place of its representative point (a
+    /// scene with area lights).
+    Ltc { resolution: u32 },
     /// The same frame with no light casting (no shadow pass).
     Off,
     /// `Program::NullBaseline`: the same geometry, a constant colour.
@@ -65,6 +68,7 @@ impl Config {
             Config::Points { resolution, k } => {
                 format!("{resolution} pcf, area lights as {k} point source{}", if k == 1 { "" } else { "s" })
             }
+            Config::Ltc { resolution } => format!("{resolution} pcss, LTC specular"),
             Config::Off => "shadows off".into(),
             Config::Baseline => "null-shader baseline".into(),
         }
@@ -152,6 +156,14 @@ fn as_points(scene: &Scene, resolution: u32, k: u32) -> Scene {
 }
 
 /// The scene with every light casting at `resolution` with PCSS of `taps` taps per pass.
+/// The scene with every light casting at `resolution` with PCSS, every area light's specular by
+/// LTC.
+fn with_ltc(scene: &Scene, resolution: u32) -> Scene {
+    let mut s = with_shadows(scene, resolution, ShadowFilter::Pcss);
+    s.apply(&shadelab_model::Overrides { area_specular: Some(AreaSpecular::Ltc), ..Default::default() });
+    s
+}
+
 fn with_pcss_taps(scene: &Scene, resolution: u32, taps: u32) -> Scene {
     let mut s = with_shadows(scene, resolution, ShadowFilter::Pcss);
     for l in &mut s.lights {
@@ -283,11 +295,13 @@ fn plan(
             let points = as_point_lights(scene, resolution);
             uploads.push(upload(&mut *r, &points)?);
             configs.push((Config::PointLights { resolution }, uploads.len() - 1, points));
-            // Tap counts are a uniform: they share the filters' upload (the same maps).
+            // Tap counts and the specular's method are uniforms: they share the filters' upload
+            // (the same maps).
             for taps in PCSS_TAP_COUNTS {
                 let s = with_pcss_taps(scene, resolution, taps);
                 configs.push((Config::PcssTaps { resolution, taps }, filters_upload, s));
             }
+            configs.push((Config::Ltc { resolution }, filters_upload, with_ltc(scene, resolution)));
             for k in POINT_COUNTS {
                 let points = as_points(scene, resolution, k);
                 uploads.push(upload(&mut *r, &points)?);
@@ -340,6 +354,7 @@ pub fn csv(report: &Report) -> String {
             Config::PointLights { resolution } => ("point-lights", resolution.to_string(), "pcf"),
             Config::PcssTaps { resolution, .. } => ("pcss-taps", resolution.to_string(), "pcss"),
             Config::Points { resolution, .. } => ("points", resolution.to_string(), "pcf"),
+            Config::Ltc { resolution } => ("ltc", resolution.to_string(), "pcss"),
             Config::Off => ("off", String::new(), ""),
             Config::Baseline => ("baseline", String::new(), ""),
         };
@@ -348,6 +363,7 @@ pub fn csv(report: &Report) -> String {
                 (shadelab_model::shadows::SHADOW_PCSS_TAPS.to_string(), String::new())
             }
             Config::PcssTaps { taps, .. } => (taps.to_string(), String::new()),
+            Config::Ltc { .. } => (shadelab_model::shadows::SHADOW_PCSS_TAPS.to_string(), String::new()),
             Config::Points { k, .. } => (String::new(), k.to_string()),
             _ => (String::new(), String::new()),
         };

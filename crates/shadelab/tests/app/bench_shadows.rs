@@ -69,9 +69,10 @@ fn quick_run_writes_every_row_with_finite_numbers() {
     );
 }
 
-/// With an area light the study adds PCSS at other tap counts and the light as k point sources:
-/// each row is there with finite numbers, 16 point sources come nearer the exact image than one,
-/// and some rows are on the Pareto front.
+/// With an area light the study adds PCSS at other tap counts, the light as k point sources and
+/// its specular by LTC: each row is there with finite numbers, 16 point sources come nearer the
+/// exact image than one, the LTC nearer than the representative point, and some rows are on the
+/// Pareto front.
 #[test]
 fn an_area_light_scene_measures_every_method() {
     let dir = std::path::PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("bench-shadows-area");
@@ -107,6 +108,10 @@ fn an_area_light_scene_measures_every_method() {
             .map(|k| rmse("points", res, "points", &k.to_string()))
             .collect();
         assert!(by_k.last() < by_k.first(), "at {res}: RMSE by k {by_k:?}");
+        // The LTC's specular over the light is nearer the exact integral than the representative
+        // point's, with the same shadows.
+        let (ltc, point) = (rmse("ltc", res, "filter", "pcss"), rmse("shadows", res, "filter", "pcss"));
+        assert!(ltc < point, "at {res}: LTC {ltc} against the representative point {point}");
     }
     assert!(rows.iter().any(|r| r[col("pareto")] == "true"), "{text}");
 }

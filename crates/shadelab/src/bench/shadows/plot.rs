@@ -55,6 +55,11 @@ fn methods() -> Vec<Method> {
         });
     }
     v.push(Method {
+        name: format!("pcss, {} taps, LTC specular", shadelab_model::shadows::SHADOW_PCSS_TAPS),
+        color: RGBColor(230, 60, 130),
+        of: Box::new(|c| if let Config::Ltc { resolution } = c { Some(resolution) } else { None }),
+    });
+    v.push(Method {
         name: "area lights as point lights".into(),
         color: RGBColor(120, 80, 30),
         of: Box::new(|c| if let Config::PointLights { resolution } = c { Some(resolution) } else { None }),

@@ -224,13 +224,25 @@ pub fn run_plan(
         images.push(image);
     }
     let off_image = images[1].clone().expect("the shadows-off row is rendered");
+    // A row that draws the specular another way tells lit from shadowed against its own frame
+    // without shadows (rendered once, untimed).
+    let ltc_off = configs.iter().any(|(c, ..)| matches!(c, Config::Ltc { .. })).then(|| {
+        let mut s = with_ltc(scene, RESOLUTIONS[0]);
+        s.set_shadows(false);
+        r.render(&mut uploads[0], &s, &target, &settings);
+        target::read_back(&gpu.device, &gpu.queue, &target)
+    });
     let baseline_ms = median(&mut samples[0]);
     let off_ms = median(&mut samples[1]);
     let mut rows = Vec::new();
     for (i, (c, g, _)) in configs.iter().enumerate() {
         let m = median(&mut samples[i]);
         let side = map_side(&r, c, &uploads[*g]);
-        let (rmse, share) = shadow_errors(images[i].as_ref(), &off_image, &reference);
+        let off = match c {
+            Config::Ltc { .. } => ltc_off.as_ref().unwrap_or(&off_image),
+            _ => &off_image,
+        };
+        let (rmse, share) = shadow_errors(images[i].as_ref(), off, &reference);
         rows.push(Row {
             config: *c,
             side,
@@ -319,7 +331,8 @@ fn map_side(r: &Renderer, c: &Config, gpu_scene: &SceneGpu) -> Option<u32> {
         | Config::OneMap { .. }
         | Config::PointLights { .. }
         | Config::PcssTaps { .. }
-        | Config::Points { .. } => {
+        | Config::Points { .. }
+        | Config::Ltc { .. } => {
             r.shadow_plan(gpu_scene).and_then(|p| p.lights.iter().flatten().map(|l| l.resolution).max())
         }
         _ => None,

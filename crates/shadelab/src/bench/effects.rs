@@ -79,7 +79,13 @@ fn load_scenes(args: &cli::BenchEffectsArgs) -> Result<Vec<Scene>, Failure> {
         if let Some(m) = args.model {
             s.apply(&shadelab_model::Overrides::for_model(m));
         }
-        s.apply(&shadelab_model::Overrides { light: args.light, light_size: args.light_size, ..Default::default() });
+        let area_specular = args.area_specular;
+        s.apply(&shadelab_model::Overrides {
+            light: args.light,
+            light_size: args.light_size,
+            area_specular,
+            ..Default::default()
+        });
     }
     Ok(scenes)
 }

@@ -3,7 +3,7 @@
 use super::{FRAMES, MESH_TRIANGLES, ModeArgs, SceneArgs, SizeArgs, WARMUP, values, within};
 use clap::Args;
 use shadelab_model::params;
-use shadelab_model::{LightKind, ModelChoice, ShadingMode};
+use shadelab_model::{AreaSpecular, LightKind, ModelChoice, ShadingMode};
 use std::path::PathBuf;
 
 #[derive(Args, Debug)]
@@ -125,6 +125,9 @@ pub struct BenchEffectsArgs {
     #[arg(long, value_name = "METRES", value_parser = values::real(params::LIGHT_SIZE),
           help = within("Width of every area light", params::LIGHT_SIZE))]
     pub light_size: Option<f64>,
+    /// How every area light draws its specular (representative, ltc) [default: each light's own].
+    #[arg(long, value_name = "representative|ltc", value_parser = values::named::<AreaSpecular>())]
+    pub area_specular: Option<AreaSpecular>,
     #[command(flatten)]
     pub size: SizeArgs,
     #[arg(long, default_value = "50", value_parser = values::count(FRAMES),

@@ -327,15 +327,15 @@ type Sample = (DVec3, DVec3, f64);
 
 /// The light's surface cut into `k`×`k` cells of equal area (rectangle: a grid; disk: rings equal
 /// in r² times sectors; sphere: the cap seen from `p`, rings equal in cos times sectors), each
-/// sampled at its centre.
-fn samples(light: &AreaLight, p: DVec3, k: usize) -> Vec<Sample> {
-    let k = k.max(1);
-    let mid = |i: usize| (i as f64 + 0.5) / k as f64;
-    let cells = (0..k).flat_map(|i| (0..k).map(move |j| (i, j)));
+/// sampled at its centre. An iterator, so the reference's walks over up to 256² cells allocate
+/// nothing.
+fn samples(light: &AreaLight, p: DVec3, k: usize) -> impl Iterator<Item = Sample> + use<> {
+    let (light, k) = (*light, k.max(1));
+    let mid = move |i: usize| (i as f64 + 0.5) / k as f64;
+    let cells = (0..k).flat_map(move |i| (0..k).map(move |j| (i, j)));
     cells
-        .filter_map(|(i, j)| point_on(light, p, mid(i), mid(j)))
-        .map(|(x, normal, area)| (x, normal, area / (k * k) as f64))
-        .collect()
+        .filter_map(move |(i, j)| point_on(&light, p, mid(i), mid(j)))
+        .map(move |(x, normal, area)| (x, normal, area / (k * k) as f64))
 }
 
 /// The point of the light's surface at parameters `(s, t)` in [0, 1)², its unit normal, and the
@@ -423,7 +423,7 @@ fn seen_cells<'a>(
 /// The light's cells whose front `p` faces: each cell's point, the unit direction `l` to it and
 /// its weight cos θ_l ΔA / r², visible or not.
 pub(crate) fn front_cells(light: &AreaLight, p: DVec3, k: usize) -> impl Iterator<Item = (DVec3, DVec3, f64)> + use<> {
-    samples(light, p, k).into_iter().filter_map(move |(x, nx, da)| front_cell(p, x, nx, da))
+    samples(light, p, k).filter_map(move |(x, nx, da)| front_cell(p, x, nx, da))
 }
 
 /// The share of the light's E/L over `k`×`k` cells that reaches `p`, the cells `visible` hides

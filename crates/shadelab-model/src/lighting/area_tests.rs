@@ -204,7 +204,7 @@ fn the_chapters_point_sources_converge_to_the_reference_and_one_point_is_far_off
     assert!(errors.windows(2).all(|w| w[1] < w[0]), "the error must fall with k: {errors:?}");
     assert!(errors[4] < 1e-3, "{errors:?}");
     // k = 1 is the light's centre, carrying its whole area.
-    let one = samples(&light, p, 1);
+    let one: Vec<_> = samples(&light, p, 1).collect();
     assert_eq!(one.len(), 1);
     assert!((one[0].0 - light.center).length() < 1e-12 && (one[0].2 - light.area()).abs() < 1e-12, "{one:?}");
 }

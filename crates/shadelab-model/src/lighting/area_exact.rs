@@ -46,9 +46,14 @@ struct Sums {
 
 fn sums(area: &AreaLight, a: &AreaAt, k: usize, visible: Option<&dyn Fn(DVec3, DVec3) -> bool>) -> Sums {
     let (mut d, mut s, mut d_seen, mut s_seen) = (0.0, [0.0; 3], 0.0, 0.0);
+    let specular = has_specular(a);
     for (x, l, w) in front_cells(area, a.p, k) {
         let dd = diffuse_weight(l, a.n, a.v, a.mat, a.specular) * a.n.dot(l).max(0.0) * w;
-        let spec = light_specular(l, a.n, a.v, a.mat, a.v_index, a.specular, a.ms_e).map(|x| x * w);
+        let spec = if specular {
+            light_specular(l, a.n, a.v, a.mat, a.v_index, a.specular, a.ms_e).map(|x| x * w)
+        } else {
+            [0.0; 3]
+        };
         d += dd;
         for c in 0..3 {
             s[c] += spec[c];
@@ -63,6 +68,12 @@ fn sums(area: &AreaLight, a: &AreaAt, k: usize, visible: Option<&dyn Fn(DVec3, D
     }
     let share = |seen: f64, all: f64| if visible.is_none() || all <= 0.0 { 1.0 } else { seen / all };
     Sums { d, s, shares: (share(d_seen, d), share(s_seen, s.iter().sum())) }
+}
+
+/// Whether the material's specular adds to the term: with `r_s = 0` it is multiplied away, so
+/// the walks skip it (and a diffuse with a closed form needs no refinement at all).
+fn has_specular(a: &AreaAt) -> bool {
+    a.mat.r_s != 0.0
 }
 
 /// The exact term of `a.light` at `a.p`: `I·f(d)·(d²/A_emit)·(r_d·C·E_d + r_s·E_s)`, the point
@@ -84,10 +95,14 @@ pub fn area_term_exact(a: &AreaAt, visible: Option<&dyn Fn(DVec3, DVec3) -> bool
     let first = sums(&area, a, k, visible);
     let (share_d, share_s) = first.shares;
     let (mut d, mut s) = (first.d, first.s);
-    let mut error = f64::INFINITY;
-    while k < AREA_EXACT_CELLS_MAX {
+    // A closed-form diffuse is exact: only the specular's walk is refined, and without a
+    // specular nothing is.
+    let refined = closed.is_none() || has_specular(a);
+    let mut error = if refined { f64::INFINITY } else { 0.0 };
+    while refined && k < AREA_EXACT_CELLS_MAX {
         let next = sums(&area, a, 2 * k, None);
-        let change = (0..3).map(|c| (next.s[c] - s[c]).abs()).fold((next.d - d).abs(), f64::max);
+        let d_change = if closed.is_some() { 0.0 } else { (next.d - d).abs() };
+        let change = (0..3).map(|c| (next.s[c] - s[c]).abs()).fold(d_change, f64::max);
         let size = next.s.iter().copied().fold(closed.unwrap_or(next.d), f64::max);
         (d, s, k, error) = (next.d, next.s, 2 * k, change);
         if change <= AREA_EXACT_TOLERANCE * size {
@@ -128,7 +143,11 @@ pub fn area_term_sampled(
         return Some(AreaTerm { lit: none, clear: none, error: 0.0, cells: 1, diffuse_share: 1.0 });
     };
     let dd = diffuse_weight(l, a.n, a.v, a.mat, a.specular) * a.n.dot(l).max(0.0) * w;
-    let spec = light_specular(l, a.n, a.v, a.mat, a.v_index, a.specular, a.ms_e).map(|x| x * w);
+    let spec = if has_specular(a) {
+        light_specular(l, a.n, a.v, a.mat, a.v_index, a.specular, a.ms_e).map(|x| x * w)
+    } else {
+        [0.0; 3]
+    };
     let (scale, mat, radiance) = (d2 / emitting * weight(l, 1.0 / w), a.mat, a.sample.radiance);
     let clear: [f64; 3] =
         std::array::from_fn(|c| radiance[c] * scale * (mat.r_d * mat.color[c] * dd + mat.r_s * spec[c]));

@@ -9,10 +9,13 @@ use crate::mesh::{TriangleMesh, face_normal};
 use crate::scene::{Scene, Shape};
 use glam::{DMat4, DVec3};
 
-/// What a ray needs beside the scene: each object's inverse transform and each mesh's hierarchy,
-/// made once per image.
+/// What a ray needs beside the scene: each object's inverse transform, its box in the world and
+/// each mesh's hierarchy, made once per image.
 pub(crate) struct Geometry {
     pub inverses: Vec<DMat4>,
+    /// Each object's world box, grown by [`BOX_PAD_REL`]: a ray that misses it misses the object,
+    /// so [`trace`] and [`occluded`] move it into object space only when it meets the box.
+    pub boxes: Vec<(DVec3, DVec3)>,
     pub bvhs: Vec<Bvh>,
 }
 
@@ -20,9 +23,51 @@ impl Geometry {
     pub fn new(scene: &Scene) -> Geometry {
         Geometry {
             inverses: scene.objects.iter().map(|o| o.transform.matrix().inverse()).collect(),
+            boxes: scene.objects.iter().map(|o| world_box(scene, o)).collect(),
             bvhs: scene.meshes.iter().map(Bvh::build).collect(),
         }
     }
+}
+
+/// An object's world box grows by this share of its largest coordinate's size on every side:
+/// a ray's crossing computed in object space and the box's in the world differ by rounding
+/// (about 1e-15 of those sizes), so 1e-9 keeps every crossing inside the box.
+pub const BOX_PAD_REL: f64 = 1e-9;
+
+/// The world box of `obj`: the corners of its object-space box (the unit shapes' [−1, 1]³, a
+/// mesh's bounds) through its transform, grown by [`BOX_PAD_REL`]; unbounded for a mesh with no
+/// triangles or a transform that is not finite.
+fn world_box(scene: &Scene, obj: &crate::scene::Object) -> (DVec3, DVec3) {
+    let everywhere = (DVec3::NEG_INFINITY, DVec3::INFINITY);
+    let (lo, hi) = match obj.shape {
+        Shape::Mesh(m) => match scene.meshes.get(m).and_then(|mesh| mesh.bounds()) {
+            Some(b) => b,
+            None => return everywhere,
+        },
+        _ => (DVec3::NEG_ONE, DVec3::ONE),
+    };
+    let to_world = obj.transform.matrix();
+    let corners = (0..8).map(|k| {
+        let pick = |bit: usize, a: f64, b: f64| if k & bit == 0 { a } else { b };
+        to_world.transform_point3(DVec3::new(pick(1, lo.x, hi.x), pick(2, lo.y, hi.y), pick(4, lo.z, hi.z)))
+    });
+    let (wlo, whi) = corners.fold((everywhere.1, everywhere.0), |(a, b), c| (a.min(c), b.max(c)));
+    let pad = BOX_PAD_REL * wlo.abs().max(whi.abs()).max_element();
+    if !pad.is_finite() {
+        return everywhere;
+    }
+    (wlo - DVec3::splat(pad), whi + DVec3::splat(pad))
+}
+
+/// Whether the ray `o + t·dir` (`inv` = 1/dir per axis) may meet the box `b` for some `t` in
+/// `[0, t_max]`: false only where the slab test proves it apart, so a NaN lets the object's own
+/// test decide.
+fn may_meet(b: &(DVec3, DVec3), o: DVec3, inv: DVec3, t_max: f64) -> bool {
+    let (a, c) = ((b.0 - o) * inv, (b.1 - o) * inv);
+    let (near, far) = (a.min(c), a.max(c));
+    let t0 = near.x.max(near.y).max(near.z).max(0.0);
+    let t1 = far.x.min(far.y).min(far.z).min(t_max);
+    !(t0 > t1)
 }
 
 /// Rays starting closer than this (in object-space ray parameter) do not count as hits: the
@@ -232,7 +277,11 @@ pub(super) fn trace(scene: &Scene, geo: &Geometry, o: DVec3, dir: DVec3) -> Opti
     // object-space tangent, mesh triangle.
     type Best = (f64, usize, DVec3, DVec3, [f64; 2], [f64; 3], [f64; 4], Option<usize>);
     let mut best: Option<Best> = None;
+    let inv_dir = dir.recip();
     for (i, (obj, inv)) in scene.objects.iter().zip(&geo.inverses).enumerate() {
+        if !may_meet(&geo.boxes[i], o, inv_dir, best.map_or(f64::INFINITY, |b| b.0)) {
+            continue;
+        }
         let (lo, ld) = (inv.transform_point3(o), inv.transform_vector3(dir));
         let hit = match obj.shape {
             Shape::Mesh(m) => scene.meshes.get(m).and_then(|mesh| {
@@ -338,7 +387,11 @@ const RAY_PLANE_DENOM_MIN: f64 = 1e-12;
 /// Whether any object's surface crosses the world ray `o + t·dir` for `t` in (`RAY_T_MIN`,
 /// `t_max`): the shadow ray's test, stopping at the first occluder found.
 pub(super) fn occluded(scene: &Scene, geo: &Geometry, o: DVec3, dir: DVec3, t_max: f64) -> bool {
-    scene.objects.iter().zip(&geo.inverses).any(|(obj, inv)| {
+    let inv_dir = dir.recip();
+    scene.objects.iter().zip(&geo.inverses).zip(&geo.boxes).any(|((obj, inv), b)| {
+        if !may_meet(b, o, inv_dir, t_max) {
+            return false;
+        }
         let (lo, ld) = (inv.transform_point3(o), inv.transform_vector3(dir));
         match obj.shape {
             Shape::Mesh(m) => scene.meshes.get(m).zip(geo.bvhs.get(m)).is_some_and(|(mesh, bvh)| {

@@ -285,3 +285,38 @@ fn a_reference_traced_in_steps_is_the_same_image() {
     assert_eq!(stepped.hidden, whole.hidden);
     assert_eq!(stepped.unshadowed, whole.unshadowed);
 }
+
+/// The objects' world boxes lose no hit: every shape, turned and stretched, and a mesh, met by
+/// rays from all around and from inside, give the same nearest hit and the same occlusion with
+/// the boxes as with boxes that admit every ray.
+#[test]
+fn the_objects_boxes_lose_no_hit() {
+    let shapes = [Shape::Sphere, Shape::Cube, Shape::Cylinder, Shape::Pyramid, Shape::Plane, Shape::Mesh(0)];
+    let mut objects = Vec::new();
+    for (k, &shape) in shapes.iter().enumerate() {
+        let at = DVec3::new(k as f64 - 2.5, 0.6 + 0.1 * k as f64, 0.3 * (k % 2) as f64);
+        let mut o = object("shape", shape, at, DVec3::new(0.4, 0.7, 0.25));
+        o.transform.rotation_y = 0.4 * k as f64;
+        objects.push(o);
+    }
+    let mut scene = stage(objects, vec![]);
+    scene.meshes = vec![TriangleMesh::from_soup("ball", &triangles(Shape::Sphere, 12), None)].into();
+    let geo = Geometry::new(&scene);
+    let open = Geometry { boxes: vec![(DVec3::NEG_INFINITY, DVec3::INFINITY); geo.boxes.len()], ..Geometry::new(&scene) };
+    let mut rng = path::Rng::new(7, 0, 0);
+    let mut unit = || 2.0 * rng.uniform() - 1.0;
+    let (mut hits, mut blocked) = (0, 0);
+    for _ in 0..20_000 {
+        let o = DVec3::new(4.0 * unit(), 1.0 + 1.5 * unit(), 2.0 * unit());
+        let dir = DVec3::new(unit(), unit(), unit());
+        let t_max = 3.0 * (unit() + 1.0);
+        let (a, b) = (intersect::trace(&scene, &geo, o, dir), intersect::trace(&scene, &open, o, dir));
+        assert_eq!(a.as_ref().map(|h| (h.object, h.point)), b.as_ref().map(|h| (h.object, h.point)), "{o} {dir}");
+        hits += usize::from(a.is_some());
+        let occluded = intersect::occluded(&scene, &geo, o, dir, t_max);
+        assert_eq!(occluded, intersect::occluded(&scene, &open, o, dir, t_max), "{o} {dir} {t_max}");
+        blocked += usize::from(occluded);
+    }
+    // The rays must meet things for the comparison to mean anything.
+    assert!(hits > 5_000 && blocked > 5_000, "{hits} hits, {blocked} blocked");
+}

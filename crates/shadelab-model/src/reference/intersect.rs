@@ -7,12 +7,15 @@ use crate::lighting::common::safe_normalize;
 use crate::lighting::transmission::{CUBE_PLANES, PYRAMID_PLANES};
 use crate::mesh::{TriangleMesh, face_normal};
 use crate::scene::{Scene, Shape};
-use glam::{DMat4, DVec3};
+use glam::{DMat3, DMat4, DVec3};
 
 /// What a ray needs beside the scene: each object's inverse transform, its box in the world and
 /// each mesh's hierarchy, made once per image.
 pub(crate) struct Geometry {
     pub inverses: Vec<DMat4>,
+    /// Each object's transform and the matrix that carries its normals, built once rather than
+    /// at every hit.
+    pub to_world: Vec<(DMat4, DMat3)>,
     /// Each object's world box, grown by [`BOX_PAD_REL`]: a ray that misses it misses the object,
     /// so [`trace`] and [`occluded`] move it into object space only when it meets the box.
     pub boxes: Vec<(DVec3, DVec3)>,
@@ -23,6 +26,7 @@ impl Geometry {
     pub fn new(scene: &Scene) -> Geometry {
         Geometry {
             inverses: scene.objects.iter().map(|o| o.transform.matrix().inverse()).collect(),
+            to_world: scene.objects.iter().map(|o| (o.transform.matrix(), o.transform.normal_matrix())).collect(),
             boxes: scene.objects.iter().map(|o| world_box(scene, o)).collect(),
             bvhs: scene.meshes.iter().map(Bvh::build).collect(),
         }
@@ -313,8 +317,8 @@ pub(super) fn trace(scene: &Scene, geo: &Geometry, o: DVec3, dir: DVec3) -> Opti
         }
     }
     best.map(|(t, i, n, face, uv, vertex_color, tangent, triangle)| {
-        let to_world = scene.objects[i].transform.normal_matrix();
-        let tw = scene.objects[i].transform.matrix().transform_vector3(DVec3::new(tangent[0], tangent[1], tangent[2]));
+        let (matrix, to_world) = geo.to_world[i];
+        let tw = matrix.transform_vector3(DVec3::new(tangent[0], tangent[1], tangent[2]));
         SurfaceHit {
             object: i,
             point: o + dir * t,
@@ -342,7 +346,7 @@ pub(super) fn glass_exit(scene: &Scene, geo: &Geometry, i: usize, o: DVec3, dir:
         }
         shape => crate::lighting::transmission::shape_exit(shape.exit_code(), lo, ld)?,
     };
-    let normal = safe_normalize(obj.transform.normal_matrix() * n, dir);
+    let normal = safe_normalize(geo.to_world[i].1 * n, dir);
     Some((o + dir * t, normal))
 }
 

@@ -467,7 +467,8 @@ impl Context<'_> {
     /// parameters in a copy of its material (`tinted`, made once per image, not per pixel), or
     /// `material` when given (the glass surface's own); its emission added. With `sampler`, each
     /// area light's term is one random point's estimate of its integral (`area_term_sampled`, the
-    /// path tracer's bounces), under the sampler's weight, instead of the refined integral.
+    /// path tracer's bounces), under the sampler's weight, instead of the refined integral, and
+    /// the unshadowed light is not computed (it is `lit`).
     pub(crate) fn shade_hit(
         &self,
         hit: &intersect::SurfaceHit,
@@ -566,7 +567,8 @@ impl Context<'_> {
             &mut exact,
         );
         let hidden = hidden.get();
-        let unshadowed = if hidden == 0 && !dimmed.get() {
+        // A path's vertex keeps only its lit light: no image without cast shadows is made of it.
+        let unshadowed = if (hidden == 0 && !dimmed.get()) || sampler.is_some() {
             lit
         } else {
             let kept = clear.get();

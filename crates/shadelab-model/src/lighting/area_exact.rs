@@ -111,7 +111,7 @@ pub fn area_term_exact(a: &AreaAt, visible: Option<&dyn Fn(DVec3, DVec3) -> bool
     }
     let e_d = closed.unwrap_or(d);
     let scale = d2 / emitting;
-    let (mat, radiance) = (a.mat, a.sample.radiance);
+    let (mat, radiance) = (a.mat, a.radiance);
     let term = |sd: f64, ss: f64| -> [f64; 3] {
         std::array::from_fn(|c| radiance[c] * scale * (mat.r_d * mat.color[c] * e_d * sd + mat.r_s * s[c] * ss))
     };
@@ -148,7 +148,7 @@ pub fn area_term_sampled(
     } else {
         [0.0; 3]
     };
-    let (scale, mat, radiance) = (d2 / emitting * weight(l, 1.0 / w), a.mat, a.sample.radiance);
+    let (scale, mat, radiance) = (d2 / emitting * weight(l, 1.0 / w), a.mat, a.radiance);
     let clear: [f64; 3] =
         std::array::from_fn(|c| radiance[c] * scale * (mat.r_d * mat.color[c] * dd + mat.r_s * spec[c]));
     let seen = visible.is_none_or(|v| clear == [0.0; 3] || v(a.p, x));
@@ -174,7 +174,7 @@ mod tests {
     ) -> AreaAt<'a> {
         let v_index = mat.mu.map(crate::lighting::microfacet::fresnel_v_from_mu);
         let specular = SpecularModel::CookTorrance;
-        AreaAt { index: 0, light, sample: s, p: DVec3::ZERO, n: DVec3::Z, v, mat, v_index, ms_e: 1.0, specular }
+        AreaAt { index: 0, light, radiance: s.radiance, p: DVec3::ZERO, n: DVec3::Z, v, mat, v_index, ms_e: 1.0, specular }
     }
 
     fn rect_light(size: [f64; 2]) -> Light {

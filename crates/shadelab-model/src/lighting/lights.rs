@@ -439,17 +439,13 @@ pub fn window_range(d: f64, range: f64) -> f64 {
     1.0 - x2 * x2
 }
 
-/// Direction to a light (unit), its incident intensity `I_L` per channel, and the diffuse and
-/// specular factors at point `p` with unit normal `n`, seen along unit `v`, roughness `m` (read
-/// by area lights only). A light with a position closer than `LIGHT_DIST_MIN` touches the
-/// surface: `L = N`. An area light is its centre's point light (the same falloff at the distance
-/// to its centre) with `N·L` replaced by the exact area form and the specular taken at its
-/// representative point.
-pub fn light_sample(light: &Light, p: DVec3, n: DVec3, v: DVec3, m: f64) -> LightSample {
+/// The light's radiance at `p` with unit normal `n` ([`light_sample`]'s `radiance`): its colour
+/// times intensity, times its falloff, range window and cone at the distance and direction of
+/// its position (a directional light's is constant).
+pub fn light_radiance_at(light: &Light, p: DVec3, n: DVec3) -> [f64; 3] {
     let radiance = light.radiance();
     if light.kind.is_directional() {
-        let l = safe_normalize(-light.direction, n);
-        return LightSample { l, radiance, form: n.dot(l), spec_scale: 1.0, ltc: None };
+        return radiance;
     }
     let to_light = light.position - p;
     let d = to_light.length();
@@ -465,7 +461,24 @@ pub fn light_sample(light: &Light, p: DVec3, n: DVec3, v: DVec3, m: f64) -> Ligh
         let (cos_inner, cos_outer) = light.cone_cosines();
         f *= spot_cone((-l).dot(light.spot_axis()), cos_inner, cos_outer);
     }
-    let radiance = radiance.map(|r| r * f);
+    radiance.map(|r| r * f)
+}
+
+/// Direction to a light (unit), its incident intensity `I_L` per channel, and the diffuse and
+/// specular factors at point `p` with unit normal `n`, seen along unit `v`, roughness `m` (read
+/// by area lights only). A light with a position closer than `LIGHT_DIST_MIN` touches the
+/// surface: `L = N`. An area light is its centre's point light (the same falloff at the distance
+/// to its centre) with `N·L` replaced by the exact area form and the specular taken at its
+/// representative point.
+pub fn light_sample(light: &Light, p: DVec3, n: DVec3, v: DVec3, m: f64) -> LightSample {
+    let radiance = light_radiance_at(light, p, n);
+    if light.kind.is_directional() {
+        let l = safe_normalize(-light.direction, n);
+        return LightSample { l, radiance, form: n.dot(l), spec_scale: 1.0, ltc: None };
+    }
+    let to_light = light.position - p;
+    let d = to_light.length();
+    let l = if d > LIGHT_DIST_MIN { to_light / d } else { n };
     match light.area_light().filter(|_| light.area_points == 0) {
         Some(area) => {
             let (l, spec_scale) = area_specular_point(&area, p, n, v, m);

@@ -7,7 +7,7 @@ use super::area_points::{area_emitter, area_point_count, area_point_sample};
 use super::brdf::{SpecularModel, fresnel_v_from_mu, light_contribution};
 use super::common::safe_normalize;
 use super::environment::{ShCoefficients, env_sh_radiance, env_specular};
-use super::lights::{AreaSpecular, Light, LightSample, MAX_LIGHTS, light_sample};
+use super::lights::{AreaSpecular, Light, LightSample, MAX_LIGHTS, light_radiance_at, light_sample};
 use super::microfacet::Microfacet;
 use super::models::{IlluminationModel, lambert_rule_fill, lambert_rule_lit, sum_contribution, transmitted_term};
 use crate::scene::Material;
@@ -64,8 +64,8 @@ pub struct AreaAt<'a> {
     /// The light's index and the light.
     pub index: usize,
     pub light: &'a Light,
-    /// Its sample (the GPU's representative point), for its incident intensity and form.
-    pub sample: &'a LightSample,
+    /// Its radiance at the point (`LightSample.radiance`: intensity, falloff, window, cone).
+    pub radiance: [f64; 3],
     pub p: DVec3,
     /// Unit shading normal and unit view vector.
     pub n: DVec3,
@@ -129,6 +129,18 @@ pub fn shade_exact(
     // The Lambert rule's I: the brightest light at the point, per channel, in [0, 1].
     let mut i_max = [0.0f64; 3];
     for (k, light) in lights.iter().take(MAX_LIGHTS).enumerate() {
+        // An area light's exact term needs only its radiance here: the representative point and
+        // the form are computed only where the exact term declines.
+        if model == IlluminationModel::Phong && light.kind.is_area() && !light.drawn_as_points() {
+            let radiance = light_radiance_at(light, p, n);
+            let area = AreaAt { index: k, light, radiance, p, n, v, mat, v_index, ms_e, specular };
+            if let Some(lit) = exact(&area) {
+                for i in 0..3 {
+                    total[i] += lit[i];
+                }
+                continue;
+            }
+        }
         let base = area_ltc_sample(light_sample(light, p, n, v, mat.m), light, p, n, v, mat.m, mat.microfacet);
         // An area light drawn as k point sources is k samples, each with its own visibility.
         for j in 0..area_point_count(light) {
@@ -137,15 +149,6 @@ pub fn shade_exact(
             } else {
                 base
             };
-            if model == IlluminationModel::Phong && light.kind.is_area() && !light.drawn_as_points() {
-                let area = AreaAt { index: k, light, sample: &s, p, n, v, mat, v_index, ms_e, specular };
-                if let Some(lit) = exact(&area) {
-                    for i in 0..3 {
-                        total[i] += lit[i];
-                    }
-                    continue;
-                }
-            }
             let lit = model_term(model, &s, j, n, v, mat, v_index, ms_e, specular, &mut i_max, &mut total);
             if lit == [0.0; 3] {
                 continue;

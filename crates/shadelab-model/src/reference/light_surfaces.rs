@@ -97,6 +97,6 @@ pub(super) fn light_radiance(light: &Light, p: DVec3) -> Option<[f64; 3]> {
         return None;
     }
     // The radiance at the centre's distance, with its falloff, range and cone (no area term).
-    let at = crate::lighting::lights::light_sample(light, p, DVec3::Z, DVec3::Z, 0.0).radiance;
+    let at = crate::lighting::lights::light_radiance_at(light, p, DVec3::Z);
     Some(at.map(|r| std::f64::consts::PI * r * d2 / emitting))
 }

@@ -142,14 +142,14 @@ def blocks(img, k=8):
     return img[: h // k * k, : w // k * k].reshape(h // k, k, w // k, k, c).mean(axis=(1, 3))
 
 
-def timing(binary, size, spp, bounces):
+def timing(binary, size, spp, bounces, variants):
     """Each renderer's time and noise on the box at the same paths, in one run: Mitsuba's scalar_rgb
     and llvm_ad_rgb (after a warm-up render that compiles its kernels), shadelab's path tracer.
     The noise is two seeds' RMS difference over sqrt(2), on the compared pixels; the time to
     shadelab's noise scales each time by (its noise / shadelab's)^2, as noise falls as 1/sqrt(paths)."""
     keep = interior(size)
     rows = []
-    for variant in ["scalar_rgb", "llvm_ad_rgb"]:
+    for variant in variants:
         try:
             mi.set_variant(variant)
         except Exception as e:  # a variant this build of Mitsuba lacks
@@ -192,10 +192,12 @@ def main():
                     help="the light's surface in Mitsuba: black (absorbs, as shadelab's) or null (passes light)")
     ap.add_argument("--timing", action="store_true",
                     help="time both renderers at the same paths (--size, --spp, the first --bounces) and at equal noise")
+    ap.add_argument("--variants", nargs="+", default=["scalar_rgb", "llvm_ad_rgb"],
+                    help="Mitsuba's variants --timing runs (an LLVM that cannot compile for this CPU aborts the process)")
     ap.add_argument("--write", metavar="DIR", help="only write Mitsuba's images, mitsuba-cornell-N.exr, N per --bounces")
     args = ap.parse_args()
     if args.timing:
-        timing(args.shadelab, args.size, args.spp, args.bounces[0])
+        timing(args.shadelab, args.size, args.spp, args.bounces[0], args.variants)
         return 0
     if args.write:
         for bounces in args.bounces:

@@ -524,7 +524,11 @@ impl Context<'_> {
                 }
                 None => area_term_exact(a, shadow)?,
             };
-            self.area_error.fetch_max(term.error.max(0.0).to_bits(), Ordering::Relaxed);
+            // Only a positive error can raise the largest; skipping the rest keeps the threads
+            // off the shared atomic at every path vertex, whose sampled terms have none.
+            if term.error > 0.0 {
+                self.area_error.fetch_max(term.error.to_bits(), Ordering::Relaxed);
+            }
             let mut kept = clear.get();
             kept[a.index] = Some(term.clear);
             clear.set(kept);

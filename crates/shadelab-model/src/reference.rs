@@ -312,15 +312,25 @@ fn trace_rows(
         let ctx = |scene| Context { scene, geo, rays, specular, exact, env, env_use, area_error: Default::default() };
         (p, [ctx(one), ctx(zero)])
     });
-    // Rows on every core, each into its own buffer, appended in order: the same image as one
-    // thread would trace.
+    // Spans of rows on every core, each into its own buffer, appended in order: the same image
+    // as one thread would trace.
     let (width, height) = (img.width, img.height);
-    let traced: Vec<RowPixels> = rows
+    let spans: Vec<Span> = rows
+        .flat_map(|y| {
+            (0..width.div_ceil(SPAN_PIXELS)).map(move |s| Span {
+                y,
+                xs: s * SPAN_PIXELS..((s + 1) * SPAN_PIXELS).min(width),
+                width,
+                height,
+            })
+        })
+        .collect();
+    let traced: Vec<RowPixels> = spans
         .into_par_iter()
-        .map(|y| {
-            let mut row = trace_row(&ctx, y, width, height);
+        .map(|span| {
+            let mut row = trace_row(&ctx, &span);
             if let Some((paths, unit)) = &unit_ctx {
-                path::add_paths(&ctx, unit, paths, y, width, height, &mut row);
+                path::add_paths(&ctx, unit, paths, &span, &mut row);
             }
             row
         })
@@ -338,7 +348,20 @@ fn trace_rows(
     img.area_error = img.area_error.max(f64::from_bits(ctx.area_error.load(Ordering::Relaxed)));
 }
 
-/// One row's pixels, as [`ReferenceImage`] holds them.
+/// Pixels a unit of the reference's parallel work spans: rows are cut into pieces this wide, so
+/// that a step of a few rows (the progress bar's fiftieth of an image) still keeps every core
+/// busy; whole rows left one of two threads idle a third of the time on 3 rows a step.
+const SPAN_PIXELS: u32 = 32;
+
+/// Pixels `xs` of row `y` of a `width × height` image: one unit of the parallel work.
+struct Span {
+    y: u32,
+    xs: std::ops::Range<u32>,
+    width: u32,
+    height: u32,
+}
+
+/// One span's pixels, as [`ReferenceImage`] holds them.
 #[derive(Default)]
 struct RowPixels {
     pixels: Vec<[f64; 3]>,
@@ -351,12 +374,13 @@ struct RowPixels {
     fireflies: usize,
 }
 
-/// Row `y` of a `width × height` image, traced in `ctx`.
-fn trace_row(ctx: &Context, y: u32, width: u32, height: u32) -> RowPixels {
+/// The pixels of `span`, traced in `ctx`.
+fn trace_row(ctx: &Context, span: &Span) -> RowPixels {
     let (scene, geo) = (ctx.scene, ctx.geo);
+    let Span { y, width, height, .. } = *span;
     let mut img = RowPixels::default();
     let mut tinted: Vec<Material> = scene.materials.clone();
-    for x in 0..width {
+    for x in span.xs.clone() {
         let (o, dir) = scene.camera.ray(x, y, width, height);
         let Some(hit) = trace(scene, geo, o, dir) else {
             let background = ctx.env_background(dir).unwrap_or_else(|| scene.background.unwrap_or([0.0; 3]));

@@ -12,7 +12,7 @@
 use super::glass::{Leaves, Tracer};
 use super::intersect::{SurfaceHit, trace};
 use super::light_surfaces::{LightHit, light_hit, light_radiance};
-use super::{Context, Shaded};
+use super::{Context, Shaded, Span};
 use crate::Light;
 use crate::lighting::common::safe_normalize;
 use crate::lighting::shading::{ShadePoint, shade_exact};
@@ -147,7 +147,7 @@ pub(crate) struct Sampler<'a> {
     pub weight: &'a dyn Fn(DVec3, f64) -> f64,
 }
 
-/// One row's indirect light: its mean per pixel, the standard error of that mean, and the pixels
+/// One span's indirect light: its mean per pixel, the standard error of that mean, and the pixels
 /// with a firefly.
 #[derive(Default)]
 pub(super) struct RowIndirect {
@@ -394,12 +394,13 @@ fn model_term_towards(ctx: &Context, p: DVec3, n: DVec3, from: DVec3, mat: &Mate
     shade_exact(&at, std::slice::from_ref(&probe), |_, _, _, _| 1.0, &mut |_| None)
 }
 
-/// Row `y`'s indirect light, `paths.spp` paths a pixel, each pixel with its own random numbers.
-fn indirect_row(ctx: &Context, paths: &PathSettings, y: u32, width: u32, height: u32) -> RowIndirect {
+/// The span's indirect light, `paths.spp` paths a pixel, each pixel with its own random numbers.
+fn indirect_row(ctx: &Context, paths: &PathSettings, span: &Span) -> RowIndirect {
+    let Span { y, width, height, .. } = *span;
     let mut row = RowIndirect::default();
     let eye = ctx.scene.camera.eye_h();
     let tinted = RefCell::new(ctx.scene.materials.clone());
-    for x in 0..width {
+    for x in span.xs.clone() {
         let rng = RefCell::new(Rng::new(paths.seed, x, y));
         let (o, dir) = ctx.scene.camera.ray(x, y, width, height);
         let Some(hit) = trace(ctx.scene, ctx.geo, o, dir) else {
@@ -444,22 +445,20 @@ fn indirect_row(ctx: &Context, paths: &PathSettings, y: u32, width: u32, height:
     row
 }
 
-/// Row `y` of a path-traced image: `row`, the exact direct light without ambient, gains the
-/// indirect light with its noise, and the constant ambient per unit of `I_a` (the row traced in
+/// A span of a path-traced image: `row`, the exact direct light without ambient, gains the
+/// indirect light with its noise, and the constant ambient per unit of `I_a` (the span traced in
 /// `unit`'s scenes without lights, at `I_a = 1` less at `I_a = 0`).
 pub(super) fn add_paths(
     ctx: &Context,
     [one, zero]: &[Context; 2],
     paths: &PathSettings,
-    y: u32,
-    width: u32,
-    height: u32,
+    span: &Span,
     row: &mut super::RowPixels,
 ) {
-    let (with_one, with_zero) = (super::trace_row(one, y, width, height), super::trace_row(zero, y, width, height));
+    let (with_one, with_zero) = (super::trace_row(one, span), super::trace_row(zero, span));
     row.per_ambient =
         with_one.pixels.iter().zip(&with_zero.pixels).map(|(u, d)| std::array::from_fn(|i| u[i] - d[i])).collect();
-    let more = indirect_row(ctx, paths, y, width, height);
+    let more = indirect_row(ctx, paths, span);
     // The indirect light is the same with and without the direct light's cast shadows.
     for (k, m) in more.light.iter().enumerate() {
         for i in 0..3 {
@@ -470,21 +469,21 @@ pub(super) fn add_paths(
     row.indirect = more.light;
     row.std_error = more.std_error;
     row.fireflies = more.fireflies;
-    lights_seen(ctx, y, width, height, row);
+    lights_seen(ctx, span, row);
 }
 
 /// The camera's rays that meet an area light before any surface see the light: its front's
 /// radiance ([`light_radiance`]), its back black. The truth's picture shows its lights as a
 /// physical renderer's does; the exact image's (the GPU's twin's) sees through them.
-fn lights_seen(ctx: &Context, y: u32, width: u32, height: u32, row: &mut super::RowPixels) {
-    for x in 0..width {
-        let (o, dir) = ctx.scene.camera.ray(x, y, width, height);
+fn lights_seen(ctx: &Context, span: &Span, row: &mut super::RowPixels) {
+    for x in span.xs.clone() {
+        let (o, dir) = ctx.scene.camera.ray(x, span.y, span.width, span.height);
         let Some(h) = light_hit(ctx.scene, o, dir) else { continue };
         if trace(ctx.scene, ctx.geo, o, dir).is_some_and(|s| (s.point - o).length() < h.t) {
             continue;
         }
         let seen = if h.front { light_radiance(&ctx.scene.lights[h.light], o).unwrap_or([0.0; 3]) } else { [0.0; 3] };
-        let k = x as usize;
+        let k = (x - span.xs.start) as usize;
         (row.pixels[k], row.unshadowed[k]) = (seen, seen);
         (row.indirect[k], row.std_error[k], row.per_ambient[k]) = ([0.0; 3], [0.0; 3], [0.0; 3]);
     }

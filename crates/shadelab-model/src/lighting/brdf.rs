@@ -173,7 +173,10 @@ pub fn light_contribution(
         return [0.0; 3];
     }
     // An area light's LTC replaces the lobe at its representative point under Cook–Torrance.
+    // Without a specular (r_s = 0) the lobe is multiplied away and not evaluated: the WGSL
+    // multiplies it by 0, the same wherever it is finite, which the stability sweep holds.
     let (spec, scale) = match s.ltc.filter(|_| specular == SpecularModel::CookTorrance) {
+        _ if mat.r_s == 0.0 => ([0.0; 3], 0.0),
         Some(ltc) => (super::ltc::specular_ltc(n, v, s.l, v_index, mat.microfacet, ms_e, ltc), 1.0),
         None => (light_specular(s.l, n, v, mat, v_index, specular, ms_e), s.spec_scale),
     };

@@ -174,7 +174,18 @@ mod tests {
     ) -> AreaAt<'a> {
         let v_index = mat.mu.map(crate::lighting::microfacet::fresnel_v_from_mu);
         let specular = SpecularModel::CookTorrance;
-        AreaAt { index: 0, light, radiance: s.radiance, p: DVec3::ZERO, n: DVec3::Z, v, mat, v_index, ms_e: 1.0, specular }
+        AreaAt {
+            index: 0,
+            light,
+            radiance: s.radiance,
+            p: DVec3::ZERO,
+            n: DVec3::Z,
+            v,
+            mat,
+            v_index,
+            ms_e: 1.0,
+            specular,
+        }
     }
 
     fn rect_light(size: [f64; 2]) -> Light {

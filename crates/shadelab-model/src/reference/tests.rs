@@ -302,7 +302,8 @@ fn the_objects_boxes_lose_no_hit() {
     let mut scene = stage(objects, vec![]);
     scene.meshes = vec![TriangleMesh::from_soup("ball", &triangles(Shape::Sphere, 12), None)].into();
     let geo = Geometry::new(&scene);
-    let open = Geometry { boxes: vec![(DVec3::NEG_INFINITY, DVec3::INFINITY); geo.boxes.len()], ..Geometry::new(&scene) };
+    let open =
+        Geometry { boxes: vec![(DVec3::NEG_INFINITY, DVec3::INFINITY); geo.boxes.len()], ..Geometry::new(&scene) };
     let mut rng = path::Rng::new(7, 0, 0);
     let mut unit = || 2.0 * rng.uniform() - 1.0;
     let (mut hits, mut blocked) = (0, 0);

@@ -26,13 +26,20 @@ fn a_small_area_light_is_a_point_light_and_the_panel_says_why() {
     assert!(h.query_by_label(&lines[0]).is_none());
 }
 
+/// The viewer with `overrides` applied to its scene and the first light's section (`label`)
+/// opened in the panel.
+fn with_first_light_open(overrides: &Overrides, label: &str) -> crate::harness::ViewerHarness {
+    let mut h = harness_of_height(900.0);
+    h.state_mut().scene_mut().apply(overrides);
+    h.run_steps(2);
+    click(&mut h, label);
+    h
+}
+
 #[test]
 fn a_light_as_point_sources_has_its_slider_and_draws() {
-    let mut h = harness_of_height(900.0);
     let points = Overrides { light: Some(LightKind::Disk), area_points: Some(4), ..Default::default() };
-    h.state_mut().scene_mut().apply(&points);
-    h.run_steps(2);
-    click(&mut h, "L1 — disk");
+    let mut h = with_first_light_open(&points, "L1 — disk");
     assert!(h.query_all_by_label("points k (0 = exact)").next().is_some(), "the light's section has the k slider");
     assert!(h.state().message().is_none_or(|(_, error)| !error), "{:?}", h.state().message());
     let shot = h.render().expect("render");
@@ -41,11 +48,8 @@ fn a_light_as_point_sources_has_its_slider_and_draws() {
 
 #[test]
 fn the_light_panels_ltc_choice_redraws_the_highlight() {
-    let mut h = harness_of_height(900.0);
     let rect = Overrides { light: Some(LightKind::Rect), light_size: Some(1.0), ..Default::default() };
-    h.state_mut().scene_mut().apply(&rect);
-    h.run_steps(2);
-    click(&mut h, "L1 — rect");
+    let mut h = with_first_light_open(&rect, "L1 — rect");
     let before = h.render().expect("render");
     click(&mut h, "LTC");
     h.run_steps(2);

@@ -306,10 +306,15 @@ fn trace_rows(
 ) {
     let rays = ShadowRays::new(scene, geo);
     let env_use = if paths.is_some() { EnvUse::Traced } else { EnvUse::Sh };
-    let ctx = Context { scene, geo, rays: &rays, specular, exact, env, env_use, area_error: Default::default() };
+    let areas = |scene: &Scene| scene.lights.iter().map(Light::area_light).collect();
+    let area_error = AtomicU64::default();
+    let ctx = Context { scene, geo, rays: &rays, specular, exact, env, env_use, area_error, areas: areas(scene) };
     let unit_rays = paths.map(|(_, [unit, _])| ShadowRays::new(unit, geo));
     let unit_ctx = paths.zip(unit_rays.as_ref()).map(|((p, [one, zero]), rays)| {
-        let ctx = |scene| Context { scene, geo, rays, specular, exact, env, env_use, area_error: Default::default() };
+        let ctx = |scene| {
+            let area_error = AtomicU64::default();
+            Context { scene, geo, rays, specular, exact, env, env_use, area_error, areas: areas(scene) }
+        };
         (p, [ctx(one), ctx(zero)])
     });
     // Spans of rows on every core, each into its own buffer, appended in order: the same image
@@ -438,6 +443,9 @@ struct Context<'a> {
     pub env_use: EnvUse,
     /// The bits of a non-negative f64, whose order is theirs as integers.
     pub area_error: AtomicU64,
+    /// Each of the scene's lights' surface (`Light::area_light`), made once for every ray that
+    /// may meet one.
+    pub areas: Vec<Option<crate::lighting::area::AreaLight>>,
 }
 
 /// How a [`Context`] treats the environment light.

@@ -259,6 +259,7 @@ mod tests {
                         env: None,
                         env_use: super::super::EnvUse::Sh,
                         area_error: Default::default(),
+                        areas: Vec::new(),
                     };
                     for k in 0..200 {
                         // Rays from a sphere of radius 4 around the object, aimed at points inside it.

@@ -6,7 +6,6 @@
 
 use crate::Light;
 use crate::lighting::area::{AreaLight, AreaShape};
-use crate::scene::Scene;
 use glam::DVec3;
 use std::f64::consts::TAU;
 
@@ -23,12 +22,13 @@ pub(super) struct LightHit {
     pub density: f64,
 }
 
-/// The nearest area light the unit ray from `o` along `dir` meets, if any.
-pub(super) fn light_hit(scene: &Scene, o: DVec3, dir: DVec3) -> Option<LightHit> {
+/// The nearest area light the unit ray from `o` along `dir` meets, if any, of the scene's
+/// lights' surfaces `areas` (`Light::area_light` of each).
+pub(super) fn light_hit(areas: &[Option<AreaLight>], o: DVec3, dir: DVec3) -> Option<LightHit> {
     let mut best: Option<LightHit> = None;
-    for (i, light) in scene.lights.iter().enumerate() {
-        let Some(area) = light.area_light() else { continue };
-        if let Some(hit) = meet(&area, o, dir, i)
+    for (i, area) in areas.iter().enumerate() {
+        let Some(area) = area else { continue };
+        if let Some(hit) = meet(area, o, dir, i)
             && best.as_ref().is_none_or(|b| hit.t < b.t)
         {
             best = Some(hit);

@@ -275,8 +275,9 @@ fn indirect_at(
         let (w, p_env) = env.sample(u3, u4);
         if w.dot(n) >= PATH_COS_MIN && p_env > 0.0 {
             let term = model_term_towards(ctx, p, n_in, from, mat, w);
-            let clear =
-                |w: DVec3| trace(scene, ctx.geo, origin(w), w).is_none() && light_hit(scene, origin(w), w).is_none();
+            let clear = |w: DVec3| {
+                trace(scene, ctx.geo, origin(w), w).is_none() && light_hit(&ctx.areas, origin(w), w).is_none()
+            };
             if term != [0.0; 3] && clear(w) {
                 let weight = power_heuristic(p_env, bounce.density(w));
                 let l = env.radiance(w);
@@ -299,7 +300,7 @@ fn indirect_at(
     }
     let o = origin(w);
     let next = trace(scene, ctx.geo, o, w);
-    let met = light_hit(scene, o, w).filter(|h| next.as_ref().is_none_or(|s| h.t < (s.point - o).length()));
+    let met = light_hit(&ctx.areas, o, w).filter(|h| next.as_ref().is_none_or(|s| h.t < (s.point - o).length()));
     let incoming = match (met, next) {
         (Some(h), _) if leaves.whole => return add(out, light_met(ctx, &h, p, term, density)),
         (Some(_), _) => return out,
@@ -478,7 +479,7 @@ pub(super) fn add_paths(
 fn lights_seen(ctx: &Context, span: &Span, row: &mut super::RowPixels) {
     for x in span.xs.clone() {
         let (o, dir) = ctx.scene.camera.ray(x, span.y, span.width, span.height);
-        let Some(h) = light_hit(ctx.scene, o, dir) else { continue };
+        let Some(h) = light_hit(&ctx.areas, o, dir) else { continue };
         if trace(ctx.scene, ctx.geo, o, dir).is_some_and(|s| (s.point - o).length() < h.t) {
             continue;
         }

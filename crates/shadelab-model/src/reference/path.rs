@@ -150,7 +150,7 @@ pub(crate) struct Sampler<'a> {
 /// One span's indirect light: its mean per pixel, the standard error of that mean, and the pixels
 /// with a firefly.
 #[derive(Default)]
-pub(super) struct RowIndirect {
+pub(super) struct SpanIndirect {
     pub light: Vec<[f64; 3]>,
     pub std_error: Vec<[f64; 3]>,
     pub fireflies: usize,
@@ -396,9 +396,9 @@ fn model_term_towards(ctx: &Context, p: DVec3, n: DVec3, from: DVec3, mat: &Mate
 }
 
 /// The span's indirect light, `paths.spp` paths a pixel, each pixel with its own random numbers.
-fn indirect_row(ctx: &Context, paths: &PathSettings, span: &Span) -> RowIndirect {
+fn indirect_span(ctx: &Context, paths: &PathSettings, span: &Span) -> SpanIndirect {
     let Span { y, width, height, .. } = *span;
-    let mut row = RowIndirect::default();
+    let mut row = SpanIndirect::default();
     let eye = ctx.scene.camera.eye_h();
     let tinted = RefCell::new(ctx.scene.materials.clone());
     for x in span.xs.clone() {
@@ -454,12 +454,12 @@ pub(super) fn add_paths(
     [one, zero]: &[Context; 2],
     paths: &PathSettings,
     span: &Span,
-    row: &mut super::RowPixels,
+    row: &mut super::SpanPixels,
 ) {
-    let (with_one, with_zero) = (super::trace_row(one, span), super::trace_row(zero, span));
+    let (with_one, with_zero) = (super::trace_span(one, span), super::trace_span(zero, span));
     row.per_ambient =
         with_one.pixels.iter().zip(&with_zero.pixels).map(|(u, d)| std::array::from_fn(|i| u[i] - d[i])).collect();
-    let more = indirect_row(ctx, paths, span);
+    let more = indirect_span(ctx, paths, span);
     // The indirect light is the same with and without the direct light's cast shadows.
     for (k, m) in more.light.iter().enumerate() {
         for i in 0..3 {
@@ -476,7 +476,7 @@ pub(super) fn add_paths(
 /// The camera's rays that meet an area light before any surface see the light: its front's
 /// radiance ([`light_radiance`]), its back black. The truth's picture shows its lights as a
 /// physical renderer's does; the exact image's (the GPU's twin's) sees through them.
-fn lights_seen(ctx: &Context, span: &Span, row: &mut super::RowPixels) {
+fn lights_seen(ctx: &Context, span: &Span, row: &mut super::SpanPixels) {
     for x in span.xs.clone() {
         let (o, dir) = ctx.scene.camera.ray(x, span.y, span.width, span.height);
         let Some(h) = light_hit(&ctx.areas, o, dir) else { continue };

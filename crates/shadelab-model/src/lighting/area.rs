@@ -411,7 +411,7 @@ pub fn area_irradiance_quadrature(
 
 /// The light's cells that `p` sees: for each, the unit direction `l` to it and its weight
 /// cos θ_l ΔA / r² (what a point light's I/d² becomes), front faces only, visible only.
-fn seen_cells<'a>(
+pub(crate) fn seen_cells<'a>(
     light: &AreaLight,
     p: DVec3,
     k: usize,
@@ -463,31 +463,6 @@ pub fn area_irradiance_reference(
     let coarse = area_irradiance_quadrature(light, p, n, k, visible);
     let fine = area_irradiance_quadrature(light, p, n, 2 * k.max(1), visible);
     (fine, (fine - coarse).abs())
-}
-
-/// What the light adds to the Cook–Torrance specular term at `p` (unit normal `n`, unit view
-/// vector `v`), per channel and per unit radiance: Σ cos θ_l⁺ ΔA / r² · S(l) over `k`×`k`
-/// cells, where S is `specular_cook_torrance` (π ρ_s (N·L), the scale a point light of intensity
-/// I multiplies by I/d²). The reference at large `k`, the chapter's point sources at small `k`.
-#[allow(clippy::too_many_arguments)]
-pub fn specular_area_quadrature(
-    light: &AreaLight,
-    p: DVec3,
-    n: DVec3,
-    v: DVec3,
-    m: f64,
-    v_index: [f64; 3],
-    k: usize,
-    visible: &dyn Fn(DVec3, DVec3) -> bool,
-) -> [f64; 3] {
-    let mut sum = [0.0; 3];
-    for (l, weight) in seen_cells(light, p, k, visible) {
-        let s = super::brdf::specular_cook_torrance(n, v, l, m, v_index);
-        for (c, sc) in sum.iter_mut().zip(s) {
-            *c += sc * weight;
-        }
-    }
-    sum
 }
 
 /// The representative point of `light` for the specular term at `p` (unit normal `n`, unit view
@@ -553,24 +528,6 @@ pub fn clamp_to_shape(light: &AreaLight, local: DVec3) -> DVec3 {
         }
         AreaShape::Sphere { .. } => local,
     }
-}
-
-/// The representative-point Cook–Torrance specular per unit radiance, for comparison with
-/// [`specular_area_quadrature`]: [`area_specular_point`]'s direction and scale times the centre's
-/// point light `A_emit/d²` (the unit-radiance light seen from afar). docs/area-lights.md measures
-/// it.
-pub fn specular_representative_point(
-    light: &AreaLight,
-    p: DVec3,
-    n: DVec3,
-    v: DVec3,
-    m: f64,
-    v_index: [f64; 3],
-) -> [f64; 3] {
-    let d2 = (light.center - p).length_squared().max(LIGHT_DIST_MIN * LIGHT_DIST_MIN);
-    let (l, scale) = area_specular_point(light, p, n, v, m);
-    let k = scale * light.emitting_area() / d2;
-    super::brdf::specular_cook_torrance(n, v, l, m, v_index).map(|s| s * k)
 }
 
 #[cfg(test)]

@@ -4,8 +4,8 @@
 //! over the light's equal-area cells, refined until two refinements agree, and each part is
 //! shadowed by its own share of the light that reaches the point.
 
-use super::area::{AreaLight, area_irradiance_exact, front_cells, random_cell};
-use super::brdf::{diffuse_weight, diffuse_weighted, light_specular};
+use super::area::{AreaLight, area_irradiance_exact, area_specular_point, front_cells, random_cell, seen_cells};
+use super::brdf::{diffuse_weight, diffuse_weighted, light_specular, specular_cook_torrance};
 use super::shading::AreaAt;
 use crate::guards::LIGHT_DIST_MIN;
 use glam::DVec3;
@@ -156,10 +156,52 @@ pub fn area_term_sampled(
     Some(AreaTerm { lit, clear, error: 0.0, cells: 1, diffuse_share: if seen { 1.0 } else { 0.0 } })
 }
 
+/// What the light adds to the Cook–Torrance specular term at `p` (unit normal `n`, unit view
+/// vector `v`), per channel and per unit radiance: Σ cos θ_l⁺ ΔA / r² · S(l) over `k`×`k`
+/// cells, where S is `specular_cook_torrance` (π ρ_s (N·L), the scale a point light of intensity
+/// I multiplies by I/d²). The reference at large `k`, the chapter's point sources at small `k`.
+#[allow(clippy::too_many_arguments)]
+pub fn specular_area_quadrature(
+    light: &AreaLight,
+    p: DVec3,
+    n: DVec3,
+    v: DVec3,
+    m: f64,
+    v_index: [f64; 3],
+    k: usize,
+    visible: &dyn Fn(DVec3, DVec3) -> bool,
+) -> [f64; 3] {
+    let mut sum = [0.0; 3];
+    for (l, weight) in seen_cells(light, p, k, visible) {
+        let s = specular_cook_torrance(n, v, l, m, v_index);
+        for (c, sc) in sum.iter_mut().zip(s) {
+            *c += sc * weight;
+        }
+    }
+    sum
+}
+
+/// The representative-point Cook–Torrance specular per unit radiance, for comparison with
+/// [`specular_area_quadrature`]: [`area_specular_point`]'s direction and scale times the centre's
+/// point light `A_emit/d²` (the unit-radiance light seen from afar). docs/area-lights.md measures
+/// it.
+pub fn specular_representative_point(
+    light: &AreaLight,
+    p: DVec3,
+    n: DVec3,
+    v: DVec3,
+    m: f64,
+    v_index: [f64; 3],
+) -> [f64; 3] {
+    let d2 = (light.center - p).length_squared().max(LIGHT_DIST_MIN * LIGHT_DIST_MIN);
+    let (l, scale) = area_specular_point(light, p, n, v, m);
+    let k = scale * light.emitting_area() / d2;
+    specular_cook_torrance(n, v, l, m, v_index).map(|s| s * k)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::lighting::area::specular_area_quadrature;
     use crate::lighting::brdf::light_contribution;
     use crate::lighting::lights::{Light, LightKind, light_sample};
     use crate::params::SpecularModel;

@@ -2,6 +2,7 @@
 //! cases (docs/area-lights.md).
 
 use super::*;
+use crate::lighting::area_exact::{specular_area_quadrature, specular_representative_point};
 use crate::shadows::penumbra_width;
 
 fn clear(_: DVec3, _: DVec3) -> bool {

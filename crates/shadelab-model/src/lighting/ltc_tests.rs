@@ -1,9 +1,8 @@
 //! The LTC specular against the integral it stands for, its identities, and its hard cases.
 
 use super::*;
-use crate::lighting::area::{
-    AreaLight, AreaShape, specular_area_quadrature, specular_representative_point, sphere_irradiance,
-};
+use crate::lighting::area::{AreaLight, AreaShape, sphere_irradiance};
+use crate::lighting::area_exact::{specular_area_quadrature, specular_representative_point};
 use crate::lighting::microfacet::Microfacet;
 use crate::lighting::ms_table::ms_albedo;
 

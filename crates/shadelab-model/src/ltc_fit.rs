@@ -303,15 +303,16 @@ pub fn fit_table(d: Distribution) -> Vec<[f64; 4]> {
 /// The Rust source of `lighting/ltc_table.rs` for `tables` ([`fit_tables`]), as `shadelab
 /// fit-ltc --write` writes it: each node's entry in f32, one node a line.
 pub fn table_source(tables: &[Vec<[f64; 4]>]) -> String {
+    let nodes: usize = tables.iter().map(Vec::len).sum();
     let mut s = String::from(
         "//! The LTC table (docs/area-lights.md), written by `shadelab fit-ltc --write` from the fit in\n\
          //! `crates/shadelab-model/src/ltc_fit.rs`; not edited by hand. Per D in `Distribution::ALL`'s\n\
          //! order, `LTC_TABLE_SIDE²` nodes, row j (m = (j/15)²) by column i (N·V = 1 − (i/15)²): `M⁻¹`\n\
-         //! divided by its middle element, `[a, b, c, d]` of its rows `(a, 0, b)`, `(0, 1, 0)`, `(c, 0, d)`.\n\n\
-         use super::ltc::LTC_TABLE_VEC4S;\n\n\
-         #[rustfmt::skip]\n\
-         pub const LTC_TABLE: [[f32; 4]; LTC_TABLE_VEC4S] = [\n",
+         //! divided by its middle element, `[a, b, c, d]` of its rows `(a, 0, b)`, `(0, 1, 0)`, `(c, 0, d)`.\n\
+         //! Its length is the fit's; `ltc.rs` holds it equal to `LTC_TABLE_VEC4S` when it compiles.\n\n\
+         #[rustfmt::skip]\n",
     );
+    s += &format!("pub const LTC_TABLE: [[f32; 4]; {nodes}] = [\n");
     for table in tables {
         for e in table {
             let f = e.map(|x| x as f32);

@@ -20,6 +20,9 @@ use std::f64::consts::PI;
 pub const LTC_TABLE_SIDE: usize = 16;
 /// vec4 slots of `tables.ltc` (WGSL `LTC_TABLE_VEC4S`, generated): one node a slot, every D's.
 pub const LTC_TABLE_VEC4S: usize = Distribution::ALL.len() * LTC_TABLE_SIDE * LTC_TABLE_SIDE;
+// The generated table has a node for every D's every node: a D added without a refit stops the
+// build here.
+const _: () = assert!(super::ltc_table::LTC_TABLE.len() == LTC_TABLE_VEC4S, "refit: shadelab fit-ltc --write");
 
 /// `N·V` at column `i`.
 pub fn ltc_node_n_dot_v(i: usize) -> f64 {

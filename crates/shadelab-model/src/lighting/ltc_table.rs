@@ -2,11 +2,10 @@
 //! `crates/shadelab-model/src/ltc_fit.rs`; not edited by hand. Per D in `Distribution::ALL`'s
 //! order, `LTC_TABLE_SIDE²` nodes, row j (m = (j/15)²) by column i (N·V = 1 − (i/15)²): `M⁻¹`
 //! divided by its middle element, `[a, b, c, d]` of its rows `(a, 0, b)`, `(0, 1, 0)`, `(c, 0, d)`.
-
-use super::ltc::LTC_TABLE_VEC4S;
+//! Its length is the fit's; `ltc.rs` holds it equal to `LTC_TABLE_VEC4S` when it compiles.
 
 #[rustfmt::skip]
-pub const LTC_TABLE: [[f32; 4]; LTC_TABLE_VEC4S] = [
+pub const LTC_TABLE: [[f32; 4]; 768] = [
     [1.0, 0.0, 0.0, 0.01850838],
     [0.99112326, 0.0937567, -0.0017262211, 0.018345015],
     [0.9647665, 0.18438563, -0.0034231774, 0.017854214],

@@ -193,34 +193,38 @@ fn every_permutation_validates_in_naga() {
     }
     // Keys whose effects are nested in an effect that is off preprocess to the same source:
     // each distinct source (with the two entry points a key decides) is validated once, which
-    // checks what every key would. Sources are compared by hash, so they need not all be held.
-    let mut seen = HashSet::new();
-    let distinct: Vec<EffectKey> = keys
-        .into_iter()
-        .filter(|&key| {
-            let mut hasher = std::collections::hash_map::DefaultHasher::new();
-            std::hash::Hash::hash(&lighting_source_for(&raw, key).unwrap(), &mut hasher);
-            let decided = (key.has(Effect::Transmission), key.has(Effect::EnvironmentBackground));
-            seen.insert((std::hash::Hasher::finish(&hasher), decided))
-        })
-        .collect();
-    // On every core: parsing and validating each module is most of the suite's longest test.
-    let threads = std::thread::available_parallelism().map_or(1, |n| n.get());
-    let chunk = distinct.len().div_ceil(threads).max(1);
+    // checks what every key would. Sources are compared by hash, so they need not all be held;
+    // the keys are preprocessed and hashed on every core, in order.
     let raw = &raw;
-    std::thread::scope(|scope| {
-        for part in distinct.chunks(chunk) {
-            scope.spawn(move || {
-                for &key in part {
-                    permutation_is_valid(key, &lighting_source_for(raw, key).unwrap());
-                }
-            });
-        }
+    let hashed = on_every_core(&keys, |key| {
+        let mut hasher = std::collections::hash_map::DefaultHasher::new();
+        std::hash::Hash::hash(&lighting_source_for(raw, key).unwrap(), &mut hasher);
+        let decided = (key.has(Effect::Transmission), key.has(Effect::EnvironmentBackground));
+        (std::hash::Hasher::finish(&hasher), decided)
     });
+    let mut seen = HashSet::new();
+    let distinct: Vec<EffectKey> =
+        keys.into_iter().zip(hashed).filter(|(_, h)| seen.insert(*h)).map(|(k, _)| k).collect();
+    // On every core: parsing and validating each module is most of the suite's longest test.
+    on_every_core(&distinct, |key| permutation_is_valid(key, &lighting_source_for(raw, key).unwrap()));
     // The terms alone, and the sweep's compute module, are valid too.
     validate(&parse(&terms_source()));
     validate(&parse(&sweep_source()));
     validate(&parse(&crate::sweep::environment::env_sweep_source()));
+}
+
+/// `f` of every key, the keys cut into one run a core, the results in the keys' order.
+fn on_every_core<T: Send>(keys: &[EffectKey], f: impl Fn(EffectKey) -> T + Sync) -> Vec<T> {
+    let threads = std::thread::available_parallelism().map_or(1, |n| n.get());
+    let chunk = keys.len().div_ceil(threads).max(1);
+    let f = &f;
+    std::thread::scope(|scope| {
+        let parts: Vec<_> = keys
+            .chunks(chunk)
+            .map(|part| scope.spawn(move || part.iter().map(|&k| f(k)).collect::<Vec<T>>()))
+            .collect();
+        parts.into_iter().flat_map(|p| p.join().expect("a permutation's check panicked")).collect()
+    })
 }
 
 /// `src`, the lighting module of `key`, parses and validates, and holds the entry points of every

@@ -443,9 +443,15 @@ pub fn window_range(d: f64, range: f64) -> f64 {
 /// times intensity, times its falloff, range window and cone at the distance and direction of
 /// its position (a directional light's is constant).
 pub fn light_radiance_at(light: &Light, p: DVec3, n: DVec3) -> [f64; 3] {
+    incident(light, p, n).0
+}
+
+/// The light's radiance at `p` and the unit direction to it (to its position, `n` within
+/// `LIGHT_DIST_MIN`; against a directional light's direction).
+fn incident(light: &Light, p: DVec3, n: DVec3) -> ([f64; 3], DVec3) {
     let radiance = light.radiance();
     if light.kind.is_directional() {
-        return radiance;
+        return (radiance, safe_normalize(-light.direction, n));
     }
     let to_light = light.position - p;
     let d = to_light.length();
@@ -461,7 +467,7 @@ pub fn light_radiance_at(light: &Light, p: DVec3, n: DVec3) -> [f64; 3] {
         let (cos_inner, cos_outer) = light.cone_cosines();
         f *= spot_cone((-l).dot(light.spot_axis()), cos_inner, cos_outer);
     }
-    radiance.map(|r| r * f)
+    (radiance.map(|r| r * f), l)
 }
 
 /// Direction to a light (unit), its incident intensity `I_L` per channel, and the diffuse and
@@ -471,14 +477,10 @@ pub fn light_radiance_at(light: &Light, p: DVec3, n: DVec3) -> [f64; 3] {
 /// to its centre) with `N·L` replaced by the exact area form and the specular taken at its
 /// representative point.
 pub fn light_sample(light: &Light, p: DVec3, n: DVec3, v: DVec3, m: f64) -> LightSample {
-    let radiance = light_radiance_at(light, p, n);
+    let (radiance, l) = incident(light, p, n);
     if light.kind.is_directional() {
-        let l = safe_normalize(-light.direction, n);
         return LightSample { l, radiance, form: n.dot(l), spec_scale: 1.0, ltc: None };
     }
-    let to_light = light.position - p;
-    let d = to_light.length();
-    let l = if d > LIGHT_DIST_MIN { to_light / d } else { n };
     match light.area_light().filter(|_| light.area_points == 0) {
         Some(area) => {
             let (l, spec_scale) = area_specular_point(&area, p, n, v, m);

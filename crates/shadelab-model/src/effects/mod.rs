@@ -5,6 +5,7 @@
 //! pipeline per set ([`EffectKey`]), whose shader holds only those effects.
 
 mod analyze;
+mod declaration;
 mod declared;
 mod effect;
 mod key;

@@ -125,7 +125,7 @@ fn against_exact(drawn: &ReferenceImage, exact: &ReferenceImage) -> (f64, f64, f
 /// figures are docs/area-lights.md's.
 #[test]
 fn the_specular_methods_against_the_exact_integral() {
-    let (w, h) = (240, 135);
+    let (w, h) = (160, 90);
     for (kind, size) in [(LightKind::Rect, [1.2, 0.8]), (LightKind::Disk, [1.1055; 2])] {
         let mut base = single_shape_scene("sphere", Shape::Sphere, 256);
         base.set_shadows(false);

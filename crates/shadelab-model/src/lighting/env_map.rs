@@ -176,6 +176,23 @@ impl Environment {
     /// [`PREFILTER_SOURCE`]-wide grid weighed by the lobe `cos^h` about the texel's direction,
     /// `h` from `m_k` by the project's one h-from-m rule (the lobe Beckmann's D is as wide as).
     pub fn prefiltered(&self, lights: &[super::lights::Light]) -> Vec<[f32; 4]> {
+        let key = (self.clone(), sun_of(lights));
+        let mut recent = RECENT_PREFILTERED.lock().unwrap_or_else(|e| e.into_inner());
+        if let Some(i) = recent.iter().position(|(k, _)| *k == key) {
+            let hit = recent.remove(i);
+            recent.insert(0, hit);
+            return recent[0].1.clone();
+        }
+        drop(recent);
+        let levels = self.prefilter(lights);
+        let mut recent = RECENT_PREFILTERED.lock().unwrap_or_else(|e| e.into_inner());
+        recent.insert(0, (key, levels.clone()));
+        recent.truncate(RECENT_PREFILTERED_KEPT);
+        levels
+    }
+
+    /// [`Self::prefiltered`], computed.
+    fn prefilter(&self, lights: &[super::lights::Light]) -> Vec<[f32; 4]> {
         use super::environment::{ENV_LEVELS, env_level_size};
         use rayon::prelude::*;
         let (radiance, turn) = self.radiance(lights);
@@ -213,9 +230,7 @@ impl Environment {
         let radiance = match &self.source {
             EnvSource::Uniform(c) => Radiance::Uniform(c.map(|x| x.max(0.0) * scale)),
             EnvSource::Sky { turbidity, sun } => {
-                let toward = sun.unwrap_or_else(|| {
-                    lights.iter().find(|l| l.kind.is_directional()).map_or(DVec3::Y, |l| -l.direction)
-                });
+                let toward = sun.or_else(|| sun_of(lights)).unwrap_or(DVec3::Y);
                 // The sky turns with the rest of the environment; the sun given in world axes.
                 Radiance::Sky(Sky::new(*turbidity, turn_y(toward, -turn)), scale)
             }
@@ -224,6 +239,19 @@ impl Environment {
         (radiance, turn)
     }
 }
+
+/// Toward the sun a sky without its own follows: against the scene's first directional light.
+fn sun_of(lights: &[super::lights::Light]) -> Option<DVec3> {
+    lights.iter().find(|l| l.kind.is_directional()).map(|l| -l.direction)
+}
+
+/// The environments last prefiltered, newest first, with the sun they followed and their levels.
+/// A bench, a test or the viewer shades one environment many times, and each prefilter weighs
+/// every source cell for every texel; prefiltering is pure, so a kept result is the same levels.
+type Prefiltered = ((Environment, Option<DVec3>), Vec<[f32; 4]>);
+static RECENT_PREFILTERED: std::sync::Mutex<Vec<Prefiltered>> = std::sync::Mutex::new(Vec::new());
+/// How many [`RECENT_PREFILTERED`] keeps: a study alternates between a few environments.
+const RECENT_PREFILTERED_KEPT: usize = 4;
 
 /// `v` clamped into `range`; a NaN is its minimum. The scene's checks refuse such values with a
 /// message before here; the clamp keeps a value set in code from reaching the sums.
@@ -541,5 +569,21 @@ mod tests {
         assert_eq!(still.radiance(d), [9.0; 3]);
         assert_eq!(turned.radiance(d), [0.0; 3]);
         assert_eq!(turned.radiance(turn_y(d, 90f64.to_radians())), [9.0; 3]);
+    }
+
+    /// A kept prefilter is the one computed anew, and a sky that follows the sun is prefiltered
+    /// again when the sun moves (the sun is part of what a result is kept for).
+    #[test]
+    fn kept_prefilters_follow_the_sun() {
+        use crate::lighting::lights::Light;
+        let sky = Environment::new(EnvSource::Sky { turbidity: 3.0, sun: None });
+        let sun = |d: DVec3| [Light::directional(d.normalize(), [1.0; 3], 1.0)];
+        let (low, high) = (sun(DVec3::new(1.0, -0.3, 0.2)), sun(DVec3::new(0.1, -1.0, 0.0)));
+        let first = sky.prefiltered(&low);
+        assert_eq!(first, sky.prefilter(&low));
+        let moved = sky.prefiltered(&high);
+        assert_eq!(moved, sky.prefilter(&high));
+        assert_ne!(first, moved);
+        assert_eq!(sky.prefiltered(&low), first);
     }
 }

@@ -380,7 +380,9 @@ const tests = {
 
   // A 10 MB file parses in slices between frames: the viewer counts the frames it drew while
   // the parse ran (a parse in one frame draws none), and the model opens. On SwiftShader a frame
-  // takes hundreds of ms, so each frame's share of the parse is near its 250 ms most.
+  // takes hundreds of ms, so each frame's share of the parse is near its 250 ms most, and the
+  // parse (about 170 ms of slices) may end in the frame after its first: how many frames it
+  // spans depends on the machine's frame time, not on the code.
   async a_ten_megabyte_file_parses_while_frames_keep_coming() {
     fs.mkdirSync(path.join(SITE, "models"), { recursive: true });
     const file = path.join(SITE, "models/grid.glb");
@@ -395,7 +397,7 @@ const tests = {
       + `${l.frames_during_parse} frames drawn meanwhile, a frame held at most ${l.longest_hold_ms.toFixed(0)} ms; `
       + `uploaded in ${l.upload_ms.toFixed(0)} ms`);
     // The frame that ends the parse is not counted: a parse in one frame counts none.
-    check(l.frames_during_parse >= 2, `only ${l.frames_during_parse} frames drawn during the parse`);
+    check(l.frames_during_parse >= 1, `no frame drawn during the parse`);
     check(l.slices >= 12, `${l.slices} slices`);
     await shootView(page, "grid-10mb");
     noConsoleErrors(page);

@@ -2,7 +2,7 @@
 //! the sky takes I_amb's place and changes the image, its occlusion and split sum are switched,
 //! its specular is shown alone, and "none" gives I_amb back.
 
-use crate::harness::{ViewerHarness, changed_view_pixels, click, harness, scroll_click};
+use crate::harness::{ViewerHarness, changed_view_pixels, click, harness, scroll_click, scroll_to};
 use egui_kittest::kittest::Queryable;
 use shadelab_model::lighting::env_map::EnvSource;
 
@@ -29,8 +29,7 @@ fn the_sky_replaces_the_ambient_and_none_gives_it_back() {
     let changed = changed_view_pixels(&before, &after);
     assert!(changed > 2000, "only {changed} pixels of the view changed");
     // The occlusion darkens the contacts; the split sum's checkbox takes the specular away.
-    h.get_by_label("occlusion (precomputed grid)").scroll_to_me();
-    h.run_steps(3);
+    scroll_to(&mut h, "occlusion (precomputed grid)");
     h.get_by_label("occlusion (precomputed grid)").click();
     h.run_steps(3);
     assert!(h.state_mut().scene_mut().environment.as_ref().is_some_and(|e| e.occlusion));
@@ -43,8 +42,7 @@ fn the_sky_replaces_the_ambient_and_none_gives_it_back() {
     let changed = changed_view_pixels(&occluded, &env_specular);
     assert!(changed > 20000, "the environment's specular alone changed only {changed} pixels");
     click(&mut h, "all");
-    h.get_by_label("specular (split sum)").scroll_to_me();
-    h.run_steps(3);
+    scroll_to(&mut h, "specular (split sum)");
     h.get_by_label("specular (split sum)").click();
     h.run_steps(3);
     assert!(h.state_mut().scene_mut().environment.as_ref().is_some_and(|e| !e.specular));

@@ -78,12 +78,38 @@ pub fn click(h: &mut ViewerHarness, label: &str) {
     h.run_steps(3);
 }
 
-/// Scrolls the widget labelled `label` into view, runs the 20 frames of the animated scroll, then
-/// clicks it as [`click`] does.
+/// Scrolls the widget labelled `label` into view ([`scroll_to`]), then clicks it as [`click`] does.
 pub fn scroll_click(h: &mut ViewerHarness, label: &str) {
-    h.get_by_label(label).scroll_to_me();
-    h.run_steps(20);
+    scroll_to(h, label);
     click(h, label);
+}
+
+/// Scrolls the widget labelled `label` into view and runs frames until it stands still.
+pub fn scroll_to(h: &mut ViewerHarness, label: &str) {
+    h.get_by_label(label).scroll_to_me();
+    until_still(h, |h| h.get_by_label(label).rect());
+}
+
+/// [`scroll_to`] for the widget whose label contains `part`.
+pub fn scroll_to_containing(h: &mut ViewerHarness, part: &str) {
+    h.get_by_label_contains(part).scroll_to_me();
+    until_still(h, |h| h.get_by_label_contains(part).rect());
+}
+
+/// Frames until `rect` (a widget's place) is the same in three frames running: a scroll has
+/// ended. At most the 20 frames of the longest scroll, each drawing the scene.
+fn until_still(h: &mut ViewerHarness, rect: impl Fn(&ViewerHarness) -> egui::Rect) {
+    let mut places = Vec::new();
+    while places.len() < 20 {
+        h.run_steps(1);
+        places.push(rect(h));
+        if let [.., a, b, c] = places[..]
+            && a == b
+            && b == c
+        {
+            return;
+        }
+    }
 }
 
 /// Saves a frame under the test build's temporary folder (target/tmp/`name`), kept for a look.

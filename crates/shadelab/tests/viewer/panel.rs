@@ -2,7 +2,8 @@
 
 use crate::common;
 use crate::harness::{
-    ViewerHarness, changed_view_pixels, click, harness, keep_for_a_look, orbit, run_until, scroll_click, wait_loaded,
+    ViewerHarness, changed_view_pixels, click, harness, keep_for_a_look, orbit, run_until, scroll_click,
+    scroll_to_containing, wait_loaded,
 };
 use egui_kittest::kittest::Queryable;
 use shadelab_model::{ShadingMode, SpecularModel};
@@ -37,8 +38,7 @@ fn the_terms_section_switches_each_term_live() {
     use shadelab_model::lighting::microfacet::{Distribution, Microfacet};
     let mut h = harness();
     let before = h.render().expect("render");
-    h.get_by_label_contains("Cook–Torrance terms").scroll_to_me();
-    h.run_steps(20);
+    scroll_to_containing(&mut h, "Cook–Torrance terms");
     h.get_by_label_contains("Cook–Torrance terms").click();
     h.run_steps(3);
     click(&mut h, "all gltf");
@@ -302,7 +302,7 @@ fn a_files_cameras_are_offered_in_a_menu() {
 fn a_light_can_become_a_spot_light_in_the_panel() {
     let mut h = harness();
     let before = h.render().expect("render");
-    // Below the panel's fold: scroll to it first (the scroll is animated).
+    // Below the panel's fold: scroll to it first.
     scroll_click(&mut h, "L2 — point");
     let shown = |h: &ViewerHarness, label: &str| h.query_all_by_label(label).next().is_some();
     assert!(!shown(&h, "outer cone °"));
@@ -325,7 +325,7 @@ fn a_lights_casts_shadows_box_switches_its_shadows() {
     // Collapsed sections show no shadow controls.
     assert!(h.query_by_label("casts shadows").is_none());
     scroll_click(&mut h, "L1 — directional");
-    // The box may be below the panel's fold: scroll to it first (the scroll is animated).
+    // The box may be below the panel's fold: scroll to it first.
     scroll_click(&mut h, "casts shadows");
     let after = h.state_mut().scene_mut().lights.clone();
     assert!(!after[0].shadow.casts, "the box did not switch L1's shadows off");

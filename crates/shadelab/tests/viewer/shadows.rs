@@ -1,7 +1,7 @@
 //! The viewer's shadow views, driven by egui_kittest on lavapipe: a light's shadow map shown in
 //! its panel section, and the difference view's shadow error map with its shares.
 
-use crate::harness::{click, harness, keep_for_a_look, run_until, scroll_click};
+use crate::harness::{click, harness, keep_for_a_look, run_until, scroll_click, scroll_to};
 use egui_kittest::kittest::Queryable;
 use shadelab_model::shadows::SHADOW_RESOLUTION;
 
@@ -16,9 +16,8 @@ fn the_show_shadow_map_box_shows_l1s_map_in_its_section() {
     // The light's header may be below the panel's fold: scroll to it first.
     scroll_click(&mut h, "L1 — directional");
     assert_eq!(h.state().shadow_map_shown(0), None);
-    // The box is below the panel's fold: scroll to it first (the scroll is animated).
-    h.get_by_label("show shadow map").scroll_to_me();
-    h.run_steps(20);
+    // The box is below the panel's fold: scroll to it first.
+    scroll_to(&mut h, "show shadow map");
     h.get_by_label("show shadow map").click();
     let [w, hgt] = run_until(&mut h, "shadow map", 90, |v| v.shadow_map_shown(0));
     let asked = h.state_mut().scene_mut().lights[0].shadow.resolution as usize;
@@ -55,13 +54,12 @@ fn the_shadow_error_map_reports_a_small_disagreement_on_the_default_scene() {
 #[test]
 fn a_point_lights_map_shows_a_cube_face_with_a_face_menu() {
     let mut h = harness();
-    // Below the panel's fold: scroll to it first (the scroll is animated).
+    // Below the panel's fold: scroll to it first.
     scroll_click(&mut h, "L2 — point");
     h.state_mut().set_shadow_map_view(1, true);
     let [w, hgt] = run_until(&mut h, "cube face", 90, |v| v.shadow_map_shown(1));
     assert_eq!(w, hgt);
-    h.get_by_label("show shadow map").scroll_to_me();
-    h.run_steps(20);
+    scroll_to(&mut h, "show shadow map");
     assert!(h.query_by_value("face +x").is_some(), "the point light's map has a face menu");
 }
 
@@ -83,8 +81,7 @@ fn a_directional_lights_cascades_have_a_menu() {
     scroll_click(&mut h, "L1 — directional");
     h.state_mut().set_shadow_map_view(0, true);
     run_until(&mut h, "first cascade", 90, |v| v.shadow_map_shown(0));
-    h.get_by_label("show shadow map").scroll_to_me();
-    h.run_steps(20);
+    scroll_to(&mut h, "show shadow map");
     assert!(h.query_by_value("cascade 1").is_some(), "the sun's map has a cascade menu");
     h.get_by_value("cascade 1").click();
     h.run_steps(2);

@@ -8,7 +8,7 @@ use anyhow::Context;
 use shadelab_model::reference::{PathSettings, ReferenceImage, ReferenceJob};
 use shadelab_model::terms::{Term, shadow_factor};
 use shadelab_render::image_error::{compare_images, reference_image};
-use shadelab_render::{Gpu, LinearImage, RenderSettings};
+use shadelab_render::{LinearImage, RenderSettings};
 use std::io::{IsTerminal, Write};
 
 /// Which reference a scene under an environment light gets, in one line (`None` without one):
@@ -91,8 +91,8 @@ fn reference_of(r: &ReferenceImage, term: Term) -> LinearImage {
     LinearImage { width: r.width, height: r.height, pixels }
 }
 
+/// `render --reference` (the CPU's alone) or `--difference` (which opens the GPU for its side).
 pub fn run(
-    gpu: &Gpu,
     scene: &shadelab_model::Scene,
     size: (u32, u32),
     settings: &RenderSettings,
@@ -117,10 +117,11 @@ pub fn run(
         save(&reference, &args.output, kind).with_context(|| format!("writing {}", args.output.display()))?;
         return Ok(());
     }
+    let gpu = crate::render::open_gpu()?;
     let image = if args.term == Term::Shadow {
-        shadelab_render::render_shadow_factor(gpu, scene, size, settings)
+        shadelab_render::render_shadow_factor(&gpu, scene, size, settings)
     } else {
-        shadelab_render::render_image(gpu, scene, size.0, size.1, settings)
+        shadelab_render::render_image(&gpu, scene, size.0, size.1, settings)
     }
     .map_err(|e| Failure::Usage(e.to_string()))?;
     let cmp = compare_images(&image, &reference);

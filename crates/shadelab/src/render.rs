@@ -80,13 +80,12 @@ pub fn run(args: &cli::RenderArgs) -> Result<(), Failure> {
         // The f64 reference alone: no GPU.
         return crate::ambient_views::run(&scene, (width, height), &settings, args, kind);
     }
-    let gpu = Gpu::headless(AdapterChoice::from_env()).context("opening a GPU adapter")?;
-    log::info!("adapter: {}", gpu.describe());
+    if (args.reference || args.difference) && !args.interpolation_difference {
+        return crate::reference_views::run(&scene, (width, height), &settings, args, kind);
+    }
+    let gpu = open_gpu()?;
     if args.interpolation_difference {
         return interpolation_difference(&gpu, &scene, (width, height), &settings, &args.output);
-    }
-    if args.reference || args.difference {
-        return crate::reference_views::run(&gpu, &scene, (width, height), &settings, args, kind);
     }
     let image = if factor {
         shadelab_render::render_shadow_factor(&gpu, &scene, (width, height), &settings)
@@ -102,6 +101,14 @@ pub fn run(args: &cli::RenderArgs) -> Result<(), Failure> {
         log::warn!("{bad} pixels are not finite");
     }
     Ok(())
+}
+
+/// The adapter `render` draws with (`SHADELAB_ADAPTER`'s choice), opened only where a GPU image
+/// is made: the reference alone is the CPU's.
+pub(crate) fn open_gpu() -> Result<Gpu, Failure> {
+    let gpu = Gpu::headless(AdapterChoice::from_env()).context("opening a GPU adapter")?;
+    log::info!("adapter: {}", gpu.describe());
+    Ok(gpu)
 }
 
 /// The scene, settings and term `render` draws: the flags', or with `--link` the link's (its

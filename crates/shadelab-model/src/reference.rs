@@ -418,7 +418,11 @@ impl Context<'_> {
                     };
                     area_term_sampled(a, shadow, uw, sampler.weight)?
                 }
-                None => area_term_exact(a, shadow)?,
+                None => match (shadow, a.light.area_light()) {
+                    // Many cells from one point: only the objects near the segments are tested.
+                    (Some(_), Some(area)) => area_term_exact(a, Some(&rays.cells_visible_from(ng, a.p, &area)))?,
+                    _ => area_term_exact(a, shadow)?,
+                },
             };
             // Only a positive error can raise the largest; skipping the rest keeps the threads
             // off the shared atomic at every path vertex, whose sampled terms have none.

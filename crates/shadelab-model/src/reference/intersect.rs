@@ -391,8 +391,22 @@ const RAY_PLANE_DENOM_MIN: f64 = 1e-12;
 /// Whether any object's surface crosses the world ray `o + t·dir` for `t` in (`RAY_T_MIN`,
 /// `t_max`): the shadow ray's test, stopping at the first occluder found.
 pub(super) fn occluded(scene: &Scene, geo: &Geometry, o: DVec3, dir: DVec3, t_max: f64) -> bool {
+    occluded_among(scene, geo, 0..scene.objects.len(), o, dir, t_max)
+}
+
+/// [`occluded`] among the objects `among` only (indices into the scene's objects): the same
+/// answer wherever the others cannot meet the segment.
+pub(super) fn occluded_among(
+    scene: &Scene,
+    geo: &Geometry,
+    among: impl IntoIterator<Item = usize>,
+    o: DVec3,
+    dir: DVec3,
+    t_max: f64,
+) -> bool {
     let inv_dir = dir.recip();
-    scene.objects.iter().zip(&geo.inverses).zip(&geo.boxes).any(|((obj, inv), b)| {
+    among.into_iter().any(|i| {
+        let (obj, inv, b) = (&scene.objects[i], &geo.inverses[i], &geo.boxes[i]);
         if !may_meet(b, o, inv_dir, t_max) {
             return false;
         }

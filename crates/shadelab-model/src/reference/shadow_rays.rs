@@ -2,9 +2,9 @@
 //! ray from it to the light crosses a surface. Exact hard shadows of point, spot and directional
 //! lights, against the analytic shapes and file meshes.
 
-use super::intersect::{Geometry, occluded};
+use super::intersect::{Geometry, occluded, occluded_among};
 use crate::guards::LIGHT_DIST_MIN;
-use crate::lighting::area::area_visible_share;
+use crate::lighting::area::{AreaLight, area_visible_share};
 use crate::lighting::lights::Light;
 use crate::scene::{Scene, Shape};
 use glam::DVec3;
@@ -113,14 +113,46 @@ impl<'a> ShadowRays<'a> {
     /// clear: `visible(from, x)`, the ray leaving and ending as in [`ShadowRays::hidden`].
     pub fn cell_visible(&self, ng: DVec3) -> impl Fn(DVec3, DVec3) -> bool + '_ {
         move |from: DVec3, x: DVec3| {
-            let to = x - from;
-            let side = if ng.dot(to) >= 0.0 { 1.0 } else { -1.0 };
-            let o = from + ng * (side * self.offset);
-            let to = x - o;
-            let d = to.length();
-            let end_offset = self.offset.max(SHADOW_RAY_OFFSET_REL * x.abs().max_element());
-            let t_max = d - end_offset;
-            !(t_max > 0.0 && occluded(self.scene, self.geo, o, to / d, t_max))
+            let (o, dir, t_max) = self.segment(ng, from, x);
+            !(t_max > 0.0 && occluded(self.scene, self.geo, o, dir, t_max))
         }
+    }
+
+    /// [`Self::cell_visible`] for segments from `p` to points of `light` alone, testing only the
+    /// objects whose world box meets the box that holds `p`, the light and every such segment:
+    /// the same answers, and none to test where the light is in the open. Worth it where many
+    /// cells are tested from one point (the exact area term).
+    pub fn cells_visible_from(&self, ng: DVec3, p: DVec3, light: &AreaLight) -> impl Fn(DVec3, DVec3) -> bool + '_ {
+        // Every point of the light lies within its area radius of its centre; a segment's start
+        // is off `p` by the offset. One more offset on every side covers their rounding.
+        let reach = DVec3::splat(light.area_radius());
+        let margin = DVec3::splat(2.0 * self.offset);
+        let lo = p.min(light.center - reach) - margin;
+        let hi = p.max(light.center + reach) + margin;
+        // A NaN bound compares false either way: its object stays.
+        let apart = |b: &(DVec3, DVec3)| b.1.cmplt(lo).any() || b.0.cmpgt(hi).any();
+        let among: Vec<usize> = (0..self.geo.boxes.len()).filter(|&i| !apart(&self.geo.boxes[i])).collect();
+        move |from: DVec3, x: DVec3| {
+            if from != p {
+                return self.cell_visible(ng)(from, x);
+            }
+            if among.is_empty() {
+                return true;
+            }
+            let (o, dir, t_max) = self.segment(ng, from, x);
+            !(t_max > 0.0 && occluded_among(self.scene, self.geo, among.iter().copied(), o, dir, t_max))
+        }
+    }
+
+    /// The shadow ray from `from` (geometric normal `ng`) to `x`: its start off the surface, its
+    /// unit direction and its length short of `x` by the offset there.
+    fn segment(&self, ng: DVec3, from: DVec3, x: DVec3) -> (DVec3, DVec3, f64) {
+        let to = x - from;
+        let side = if ng.dot(to) >= 0.0 { 1.0 } else { -1.0 };
+        let o = from + ng * (side * self.offset);
+        let to = x - o;
+        let d = to.length();
+        let end_offset = self.offset.max(SHADOW_RAY_OFFSET_REL * x.abs().max_element());
+        (o, to / d, d - end_offset)
     }
 }

@@ -143,9 +143,40 @@ fn convex_span(o: DVec3, dir: DVec3, planes: &[(DVec3, f64)]) -> Option<(f64, f6
     (t_in <= t_out).then_some((t_in, t_out, n_in))
 }
 
+/// [`convex_span`] of the unit cube, its planes `CUBE_PLANES` in their order with each plane's
+/// dot products read off one axis: `n·dir` is `±dir[a]` and `1 − n·o` is `1 ∓ o[a]`, the same
+/// values for a finite ray, without building the planes at every ray.
+fn cube_span(o: DVec3, dir: DVec3) -> Option<(f64, f64, DVec3)> {
+    let (mut t_in, mut t_out, mut n_in) = (f64::NEG_INFINITY, f64::INFINITY, DVec3::ZERO);
+    for (k, n) in CUBE_PLANES.into_iter().enumerate() {
+        let a = k / 2;
+        let (denom, dist) = if k % 2 == 0 { (dir[a], 1.0 - o[a]) } else { (-dir[a], 1.0 + o[a]) };
+        if denom.abs() < PARALLEL_DENOM_MIN {
+            if dist < 0.0 {
+                return None;
+            }
+            continue;
+        }
+        let t = dist / denom;
+        if denom < 0.0 {
+            if t > t_in {
+                t_in = t;
+                n_in = n;
+            }
+        } else if t < t_out {
+            t_out = t;
+        }
+    }
+    (t_in <= t_out).then_some((t_in, t_out, n_in))
+}
+
 /// Intersect a ray with a convex polyhedron from outside: its entry point.
 fn convex(o: DVec3, dir: DVec3, planes: &[(DVec3, f64)]) -> Option<Hit> {
-    let (t_in, _, n_in) = convex_span(o, dir, planes)?;
+    entry(convex_span(o, dir, planes)?)
+}
+
+/// The entry point of a convex shape's span along a ray, where it lies ahead.
+fn entry((t_in, _, n_in): (f64, f64, DVec3)) -> Option<Hit> {
     (t_in > RAY_T_MIN).then(|| (t_in, n_in.normalize()))
 }
 
@@ -203,7 +234,7 @@ pub(super) fn intersect_shape(shape: Shape, o: DVec3, dir: DVec3) -> Option<Hit>
             }
             best
         }
-        Shape::Cube => convex(o, dir, &faces(CUBE_PLANES)),
+        Shape::Cube => entry(cube_span(o, dir)?),
         Shape::Plane => {
             if dir.y == 0.0 {
                 return None;
@@ -224,7 +255,10 @@ fn first_crossing(shape: Shape, o: DVec3, dir: DVec3) -> Option<f64> {
         [t_in, t_out].into_iter().find(|&t| t > RAY_T_MIN)
     };
     match shape {
-        Shape::Cube => convex_crossing(&faces(CUBE_PLANES)),
+        Shape::Cube => {
+            let (t_in, t_out, _) = cube_span(o, dir)?;
+            [t_in, t_out].into_iter().find(|&t| t > RAY_T_MIN)
+        }
         Shape::Pyramid => convex_crossing(&faces(PYRAMID_PLANES)),
         // The sphere and cylinder tests take the exit when the entry is behind; the plane and
         // meshes have one crossing per surface.
@@ -444,6 +478,33 @@ mod tests {
                 let (t_hit, _) = hit.unwrap_or_else(|| panic!("{shape:?} triangle {k} missed"));
                 assert!((t_hit - 1.0).abs() < 0.01, "{shape:?} triangle {k}: t = {t_hit}");
             }
+        }
+    }
+
+    /// The cube's own span is the general convex span of its planes, bit for bit, for rays from
+    /// everywhere, those along an axis and those in a face's plane included.
+    #[test]
+    fn the_cubes_span_is_the_convex_span_of_its_planes() {
+        let mut seed = 7u64;
+        let mut next = move || {
+            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            (seed >> 11) as f64 / (1u64 << 53) as f64 * 6.0 - 3.0
+        };
+        let mut rays: Vec<(DVec3, DVec3)> =
+            (0..20_000).map(|_| (DVec3::new(next(), next(), next()), DVec3::new(next(), next(), next()))).collect();
+        rays.extend([
+            (DVec3::new(0.2, 3.0, -0.1), DVec3::NEG_Y),
+            (DVec3::new(1.0, 0.5, 3.0), DVec3::NEG_Z),
+            (DVec3::new(-2.0, 1.0, 1.0), DVec3::X),
+            (DVec3::new(0.0, 0.0, 0.0), DVec3::new(0.0, 1.0, 0.0)),
+        ]);
+        for (o, dir) in rays {
+            let general = convex_span(o, dir, &faces(CUBE_PLANES));
+            let own = cube_span(o, dir);
+            let bits = |s: Option<(f64, f64, DVec3)>| {
+                s.map(|(a, b, n)| (a.to_bits(), b.to_bits(), n.to_array().map(f64::to_bits)))
+            };
+            assert_eq!(bits(own), bits(general), "from {o} along {dir}");
         }
     }
 

@@ -66,12 +66,36 @@ fn world_box(scene: &Scene, obj: &crate::scene::Object) -> (DVec3, DVec3) {
 /// Whether the ray `o + t·dir` (`inv` = 1/dir per axis) may meet the box `b` for some `t` in
 /// `[0, t_max]`: false only where the slab test proves it apart, so a NaN lets the object's own
 /// test decide.
-fn may_meet(b: &(DVec3, DVec3), o: DVec3, inv: DVec3, t_max: f64) -> bool {
-    let (a, c) = ((b.0 - o) * inv, (b.1 - o) * inv);
+fn may_meet(b: &(DVec3, DVec3), o: DVec3, inv: SlabRay, t_max: f64) -> bool {
+    let (a, c) = ((b.0 - o) * inv.inv, (b.1 - o) * inv.inv);
+    if inv.finite {
+        // No product is NaN: plain comparisons decide as the NaN-aware min and max would.
+        let lt = |x: f64, y: f64| if x < y { x } else { y };
+        let gt = |x: f64, y: f64| if x > y { x } else { y };
+        let t0 = gt(gt(gt(lt(a.x, c.x), lt(a.y, c.y)), lt(a.z, c.z)), 0.0);
+        let t1 = lt(lt(lt(gt(a.x, c.x), gt(a.y, c.y)), gt(a.z, c.z)), t_max);
+        return !(t0 > t1);
+    }
     let (near, far) = (a.min(c), a.max(c));
     let t0 = near.x.max(near.y).max(near.z).max(0.0);
     let t1 = far.x.min(far.y).min(far.z).min(t_max);
     !(t0 > t1)
+}
+
+/// A ray's reciprocal direction for [`may_meet`], and whether it and the ray's start are finite:
+/// then a slab product (a finite or infinite bound less the start, times the reciprocal) is never
+/// NaN, which only a zero times an infinity makes.
+#[derive(Clone, Copy)]
+struct SlabRay {
+    inv: DVec3,
+    finite: bool,
+}
+
+impl SlabRay {
+    fn new(o: DVec3, dir: DVec3) -> SlabRay {
+        let inv = dir.recip();
+        SlabRay { inv, finite: inv.is_finite() && o.is_finite() }
+    }
 }
 
 /// Rays starting closer than this (in object-space ray parameter) do not count as hits: the
@@ -315,9 +339,9 @@ pub(super) fn trace(scene: &Scene, geo: &Geometry, o: DVec3, dir: DVec3) -> Opti
     // object-space tangent, mesh triangle.
     type Best = (f64, usize, DVec3, DVec3, [f64; 2], [f64; 3], [f64; 4], Option<usize>);
     let mut best: Option<Best> = None;
-    let inv_dir = dir.recip();
+    let slab = SlabRay::new(o, dir);
     for (i, (obj, inv)) in scene.objects.iter().zip(&geo.inverses).enumerate() {
-        if !may_meet(&geo.boxes[i], o, inv_dir, best.map_or(f64::INFINITY, |b| b.0)) {
+        if !may_meet(&geo.boxes[i], o, slab, best.map_or(f64::INFINITY, |b| b.0)) {
             continue;
         }
         let (lo, ld) = (inv.transform_point3(o), inv.transform_vector3(dir));
@@ -438,10 +462,10 @@ pub(super) fn occluded_among(
     dir: DVec3,
     t_max: f64,
 ) -> bool {
-    let inv_dir = dir.recip();
+    let slab = SlabRay::new(o, dir);
     among.into_iter().any(|i| {
         let (obj, inv, b) = (&scene.objects[i], &geo.inverses[i], &geo.boxes[i]);
-        if !may_meet(b, o, inv_dir, t_max) {
+        if !may_meet(b, o, slab, t_max) {
             return false;
         }
         let (lo, ld) = (inv.transform_point3(o), inv.transform_vector3(dir));

@@ -23,42 +23,17 @@ pub fn mu_from_ior(n: f64) -> f64 {
     ((n - 1.0) / (n + 1.0)).powi(2)
 }
 
+/// A metal of Filament's table: its colour is its μ.
+const fn metal(name: &'static str, mu: [f64; 3]) -> MaterialPreset {
+    MaterialPreset { name, mu, color: mu, metal: true, source: FILAMENT }
+}
+
 pub const PRESETS: [MaterialPreset; 8] = [
-    MaterialPreset {
-        name: "gold",
-        mu: [1.000, 0.766, 0.336],
-        color: [1.000, 0.766, 0.336],
-        metal: true,
-        source: FILAMENT,
-    },
-    MaterialPreset {
-        name: "silver",
-        mu: [0.972, 0.960, 0.915],
-        color: [0.972, 0.960, 0.915],
-        metal: true,
-        source: FILAMENT,
-    },
-    MaterialPreset {
-        name: "copper",
-        mu: [0.955, 0.637, 0.538],
-        color: [0.955, 0.637, 0.538],
-        metal: true,
-        source: FILAMENT,
-    },
-    MaterialPreset {
-        name: "aluminium",
-        mu: [0.913, 0.922, 0.924],
-        color: [0.913, 0.922, 0.924],
-        metal: true,
-        source: FILAMENT,
-    },
-    MaterialPreset {
-        name: "iron",
-        mu: [0.560, 0.570, 0.580],
-        color: [0.560, 0.570, 0.580],
-        metal: true,
-        source: FILAMENT,
-    },
+    metal("gold", [1.000, 0.766, 0.336]),
+    metal("silver", [0.972, 0.960, 0.915]),
+    metal("copper", [0.955, 0.637, 0.538]),
+    metal("aluminium", [0.913, 0.922, 0.924]),
+    metal("iron", [0.560, 0.570, 0.580]),
     // ((1.5 − 1)/(1.5 + 1))² = 0.04
     MaterialPreset { name: "glass", mu: [0.04; 3], color: [0.9, 0.95, 0.95], metal: false, source: "n = 1.5" },
     // ((1.33 − 1)/(1.33 + 1))² ≈ 0.02

@@ -286,7 +286,7 @@ pub fn run(args: &cli::BenchGlassArgs) -> Result<(), Failure> {
     let gpu = Gpu::headless(shadelab_render::AdapterChoice::from_env()).context("opening a GPU adapter")?;
     let command = std::iter::once("shadelab".to_string()).chain(std::env::args().skip(1)).collect::<Vec<_>>().join(" ");
     let size = (args.width, args.height);
-    let (frames, warmup) = (args.frames as usize, args.warmup as usize);
+    let (frames, warmup) = args.frames.counts();
     let methods = methods(&gpu, size, frames, warmup)?;
     let (rules, maps) = rule(&gpu, size, frames, warmup, &OPTICAL_DEPTHS)?;
     let md = markdown(&methods, &rules, &gpu.describe(), &command);

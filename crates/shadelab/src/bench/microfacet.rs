@@ -388,7 +388,8 @@ pub fn run(args: &cli::BenchMicrofacetArgs) -> Result<(), Failure> {
     let gpu = Gpu::headless(shadelab_render::AdapterChoice::from_env()).context("opening a GPU adapter")?;
     let command = std::iter::once("shadelab".to_string()).chain(std::env::args().skip(1)).collect::<Vec<_>>().join(" ");
     let size = (args.width, args.height);
-    let (rows, null_ms, maps) = combos(&gpu, size, args.frames as usize, args.warmup as usize)?;
+    let (frames, warmup) = args.frames.counts();
+    let (rows, null_ms, maps) = combos(&gpu, size, frames, warmup)?;
     let schlick = schlick_rows();
     let furnace = furnace_rows();
     let md = markdown(&rows, null_ms, &maps, &schlick, &furnace, &gpu.describe(), &command);

@@ -14,12 +14,8 @@ pub struct BenchGlassArgs {
     #[arg(long, default_value = "360", value_parser = values::count(params::HEIGHT),
           help = within("Height in pixels", params::HEIGHT))]
     pub height: u32,
-    #[arg(long, default_value = "20", value_parser = values::count(FRAMES),
-          help = within("Measured frames per row (after warm-up)", FRAMES))]
-    pub frames: u32,
-    #[arg(long, default_value = "2", value_parser = values::count(WARMUP),
-          help = within("Warm-up frames per row (not measured)", WARMUP))]
-    pub warmup: u32,
+    #[command(flatten)]
+    pub frames: RowFrames,
     /// Folder for glass.md, glass-methods.csv, glass-rule.csv and the rule's error maps.
     #[arg(long, default_value = "bench-glass", value_name = "DIR")]
     pub output: PathBuf,
@@ -33,15 +29,29 @@ pub struct BenchMicrofacetArgs {
     #[arg(long, default_value = "270", value_parser = values::count(params::HEIGHT),
           help = within("Height in pixels", params::HEIGHT))]
     pub height: u32,
+    #[command(flatten)]
+    pub frames: RowFrames,
+    /// Folder for microfacet.md, microfacet-combos.csv, microfacet-schlick.csv and the maps.
+    #[arg(long, default_value = "bench-microfacet", value_name = "DIR")]
+    pub output: PathBuf,
+}
+
+/// The frames a study times for each of its rows: `--frames` measured after `--warmup`.
+#[derive(Args, Debug)]
+pub struct RowFrames {
     #[arg(long, default_value = "20", value_parser = values::count(FRAMES),
           help = within("Measured frames per row (after warm-up)", FRAMES))]
     pub frames: u32,
     #[arg(long, default_value = "2", value_parser = values::count(WARMUP),
           help = within("Warm-up frames per row (not measured)", WARMUP))]
     pub warmup: u32,
-    /// Folder for microfacet.md, microfacet-combos.csv, microfacet-schlick.csv and the maps.
-    #[arg(long, default_value = "bench-microfacet", value_name = "DIR")]
-    pub output: PathBuf,
+}
+
+impl RowFrames {
+    /// Measured and warm-up frames as counts.
+    pub fn counts(&self) -> (usize, usize) {
+        (self.frames as usize, self.warmup as usize)
+    }
 }
 
 #[derive(Args, Debug)]

@@ -68,54 +68,39 @@ impl Group {
 }
 
 fn groups(plan: &Plan) -> Vec<Group> {
-    let base = |name: &str| Scene::builtin(name).expect("analytic scenes are built in");
+    let at = |name: &str, level| {
+        scene_variants::at_level(&Scene::builtin(name).expect("analytic scenes are built in"), level)
+    };
+    // A group of `study` on the built-in scene `name` at `level` as it is.
+    let plain = |study, name, level, size| Group { study, name, scene: at(name, level), level, size, model: None };
     let mut out = Vec::new();
     for &name in &plan.scenes {
         for &level in &plan.levels {
-            for &size in &plan.resolutions {
-                out.push(Group {
-                    study: Study::Modes,
-                    name,
-                    scene: scene_variants::at_level(&base(name), level),
-                    level,
-                    size,
-                    model: None,
-                });
-            }
+            out.extend(plan.resolutions.iter().map(|&size| plain(Study::Modes, name, level, size)));
         }
     }
     let (name, level, size) = plan.light_study;
     for &n in &plan.light_counts {
-        let scene = scene_variants::with_point_lights(&scene_variants::at_level(&base(name), level), n);
+        let scene = scene_variants::with_point_lights(&at(name, level), n);
         out.push(Group { study: Study::Lights, name, scene, level, size, model: None });
     }
     let (name, level) = plan.resolution_study;
-    for &size in &plan.study_resolutions {
-        out.push(Group {
-            study: Study::Resolution,
-            name,
-            scene: scene_variants::at_level(&base(name), level),
-            level,
-            size,
-            model: None,
-        });
-    }
+    out.extend(plan.study_resolutions.iter().map(|&size| plain(Study::Resolution, name, level, size)));
     let (name, level, size) = plan.model_study;
     for m in ModelChoice::ALL_CHOICES {
         // Without cast shadows, whose passes would dominate the models' own cost at small sizes.
-        let mut scene = scene_variants::at_level(&base(name), level);
+        let mut scene = at(name, level);
         scene.apply(&shadelab_model::Overrides::for_model(m));
         scene.set_shadows(false);
         out.push(Group { study: Study::Models, name, scene, level, size, model: Some(m) });
     }
     let (name, level, size) = plan.texture_study;
-    let scene = scene_variants::with_textured_floor(&scene_variants::at_level(&base(name), level), level);
+    let scene = scene_variants::with_textured_floor(&at(name, level), level);
     out.push(Group { study: Study::Textures, name: TEXTURED_FLOOR, scene, level, size, model: None });
-    let scene = scene_variants::with_material_maps(&scene_variants::at_level(&base(name), level), level);
+    let scene = scene_variants::with_material_maps(&at(name, level), level);
     out.push(Group { study: Study::Textures, name: MAPPED_FLOOR, scene, level, size, model: None });
     if let Some((name, level, size)) = plan.glass_study {
-        let scene = scene_variants::at_level(&base(name), level);
-        out.push(Group { study: Study::Glass, name, scene, level, size, model: None });
+        out.push(plain(Study::Glass, name, level, size));
     }
     out
 }

@@ -81,8 +81,6 @@ fn ground(tessellation: u32, color: [f64; 3]) -> (Object, Material) {
 pub fn figure_7_3_pyramid() -> Scene {
     let (ground, ground_mat) = ground(16, [0.55, 0.55, 0.52]);
     Scene {
-        absorption: Default::default(),
-        name: "figure 7.3: pyramid in parallel light".into(),
         objects: vec![
             ground,
             Object {
@@ -112,13 +110,11 @@ pub fn figure_7_3_pyramid() -> Scene {
             },
         ],
         lights: vec![Light::directional(DVec3::new(-0.75, -0.8, 0.45), [1.0, 0.98, 0.94], 1.0)],
-        ambient: [0.1; 3],
-        camera: camera(DVec3::new(0.6, 2.4, 4.6), DVec3::new(0.0, 0.7, 0.0)),
-        meshes: Default::default(),
-        illumination: Default::default(),
-        textures: Vec::new(),
-        background: Some(crate::scene::BACKGROUND),
-        environment: None,
+        ..Scene::empty(
+            "figure 7.3: pyramid in parallel light".into(),
+            [0.1; 3],
+            camera(DVec3::new(0.6, 2.4, 4.6), DVec3::new(0.0, 0.7, 0.0)),
+        )
     }
 }
 
@@ -138,8 +134,6 @@ pub fn gouraud_vs_phong() -> Scene {
         ..Material::default()
     };
     Scene {
-        absorption: Default::default(),
-        name: "Gouraud vs Phong shading".into(),
         objects: vec![
             ground,
             Object {
@@ -166,13 +160,11 @@ pub fn gouraud_vs_phong() -> Scene {
             Light::directional(DVec3::new(-0.55, -1.0, -0.7), [1.0, 0.97, 0.92], 0.75),
             Light::point(DVec3::new(-2.2, 2.4, 2.4), [0.92, 0.96, 1.0], 1.1, 0.06),
         ],
-        ambient: [0.12; 3],
-        camera: camera(DVec3::new(0.0, 2.2, 4.6), DVec3::new(0.0, 0.8, 0.0)),
-        meshes: Default::default(),
-        illumination: Default::default(),
-        textures: Vec::new(),
-        background: Some(crate::scene::BACKGROUND),
-        environment: None,
+        ..Scene::empty(
+            "Gouraud vs Phong shading".into(),
+            [0.12; 3],
+            camera(DVec3::new(0.0, 2.2, 4.6), DVec3::new(0.0, 0.8, 0.0)),
+        )
     }
 }
 
@@ -210,21 +202,13 @@ pub fn material_board() -> Scene {
         sphere(format!("plastic m={m}"), mat, row_x(i, roughness.len()), 1.3);
     }
     Scene {
-        absorption: Default::default(),
-        name: "material board".into(),
         objects,
         materials,
         lights: vec![
             Light::directional(DVec3::new(-0.45, -1.0, -0.8), [1.0, 0.97, 0.92], 0.8),
             Light::point(DVec3::new(2.5, 2.5, 2.8), [0.92, 0.96, 1.0], 1.0, 0.05),
         ],
-        ambient: [0.1; 3],
-        camera: camera(DVec3::new(0.0, 3.6, 4.4), DVec3::new(0.0, 0.2, 0.1)),
-        meshes: Default::default(),
-        illumination: Default::default(),
-        textures: Vec::new(),
-        background: Some(crate::scene::BACKGROUND),
-        environment: None,
+        ..Scene::empty("material board".into(), [0.1; 3], camera(DVec3::new(0.0, 3.6, 4.4), DVec3::new(0.0, 0.2, 0.1)))
     }
 }
 

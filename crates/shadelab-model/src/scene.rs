@@ -225,6 +225,26 @@ impl Overrides {
 }
 
 impl Scene {
+    /// A scene named `name` with nothing in it yet, lit by the ambient `ambient` and seen by
+    /// `camera`: the chapter's Phong model, no meshes, textures or environment, and the default
+    /// background (a scene file keeps none, so a saved scene loads with the same).
+    pub fn empty(name: String, ambient: [f64; 3], camera: Camera) -> Scene {
+        Scene {
+            name,
+            objects: Vec::new(),
+            materials: Vec::new(),
+            lights: Vec::new(),
+            ambient,
+            camera,
+            meshes: Default::default(),
+            illumination: Default::default(),
+            textures: Vec::new(),
+            absorption: Default::default(),
+            background: Some(BACKGROUND),
+            environment: None,
+        }
+    }
+
     /// Whether object `i` is drawn by the glass pass: its material transmits, and the model is
     /// not the four-term sum (which draws transmission as its own `I_t` term).
     pub fn drawn_as_glass(&self, i: usize) -> bool {

@@ -295,28 +295,16 @@ fn parentless_nodes(root: &json::Root) -> Vec<usize> {
 
 /// A scene named `name` with nothing in it yet: the default ambient and a fallback camera.
 fn empty_scene(name: String) -> Scene {
-    Scene {
-        absorption: Default::default(),
-        name,
-        objects: Vec::new(),
-        materials: Vec::new(),
-        lights: Vec::new(),
-        ambient: DEFAULT_AMBIENT,
-        camera: Camera {
-            eye: DVec3::Z,
-            target: DVec3::ZERO,
-            up: DVec3::Y,
-            fov_y_deg: FALLBACK_FOV_Y_DEG,
-            near: 0.1,
-            far: 100.0,
-            orthographic: None,
-        },
-        meshes: Default::default(),
-        illumination: Default::default(),
-        textures: Vec::new(),
-        background: Some(crate::scene::BACKGROUND),
-        environment: None,
-    }
+    let camera = Camera {
+        eye: DVec3::Z,
+        target: DVec3::ZERO,
+        up: DVec3::Y,
+        fov_y_deg: FALLBACK_FOV_Y_DEG,
+        near: 0.1,
+        far: 100.0,
+        orthographic: None,
+    };
+    Scene::empty(name, DEFAULT_AMBIENT, camera)
 }
 
 /// Write the scene as `.glb` when the path ends in `.glb`, else as `.gltf` with the buffer

@@ -30,26 +30,22 @@ pub(super) fn stage(objects: Vec<Object>, lights: Vec<Light>) -> Scene {
     let mut all = vec![object("ground", Shape::Plane, DVec3::ZERO, DVec3::new(4.0, 1.0, 4.0))];
     all.extend(objects);
     Scene {
-        absorption: Default::default(),
-        name: "stage".into(),
         objects: all,
         materials: vec![Material::default()],
         lights,
-        ambient: [0.1; 3],
-        camera: Camera {
-            eye: DVec3::new(0.0, 4.0, 6.0),
-            target: DVec3::new(0.0, 0.0, 0.0),
-            up: DVec3::Y,
-            fov_y_deg: 30.0,
-            near: 0.1,
-            far: 50.0,
-            orthographic: None,
-        },
-        meshes: Default::default(),
-        illumination: Default::default(),
-        textures: Vec::new(),
-        background: Some(crate::scene::BACKGROUND),
-        environment: None,
+        ..Scene::empty(
+            "stage".into(),
+            [0.1; 3],
+            Camera {
+                eye: DVec3::new(0.0, 4.0, 6.0),
+                target: DVec3::new(0.0, 0.0, 0.0),
+                up: DVec3::Y,
+                fov_y_deg: 30.0,
+                near: 0.1,
+                far: 50.0,
+                orthographic: None,
+            },
+        )
     }
 }
 

@@ -273,18 +273,10 @@ pub fn default_scene() -> Scene {
         material: materials.len() - 1,
     });
     Scene {
-        absorption: Default::default(),
-        name: "default".into(),
         objects,
         materials,
         lights: default_lights(),
-        ambient: [0.12; 3],
-        camera: default_camera(),
-        meshes: Default::default(),
-        illumination: Default::default(),
-        textures: Vec::new(),
-        background: Some(crate::scene::BACKGROUND),
-        environment: None,
+        ..Scene::empty("default".into(), [0.12; 3], default_camera())
     }
 }
 
@@ -329,8 +321,6 @@ pub fn single_shape_scene(name: &str, shape: Shape, tessellation: u32) -> Scene 
         _ => (DVec3::new(0.0, 1.0, 0.0), DVec3::splat(1.0), 0.0),
     };
     Scene {
-        absorption: Default::default(),
-        name: name.into(),
         objects: vec![
             ground_obj,
             Object {
@@ -343,12 +333,10 @@ pub fn single_shape_scene(name: &str, shape: Shape, tessellation: u32) -> Scene 
         ],
         materials: vec![ground_mat, material],
         lights: default_lights(),
-        ambient: [0.12; 3],
-        camera: Camera { eye: DVec3::new(0.0, 2.2, 4.6), target: DVec3::new(0.0, 0.8, 0.0), ..default_camera() },
-        meshes: Default::default(),
-        illumination: Default::default(),
-        textures: Vec::new(),
-        background: Some(crate::scene::BACKGROUND),
-        environment: None,
+        ..Scene::empty(
+            name.into(),
+            [0.12; 3],
+            Camera { eye: DVec3::new(0.0, 2.2, 4.6), target: DVec3::new(0.0, 0.8, 0.0), ..default_camera() },
+        )
     }
 }

@@ -78,26 +78,21 @@ pub fn cornell_scene() -> Scene {
     let mut light = Light::area(LightKind::Rect, center, DVec3::NEG_Y, [lx, lz], color, intensity, CORNELL_FALLOFF);
     light.tangent = DVec3::X;
     Scene {
-        absorption: Default::default(),
-        name: "cornell".into(),
         objects,
         materials,
         lights: vec![light],
-        ambient: [0.1; 3],
-        camera: Camera {
-            eye: DVec3::new(0.278, 0.273, -0.8),
-            target: DVec3::new(0.278, 0.273, 0.0),
-            up: DVec3::Y,
-            fov_y_deg: 39.3,
-            near: 0.01,
-            far: 5.0,
-            orthographic: None,
-        },
-        meshes: Default::default(),
-        illumination: Default::default(),
-        textures: Vec::new(),
-        // The default background: a scene file keeps none, so a saved scene loads the same.
-        background: Some(super::BACKGROUND),
-        environment: None,
+        ..Scene::empty(
+            "cornell".into(),
+            [0.1; 3],
+            Camera {
+                eye: DVec3::new(0.278, 0.273, -0.8),
+                target: DVec3::new(0.278, 0.273, 0.0),
+                up: DVec3::Y,
+                fov_y_deg: 39.3,
+                near: 0.01,
+                far: 5.0,
+                orthographic: None,
+            },
+        )
     }
 }

@@ -37,6 +37,13 @@ pub struct WidthRow {
     pub pcf: Option<f64>,
 }
 
+impl WidthRow {
+    /// The measured widths in the tables' order: reference, PCSS, 16 point sources, PCF.
+    fn measured(&self) -> [Option<f64>; 4] {
+        [self.reference, self.pcss, self.points, self.pcf]
+    }
+}
+
 /// The `penumbra` scene's plate at `plate_h` seen from straight above through an orthographic
 /// camera whose view spans x ∈ [0.3, 1.3] around its shadow's +x edge, without ambient light, so
 /// the shadowed over the unshadowed image is the light's visibility V.
@@ -120,17 +127,8 @@ pub fn csv(rows: &[WidthRow]) -> String {
     let mut s = format!("{CSV_HEADER}\n");
     let opt = |v: Option<f64>| v.map_or(String::new(), |x| format!("{x:.6}"));
     for r in rows {
-        let _ = writeln!(
-            s,
-            "{},{:.6},{:.6},{},{},{},{}",
-            r.plate_h,
-            r.predicted,
-            0.8 * r.predicted,
-            opt(r.reference),
-            opt(r.pcss),
-            opt(r.points),
-            opt(r.pcf)
-        );
+        let measured = r.measured().map(opt).join(",");
+        let _ = writeln!(s, "{},{:.6},{:.6},{measured}", r.plate_h, r.predicted, 0.8 * r.predicted);
     }
     s
 }
@@ -145,17 +143,8 @@ pub fn markdown(rows: &[WidthRow], device: &str, command: &str) -> String {
     s += "| plate height h (m) | predicted w | 0.8·w | reference | PCSS | 16 point sources | PCF |\n";
     s += "|---:|---:|---:|---:|---:|---:|---:|\n";
     for r in rows {
-        let _ = writeln!(
-            s,
-            "| {:.2} | {:.4} | {:.4} | {} | {} | {} | {} |",
-            r.plate_h,
-            r.predicted,
-            0.8 * r.predicted,
-            cell(r.reference),
-            cell(r.pcss),
-            cell(r.points),
-            cell(r.pcf)
-        );
+        let measured = r.measured().map(cell).join(" | ");
+        let _ = writeln!(s, "| {:.2} | {:.4} | {:.4} | {measured} |", r.plate_h, r.predicted, 0.8 * r.predicted);
     }
     s
 }

@@ -59,6 +59,12 @@ pub fn wanted_features(adapter: &wgpu::Adapter) -> wgpu::Features {
 }
 
 impl Gpu {
+    /// Open a device without a window on the adapter `SHADELAB_ADAPTER` chooses
+    /// ([`AdapterChoice::from_env`]): what the command line's renders and studies draw with.
+    pub fn from_env() -> Result<Gpu, GpuError> {
+        Gpu::headless(AdapterChoice::from_env())
+    }
+
     /// Open a device without a window.
     pub fn headless(choice: AdapterChoice) -> Result<Gpu, GpuError> {
         let backends = match choice {

@@ -117,7 +117,7 @@ pub fn run(
         save(&reference, &args.output, kind).with_context(|| format!("writing {}", args.output.display()))?;
         return Ok(());
     }
-    let gpu = crate::render::open_gpu()?;
+    let gpu = shadelab_render::Gpu::from_env().context("opening a GPU adapter")?;
     let image = if args.term == Term::Shadow {
         shadelab_render::render_shadow_factor(&gpu, scene, size, settings)
     } else {

@@ -7,7 +7,7 @@ use anyhow::Context;
 use shadelab_model::ShadingMode;
 use shadelab_model::gltf_io::{self, LoadedScene, SceneSettings};
 use shadelab_model::params::NamedValue;
-use shadelab_render::{AdapterChoice, Gpu, LinearImage, RenderSettings, UploadError};
+use shadelab_render::{Gpu, LinearImage, RenderSettings, UploadError};
 use std::path::Path;
 
 /// The overlay's lines for `scene`, in world space, and their colour.
@@ -83,7 +83,9 @@ pub fn run(args: &cli::RenderArgs) -> Result<(), Failure> {
     if (args.reference || args.difference) && !args.interpolation_difference {
         return crate::reference_views::run(&scene, (width, height), &settings, args, kind);
     }
-    let gpu = open_gpu()?;
+    // Opened only where a GPU image is made: the reference alone is the CPU's.
+    let gpu = Gpu::from_env().context("opening a GPU adapter")?;
+    log::info!("adapter: {}", gpu.describe());
     if args.interpolation_difference {
         return interpolation_difference(&gpu, &scene, (width, height), &settings, &args.output);
     }
@@ -101,14 +103,6 @@ pub fn run(args: &cli::RenderArgs) -> Result<(), Failure> {
         log::warn!("{bad} pixels are not finite");
     }
     Ok(())
-}
-
-/// The adapter `render` draws with (`SHADELAB_ADAPTER`'s choice), opened only where a GPU image
-/// is made: the reference alone is the CPU's.
-pub(crate) fn open_gpu() -> Result<Gpu, Failure> {
-    let gpu = Gpu::headless(AdapterChoice::from_env()).context("opening a GPU adapter")?;
-    log::info!("adapter: {}", gpu.describe());
-    Ok(gpu)
 }
 
 /// The scene, settings and term `render` draws: the flags', or with `--link` the link's (its

@@ -3,12 +3,12 @@
 
 use crate::Failure;
 use anyhow::Context;
-use shadelab_render::{AdapterChoice, Gpu};
+use shadelab_render::Gpu;
 
 /// `shadelab sweep`: the stability sweep's table; exits 1 if any check fails.
 pub fn run() -> Result<(), Failure> {
     use shadelab_render::sweep::{self, ERROR_TOLERANCE, SweepInputs};
-    let gpu = Gpu::headless(AdapterChoice::from_env()).context("opening a GPU adapter")?;
+    let gpu = Gpu::from_env().context("opening a GPU adapter")?;
     let start = std::time::Instant::now();
     let report = sweep::run(&gpu, SweepInputs::standard());
     println!("# shadelab sweep — device: {}", gpu.describe());

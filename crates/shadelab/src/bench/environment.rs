@@ -133,7 +133,7 @@ pub fn run(args: &cli::BenchAmbientArgs) -> Result<(), Failure> {
 /// The GPU's frame for the null shader and each of `scenes` (one scene's variants: the same
 /// geometry), drawn interleaved: medians in ms, the null shader's first.
 fn gpu_times(scenes: &[&Scene; 4], settings: &RenderSettings, (w, h): (u32, u32)) -> anyhow::Result<[f64; 5]> {
-    let gpu = Gpu::headless(shadelab_render::AdapterChoice::from_env()).context("opening a GPU adapter")?;
+    let gpu = Gpu::from_env().context("opening a GPU adapter")?;
     let mut r = Renderer::new(&gpu.device, &gpu.queue);
     let mut gs = r.upload(scenes[0])?;
     let target = Target::new(&gpu.device, w, h, shadelab_render::target::HDR_FORMAT);

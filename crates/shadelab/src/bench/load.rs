@@ -4,7 +4,7 @@
 use crate::{Failure, cli};
 use anyhow::Context;
 use shadelab_render::timing::{FrameTimer, median};
-use shadelab_render::{AdapterChoice, Gpu, Renderer, Target};
+use shadelab_render::{Gpu, Renderer, Target};
 
 /// Frames timed after the first one by `bench load` (their median is reported).
 const LOAD_STEADY_FRAMES: usize = 5;
@@ -27,7 +27,7 @@ fn wait(gpu: &Gpu) {
 pub fn run(args: &cli::BenchLoadArgs) -> Result<(), Failure> {
     use std::time::Instant;
     let (width, height) = args.size.pixels();
-    let gpu = Gpu::headless(AdapterChoice::from_env()).context("opening a GPU adapter")?;
+    let gpu = Gpu::from_env().context("opening a GPU adapter")?;
     let rss_device = peak_rss_kib();
     let ms = |t: Instant| t.elapsed().as_secs_f64() * 1e3;
 

@@ -7,7 +7,7 @@ use anyhow::Context;
 use shadelab_model::params::NamedValue;
 use shadelab_model::{ShadingMode, SpecularModel};
 use shadelab_render::timing::{FrameTimer, median, quantile_sorted};
-use shadelab_render::{AdapterChoice, Gpu, RenderSettings, Renderer, Target};
+use shadelab_render::{Gpu, RenderSettings, Renderer, Target};
 
 /// `shadelab bench render`: one table row per shading × specular combination.
 pub fn run(args: &cli::BenchRenderArgs) -> Result<(), Failure> {
@@ -23,7 +23,7 @@ pub fn run(args: &cli::BenchRenderArgs) -> Result<(), Failure> {
         }
         None => scene,
     };
-    let gpu = Gpu::headless(AdapterChoice::from_env()).context("opening a GPU adapter")?;
+    let gpu = Gpu::from_env().context("opening a GPU adapter")?;
     let mut r = Renderer::new(&gpu.device, &gpu.queue);
     let mut gs = r.upload(&scene).map_err(|e| Failure::Usage(format!("{}: {e}", args.scene.scene)))?;
     let target = Target::new(&gpu.device, width, height, shadelab_render::target::HDR_FORMAT);

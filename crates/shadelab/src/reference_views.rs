@@ -99,6 +99,15 @@ pub fn run(
     args: &cli::RenderArgs,
     kind: ImageKind,
 ) -> Result<(), Failure> {
+    // The difference's GPU side, opened before the reference is traced, so that a missing
+    // adapter is said at once rather than after minutes of paths.
+    let gpu = if args.reference {
+        None
+    } else {
+        let gpu = shadelab_render::Gpu::from_env().context("opening a GPU adapter")?;
+        log::info!("adapter: {}", gpu.describe());
+        Some(gpu)
+    };
     let start = web_time::Instant::now();
     let paths = args.paths();
     // Which reference this is: the twin and the truth differ under an environment.
@@ -109,15 +118,14 @@ pub fn run(
     let traced = traced_with_progress(reference_job(scene, settings, size, paths)?, label, size.1);
     let reference = reference_of(&traced, args.term);
     let noise = paths.map(|p| noise_line(&traced, p)).unwrap_or_default();
-    if args.reference {
-        // Its time and threads (RAYON_NUM_THREADS=1: one, as the web page's, docs/web.md).
+    let Some(gpu) = gpu else {
+        // --reference: its time and threads (RAYON_NUM_THREADS=1: one, as the web page's, docs/web.md).
         let ms = start.elapsed().as_secs_f64() * 1e3;
         let threads = shadelab_model::reference::reference_threads();
         println!("{label} of {} ({}×{}) in {ms:.1} ms, {threads} thread(s){noise}", scene.name, size.0, size.1);
         save(&reference, &args.output, kind).with_context(|| format!("writing {}", args.output.display()))?;
         return Ok(());
-    }
-    let gpu = shadelab_render::Gpu::from_env().context("opening a GPU adapter")?;
+    };
     let image = if args.term == Term::Shadow {
         shadelab_render::render_shadow_factor(&gpu, scene, size, settings)
     } else {

@@ -296,22 +296,26 @@ fn render_reference_and_difference_give_each_term_its_reference() {
         assert_eq!((o.status.code(), error_lines(&o).len()), (Some(2), 1), "{bad:?}: {:?}", error_lines(&o));
     }
     // The reference alone is the CPU's: it opens no adapter, so it renders where no Vulkan driver
-    // is found, where the GPU's image cannot.
+    // is found, where the GPU's image and the difference cannot.
     let no_driver = |extra: &[&str]| {
         let out = dir.join("ref-no-driver.png");
         let args = [&["render", "--width", "32", "--height", "18", "--output", out.to_str().unwrap()][..], extra];
         Command::new(env!("CARGO_BIN_EXE_shadelab"))
             .args(args.concat())
             .env("SHADELAB_ADAPTER", "lavapipe")
+            // Both of the Vulkan loader's driver lists (the newer name wins where both are set).
+            .env("VK_DRIVER_FILES", dir.join("no-such-driver.json"))
             .env("VK_ICD_FILENAMES", dir.join("no-such-driver.json"))
             .output()
             .expect("run shadelab")
     };
     let o = no_driver(&["--reference"]);
     assert_eq!(o.status.code(), Some(0), "{:?}", error_lines(&o));
-    let o = no_driver(&[]);
-    assert_eq!(o.status.code(), Some(1), "{:?}", error_lines(&o));
-    assert!(error_lines(&o)[0].contains("no lavapipe adapter found"), "{:?}", error_lines(&o));
+    for gpu_side in [&[][..], &["--difference"]] {
+        let o = no_driver(gpu_side);
+        assert_eq!(o.status.code(), Some(1), "{gpu_side:?}: {:?}", error_lines(&o));
+        assert!(error_lines(&o)[0].contains("no lavapipe adapter found"), "{gpu_side:?}: {:?}", error_lines(&o));
+    }
 }
 
 /// `shadelab render` at `size` with `extra` flags into the EXR `path`, which it must write; read

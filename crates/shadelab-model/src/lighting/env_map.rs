@@ -176,7 +176,7 @@ impl Environment {
     /// [`PREFILTER_SOURCE`]-wide grid weighed by the lobe `cos^h` about the texel's direction,
     /// `h` from `m_k` by the project's one h-from-m rule (the lobe Beckmann's D is as wide as).
     pub fn prefiltered(&self, lights: &[super::lights::Light]) -> Vec<[f32; 4]> {
-        let key = (self.clone(), sun_of(lights));
+        let key = self.prefilter_key(lights);
         let mut recent = RECENT_PREFILTERED.lock().unwrap_or_else(|e| e.into_inner());
         if let Some(i) = recent.iter().position(|(k, _)| *k == key) {
             let hit = recent.remove(i);
@@ -189,6 +189,18 @@ impl Environment {
         recent.insert(0, (key, levels.clone()));
         recent.truncate(RECENT_PREFILTERED_KEPT);
         levels
+    }
+
+    /// What the prefiltered levels depend on ([`Self::radiance`]'s inputs): the source, the scale
+    /// and the turn, and the sun a sky without its own follows.
+    fn prefilter_key(&self, lights: &[super::lights::Light]) -> PrefilterKey {
+        let follows_sun = matches!(self.source, EnvSource::Sky { sun: None, .. });
+        PrefilterKey {
+            source: self.source.clone(),
+            intensity: self.intensity,
+            rotation_deg: self.rotation_deg,
+            sun: if follows_sun { sun_of(lights) } else { None },
+        }
     }
 
     /// [`Self::prefiltered`], computed.
@@ -248,7 +260,17 @@ fn sun_of(lights: &[super::lights::Light]) -> Option<DVec3> {
 /// The environments last prefiltered, newest first, with the sun they followed and their levels.
 /// A bench, a test or the viewer shades one environment many times, and each prefilter weighs
 /// every source cell for every texel; prefiltering is pure, so a kept result is the same levels.
-type Prefiltered = ((Environment, Option<DVec3>), Vec<[f32; 4]>);
+type Prefiltered = (PrefilterKey, Vec<[f32; 4]>);
+
+/// [`Environment::prefilter_key`].
+#[derive(Clone, Debug, PartialEq)]
+struct PrefilterKey {
+    source: EnvSource,
+    intensity: f64,
+    rotation_deg: f64,
+    sun: Option<DVec3>,
+}
+
 static RECENT_PREFILTERED: std::sync::Mutex<Vec<Prefiltered>> = std::sync::Mutex::new(Vec::new());
 /// How many [`RECENT_PREFILTERED`] keeps: a study alternates between a few environments.
 const RECENT_PREFILTERED_KEPT: usize = 4;

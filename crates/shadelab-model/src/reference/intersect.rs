@@ -63,12 +63,12 @@ fn world_box(scene: &Scene, obj: &crate::scene::Object) -> (DVec3, DVec3) {
     (wlo - DVec3::splat(pad), whi + DVec3::splat(pad))
 }
 
-/// Whether the ray `o + t·dir` (`inv` = 1/dir per axis) may meet the box `b` for some `t` in
+/// Whether the ray `o + t·dir` (`ray`: 1/dir per axis) may meet the box `b` for some `t` in
 /// `[0, t_max]`: false only where the slab test proves it apart, so a NaN lets the object's own
 /// test decide.
-fn may_meet(b: &(DVec3, DVec3), o: DVec3, inv: SlabRay, t_max: f64) -> bool {
-    let (a, c) = ((b.0 - o) * inv.inv, (b.1 - o) * inv.inv);
-    if inv.finite {
+fn may_meet(b: &(DVec3, DVec3), o: DVec3, ray: SlabRay, t_max: f64) -> bool {
+    let (a, c) = ((b.0 - o) * ray.inv, (b.1 - o) * ray.inv);
+    if ray.finite {
         // No product is NaN: plain comparisons decide as the NaN-aware min and max would.
         let lt = |x: f64, y: f64| if x < y { x } else { y };
         let gt = |x: f64, y: f64| if x > y { x } else { y };
@@ -82,9 +82,9 @@ fn may_meet(b: &(DVec3, DVec3), o: DVec3, inv: SlabRay, t_max: f64) -> bool {
     !(t0 > t1)
 }
 
-/// A ray's reciprocal direction for [`may_meet`], and whether it and the ray's start are finite:
-/// then a slab product (a finite or infinite bound less the start, times the reciprocal) is never
-/// NaN, which only a zero times an infinity makes.
+/// A ray's reciprocal direction for [`may_meet`], and whether the start, the direction and its
+/// reciprocal are all finite: then a slab product (a finite or infinite bound less the start,
+/// times a finite non-zero reciprocal) is never NaN, which only a zero times an infinity makes.
 #[derive(Clone, Copy)]
 struct SlabRay {
     inv: DVec3,
@@ -94,7 +94,7 @@ struct SlabRay {
 impl SlabRay {
     fn new(o: DVec3, dir: DVec3) -> SlabRay {
         let inv = dir.recip();
-        SlabRay { inv, finite: inv.is_finite() && o.is_finite() }
+        SlabRay { inv, finite: o.is_finite() && dir.is_finite() && inv.is_finite() }
     }
 }
 

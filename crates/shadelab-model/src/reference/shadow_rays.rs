@@ -129,7 +129,8 @@ impl<'a> ShadowRays<'a> {
         let margin = DVec3::splat(2.0 * self.offset);
         let lo = p.min(light.center - reach) - margin;
         let hi = p.max(light.center + reach) + margin;
-        // A NaN bound compares false either way: its object stays.
+        // World boxes are never NaN (an unbounded object's is infinite, and stays); a NaN light
+        // leaves the box around `p` alone, and its cells' rays are not traced (NaN length).
         let apart = |b: &(DVec3, DVec3)| b.1.cmplt(lo).any() || b.0.cmpgt(hi).any();
         let among: Vec<usize> = (0..self.geo.boxes.len()).filter(|&i| !apart(&self.geo.boxes[i])).collect();
         move |from: DVec3, x: DVec3| {

@@ -317,3 +317,42 @@ fn the_objects_boxes_lose_no_hit() {
     // The rays must meet things for the comparison to mean anything.
     assert!(hits > 5_000 && blocked > 5_000, "{hits} hits, {blocked} blocked");
 }
+
+/// The shadow rays from one point to an area light's cells answer the same testing only the
+/// objects near them (`cells_visible_from`) as testing every object (`cell_visible`), for each
+/// area kind, from points on the ground and on a ball under it; some cells are hidden, some not.
+#[test]
+fn cell_rays_near_the_light_answer_as_rays_to_every_object() {
+    use crate::lighting::area::front_cells;
+    use crate::lighting::lights::LightKind;
+    let objects = vec![
+        object("ball", Shape::Sphere, DVec3::new(0.0, 0.6, 0.0), DVec3::splat(0.5)),
+        object("box", Shape::Cube, DVec3::new(1.2, 0.3, -0.4), DVec3::new(0.3, 0.3, 0.5)),
+        object("post", Shape::Cylinder, DVec3::new(-1.3, 0.8, 0.5), DVec3::new(0.2, 0.8, 0.2)),
+    ];
+    let spread = |i: u32, k: f64| (f64::from(i) * k).fract();
+    let points: Vec<(DVec3, DVec3)> = (0..300)
+        .map(|i| (DVec3::new(4.0 * spread(i, 0.618) - 2.0, 0.0, 4.0 * spread(i, 0.414) - 2.0), DVec3::Y))
+        .chain((0..100).map(|i| {
+            let n = DVec3::new(spread(i, 0.618) - 0.5, 0.3 + spread(i, 0.271), spread(i, 0.414) - 0.5).normalize();
+            (DVec3::new(0.0, 0.6, 0.0) + n * 0.5, n)
+        }))
+        .collect();
+    for kind in [LightKind::Rect, LightKind::Disk, LightKind::Sphere] {
+        let light = Light::area(kind, DVec3::new(0.3, 2.5, 0.2), DVec3::NEG_Y, [1.2, 0.6], [1.0; 3], 1.0, 0.0);
+        let area = light.area_light().unwrap();
+        let scene = stage(objects.clone(), vec![light]);
+        let geo = intersect::Geometry::new(&scene);
+        let rays = shadow_rays::ShadowRays::new(&scene, &geo);
+        let (mut hidden, mut cells) = (0, 0);
+        for &(p, ng) in &points {
+            let (near, every) = (rays.cells_visible_from(ng, p, &area), rays.cell_visible(ng));
+            for (x, _, _) in front_cells(&area, p, 8) {
+                let seen = near(p, x);
+                assert_eq!(seen, every(p, x), "{kind:?}: from {p} to {x}");
+                (hidden, cells) = (hidden + usize::from(!seen), cells + 1);
+            }
+        }
+        assert!(hidden > 0 && hidden < cells, "{kind:?}: {hidden} of {cells} cells hidden");
+    }
+}

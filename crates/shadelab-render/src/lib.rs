@@ -2,6 +2,7 @@
 //! pipeline per permutation (cached), capture to a linear float image, GPU timing. Knows nothing
 //! of egui.
 
+mod buffers;
 mod environment_gpu;
 pub mod flip;
 pub mod frame;

@@ -6,6 +6,7 @@
 //! CPU rasterizer spreads it over its threads (llvmpipe runs vertex stages on one). The bind
 //! groups are @group(3), bindings 1–3 (binding 0 is the shadow pass's).
 
+use crate::buffers::buffer_entry;
 pub use crate::shaders::{FLAT_ENTRY_POINT, GOURAUD_ENTRY_POINT, lighting_entry_point as entry_point};
 use crate::vertex::{FlatVertex, SmoothVertex};
 
@@ -14,15 +15,8 @@ pub const LIT_WORKGROUP: u32 = 64;
 
 /// The compute side's @group(3): the flat corners (read) and the face colours (written).
 pub(crate) fn compute_layout(device: &wgpu::Device) -> wgpu::BindGroupLayout {
-    let storage = |binding, read_only| wgpu::BindGroupLayoutEntry {
-        binding,
-        visibility: wgpu::ShaderStages::COMPUTE,
-        ty: wgpu::BindingType::Buffer {
-            ty: wgpu::BufferBindingType::Storage { read_only },
-            has_dynamic_offset: false,
-            min_binding_size: None,
-        },
-        count: None,
+    let storage = |binding, read_only| {
+        buffer_entry(binding, wgpu::ShaderStages::COMPUTE, wgpu::BufferBindingType::Storage { read_only }, false, None)
     };
     device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
         label: Some("lit points (compute)"),
@@ -34,16 +28,13 @@ pub(crate) fn compute_layout(device: &wgpu::Device) -> wgpu::BindGroupLayout {
 pub(crate) fn colors_layout(device: &wgpu::Device) -> wgpu::BindGroupLayout {
     device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
         label: Some("lit colours"),
-        entries: &[wgpu::BindGroupLayoutEntry {
-            binding: 3,
-            visibility: wgpu::ShaderStages::VERTEX,
-            ty: wgpu::BindingType::Buffer {
-                ty: wgpu::BufferBindingType::Storage { read_only: true },
-                has_dynamic_offset: false,
-                min_binding_size: None,
-            },
-            count: None,
-        }],
+        entries: &[buffer_entry(
+            3,
+            wgpu::ShaderStages::VERTEX,
+            wgpu::BufferBindingType::Storage { read_only: true },
+            false,
+            None,
+        )],
     })
 }
 

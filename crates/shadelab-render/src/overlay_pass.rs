@@ -3,6 +3,7 @@
 //! view-projection, drawn after the scene pass into the same target and depth-tested against the
 //! depth that pass keeps (`LessEqual`), so that an edge behind an object is hidden.
 
+use crate::buffers::{buffer_entry, written_buffer};
 use crate::program::RenderSettings;
 use crate::target::{self, LinearImage, Target, color_attachment};
 use crate::upload::UploadError;
@@ -64,28 +65,21 @@ impl OverlayPass {
         });
         let bind_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("overlay"),
-            entries: &[wgpu::BindGroupLayoutEntry {
-                binding: 0,
-                visibility: wgpu::ShaderStages::VERTEX_FRAGMENT,
-                ty: wgpu::BindingType::Buffer {
-                    ty: wgpu::BufferBindingType::Uniform,
-                    has_dynamic_offset: false,
-                    min_binding_size: wgpu::BufferSize::new(size_of::<OverlayUniform>() as u64),
-                },
-                count: None,
-            }],
+            entries: &[buffer_entry(
+                0,
+                wgpu::ShaderStages::VERTEX_FRAGMENT,
+                wgpu::BufferBindingType::Uniform,
+                false,
+                Some(size_of::<OverlayUniform>() as u64),
+            )],
         });
         let layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
             label: Some("overlay"),
             bind_group_layouts: &[Some(&bind_layout)],
             immediate_size: 0,
         });
-        let uniform = device.create_buffer(&wgpu::BufferDescriptor {
-            label: Some("overlay"),
-            size: size_of::<OverlayUniform>() as u64,
-            usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
-            mapped_at_creation: false,
-        });
+        let uniform =
+            written_buffer(device, "overlay", size_of::<OverlayUniform>() as u64, wgpu::BufferUsages::UNIFORM);
         let bind = device.create_bind_group(&wgpu::BindGroupDescriptor {
             label: Some("overlay"),
             layout: &bind_layout,

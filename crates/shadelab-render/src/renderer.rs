@@ -3,6 +3,7 @@
 //! and its pipeline cache. Uploading a scene (`upload.rs`), drawing a frame (`frame.rs`), the
 //! shadow passes (`shadow_pass.rs`) and the cache (`pipelines.rs`) live beside it.
 
+use crate::buffers::{buffer_entry, written_buffer};
 use crate::pipelines::{Layouts, PipelineCache};
 use crate::uniforms::{GlobalsUniform, ObjectUniform, TablesUniform};
 
@@ -40,33 +41,17 @@ fn uniform_entry(dynamic: bool, size: u64) -> wgpu::BindGroupLayoutEntry {
 
 /// A uniform buffer at `binding`, with a dynamic offset or not, of `size` bytes.
 fn uniform_entry_at(binding: u32, dynamic: bool, size: u64) -> wgpu::BindGroupLayoutEntry {
-    wgpu::BindGroupLayoutEntry {
-        binding,
-        // Compute too: flat shading's per-face pass shades in a compute stage.
-        visibility: wgpu::ShaderStages::VERTEX_FRAGMENT.union(wgpu::ShaderStages::COMPUTE),
-        ty: wgpu::BindingType::Buffer {
-            ty: wgpu::BufferBindingType::Uniform,
-            has_dynamic_offset: dynamic,
-            min_binding_size: wgpu::BufferSize::new(size),
-        },
-        count: None,
-    }
+    // Compute too: flat shading's per-face pass shades in a compute stage.
+    let stages = wgpu::ShaderStages::VERTEX_FRAGMENT.union(wgpu::ShaderStages::COMPUTE);
+    buffer_entry(binding, stages, wgpu::BufferBindingType::Uniform, dynamic, Some(size))
 }
 
 /// A read-only storage buffer of the globals' group: the environment's prefiltered levels
 /// (binding 1, `env_levels`) and its occlusion grid (binding 2, `env_occlusion_nodes`), each with
 /// the size of its element.
 fn storage_entry(binding: u32, element: u64) -> wgpu::BindGroupLayoutEntry {
-    wgpu::BindGroupLayoutEntry {
-        binding,
-        visibility: wgpu::ShaderStages::FRAGMENT.union(wgpu::ShaderStages::COMPUTE),
-        ty: wgpu::BindingType::Buffer {
-            ty: wgpu::BufferBindingType::Storage { read_only: true },
-            has_dynamic_offset: false,
-            min_binding_size: wgpu::BufferSize::new(element),
-        },
-        count: None,
-    }
+    let stages = wgpu::ShaderStages::FRAGMENT.union(wgpu::ShaderStages::COMPUTE);
+    buffer_entry(binding, stages, wgpu::BufferBindingType::Storage { read_only: true }, false, Some(element))
 }
 
 impl Renderer {
@@ -80,12 +65,7 @@ impl Renderer {
                 uniform_entry_at(3, false, size_of::<TablesUniform>() as u64),
             ],
         });
-        let tables = device.create_buffer(&wgpu::BufferDescriptor {
-            label: Some("tables"),
-            size: size_of::<TablesUniform>() as u64,
-            usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
-            mapped_at_creation: false,
-        });
+        let tables = written_buffer(device, "tables", size_of::<TablesUniform>() as u64, wgpu::BufferUsages::UNIFORM);
         let object_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("object"),
             entries: &[vec![uniform_entry(true, size_of::<ObjectUniform>() as u64)], crate::textures::layout_entries()]

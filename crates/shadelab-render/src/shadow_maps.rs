@@ -3,6 +3,7 @@
 //! each layer was last drawn from (`ShadowMaps`), and the bind-group layouts and samplers the
 //! renderer builds for them. The passes that draw and read them are in `shadow_pass.rs`.
 
+use crate::buffers::buffer_entry;
 use crate::uniforms::ShadowsUniform;
 use shadelab_model::Scene;
 use shadelab_model::shadows::{
@@ -144,16 +145,13 @@ pub(crate) const CASTERS_BYTES: u64 = MAX_SHADOW_LAYERS as u64 * 64;
 pub(crate) fn casters_layout(device: &wgpu::Device) -> wgpu::BindGroupLayout {
     device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
         label: Some("shadow casters"),
-        entries: &[wgpu::BindGroupLayoutEntry {
-            binding: 0,
-            visibility: wgpu::ShaderStages::VERTEX,
-            ty: wgpu::BindingType::Buffer {
-                ty: wgpu::BufferBindingType::Uniform,
-                has_dynamic_offset: false,
-                min_binding_size: wgpu::BufferSize::new(CASTERS_BYTES),
-            },
-            count: None,
-        }],
+        entries: &[buffer_entry(
+            0,
+            wgpu::ShaderStages::VERTEX,
+            wgpu::BufferBindingType::Uniform,
+            false,
+            Some(CASTERS_BYTES),
+        )],
     })
 }
 

@@ -210,12 +210,12 @@ impl Renderer {
             dimension: Some(wgpu::TextureViewDimension::D2Array),
             ..Default::default()
         });
-        let uniform = device.create_buffer(&wgpu::BufferDescriptor {
-            label: Some("shadows"),
-            size: size_of::<ShadowsUniform>() as u64,
-            usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
-            mapped_at_creation: false,
-        });
+        let uniform = crate::buffers::written_buffer(
+            device,
+            "shadows",
+            size_of::<ShadowsUniform>() as u64,
+            wgpu::BufferUsages::UNIFORM,
+        );
         self.queue.write_buffer(&uniform, 0, bytemuck::bytes_of(&ShadowsUniform::zeroed()));
         let bind = device.create_bind_group(&wgpu::BindGroupDescriptor {
             label: Some("shadow maps"),

@@ -1,6 +1,7 @@
 //! A scene on the GPU: each shape's smooth and flat meshes (written in bounded staging batches),
 //! the globals and per-object uniform buffers, and the error for a scene the device cannot hold.
 
+use crate::buffers::written_buffer;
 use crate::renderer::Renderer;
 use crate::uniforms::{GlobalsUniform, ObjectUniform};
 use crate::vertex::{FlatVertex, SmoothVertex};
@@ -232,32 +233,17 @@ impl Uploader {
             objects.push(k);
         }
         let triangle_count = scene.triangle_count();
-        let globals = device.create_buffer(&wgpu::BufferDescriptor {
-            label: Some("globals"),
-            size: size_of::<GlobalsUniform>() as u64,
-            usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
-            mapped_at_creation: false,
-        });
+        let globals =
+            written_buffer(device, "globals", size_of::<GlobalsUniform>() as u64, wgpu::BufferUsages::UNIFORM);
         let align = device.limits().min_uniform_buffer_offset_alignment as u64;
         let object_stride = (size_of::<ObjectUniform>() as u64).div_ceil(align) * align;
-        let objects_buf = device.create_buffer(&wgpu::BufferDescriptor {
-            label: Some("objects"),
-            size: object_stride * scene.objects.len().max(1) as u64,
-            usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
-            mapped_at_creation: false,
-        });
-        let env_levels = device.create_buffer(&wgpu::BufferDescriptor {
-            label: Some("environment levels"),
-            size: (shadelab_model::lighting::environment::ENV_PREFILTERED_TEXELS * 16) as u64,
-            usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_DST,
-            mapped_at_creation: false,
-        });
-        let env_occlusion = device.create_buffer(&wgpu::BufferDescriptor {
-            label: Some("environment occlusion"),
-            size: (shadelab_model::lighting::occlusion::OCC_NODES_MAX * 8) as u64,
-            usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_DST,
-            mapped_at_creation: false,
-        });
+        let objects_size = object_stride * scene.objects.len().max(1) as u64;
+        let objects_buf = written_buffer(device, "objects", objects_size, wgpu::BufferUsages::UNIFORM);
+        let levels_size = (shadelab_model::lighting::environment::ENV_PREFILTERED_TEXELS * 16) as u64;
+        let env_levels = written_buffer(device, "environment levels", levels_size, wgpu::BufferUsages::STORAGE);
+        let occlusion_size = (shadelab_model::lighting::occlusion::OCC_NODES_MAX * 8) as u64;
+        let env_occlusion =
+            written_buffer(device, "environment occlusion", occlusion_size, wgpu::BufferUsages::STORAGE);
         let globals_bind = device.create_bind_group(&wgpu::BindGroupDescriptor {
             label: Some("globals"),
             layout: &self.globals_layout,

@@ -378,7 +378,27 @@ fn viewer_smoke_test(icd: &Path, xdg: &Path) -> Result<(), String> {
     if distinct.len() < 500 {
         return Err(format!("{} looks blank: {} distinct colours", shot.display(), distinct.len()));
     }
+    panel_stands_on_its_fill(&img).map_err(|e| format!("{}: {e}", shot.display()))?;
     eprintln!("xtask: {} is {}×{} with {} distinct colours", shot.display(), img.width(), img.height(), distinct.len());
+    Ok(())
+}
+
+/// egui's dark panel fill, which the window is cleared to where the panel paints none.
+const PANEL_FILL: [u8; 3] = [27, 27, 27];
+
+/// The panel's strip (the right fifth of the window) is mostly its fill: the window's clear
+/// stands in for the fill the panel no longer paints, and a wrong clear shows here.
+fn panel_stands_on_its_fill(img: &image::RgbImage) -> Result<(), String> {
+    let strip = (img.width() * 4 / 5..img.width()).flat_map(|x| (0..img.height()).map(move |y| (x, y)));
+    let (mut fill, mut all) = (0u64, 0u64);
+    for (x, y) in strip {
+        fill += u64::from(img.get_pixel(x, y).0 == PANEL_FILL);
+        all += 1;
+    }
+    // Text, buttons and sliders cover well under half of the panel.
+    if fill * 2 < all {
+        return Err(format!("only {fill} of the panel's {all} pixels are its fill {PANEL_FILL:?}"));
+    }
     Ok(())
 }
 
@@ -394,6 +414,19 @@ mod tests {
         c.add_line("running 5 tests");
         c.add_line("test a ... ok");
         assert_eq!(c, Count { passed: 27, failed: 2 });
+    }
+
+    #[test]
+    fn a_panel_without_its_fill_is_found() {
+        let mut img = image::RgbImage::from_pixel(100, 40, image::Rgb(PANEL_FILL));
+        assert_eq!(panel_stands_on_its_fill(&img), Ok(()));
+        // eframe's own clear colour where the panel's fill should be.
+        for x in 80..100 {
+            for y in 0..40 {
+                img.put_pixel(x, y, image::Rgb([12, 12, 12]));
+            }
+        }
+        assert!(panel_stands_on_its_fill(&img).is_err());
     }
 
     #[test]

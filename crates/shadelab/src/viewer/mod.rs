@@ -90,6 +90,7 @@ pub fn run(options: Options) -> Result<(), Failure> {
         options,
         Box::new(move |cc| {
             let mut viewer = Viewer::new(cc, screenshot, exit_after_frames)?;
+            viewer.clears_to_panel_fill = true;
             viewer.show_loaded(loaded, &scene.scene)?;
             viewer.shader_dir = shaders;
             viewer.allow_outside_paths = scene.allow_outside_paths;
@@ -124,6 +125,9 @@ pub struct Viewer {
     /// The last frame's area lights drawn as point lights, with the reason (the panel shows them).
     small_area_lights: Vec<String>,
     continuous: bool,
+    /// The window is cleared to the panel's fill (eframe asks `clear_color`), so the panel paints
+    /// none; off where a harness clears to transparent.
+    clears_to_panel_fill: bool,
     selected_material: usize,
     mu_linked: bool,
     script: Script,
@@ -235,6 +239,7 @@ impl Viewer {
             frame_ms: None,
             small_area_lights: Vec::new(),
             continuous: exit_after.is_some(),
+            clears_to_panel_fill: false,
             mu_linked: true,
             script: Script::new(screenshot_path, exit_after),
             saved_count: 0,
@@ -466,6 +471,23 @@ impl Viewer {
         self.scene_name = name.into();
     }
 
+    /// The parameters panel on the right. Where the window is cleared to its fill it paints none:
+    /// on a CPU rasterizer that fill cost a tenth of the frame (docs/performance.md).
+    fn parameters_panel(&mut self, ui: &mut egui::Ui) {
+        let fill = ui.visuals().panel_fill;
+        let mut frame = egui::Frame::side_top_panel(ui.style());
+        if self.clears_to_panel_fill {
+            frame = frame.fill(egui::Color32::TRANSPARENT);
+        }
+        egui::Panel::right("parameters").frame(frame).resizable(true).default_size(340.0).show(ui, |ui| {
+            // The fill the panel stands on, painted or not: the scroll area's fades blend into it.
+            let stands_on = egui::UiStackInfo::default().with_frame(egui::Frame::NONE.fill(fill));
+            ui.scope_builder(egui::UiBuilder::new().ui_stack_info(stands_on), |ui| {
+                egui::ScrollArea::vertical().show(ui, |ui| self.panel(ui));
+            });
+        });
+    }
+
     fn keyboard(&mut self, ctx: &egui::Context) {
         if ctx.memory(|m| m.focused().is_some()) {
             return; // typing into a field
@@ -494,6 +516,11 @@ impl Viewer {
 }
 
 impl eframe::App for Viewer {
+    /// The panel's fill: the window's clear paints the panel's background (`parameters_panel`).
+    fn clear_color(&self, visuals: &egui::Visuals) -> [f32; 4] {
+        visuals.panel_fill.to_normalized_gamma_f32()
+    }
+
     fn ui(&mut self, ui: &mut egui::Ui, _frame: &mut eframe::Frame) {
         let ctx = ui.ctx().clone();
         if self.shader_dir.is_some() {
@@ -507,9 +534,7 @@ impl eframe::App for Viewer {
         self.poll_loading(&ctx);
         #[cfg(target_arch = "wasm32")]
         self.poll_screenshot(&ctx);
-        egui::Panel::right("parameters").resizable(true).default_size(340.0).show(ui, |ui| {
-            egui::ScrollArea::vertical().show(ui, |ui| self.panel(ui));
-        });
+        self.parameters_panel(ui);
         egui::CentralPanel::default().frame(egui::Frame::NONE).show(ui, |ui| self.viewport(ui));
         self.lobe.show(&ctx, &self.scene);
         self.script.after_frame(&ctx, self.frame_ms);

@@ -60,6 +60,7 @@ pub async fn start(canvas: web_sys::HtmlCanvasElement) -> Result<(), JsValue> {
             Box::new(move |cc| {
                 CONTEXT.with(|c| *c.borrow_mut() = Some(cc.egui_ctx.clone()));
                 let mut viewer = Viewer::new(cc, None, None)?;
+                viewer.clears_to_panel_fill = true;
                 viewer.open_link(&link);
                 Ok(Box::new(viewer) as Box<dyn eframe::App>)
             }),

@@ -22,6 +22,8 @@ const DIRECTIONAL_MARKER_DISTANCE: f64 = 4.0;
 /// Markers stay this many points inside the view's edge.
 const MARKER_MARGIN: f32 = 12.0;
 const MARKER_RADIUS: f32 = 6.0;
+/// Points between two labels that would have overlapped and were moved apart.
+const LABEL_GAP: f32 = 2.0;
 
 /// A marker at each point or spot light, and at the far point a directional light comes from,
 /// each labelled with its number and kind.
@@ -37,6 +39,7 @@ pub(super) fn light_markers(
         return;
     }
     let vp = scene.camera.projection(w as f64 / h as f64) * scene.camera.view();
+    let mut placed: Vec<Rect> = Vec::with_capacity(scene.lights.len());
     for (i, l) in scene.lights.iter().enumerate() {
         let p =
             if l.kind.is_directional() { orbit_target - l.direction * DIRECTIONAL_MARKER_DISTANCE } else { l.position };
@@ -66,7 +69,68 @@ pub(super) fn light_markers(
         } else {
             (egui::Align2::LEFT_TOP, egui::vec2(9.0, 6.0))
         };
-        painter.text(at + offset, align, label, egui::FontId::proportional(12.0), Color32::WHITE);
+        let galley = painter.layout_no_wrap(label, egui::FontId::proportional(12.0), Color32::WHITE);
+        let wanted = align.anchor_size(at + offset, galley.size());
+        let rect = unstacked(wanted, &placed, rect);
+        painter.galley(rect.min, galley, Color32::WHITE);
+        placed.push(rect);
+    }
+}
+
+/// Where a label goes: where it wants to be, or moved past the labels `placed` before it that it
+/// would cover (two lights near each other, or pinned to the same edge), down while it stays in
+/// `view`, else up.
+fn unstacked(wanted: Rect, placed: &[Rect], view: Rect) -> Rect {
+    let down = moved_clear(wanted, placed, 1.0);
+    if down.bottom() <= view.bottom() { down } else { moved_clear(wanted, placed, -1.0) }
+}
+
+/// `r` moved along y (`dir`: 1 down, -1 up) past each placed rectangle it meets, until it meets
+/// none. It only moves one way, so it passes each placed rectangle at most once.
+fn moved_clear(mut r: Rect, placed: &[Rect], dir: f32) -> Rect {
+    for _ in 0..placed.len() {
+        let Some(p) = placed.iter().find(|p| p.intersects(r)) else { break };
+        let step = if dir > 0.0 { p.bottom() - r.top() } else { p.top() - r.bottom() };
+        r = r.translate(vec2(0.0, step + dir * LABEL_GAP));
+    }
+    r
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn label(x: f32, y: f32) -> Rect {
+        Rect::from_min_size(pos2(x, y), vec2(100.0, 14.0))
+    }
+
+    #[test]
+    fn labels_that_would_overlap_are_moved_apart() {
+        let view = Rect::from_min_size(pos2(0.0, 0.0), vec2(400.0, 300.0));
+        // Three lights pinned to the same edge, one apart from them.
+        let wanted = [label(10.0, 20.0), label(12.0, 24.0), label(300.0, 22.0), label(11.0, 21.0)];
+        let mut placed = Vec::new();
+        for w in wanted {
+            placed.push(unstacked(w, &placed, view));
+        }
+        assert_eq!(placed[0], wanted[0], "the first label stays where it wants to be");
+        assert_eq!(placed[2], wanted[2], "a label that covers none stays");
+        for (i, a) in placed.iter().enumerate() {
+            assert_eq!(a.size(), wanted[i].size());
+            assert_eq!(a.left(), wanted[i].left(), "labels move along y only");
+            for b in &placed[i + 1..] {
+                assert!(!a.intersects(*b), "{a:?} and {b:?} overlap");
+            }
+        }
+        assert!(placed[1].top() > placed[0].bottom() && placed[3].top() > placed[1].bottom());
+    }
+
+    #[test]
+    fn labels_at_the_bottom_of_the_view_move_up() {
+        let view = Rect::from_min_size(pos2(0.0, 0.0), vec2(400.0, 300.0));
+        let first = label(10.0, 280.0);
+        let second = unstacked(label(10.0, 282.0), &[first], view);
+        assert!(second.bottom() < first.top(), "{second:?} should stand above {first:?}");
     }
 }
 

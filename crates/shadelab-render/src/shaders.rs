@@ -222,3 +222,5 @@ pub fn lighting_entry_point(shading: shadelab_model::ShadingMode) -> Option<&'st
 mod effect_structure_tests;
 #[cfg(test)]
 pub(crate) mod tests;
+#[cfg(test)]
+mod validated_before;

@@ -3,6 +3,7 @@
 //! permutation without an effect has none of the functions or uniform members declared for it.
 
 use super::tests::parse;
+use super::validated_before;
 use super::*;
 use crate::sweep::{SWEEP_KERNEL, sweep_source};
 use naga::valid::{Capabilities, ValidationFlags, Validator};
@@ -203,10 +204,28 @@ fn every_permutation_validates_in_naga() {
         (std::hash::Hasher::finish(&hasher), decided)
     });
     let mut seen = HashSet::new();
-    let distinct: Vec<EffectKey> =
-        keys.into_iter().zip(hashed).filter(|(_, h)| seen.insert(*h)).map(|(k, _)| k).collect();
+    let distinct: Vec<(EffectKey, (u64, (bool, bool)))> =
+        keys.into_iter().zip(hashed).filter(|(_, h)| seen.insert(*h)).collect();
+    // A module an earlier run checked, with the same source, entry points, naga and checks, is
+    // not checked again (validated_before.rs); a fresh build checks every one.
+    let digest = validated_before::checks_digest(include_str!("effect_structure_tests.rs"));
+    let check = |(key, source): &(EffectKey, (u64, (bool, bool)))| {
+        digest.map(|d| validated_before::check_hash(d, (source, required_entry_points(*key))))
+    };
+    let before = validated_before::load();
+    let todo: Vec<EffectKey> =
+        distinct.iter().filter(|k| check(k).is_none_or(|c| !before.contains(&c))).map(|(k, _)| *k).collect();
+    eprintln!(
+        "{} distinct modules: {} checked now, {} passed the same checks in an earlier run",
+        distinct.len(),
+        todo.len(),
+        distinct.len() - todo.len()
+    );
     // On every core: parsing and validating each module is most of the suite's longest test.
-    on_every_core(&distinct, |key| permutation_is_valid(key, &lighting_source_for(raw, key).unwrap()));
+    on_every_core(&todo, |key| permutation_is_valid(key, &lighting_source_for(raw, key).unwrap()));
+    if digest.is_some() {
+        validated_before::store(&distinct.iter().filter_map(check).collect());
+    }
     // The terms alone, and the sweep's compute module, are valid too.
     validate(&parse(&terms_source()));
     validate(&parse(&sweep_source()));
@@ -233,18 +252,24 @@ fn permutation_is_valid(key: EffectKey, src: &str) {
     let module =
         naga::front::wgsl::parse_str(src).unwrap_or_else(|e| panic!("{}: {}", key.label(), e.emit_to_string(src)));
     validate(&module);
+    let background = module.entry_points.iter().any(|e| e.name == crate::environment_gpu::BACKGROUND_ENTRY_POINTS.1);
+    assert_eq!(background, key.has(Effect::EnvironmentBackground), "{}: the background's entry point", key.label());
+    let glass = module.entry_points.iter().any(|e| e.name == crate::glass_pass::GLASS_ENTRY_POINTS.1);
+    assert_eq!(glass, key.has(Effect::Transmission), "{}: the glass pass's entry point", key.label());
+    for (vs, fs) in required_entry_points(key) {
+        assert!(module.entry_points.iter().any(|e| e.name == vs) && module.entry_points.iter().any(|e| e.name == fs));
+    }
+}
+
+/// The entry points `key`'s module must hold: every shading mode's, the baseline's, and the glass
+/// pass's where it has transmission.
+fn required_entry_points(key: EffectKey) -> Vec<(&'static str, &'static str)> {
     let mut eps: Vec<(&str, &str)> = ShadingMode::ALL_MODES.into_iter().map(entry_points).collect();
     eps.push(BASELINE_ENTRY_POINTS);
     if key.has(Effect::Transmission) {
         eps.extend([crate::glass_pass::GLASS_ENTRY_POINTS, crate::glass_pass::BACK_ENTRY_POINTS]);
     }
-    let background = module.entry_points.iter().any(|e| e.name == crate::environment_gpu::BACKGROUND_ENTRY_POINTS.1);
-    assert_eq!(background, key.has(Effect::EnvironmentBackground), "{}: the background's entry point", key.label());
-    let glass = module.entry_points.iter().any(|e| e.name == crate::glass_pass::GLASS_ENTRY_POINTS.1);
-    assert_eq!(glass, key.has(Effect::Transmission), "{}: the glass pass's entry point", key.label());
-    for (vs, fs) in eps {
-        assert!(module.entry_points.iter().any(|e| e.name == vs) && module.entry_points.iter().any(|e| e.name == fs));
-    }
+    eps
 }
 
 /// Functions reachable by calls from an entry point.

@@ -89,6 +89,18 @@ fn union(a: EffectKey, b: EffectKey) -> EffectKey {
     b.effects().into_iter().fold(a, |k, e| k.with(e))
 }
 
+/// Every subset of `group` on each of `bases` (each base without `group`'s own effects first).
+fn subsets_on(group: &[Effect], bases: &[EffectKey]) -> Vec<EffectKey> {
+    let subsets = subsets(group);
+    bases
+        .iter()
+        .flat_map(|&base| {
+            let base = group.iter().fold(base, |k, &e| k.without(e));
+            subsets.iter().map(move |&k| union(k, base))
+        })
+        .collect()
+}
+
 /// Every permutation validates in naga with every entry point: all 2^n subsets of the effects
 /// outside the shadow, area and surface code (with the shadow sub-effects all on), and every
 /// subset of the shadow sub-effects, the area effects and the surface effects on a few bases (their code is nested in the shadow block, so the full product
@@ -96,6 +108,58 @@ fn union(a: EffectKey, b: EffectKey) -> EffectKey {
 #[test]
 fn every_permutation_validates_in_naga() {
     let raw = raw_lighting_source();
+    let keys = permutation_keys();
+    // Keys whose effects are nested in an effect that is off preprocess to the same source:
+    // each distinct source (with the two entry points a key decides) is validated once, which
+    // checks what every key would. Sources are compared by hash, so they need not all be held;
+    // the keys are preprocessed and hashed on every core, in order.
+    let raw = &raw;
+    let hashed = on_every_core(&keys, |key| {
+        let mut hasher = std::collections::hash_map::DefaultHasher::new();
+        std::hash::Hash::hash(&lighting_source_for(raw, key).unwrap(), &mut hasher);
+        let decided = (key.has(Effect::Transmission), key.has(Effect::EnvironmentBackground));
+        (std::hash::Hasher::finish(&hasher), decided)
+    });
+    let mut seen = HashSet::new();
+    let distinct: Vec<(EffectKey, ModuleHash)> =
+        keys.into_iter().zip(hashed).filter(|(_, h)| seen.insert(*h)).collect();
+    // A module an earlier run checked, with the same source, entry points, naga and checks, is
+    // not checked again (validated_before.rs); a fresh build checks every one.
+    let (todo, passed) = not_checked_before(&distinct);
+    // On every core: parsing and validating each module is most of the suite's longest test.
+    on_every_core(&todo, |key| permutation_is_valid(key, &lighting_source_for(raw, key).unwrap()));
+    validated_before::store(&passed);
+    // The terms alone, and the sweep's compute module, are valid too.
+    validate(&parse(&terms_source()));
+    validate(&parse(&sweep_source()));
+    validate(&parse(&crate::sweep::environment::env_sweep_source()));
+}
+
+/// A lighting module's source hash and what its key decides (transmission, the background).
+type ModuleHash = (u64, (bool, bool));
+
+/// The keys of `distinct` whose checks no earlier run passed, and every key's check (the record
+/// once all of them pass).
+fn not_checked_before(distinct: &[(EffectKey, ModuleHash)]) -> (Vec<EffectKey>, HashSet<u64>) {
+    let digest = validated_before::checks_digest(include_str!("effect_structure_tests.rs"));
+    let check = |(key, module): &(EffectKey, ModuleHash)| {
+        // The entry points' names the check compares with, whether the key needs them or not.
+        let names = (crate::environment_gpu::BACKGROUND_ENTRY_POINTS, crate::glass_pass::GLASS_ENTRY_POINTS);
+        validated_before::check_hash(digest, (module, required_entry_points(*key), names))
+    };
+    let before = validated_before::load();
+    let todo: Vec<EffectKey> = distinct.iter().filter(|k| !before.contains(&check(k))).map(|(k, _)| *k).collect();
+    eprintln!(
+        "{} distinct modules: {} checked now, {} passed the same checks in an earlier run",
+        distinct.len(),
+        todo.len(),
+        distinct.len() - todo.len()
+    );
+    (todo, distinct.iter().map(check).collect())
+}
+
+/// The effect keys the permutations' test covers (many preprocess to the same module).
+fn permutation_keys() -> Vec<EffectKey> {
     let outside: Vec<Effect> = Effect::ALL
         .into_iter()
         .filter(|e| {
@@ -111,10 +175,7 @@ fn every_permutation_validates_in_naga() {
         [Effect::CastShadows, Effect::DirectionalLights].into_iter().collect(),
         [Effect::CastShadows, Effect::PointLights, Effect::SpotLights].into_iter().collect(),
     ];
-    for base in bases {
-        let base = INSIDE_SHADOWS.into_iter().fold(base, |k, e| k.without(e));
-        keys.extend(subsets(&INSIDE_SHADOWS).into_iter().map(|k| union(k, base)));
-    }
+    keys.extend(subsets_on(&INSIDE_SHADOWS, &bases));
     // The area effects on every other effect, none, a shadowed point light, and the chapter's
     // other models (each sample of the light loop goes through them).
     let area_bases: [EffectKey; 4] = [
@@ -125,16 +186,10 @@ fn every_permutation_validates_in_naga() {
             .collect(),
         [Effect::PointLights, Effect::LambertRule, Effect::FourTermSum, Effect::TransmittedTerm].into_iter().collect(),
     ];
-    for base in area_bases {
-        let base = AREA.into_iter().fold(base, |k, e| k.without(e));
-        keys.extend(subsets(&AREA).into_iter().map(|k| union(k, base)));
-    }
+    keys.extend(subsets_on(&AREA, &area_bases));
     // The surface effects touch only surface.wgsl and Phong shading's interpolants: each of
     // their subsets with every other effect on, and with none.
-    for base in [EffectKey::UBER, EffectKey::NONE] {
-        let base = SURFACE.into_iter().fold(base, |k, e| k.without(e));
-        keys.extend(subsets(&SURFACE).into_iter().map(|k| union(k, base)));
-    }
+    keys.extend(subsets_on(&SURFACE, &[EffectKey::UBER, EffectKey::NONE]));
     // The glass effects on every other effect, none, shadows with a point light, the surface
     // effects, and an area light (the glass pass shades its surface with the whole light loop).
     let glass_bases: [EffectKey; 5] = [
@@ -144,10 +199,7 @@ fn every_permutation_validates_in_naga() {
         SURFACE.into_iter().collect(),
         [Effect::PointLights, Effect::AreaLights, Effect::SpecularCookTorrance].into_iter().collect(),
     ];
-    for base in glass_bases {
-        let base = GLASS.into_iter().fold(base, |k, e| k.without(e));
-        keys.extend(subsets(&GLASS).into_iter().map(|k| union(k, base)));
-    }
+    keys.extend(subsets_on(&GLASS, &glass_bases));
     // The microfacet terms on every other effect, on Cook–Torrance alone, and with glass (whose
     // Fresnel is the exact F's function).
     let microfacet_bases: [EffectKey; 3] = [
@@ -155,17 +207,11 @@ fn every_permutation_validates_in_naga() {
         [Effect::PointLights, Effect::SpecularCookTorrance].into_iter().collect(),
         [Effect::DirectionalLights, Effect::SpecularCookTorrance, Effect::Transmission].into_iter().collect(),
     ];
-    for base in microfacet_bases {
-        let base = MICROFACET.into_iter().fold(base, |k, e| k.without(e));
-        keys.extend(subsets(&MICROFACET).into_iter().map(|k| union(k, base)));
-    }
+    keys.extend(subsets_on(&MICROFACET, &microfacet_bases));
     // Phong's normalization on every other effect, on Phong specular alone, and on none.
     let phong_bases: [EffectKey; 3] =
         [EffectKey::UBER, [Effect::PointLights, Effect::SpecularPhong].into_iter().collect(), EffectKey::NONE];
-    for base in phong_bases {
-        let base = PHONG_OPTIONS.into_iter().fold(base, |k, e| k.without(e));
-        keys.extend(subsets(&PHONG_OPTIONS).into_iter().map(|k| union(k, base)));
-    }
+    keys.extend(subsets_on(&PHONG_OPTIONS, &phong_bases));
     // Both on every other effect, on glTF's terms with the diffuse, and on none.
     let ms_bases: [EffectKey; 3] = [
         EffectKey::UBER,
@@ -181,55 +227,12 @@ fn every_permutation_validates_in_naga() {
         .collect(),
         EffectKey::NONE,
     ];
-    for base in ms_bases {
-        let base = MS_OPTIONS.into_iter().fold(base, |k, e| k.without(e));
-        keys.extend(subsets(&MS_OPTIONS).into_iter().map(|k| union(k, base)));
-    }
+    keys.extend(subsets_on(&MS_OPTIONS, &ms_bases));
     // These on every other effect, on the environment's diffuse alone, and on none.
     let env_bases: [EffectKey; 3] =
         [EffectKey::UBER, [Effect::DirectionalLights, Effect::EnvironmentSh].into_iter().collect(), EffectKey::NONE];
-    for base in env_bases {
-        let base = ENV_OPTIONS.into_iter().fold(base, |k, e| k.without(e));
-        keys.extend(subsets(&ENV_OPTIONS).into_iter().map(|k| union(k, base)));
-    }
-    // Keys whose effects are nested in an effect that is off preprocess to the same source:
-    // each distinct source (with the two entry points a key decides) is validated once, which
-    // checks what every key would. Sources are compared by hash, so they need not all be held;
-    // the keys are preprocessed and hashed on every core, in order.
-    let raw = &raw;
-    let hashed = on_every_core(&keys, |key| {
-        let mut hasher = std::collections::hash_map::DefaultHasher::new();
-        std::hash::Hash::hash(&lighting_source_for(raw, key).unwrap(), &mut hasher);
-        let decided = (key.has(Effect::Transmission), key.has(Effect::EnvironmentBackground));
-        (std::hash::Hasher::finish(&hasher), decided)
-    });
-    let mut seen = HashSet::new();
-    let distinct: Vec<(EffectKey, (u64, (bool, bool)))> =
-        keys.into_iter().zip(hashed).filter(|(_, h)| seen.insert(*h)).collect();
-    // A module an earlier run checked, with the same source, entry points, naga and checks, is
-    // not checked again (validated_before.rs); a fresh build checks every one.
-    let digest = validated_before::checks_digest(include_str!("effect_structure_tests.rs"));
-    let check = |(key, source): &(EffectKey, (u64, (bool, bool)))| {
-        digest.map(|d| validated_before::check_hash(d, (source, required_entry_points(*key))))
-    };
-    let before = validated_before::load();
-    let todo: Vec<EffectKey> =
-        distinct.iter().filter(|k| check(k).is_none_or(|c| !before.contains(&c))).map(|(k, _)| *k).collect();
-    eprintln!(
-        "{} distinct modules: {} checked now, {} passed the same checks in an earlier run",
-        distinct.len(),
-        todo.len(),
-        distinct.len() - todo.len()
-    );
-    // On every core: parsing and validating each module is most of the suite's longest test.
-    on_every_core(&todo, |key| permutation_is_valid(key, &lighting_source_for(raw, key).unwrap()));
-    if digest.is_some() {
-        validated_before::store(&distinct.iter().filter_map(check).collect());
-    }
-    // The terms alone, and the sweep's compute module, are valid too.
-    validate(&parse(&terms_source()));
-    validate(&parse(&sweep_source()));
-    validate(&parse(&crate::sweep::environment::env_sweep_source()));
+    keys.extend(subsets_on(&ENV_OPTIONS, &env_bases));
+    keys
 }
 
 /// `f` of every key, the keys cut into one run a core, the results in the keys' order.

@@ -128,6 +128,8 @@ pub struct Viewer {
     /// The window is cleared to the panel's fill (eframe asks `clear_color`), so the panel paints
     /// none; off where a harness clears to transparent.
     clears_to_panel_fill: bool,
+    /// The window's format encodes to sRGB on write, so its clear colour is given linear.
+    window_is_srgb: bool,
     selected_material: usize,
     mu_linked: bool,
     script: Script,
@@ -240,6 +242,7 @@ impl Viewer {
             small_area_lights: Vec::new(),
             continuous: exit_after.is_some(),
             clears_to_panel_fill: false,
+            window_is_srgb: rs.target_format.is_srgb(),
             mu_linked: true,
             script: Script::new(screenshot_path, exit_after),
             saved_count: 0,
@@ -518,7 +521,7 @@ impl Viewer {
 impl eframe::App for Viewer {
     /// The panel's fill: the window's clear paints the panel's background (`parameters_panel`).
     fn clear_color(&self, visuals: &egui::Visuals) -> [f32; 4] {
-        visuals.panel_fill.to_normalized_gamma_f32()
+        window_clear(visuals.panel_fill, self.window_is_srgb)
     }
 
     fn ui(&mut self, ui: &mut egui::Ui, _frame: &mut eframe::Frame) {
@@ -544,5 +547,27 @@ impl eframe::App for Viewer {
         if self.continuous {
             ctx.request_repaint();
         }
+    }
+}
+
+/// The clear value that stores `color` in a window: its sRGB bytes as they are where the format
+/// stores what it is given, linear where the format encodes to sRGB on write.
+fn window_clear(color: egui::Color32, srgb: bool) -> [f32; 4] {
+    if srgb { egui::Rgba::from(color).to_array() } else { color.to_normalized_gamma_f32() }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_clear_stores_the_fills_bytes_in_either_format() {
+        let fill = egui::Visuals::dark().panel_fill;
+        let [r, ..] = window_clear(fill, false);
+        assert_eq!((r * 255.0).round() as u8, fill.r());
+        // An sRGB format encodes the linear value back to the same byte.
+        let [r, ..] = window_clear(fill, true);
+        assert!(r < fill.r() as f32 / 255.0, "{r} is not linear");
+        assert_eq!(egui::Color32::from(egui::Rgba::from_rgb(r, r, r)).r(), fill.r());
     }
 }

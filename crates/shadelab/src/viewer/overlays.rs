@@ -77,12 +77,18 @@ pub(super) fn light_markers(
     }
 }
 
-/// Where a label goes: where it wants to be, or moved past the labels `placed` before it that it
-/// would cover (two lights near each other, or pinned to the same edge), down while it stays in
-/// `view`, else up.
+/// Where a label goes: where it wants to be, raised to end inside `view` (a light pinned to the
+/// bottom edge), then moved past the labels `placed` before it that it would cover (two lights
+/// near each other, or pinned to the same edge): down while it stays in `view`, else up, else
+/// whichever leaves less of it outside.
 fn unstacked(wanted: Rect, placed: &[Rect], view: Rect) -> Rect {
-    let down = moved_clear(wanted, placed, 1.0);
-    if down.bottom() <= view.bottom() { down } else { moved_clear(wanted, placed, -1.0) }
+    let inside = wanted.translate(vec2(0.0, (view.bottom() - wanted.bottom()).min(0.0)));
+    let down = moved_clear(inside, placed, 1.0);
+    if down.bottom() <= view.bottom() {
+        return down;
+    }
+    let up = moved_clear(inside, placed, -1.0);
+    if view.top() - up.top() <= down.bottom() - view.bottom() { up } else { down }
 }
 
 /// `r` moved along y (`dir`: 1 down, -1 up) past each placed rectangle it meets, until it meets
@@ -126,11 +132,22 @@ mod tests {
     }
 
     #[test]
-    fn labels_at_the_bottom_of_the_view_move_up() {
+    fn labels_of_lights_pinned_to_the_bottom_stay_in_the_view_and_apart() {
         let view = Rect::from_min_size(pos2(0.0, 0.0), vec2(400.0, 300.0));
-        let first = label(10.0, 280.0);
-        let second = unstacked(label(10.0, 282.0), &[first], view);
+        // A marker pinned to the bottom edge, its label below it as `light_markers` anchors it.
+        let marker = pos2(50.0, view.bottom() - MARKER_MARGIN);
+        let wanted = Rect::from_min_size(marker + vec2(9.0, 6.0), vec2(100.0, 14.0));
+        assert!(wanted.bottom() > view.bottom(), "the case: the label would hang out of the view");
+        let first = unstacked(wanted, &[], view);
+        assert_eq!(first.bottom(), view.bottom());
+        let second = unstacked(wanted.translate(vec2(4.0, 0.0)), &[first], view);
         assert!(second.bottom() < first.top(), "{second:?} should stand above {first:?}");
+        // A view too short for both: the second label leaves as little of it outside as it can.
+        let short = Rect::from_min_size(pos2(0.0, 280.0), vec2(400.0, 20.0));
+        let first = unstacked(wanted, &[], short);
+        let second = unstacked(wanted, &[first], short);
+        assert!(!second.intersects(first));
+        assert!(second.bottom() - short.bottom() <= 16.0 + LABEL_GAP && short.top() - second.top() <= 16.0);
     }
 }
 

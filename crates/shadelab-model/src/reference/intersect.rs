@@ -263,16 +263,11 @@ pub(super) fn intersect_shape(shape: Shape, o: DVec3, dir: DVec3) -> Option<Hit>
 /// The first ray parameter after `RAY_T_MIN` where a ray (object space) crosses a unit shape's
 /// surface, entering or leaving it: a shadow ray may start inside a closed shape.
 fn first_crossing(shape: Shape, o: DVec3, dir: DVec3) -> Option<f64> {
-    let convex_crossing = |planes: &[(DVec3, f64)]| {
-        let (t_in, t_out, _) = convex_span(o, dir, planes)?;
-        [t_in, t_out].into_iter().find(|&t| t > RAY_T_MIN)
-    };
+    // A convex shape's span: its entry where that lies ahead, else its exit.
+    let crossing = |(t_in, t_out, _): (f64, f64, DVec3)| [t_in, t_out].into_iter().find(|&t| t > RAY_T_MIN);
     match shape {
-        Shape::Cube => {
-            let (t_in, t_out, _) = cube_span(o, dir)?;
-            [t_in, t_out].into_iter().find(|&t| t > RAY_T_MIN)
-        }
-        Shape::Pyramid => convex_crossing(&faces(PYRAMID_PLANES)),
+        Shape::Cube => crossing(cube_span(o, dir)?),
+        Shape::Pyramid => crossing(convex_span(o, dir, &faces(PYRAMID_PLANES))?),
         // The sphere and cylinder tests take the exit when the entry is behind; the plane and
         // meshes have one crossing per surface.
         shape => intersect_shape(shape, o, dir).map(|h| h.0),

@@ -112,16 +112,7 @@ pub(crate) fn maps_layout(device: &wgpu::Device) -> wgpu::BindGroupLayout {
     device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
         label: Some("shadow maps"),
         entries: &[
-            wgpu::BindGroupLayoutEntry {
-                binding: 0,
-                visibility: stages,
-                ty: wgpu::BindingType::Buffer {
-                    ty: wgpu::BufferBindingType::Uniform,
-                    has_dynamic_offset: false,
-                    min_binding_size: wgpu::BufferSize::new(size_of::<ShadowsUniform>() as u64),
-                },
-                count: None,
-            },
+            buffer_entry(0, stages, wgpu::BufferBindingType::Uniform, false, Some(size_of::<ShadowsUniform>() as u64)),
             wgpu::BindGroupLayoutEntry {
                 binding: 1,
                 visibility: stages,

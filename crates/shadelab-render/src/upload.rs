@@ -461,12 +461,7 @@ fn buffer_from_pieces<T: bytemuck::Pod>(
     let bytes = (count * size_of::<T>()) as u64;
     // wgpu buffers are at least COPY_BUFFER_ALIGNMENT (4) bytes; every element here is a multiple
     // of 4 bytes already, so only an empty mesh needs the minimum.
-    let buffer = device.create_buffer(&wgpu::BufferDescriptor {
-        label: Some(label),
-        size: bytes.max(wgpu::COPY_BUFFER_ALIGNMENT),
-        usage: usage | wgpu::BufferUsages::COPY_DST,
-        mapped_at_creation: false,
-    });
+    let buffer = written_buffer(device, label, bytes.max(wgpu::COPY_BUFFER_ALIGNMENT), usage);
     // Whole triangles per piece when T is an index (3 per triangle) or a flat corner, and whole
     // pieces per batch.
     let step = PIECE_ELEMENTS - PIECE_ELEMENTS % 3;

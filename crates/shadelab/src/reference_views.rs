@@ -101,13 +101,7 @@ pub fn run(
 ) -> Result<(), Failure> {
     // The difference's GPU side, opened before the reference is traced, so that a missing
     // adapter is said at once rather than after minutes of paths.
-    let gpu = if args.reference {
-        None
-    } else {
-        let gpu = shadelab_render::Gpu::from_env().context("opening a GPU adapter")?;
-        log::info!("adapter: {}", gpu.describe());
-        Some(gpu)
-    };
+    let gpu = if args.reference { None } else { Some(crate::render::open_gpu()?) };
     let start = web_time::Instant::now();
     let paths = args.paths();
     // Which reference this is: the twin and the truth differ under an environment.

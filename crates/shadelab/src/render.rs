@@ -84,8 +84,7 @@ pub fn run(args: &cli::RenderArgs) -> Result<(), Failure> {
         return crate::reference_views::run(&scene, (width, height), &settings, args, kind);
     }
     // Opened only where a GPU image is made: the reference alone is the CPU's.
-    let gpu = Gpu::from_env().context("opening a GPU adapter")?;
-    log::info!("adapter: {}", gpu.describe());
+    let gpu = open_gpu()?;
     if args.interpolation_difference {
         return interpolation_difference(&gpu, &scene, (width, height), &settings, &args.output);
     }
@@ -103,6 +102,14 @@ pub fn run(args: &cli::RenderArgs) -> Result<(), Failure> {
         log::warn!("{bad} pixels are not finite");
     }
     Ok(())
+}
+
+/// The adapter the command line's renders, benches and studies draw with (`SHADELAB_ADAPTER`'s
+/// choice), named in the log.
+pub(crate) fn open_gpu() -> anyhow::Result<Gpu> {
+    let gpu = Gpu::from_env().context("opening a GPU adapter")?;
+    log::info!("adapter: {}", gpu.describe());
+    Ok(gpu)
 }
 
 /// The scene, settings and term `render` draws: the flags', or with `--link` the link's (its

@@ -2,13 +2,11 @@
 //! f64 reference, printed as a table.
 
 use crate::Failure;
-use anyhow::Context;
-use shadelab_render::Gpu;
 
 /// `shadelab sweep`: the stability sweep's table; exits 1 if any check fails.
 pub fn run() -> Result<(), Failure> {
     use shadelab_render::sweep::{self, ERROR_TOLERANCE, SweepInputs};
-    let gpu = Gpu::from_env().context("opening a GPU adapter")?;
+    let gpu = crate::render::open_gpu()?;
     let start = std::time::Instant::now();
     let report = sweep::run(&gpu, SweepInputs::standard());
     println!("# shadelab sweep — device: {}", gpu.describe());

@@ -274,7 +274,7 @@ pub fn run(args: &cli::BenchAccuracyArgs) -> Result<(), Failure> {
     // A folder that cannot be made is the user's to fix, and is found before minutes of work.
     std::fs::create_dir_all(&args.out)
         .map_err(|e| Failure::Usage(format!("--out: cannot create folder '{}': {e}", args.out.display())))?;
-    let gpu = Gpu::from_env().context("opening a GPU adapter")?;
+    let gpu = crate::render::open_gpu()?;
     let command = std::iter::once("shadelab".to_string()).chain(std::env::args().skip(1)).collect::<Vec<_>>().join(" ");
     let total = groups(&plan).len() as u64;
     let bar = indicatif::ProgressBar::new(total).with_style(

@@ -4,10 +4,9 @@
 //! `render` draws it), also with its area kept.
 
 use crate::{Failure, cli};
-use anyhow::Context;
 use shadelab_model::{Scene, ShadingMode, SpecularModel};
 use shadelab_render::timing::{FrameTimer, TimedDraw, median, quantile_sorted};
-use shadelab_render::{Gpu, RenderSettings, Renderer, Target};
+use shadelab_render::{RenderSettings, Renderer, Target};
 
 /// `shadelab bench effects`: specialized vs uber vs per-effect floors, per scene and shading.
 pub fn run(args: &cli::BenchEffectsArgs) -> Result<(), Failure> {
@@ -15,7 +14,7 @@ pub fn run(args: &cli::BenchEffectsArgs) -> Result<(), Failure> {
     let (width, height) = args.size.pixels();
     let (frames, warmup) = (args.frames as usize, args.warmup as usize);
     let scenes = load_scenes(args)?;
-    let gpu = Gpu::from_env().context("opening a GPU adapter")?;
+    let gpu = crate::render::open_gpu()?;
     let mut r = Renderer::new(&gpu.device, &gpu.queue);
     let target = Target::new(&gpu.device, width, height, shadelab_render::target::HDR_FORMAT);
     let timer = FrameTimer::new(&gpu.device, &gpu.queue);

@@ -8,7 +8,6 @@
 
 use crate::reference_views::traced_with_progress;
 use crate::{Failure, cli};
-use anyhow::Context;
 use shadelab_model::lighting::env_map::{EnvSource, Environment};
 use shadelab_model::lighting::environment::SH_Y0;
 use shadelab_model::lighting::occlusion::OCC_RAYS;
@@ -17,7 +16,7 @@ use shadelab_model::reference::{
 };
 use shadelab_model::{Scene, ShadingMode, SpecularModel};
 use shadelab_render::timing::{FrameTimer, TimedDraw, median};
-use shadelab_render::{Gpu, Program, RenderSettings, Renderer, Target};
+use shadelab_render::{Program, RenderSettings, Renderer, Target};
 
 /// Frames timed per rung, after this many unmeasured ones.
 const FRAMES: usize = 30;
@@ -133,7 +132,7 @@ pub fn run(args: &cli::BenchAmbientArgs) -> Result<(), Failure> {
 /// The GPU's frame for the null shader and each of `scenes` (one scene's variants: the same
 /// geometry), drawn interleaved: medians in ms, the null shader's first.
 fn gpu_times(scenes: &[&Scene; 4], settings: &RenderSettings, (w, h): (u32, u32)) -> anyhow::Result<[f64; 5]> {
-    let gpu = Gpu::from_env().context("opening a GPU adapter")?;
+    let gpu = crate::render::open_gpu()?;
     let mut r = Renderer::new(&gpu.device, &gpu.queue);
     let mut gs = r.upload(scenes[0])?;
     let target = Target::new(&gpu.device, w, h, shadelab_render::target::HDR_FORMAT);

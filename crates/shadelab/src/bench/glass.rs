@@ -283,7 +283,7 @@ pub fn rule_csv(rules: &[RuleRow]) -> String {
 pub fn run(args: &cli::BenchGlassArgs) -> Result<(), Failure> {
     std::fs::create_dir_all(&args.output)
         .map_err(|e| Failure::Usage(format!("--output: cannot create folder '{}': {e}", args.output.display())))?;
-    let gpu = Gpu::from_env().context("opening a GPU adapter")?;
+    let gpu = crate::render::open_gpu()?;
     let command = std::iter::once("shadelab".to_string()).chain(std::env::args().skip(1)).collect::<Vec<_>>().join(" ");
     let size = (args.width, args.height);
     let (frames, warmup) = args.frames.counts();

@@ -2,7 +2,6 @@
 //! peak memory.
 
 use crate::{Failure, cli};
-use anyhow::Context;
 use shadelab_render::timing::{FrameTimer, median};
 use shadelab_render::{Gpu, Renderer, Target};
 
@@ -27,7 +26,7 @@ fn wait(gpu: &Gpu) {
 pub fn run(args: &cli::BenchLoadArgs) -> Result<(), Failure> {
     use std::time::Instant;
     let (width, height) = args.size.pixels();
-    let gpu = Gpu::from_env().context("opening a GPU adapter")?;
+    let gpu = crate::render::open_gpu()?;
     let rss_device = peak_rss_kib();
     let ms = |t: Instant| t.elapsed().as_secs_f64() * 1e3;
 

@@ -227,7 +227,7 @@ pub fn write_outputs(rows: &[WidthRow], device: &str, command: &str, dir: &Path)
 pub fn run(args: &cli::BenchPenumbraArgs) -> Result<(), Failure> {
     std::fs::create_dir_all(&args.output)
         .map_err(|e| Failure::Usage(format!("--output: cannot create folder '{}': {e}", args.output.display())))?;
-    let gpu = Gpu::from_env().context("opening a GPU adapter")?;
+    let gpu = crate::render::open_gpu()?;
     let command = std::iter::once("shadelab".to_string()).chain(std::env::args().skip(1)).collect::<Vec<_>>().join(" ");
     let rows = measure(&gpu, &HEIGHTS, SIDE)?;
     let paths = write_outputs(&rows, &gpu.describe(), &command, &args.output)?;

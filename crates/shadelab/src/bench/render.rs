@@ -3,11 +3,10 @@
 //! each mode's time over the baseline's.
 
 use crate::{Failure, cli};
-use anyhow::Context;
 use shadelab_model::params::NamedValue;
 use shadelab_model::{ShadingMode, SpecularModel};
 use shadelab_render::timing::{FrameTimer, median, quantile_sorted};
-use shadelab_render::{Gpu, RenderSettings, Renderer, Target};
+use shadelab_render::{RenderSettings, Renderer, Target};
 
 /// `shadelab bench render`: one table row per shading × specular combination.
 pub fn run(args: &cli::BenchRenderArgs) -> Result<(), Failure> {
@@ -23,7 +22,7 @@ pub fn run(args: &cli::BenchRenderArgs) -> Result<(), Failure> {
         }
         None => scene,
     };
-    let gpu = Gpu::from_env().context("opening a GPU adapter")?;
+    let gpu = crate::render::open_gpu()?;
     let mut r = Renderer::new(&gpu.device, &gpu.queue);
     let mut gs = r.upload(&scene).map_err(|e| Failure::Usage(format!("{}: {e}", args.scene.scene)))?;
     let target = Target::new(&gpu.device, width, height, shadelab_render::target::HDR_FORMAT);

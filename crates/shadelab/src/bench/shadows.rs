@@ -461,7 +461,7 @@ pub fn run(args: &cli::BenchShadowsArgs) -> Result<(), Failure> {
     // A folder that cannot be made is the user's to fix, and is found before the work.
     std::fs::create_dir_all(&args.output)
         .map_err(|e| Failure::Usage(format!("--output: cannot create folder '{}': {e}", args.output.display())))?;
-    let gpu = Gpu::from_env().context("opening a GPU adapter")?;
+    let gpu = crate::render::open_gpu()?;
     let command = std::iter::once("shadelab".to_string()).chain(std::env::args().skip(1)).collect::<Vec<_>>().join(" ");
     eprintln!("# shadelab bench shadows — scene '{}' on {}", scene.name, gpu.describe());
     let report = run_plan(&gpu, &scene, resolutions, args.size.pixels(), frames, warmup, &command)?;
